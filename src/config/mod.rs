@@ -1,0 +1,228 @@
+//! The complete description of one simulation, in SI units and radians.
+//!
+//! [`Config`] is what [`crate::Simulation::new`] takes. The TOML file reader
+//! ([`file`]) and the embedded default platform ([`default_platform`]) both produce it;
+//! degrees exist only in the file format and are converted there, once.
+
+
+use crate::error::{
+    require_finite, require_finite_matrix, require_non_negative, require_positive, Error, Result,
+};
+use crate::hydro::DriftTable;
+use crate::sea_state::SeaState;
+
+/// Physical constants of the water (physics.md section 1).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Environment {
+    /// Acceleration of gravity, m/s^2.
+    pub gravity: f64,
+    /// Water density, kg/m^3.
+    pub water_density: f64,
+}
+
+impl Default for Environment {
+    fn default() -> Self {
+        Environment {
+            gravity: 9.80665,
+            water_density: 1025.0,
+        }
+    }
+}
+
+/// Steady, depth-uniform current (E&S section 3).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Current {
+    /// Speed, m/s (0 = no current).
+    pub speed: f64,
+    /// Direction towards which the current flows, rad from +X, counter-clockwise.
+    pub direction: f64,
+}
+
+/// Run length and time step.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Run {
+    /// Simulated duration, s. The wave record is built at least this long, so it never repeats.
+    pub duration: f64,
+    /// RK4 step h, s. Force records are sampled at h/2 so that every RK4 stage lands on a sample.
+    pub time_step: f64,
+    /// Time of the first sample, s.
+    pub start_time: f64,
+}
+
+/// A vertical circular column, for Morison drag (E&S 8, 9). Body frame, m.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Column {
+    /// Centre, body frame x (forward), m.
+    pub x: f64,
+    /// Centre, body frame y (port), m.
+    pub y: f64,
+    /// Diameter, m.
+    pub diameter: f64,
+    /// Draft: the keel is at z = -draft, m.
+    pub draft: f64,
+}
+
+/// Rigid-body and mooring data of the platform in the 3 slow-drift DOFs (surge, sway, yaw).
+///
+/// Matrices are indexed (surge, sway, yaw). Mass, added mass and damping act in the body
+/// frame; the stiffness acts on the inertial position (X, Y, theta), as in E&S 1.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Platform {
+    /// Mass, kg.
+    pub mass: f64,
+    /// Yaw moment of inertia about the body origin, kg m^2.
+    pub yaw_inertia: f64,
+    /// Low-frequency added mass A (kg, kg m, kg m^2).
+    pub added_mass: [[f64; 3]; 3],
+    /// Mooring stiffness C (N/m, N, N m/rad) acting on (X, Y, theta).
+    pub stiffness: [[f64; 3]; 3],
+    /// Extra linear damping on the body-frame velocity (N s/m, ...).
+    pub linear_damping: [[f64; 3]; 3],
+    /// Extra quadratic damping: force_i = sum_j Bq_ij v_j |v_j| on the body-frame velocity.
+    pub quadratic_damping: [[f64; 3]; 3],
+    /// Columns for viscous drag (empty = no drag elements).
+    pub columns: Vec<Column>,
+}
+
+/// Which form of Newman's approximation builds the slowly varying records (physics.md 4).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum NewmanForm {
+    /// The paper's form (E&S 4): T_ij = sign * sqrt(T_ii T_jj) where the signs agree, 0 otherwise.
+    Geometric,
+    /// T_ij = (T_ii + T_jj) / 2.
+    Arithmetic,
+}
+
+/// Where the wave-drift damping coefficients b_ij(omega, beta) come from (physics.md 5).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DriftDamping {
+    /// No wave-drift damping.
+    Off,
+    /// The b_ij columns of the drift table.
+    Table,
+    /// Aranha's formula from the drift table and its derivatives.
+    Aranha,
+}
+
+/// Morison drag models of the paper (E&S 8, 9).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum DragModel {
+    /// No viscous drag.
+    Off,
+    /// Separate slow and fast parts: C_DS U|U| + C_DL u|u| (E&S 8).
+    Separate { slow: f64, fast: f64 },
+    /// One coefficient on the total relative velocity: C_D (U + u)|U + u| (E&S 9).
+    Combined { cd: f64 },
+}
+
+/// Modelling choices.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ModelOptions {
+    pub newman: NewmanForm,
+    pub drift_damping: DriftDamping,
+    pub drag: DragModel,
+    /// Number of Morison strips per column, from the keel to the instantaneous free surface.
+    pub strips_per_column: usize,
+}
+
+impl Default for ModelOptions {
+    fn default() -> Self {
+        ModelOptions {
+            newman: NewmanForm::Geometric,
+            drift_damping: DriftDamping::Aranha,
+            drag: DragModel::Off,
+            strips_per_column: 20,
+        }
+    }
+}
+
+/// Initial slow-drift state, inertial frame: (X, Y, theta) in m, m, rad and their rates.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct InitialCondition {
+    pub position: [f64; 3],
+    pub velocity: [f64; 3],
+}
+
+/// Everything one simulation needs.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Config {
+    pub environment: Environment,
+    pub sea: SeaState,
+    pub current: Current,
+    pub run: Run,
+    pub platform: Platform,
+    pub drift: DriftTable,
+    pub model: ModelOptions,
+    pub initial: InitialCondition,
+}
+
+impl Config {
+    /// Checks every field; the error names the first offending field and value.
+    pub fn validate(&self) -> Result<()> {
+        require_positive("environment.gravity", self.environment.gravity)?;
+        require_positive("environment.water_density", self.environment.water_density)?;
+        self.sea.validate()?;
+        require_non_negative("current.speed", self.current.speed)?;
+        require_finite("current.direction", self.current.direction)?;
+        require_positive("run.duration", self.run.duration)?;
+        require_positive("run.time_step", self.run.time_step)?;
+        require_finite("run.start_time", self.run.start_time)?;
+        if self.run.time_step > self.run.duration {
+            return Err(Error::invalid(
+                "run.time_step",
+                self.run.time_step,
+                format!("is longer than run.duration = {}", self.run.duration),
+            ));
+        }
+        self.validate_platform()?;
+        if self.model.strips_per_column == 0 {
+            return Err(Error::invalid("model.strips_per_column", 0, "must be at least 1"));
+        }
+        match self.model.drag {
+            DragModel::Off => {}
+            DragModel::Separate { slow, fast } => {
+                require_non_negative("model.drag.slow", slow)?;
+                require_non_negative("model.drag.fast", fast)?;
+            }
+            DragModel::Combined { cd } => require_non_negative("model.drag.cd", cd)?,
+        }
+        if self.model.drag != DragModel::Off && self.platform.columns.is_empty() {
+            return Err(Error::invalid(
+                "platform.columns",
+                "[]",
+                "viscous drag is on but the platform has no columns",
+            ));
+        }
+        if self.model.drift_damping == DriftDamping::Table && !self.drift.has_damping() {
+            return Err(Error::invalid(
+                "model.drift_damping",
+                "table",
+                "the drift table has no b_ij columns",
+            ));
+        }
+        for (i, v) in self.initial.position.iter().enumerate() {
+            require_finite(&format!("initial.position[{i}]"), *v)?;
+        }
+        for (i, v) in self.initial.velocity.iter().enumerate() {
+            require_finite(&format!("initial.velocity[{i}]"), *v)?;
+        }
+        Ok(())
+    }
+
+    fn validate_platform(&self) -> Result<()> {
+        let p = &self.platform;
+        require_positive("platform.mass", p.mass)?;
+        require_positive("platform.yaw_inertia", p.yaw_inertia)?;
+        require_finite_matrix("platform.added_mass", &p.added_mass)?;
+        require_finite_matrix("platform.stiffness", &p.stiffness)?;
+        require_finite_matrix("platform.linear_damping", &p.linear_damping)?;
+        require_finite_matrix("platform.quadratic_damping", &p.quadratic_damping)?;
+        for (k, c) in p.columns.iter().enumerate() {
+            require_finite(&format!("platform.columns[{k}].x"), c.x)?;
+            require_finite(&format!("platform.columns[{k}].y"), c.y)?;
+            require_positive(&format!("platform.columns[{k}].diameter"), c.diameter)?;
+            require_positive(&format!("platform.columns[{k}].draft"), c.draft)?;
+        }
+        Ok(())
+    }
+}

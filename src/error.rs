@@ -1,0 +1,112 @@
+//! Typed errors of the core. Every variant names the offending field or input and its
+//! value, so that a user (or the FMU's log) can tell exactly what to fix.
+
+use std::fmt;
+
+/// Everything that can go wrong in SlowDrift's core and its file readers.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Error {
+    /// A configuration value is out of range, not finite, or inconsistent.
+    InvalidValue {
+        /// Dotted path of the field, e.g. `sea.spectrum.hs`.
+        field: String,
+        /// The offending value, as text.
+        value: String,
+        /// Why it is refused.
+        reason: String,
+    },
+    /// A file could not be read or written.
+    Io { path: String, message: String },
+    /// A file could be read but not understood (`line` is 1-based when known).
+    Parse {
+        path: String,
+        line: Option<usize>,
+        message: String,
+    },
+    /// An input handed to a running simulation is NaN or infinite.
+    NonFiniteInput { field: String, value: f64 },
+    /// The simulation was asked to go past the end of its precomputed records.
+    BeyondRecord { time: f64, record_end: f64 },
+    /// The state became NaN or infinite (the step is too large for the system).
+    Diverged { time: f64 },
+}
+
+impl Error {
+    /// Shorthand for [`Error::InvalidValue`].
+    pub fn invalid(field: impl Into<String>, value: impl fmt::Display, reason: impl Into<String>) -> Self {
+        Error::InvalidValue {
+            field: field.into(),
+            value: value.to_string(),
+            reason: reason.into(),
+        }
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::InvalidValue { field, value, reason } => {
+                write!(f, "invalid {field} = {value}: {reason}")
+            }
+            Error::Io { path, message } => write!(f, "{path}: {message}"),
+            Error::Parse { path, line: Some(line), message } => write!(f, "{path}:{line}: {message}"),
+            Error::Parse { path, line: None, message } => write!(f, "{path}: {message}"),
+            Error::NonFiniteInput { field, value } => {
+                write!(f, "input {field} = {value} is not finite; refused")
+            }
+            Error::BeyondRecord { time, record_end } => write!(
+                f,
+                "time {time} s is past the end of the precomputed records ({record_end} s); \
+                 increase run.duration"
+            ),
+            Error::Diverged { time } => write!(
+                f,
+                "the state became non-finite at t = {time} s; reduce run.time_step"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for Error {}
+
+/// Result with the core's [`Error`].
+pub type Result<T> = std::result::Result<T, Error>;
+
+/// Checks that `value` is finite and strictly positive.
+pub fn require_positive(field: &str, value: f64) -> Result<()> {
+    require_finite(field, value)?;
+    if value > 0.0 {
+        Ok(())
+    } else {
+        Err(Error::invalid(field, value, "must be greater than zero"))
+    }
+}
+
+/// Checks that `value` is finite and not negative.
+pub fn require_non_negative(field: &str, value: f64) -> Result<()> {
+    require_finite(field, value)?;
+    if value >= 0.0 {
+        Ok(())
+    } else {
+        Err(Error::invalid(field, value, "must not be negative"))
+    }
+}
+
+/// Checks that `value` is neither NaN nor infinite.
+pub fn require_finite(field: &str, value: f64) -> Result<()> {
+    if value.is_finite() {
+        Ok(())
+    } else {
+        Err(Error::invalid(field, value, "must be a finite number"))
+    }
+}
+
+/// Checks every entry of a 3x3 matrix for finiteness, naming the entry on failure.
+pub fn require_finite_matrix(field: &str, m: &[[f64; 3]; 3]) -> Result<()> {
+    for (i, row) in m.iter().enumerate() {
+        for (j, v) in row.iter().enumerate() {
+            require_finite(&format!("{field}[{i}][{j}]"), *v)?;
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,343 @@
+//! The mean drift table T_i(omega, beta) (surge, sway: N/m^2; yaw: N m/m^2, per unit wave
+//! amplitude squared, body frame) and optional wave-drift damping b_ij(omega, beta)
+//! (N s/m per m^2 of amplitude, ...), on a rectangular (frequency x heading) grid.
+//!
+//! Interpolation is bilinear; headings wrap around when the table covers the full circle.
+//! Nothing is extrapolated: a frequency or heading outside the table is an error that
+//! names the gap.
+
+use crate::error::{require_finite, Error, Result};
+use std::f64::consts::PI;
+
+/// Relative tolerance when matching headings and frequencies.
+const GRID_TOLERANCE: f64 = 1e-9;
+
+/// One row of a drift table as a user writes it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DriftRow {
+    /// Wave frequency, rad/s.
+    pub omega: f64,
+    /// Wave heading (direction of propagation relative to the body x axis), rad.
+    pub heading: f64,
+    /// Mean drift per unit amplitude squared: surge, sway (N/m^2), yaw (N m/m^2).
+    pub drift: [f64; 3],
+    /// Wave-drift damping b_ij, rows = force (surge, sway, yaw), columns = velocity
+    /// (surge, sway, yaw rate), per unit amplitude squared.
+    pub damping: Option<[[f64; 3]; 3]>,
+}
+
+/// Drift (and damping) on a frequency x heading grid.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DriftTable {
+    omegas: Vec<f64>,
+    headings: Vec<f64>,
+    /// Heading-major: index `ih * omegas.len() + iw`.
+    drift: Vec<[f64; 3]>,
+    damping: Option<Vec<[[f64; 3]; 3]>>,
+}
+
+/// A point located in the table: the two bracketing nodes in each direction and weights.
+#[derive(Debug, Clone, Copy)]
+struct Bracket {
+    lo: usize,
+    hi: usize,
+    frac: f64,
+}
+
+impl DriftTable {
+    /// Builds a table from rows in any heading order. Within each heading the frequencies
+    /// must be strictly increasing; every heading must have the same frequencies; damping
+    /// is given on every row or on none.
+    pub fn from_rows(rows: &[DriftRow]) -> Result<Self> {
+        if rows.is_empty() {
+            return Err(Error::invalid("drift.rows", "[]", "the drift table is empty"));
+        }
+        let has_damping = rows[0].damping.is_some();
+        for (r, row) in rows.iter().enumerate() {
+            validate_row(r, row, has_damping)?;
+        }
+        let mut headings: Vec<f64> = Vec::new();
+        for row in rows {
+            if !headings.iter().any(|&h| same(h, row.heading)) {
+                headings.push(row.heading);
+            }
+        }
+        headings.sort_by(f64::total_cmp);
+        let first_heading = headings[0];
+        let omegas: Vec<f64> = rows
+            .iter()
+            .filter(|r| same(r.heading, first_heading))
+            .map(|r| r.omega)
+            .collect();
+        for (ih, &h) in headings.iter().enumerate() {
+            let these: Vec<(usize, &DriftRow)> =
+                rows.iter().enumerate().filter(|(_, r)| same(r.heading, h)).collect();
+            check_frequencies(h, &these, &omegas)?;
+            if ih > 0 && h - headings[ih - 1] <= GRID_TOLERANCE {
+                return Err(Error::invalid("drift.heading", h.to_degrees(), "duplicated heading"));
+            }
+        }
+        let nw = omegas.len();
+        let mut drift = vec![[0.0; 3]; headings.len() * nw];
+        let mut damping = has_damping.then(|| vec![[[0.0; 3]; 3]; headings.len() * nw]);
+        for row in rows {
+            let ih = headings.iter().position(|&h| same(h, row.heading)).expect("heading listed");
+            let iw = omegas.iter().position(|&w| same(w, row.omega)).expect("frequency checked");
+            drift[ih * nw + iw] = row.drift;
+            if let (Some(table), Some(b)) = (damping.as_mut(), row.damping) {
+                table[ih * nw + iw] = b;
+            }
+        }
+        if headings.last().expect("non-empty") - headings[0] > 2.0 * PI + GRID_TOLERANCE {
+            return Err(Error::invalid(
+                "drift.heading",
+                format!("{} .. {} deg", headings[0].to_degrees(), headings.last().unwrap().to_degrees()),
+                "headings span more than 360 deg",
+            ));
+        }
+        Ok(DriftTable {
+            omegas,
+            headings,
+            drift,
+            damping,
+        })
+    }
+
+    /// Frequencies of the grid, rad/s, increasing.
+    pub fn omegas(&self) -> &[f64] {
+        &self.omegas
+    }
+
+    /// Headings of the grid, rad, increasing.
+    pub fn headings(&self) -> &[f64] {
+        &self.headings
+    }
+
+    /// Whether the table carries damping coefficients b_ij.
+    pub fn has_damping(&self) -> bool {
+        self.damping.is_some()
+    }
+
+    /// Drift at grid node (heading ih, frequency iw).
+    pub fn drift_at_node(&self, ih: usize, iw: usize) -> [f64; 3] {
+        self.drift[ih * self.omegas.len() + iw]
+    }
+
+    /// The same grid with damping coefficients replaced (heading-major like the drift).
+    pub fn with_damping(mut self, damping: Vec<[[f64; 3]; 3]>) -> Self {
+        assert_eq!(damping.len(), self.drift.len(), "one damping matrix per node");
+        self.damping = Some(damping);
+        self
+    }
+
+    /// Whether the headings wrap around: the table covers the full circle up to at most one
+    /// regular heading step.
+    pub fn is_periodic_in_heading(&self) -> bool {
+        let n = self.headings.len();
+        if n < 2 {
+            return false;
+        }
+        let span = self.headings[n - 1] - self.headings[0];
+        let widest = self.headings.windows(2).map(|w| w[1] - w[0]).fold(0.0, f64::max);
+        2.0 * PI - span <= widest * (1.0 + 1e-6)
+    }
+
+    /// Checks that [omega_min, omega_max] and every heading in `headings` can be
+    /// interpolated; the error names the gap.
+    pub fn check_covers(&self, band: (f64, f64), headings: &[f64]) -> Result<()> {
+        let (lo, hi) = (self.omegas[0], self.omegas[self.omegas.len() - 1]);
+        if band.0 < lo * (1.0 - GRID_TOLERANCE) || band.1 > hi * (1.0 + GRID_TOLERANCE) {
+            return Err(Error::invalid(
+                "drift.omega",
+                format!("[{lo}, {hi}] rad/s"),
+                format!(
+                    "the drift table does not cover the wave band [{:.4}, {:.4}] rad/s; \
+                     extend the table or narrow sea.band",
+                    band.0, band.1
+                ),
+            ));
+        }
+        for &h in headings {
+            self.heading_bracket(h)?;
+        }
+        Ok(())
+    }
+
+    /// Bilinear interpolation of the drift at (omega, heading).
+    pub fn drift(&self, omega: f64, heading: f64) -> Result<[f64; 3]> {
+        self.interpolate(omega, heading, |ih, iw| self.drift_at_node(ih, iw))
+    }
+
+    /// Bilinear interpolation of the damping at (omega, heading); `None` if the table has none.
+    pub fn damping(&self, omega: f64, heading: f64) -> Result<Option<[[f64; 3]; 3]>> {
+        let Some(table) = &self.damping else {
+            return Ok(None);
+        };
+        let nw = self.omegas.len();
+        let flat = self.interpolate(omega, heading, |ih, iw| flatten(&table[ih * nw + iw]))?;
+        Ok(Some(unflatten(&flat)))
+    }
+
+    fn interpolate<const N: usize>(
+        &self,
+        omega: f64,
+        heading: f64,
+        node: impl Fn(usize, usize) -> [f64; N],
+    ) -> Result<[f64; N]> {
+        let w = self.frequency_bracket(omega)?;
+        let h = self.heading_bracket(heading)?;
+        let mut out = [0.0; N];
+        for (ih, wh) in [(h.lo, 1.0 - h.frac), (h.hi, h.frac)] {
+            for (iw, ww) in [(w.lo, 1.0 - w.frac), (w.hi, w.frac)] {
+                let weight = wh * ww;
+                if weight != 0.0 {
+                    for (o, v) in out.iter_mut().zip(node(ih, iw)) {
+                        *o += weight * v;
+                    }
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    fn frequency_bracket(&self, omega: f64) -> Result<Bracket> {
+        let w = &self.omegas;
+        let (lo, hi) = (w[0], w[w.len() - 1]);
+        if omega < lo * (1.0 - GRID_TOLERANCE) || omega > hi * (1.0 + GRID_TOLERANCE) {
+            return Err(Error::invalid(
+                "drift.omega",
+                omega,
+                format!("outside the drift table's frequencies [{lo}, {hi}] rad/s"),
+            ));
+        }
+        if w.len() == 1 {
+            return Ok(Bracket { lo: 0, hi: 0, frac: 0.0 });
+        }
+        let omega = omega.clamp(lo, hi);
+        let i = w.partition_point(|&v| v <= omega).clamp(1, w.len() - 1);
+        Ok(Bracket {
+            lo: i - 1,
+            hi: i,
+            frac: (omega - w[i - 1]) / (w[i] - w[i - 1]),
+        })
+    }
+
+    fn heading_bracket(&self, heading: f64) -> Result<Bracket> {
+        let h = &self.headings;
+        let first = h[0];
+        // Bring the heading into [first, first + 2 pi).
+        let mut rel = (heading - first).rem_euclid(2.0 * PI);
+        if 2.0 * PI - rel < GRID_TOLERANCE {
+            rel = 0.0;
+        }
+        let at = first + rel;
+        let last = h[h.len() - 1];
+        if at <= last + GRID_TOLERANCE {
+            if h.len() == 1 {
+                return Ok(Bracket { lo: 0, hi: 0, frac: 0.0 });
+            }
+            let at = at.min(last);
+            let i = h.partition_point(|&v| v <= at).clamp(1, h.len() - 1);
+            return Ok(Bracket {
+                lo: i - 1,
+                hi: i,
+                frac: (at - h[i - 1]) / (h[i] - h[i - 1]),
+            });
+        }
+        if self.is_periodic_in_heading() {
+            let gap = first + 2.0 * PI - last;
+            return Ok(Bracket {
+                lo: h.len() - 1,
+                hi: 0,
+                frac: (at - last) / gap,
+            });
+        }
+        Err(Error::invalid(
+            "drift.heading",
+            format!("{:.3} deg", heading.to_degrees()),
+            format!(
+                "the drift table's headings cover [{:.3}, {:.3}] deg only",
+                first.to_degrees(),
+                last.to_degrees()
+            ),
+        ))
+    }
+}
+
+fn same(a: f64, b: f64) -> bool {
+    (a - b).abs() <= GRID_TOLERANCE * (1.0 + a.abs().max(b.abs()))
+}
+
+fn flatten(m: &[[f64; 3]; 3]) -> [f64; 9] {
+    let mut out = [0.0; 9];
+    for i in 0..3 {
+        out[3 * i..3 * i + 3].copy_from_slice(&m[i]);
+    }
+    out
+}
+
+fn unflatten(v: &[f64; 9]) -> [[f64; 3]; 3] {
+    [[v[0], v[1], v[2]], [v[3], v[4], v[5]], [v[6], v[7], v[8]]]
+}
+
+fn validate_row(r: usize, row: &DriftRow, has_damping: bool) -> Result<()> {
+    require_finite(&format!("drift.rows[{r}].omega"), row.omega)?;
+    if row.omega <= 0.0 {
+        return Err(Error::invalid(format!("drift.rows[{r}].omega"), row.omega, "must be greater than zero"));
+    }
+    require_finite(&format!("drift.rows[{r}].heading"), row.heading)?;
+    for (i, v) in row.drift.iter().enumerate() {
+        require_finite(&format!("drift.rows[{r}].drift[{i}]"), *v)?;
+    }
+    match (&row.damping, has_damping) {
+        (Some(b), true) => {
+            for (i, line) in b.iter().enumerate() {
+                for (j, v) in line.iter().enumerate() {
+                    require_finite(&format!("drift.rows[{r}].b{}{}", i + 1, j + 1), *v)?;
+                }
+            }
+            Ok(())
+        }
+        (None, false) => Ok(()),
+        _ => Err(Error::invalid(
+            format!("drift.rows[{r}].damping"),
+            if has_damping { "missing" } else { "present" },
+            "give damping on every row of the drift table or on none",
+        )),
+    }
+}
+
+fn check_frequencies(heading: f64, rows: &[(usize, &DriftRow)], reference: &[f64]) -> Result<()> {
+    for pair in rows.windows(2) {
+        let ((_, a), (r, b)) = (pair[0], pair[1]);
+        if b.omega <= a.omega {
+            let what = if same(a.omega, b.omega) { "duplicated" } else { "not increasing" };
+            return Err(Error::invalid(
+                format!("drift.rows[{r}].omega"),
+                b.omega,
+                format!("frequency {what} within heading {:.3} deg", heading.to_degrees()),
+            ));
+        }
+    }
+    for &w in reference {
+        if !rows.iter().any(|(_, row)| same(row.omega, w)) {
+            return Err(Error::invalid(
+                "drift.rows",
+                format!("omega = {w}, heading = {:.3} deg", heading.to_degrees()),
+                "hole in the drift table: this (frequency, heading) pair is missing",
+            ));
+        }
+    }
+    if rows.len() != reference.len() {
+        let (r, extra) = rows
+            .iter()
+            .find(|(_, row)| !reference.iter().any(|&w| same(w, row.omega)))
+            .expect("an extra frequency exists");
+        return Err(Error::invalid(
+            format!("drift.rows[{r}].omega"),
+            extra.omega,
+            "hole in the drift table: this frequency is missing at the other headings",
+        ));
+    }
+    Ok(())
+}

@@ -1,0 +1,6 @@
+//! Hydrodynamic data: the drift table, wave-drift damping by Aranha's formula, and the
+//! closed-form drift of isolated vertical columns.
+
+mod drift_table;
+
+pub use drift_table::{DriftRow, DriftTable};

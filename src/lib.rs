@@ -1,0 +1,17 @@
+//! # SlowDrift
+//!
+//! Slow-drift motions (surge, sway, yaw) of moored floating platforms in random waves,
+//! after Emmerhoff & Sclavounos, "The simulation of slow-drift motions of offshore
+//! structures", Applied Ocean Research 18 (1996) 55-64 ("E&S n" = their equation n).
+//!
+//! Conventions (physics.md section 1): SI units and radians; inertial frame XYZ with Z up
+//! and still water at Z = 0; the body frame follows the slow yaw theta; DOF order surge,
+//! sway, yaw; wave direction beta = direction of propagation from +X, counter-clockwise;
+//! a wave component is Re[a e^{i omega t}].
+
+pub mod config;
+pub mod error;
+pub mod hydro;
+pub mod sea_state;
+
+pub use error::{Error, Result};

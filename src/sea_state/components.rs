@@ -1,0 +1,189 @@
+//! Random wave components by filtering seeded white Gaussian noise (E&S 5, 6;
+//! physics.md section 3).
+//!
+//! Convention: the elevation at the body origin is eta(t) = Re sum_n a_n e^{i omega_n tau},
+//! tau = t - t0, with omega_n = n d_omega and d_omega = 2 pi / (N dt). A component that
+//! propagates in direction beta has the phase e^{-i k_n (x cos beta + y sin beta)} at (x, y).
+
+use super::{Direction, SeaState};
+use crate::error::{Error, Result};
+use rand_xoshiro::rand_core::{Rng, SeedableRng};
+use rand_xoshiro::Xoshiro256PlusPlus;
+use rustfft::num_complex::Complex64;
+use std::f64::consts::PI;
+
+/// Extra samples past the run's end so that the last RK4 stage and the 4-point
+/// interpolation stencil stay inside the record.
+const RECORD_TAIL_SAMPLES: usize = 3;
+
+/// The common time and frequency grid of every record: N samples at spacing dt, and the
+/// wave components n = first .. first + count - 1 at omega_n = n d_omega.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FrequencyGrid {
+    /// Time of sample 0, s.
+    pub start_time: f64,
+    /// Sample spacing of every record, s.
+    pub dt: f64,
+    /// Record length N (samples); the record repeats after N dt.
+    pub len: usize,
+    /// Frequency spacing 2 pi / (N dt), rad/s.
+    pub d_omega: f64,
+    /// Index n of the first wave component.
+    pub first: usize,
+    /// Number of wave components.
+    pub count: usize,
+}
+
+impl FrequencyGrid {
+    /// A grid whose records cover `duration` (plus a few samples) at spacing `dt`, and whose
+    /// components cover the band [omega_min, omega_max]. The length is the smallest
+    /// 2^a 3^b 5^c 7^d that is long enough, so the FFTs stay fast.
+    pub fn new(start_time: f64, duration: f64, dt: f64, band: (f64, f64)) -> Result<Self> {
+        let needed = (duration / dt).ceil() as usize + RECORD_TAIL_SAMPLES;
+        let len = smooth_length_at_least(needed);
+        let d_omega = 2.0 * PI / (len as f64 * dt);
+        let first = ((band.0 / d_omega).ceil() as usize).max(1);
+        let last = (band.1 / d_omega).floor() as usize;
+        let nyquist = PI / dt;
+        if band.1 >= nyquist {
+            return Err(Error::invalid(
+                "run.time_step",
+                2.0 * dt,
+                format!(
+                    "records are sampled at time_step/2 = {dt} s, whose Nyquist frequency \
+                     {nyquist:.4} rad/s is below the wave band's top {:.4} rad/s; \
+                     use time_step < {:.4} s or lower sea.band",
+                    band.1,
+                    2.0 * PI / band.1
+                ),
+            ));
+        }
+        if last < first {
+            return Err(Error::invalid(
+                "sea.band",
+                format!("[{}, {}]", band.0, band.1),
+                format!("holds no frequency of the grid (d_omega = {d_omega} rad/s)"),
+            ));
+        }
+        Ok(FrequencyGrid {
+            start_time,
+            dt,
+            len,
+            d_omega,
+            first,
+            count: last - first + 1,
+        })
+    }
+
+    /// Frequency of the j-th component (j = 0 .. count), rad/s.
+    pub fn omega(&self, j: usize) -> f64 {
+        (self.first + j) as f64 * self.d_omega
+    }
+
+    /// Time of the m-th sample, s.
+    pub fn time(&self, m: usize) -> f64 {
+        self.start_time + m as f64 * self.dt
+    }
+
+    /// Last time a record can be evaluated at (the interpolation stencil included), s.
+    pub fn end_time(&self) -> f64 {
+        self.time(self.len - 2)
+    }
+}
+
+/// Smallest integer >= n whose only prime factors are 2, 3, 5 and 7.
+fn smooth_length_at_least(n: usize) -> usize {
+    (n.max(1)..)
+        .find(|&m| {
+            let mut r = m;
+            for p in [2, 3, 5, 7] {
+                while r % p == 0 {
+                    r /= p;
+                }
+            }
+            r == 1
+        })
+        .expect("smooth numbers are unbounded")
+}
+
+/// Complex amplitudes a_{n,k} of every component and direction.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WaveComponents {
+    pub grid: FrequencyGrid,
+    pub directions: Vec<Direction>,
+    /// Direction-major: `amplitudes[k * grid.count + j]` is a_{first + j, k}, m.
+    amplitudes: Vec<Complex64>,
+}
+
+impl WaveComponents {
+    /// a_{n,k} = sqrt(S(omega_n) w_k d_omega) (xi + i xi'), with xi, xi' independent
+    /// standard normal from one xoshiro256++ stream seeded by `sea.seed`, drawn direction by
+    /// direction, in increasing frequency. So |a| is Rayleigh, its phase uniform and
+    /// E|a|^2 = 2 S w_k d_omega (physics.md section 3).
+    pub fn generate(sea: &SeaState, grid: FrequencyGrid) -> Self {
+        let directions = sea.directions();
+        let mut rng = Xoshiro256PlusPlus::seed_from_u64(sea.seed);
+        let mut amplitudes = Vec::with_capacity(directions.len() * grid.count);
+        for dir in &directions {
+            for j in 0..grid.count {
+                let scale = (sea.spectrum.density(grid.omega(j)) * dir.weight * grid.d_omega).sqrt();
+                let (xi, xi_prime) = standard_normal_pair(&mut rng);
+                amplitudes.push(Complex64::new(scale * xi, scale * xi_prime));
+            }
+        }
+        WaveComponents {
+            grid,
+            directions,
+            amplitudes,
+        }
+    }
+
+    /// Amplitudes of direction k, indexed by component j.
+    pub fn of_direction(&self, k: usize) -> &[Complex64] {
+        &self.amplitudes[k * self.grid.count..(k + 1) * self.grid.count]
+    }
+}
+
+/// Two independent standard normal numbers by the Box-Muller transform (exact, no tables).
+fn standard_normal_pair(rng: &mut Xoshiro256PlusPlus) -> (f64, f64) {
+    const UNIT: f64 = 1.0 / (1u64 << 53) as f64;
+    // u1 in (0, 1] so that ln(u1) is finite; u2 in [0, 1).
+    let u1 = ((rng.next_u64() >> 11) + 1) as f64 * UNIT;
+    let u2 = (rng.next_u64() >> 11) as f64 * UNIT;
+    let radius = (-2.0 * u1.ln()).sqrt();
+    let (sin, cos) = (2.0 * PI * u2).sin_cos();
+    (radius * cos, radius * sin)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn smooth_lengths() {
+        assert_eq!(smooth_length_at_least(1), 1);
+        assert_eq!(smooth_length_at_least(11), 12);
+        assert_eq!(smooth_length_at_least(43203), 43218);
+        assert_eq!(smooth_length_at_least(1024), 1024);
+    }
+
+    #[test]
+    fn box_muller_moments() {
+        let mut rng = Xoshiro256PlusPlus::seed_from_u64(7);
+        let n = 200_000;
+        let (mut s1, mut s2, mut s4, mut cross) = (0.0, 0.0, 0.0, 0.0);
+        for _ in 0..n {
+            let (a, b) = standard_normal_pair(&mut rng);
+            s1 += a + b;
+            s2 += a * a + b * b;
+            s4 += a.powi(4) + b.powi(4);
+            cross += a * b;
+        }
+        let m = 2.0 * n as f64;
+        // standard errors: mean 1/sqrt(m), variance sqrt(2/m), kurtosis sqrt(96/m)
+        assert!((s1 / m).abs() < 5.0 / m.sqrt());
+        assert!((s2 / m - 1.0).abs() < 5.0 * (2.0 / m).sqrt());
+        assert!((s4 / m - 3.0).abs() < 5.0 * (96.0 / m).sqrt());
+        assert!((cross / (m / 2.0)).abs() < 5.0 / (m / 2.0).sqrt());
+    }
+}

@@ -1,0 +1,131 @@
+//! One-sided wave spectra S(omega) in m^2 s/rad (physics.md section 2).
+
+use crate::error::{require_finite, require_positive, Error, Result};
+
+/// A one-sided wave spectrum; m0 = integral of S d omega = Hs^2 / 16.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Spectrum {
+    /// JONSWAP in the DNV-RP-C205 (sec. 3.5.5) form. `gamma = None` takes DNV's default.
+    /// Not renormalised: A_gamma = 1 - 0.287 ln(gamma) is DNV's fit, so m0 differs from
+    /// Hs^2/16 by up to about 2 % for 1 <= gamma <= 7.
+    Jonswap { hs: f64, tp: f64, gamma: Option<f64> },
+    /// Pierson-Moskowitz: S = (5/16) Hs^2 wp^4 w^-5 exp(-(5/4)(w/wp)^-4).
+    PiersonMoskowitz { hs: f64, tp: f64 },
+    /// User table, linear interpolation, zero outside the table.
+    Tabulated { omega: Vec<f64>, density: Vec<f64> },
+}
+
+/// DNV-RP-C205 3.5.5.5: gamma when none is given, from Tp / sqrt(Hs) (s / m^0.5).
+pub fn dnv_default_gamma(hs: f64, tp: f64) -> f64 {
+    let ratio = tp / hs.sqrt();
+    if ratio <= 3.6 {
+        5.0
+    } else if ratio < 5.0 {
+        (5.75 - 1.15 * ratio).exp()
+    } else {
+        1.0
+    }
+}
+
+fn pierson_moskowitz(hs: f64, wp: f64, w: f64) -> f64 {
+    if w <= 0.0 {
+        return 0.0;
+    }
+    let r = wp / w;
+    5.0 / 16.0 * hs * hs * wp.powi(4) * w.powi(-5) * (-1.25 * r.powi(4)).exp()
+}
+
+impl Spectrum {
+    /// Spectral density at omega (rad/s), m^2 s/rad.
+    pub fn density(&self, w: f64) -> f64 {
+        match self {
+            Spectrum::PiersonMoskowitz { hs, tp } => pierson_moskowitz(*hs, 2.0 * std::f64::consts::PI / tp, w),
+            Spectrum::Jonswap { hs, tp, gamma } => {
+                let wp = 2.0 * std::f64::consts::PI / tp;
+                let gamma = gamma.unwrap_or_else(|| dnv_default_gamma(*hs, *tp));
+                let sigma = if w <= wp { 0.07 } else { 0.09 };
+                let a_gamma = 1.0 - 0.287 * gamma.ln();
+                let peak = (-((w - wp).powi(2)) / (2.0 * sigma * sigma * wp * wp)).exp();
+                a_gamma * pierson_moskowitz(*hs, wp, w) * gamma.powf(peak)
+            }
+            Spectrum::Tabulated { omega, density } => interpolate_table(omega, density, w),
+        }
+    }
+
+    /// Peak frequency wp, rad/s (for a table: the frequency of the largest entry).
+    pub fn peak_frequency(&self) -> f64 {
+        match self {
+            Spectrum::Jonswap { tp, .. } | Spectrum::PiersonMoskowitz { tp, .. } => 2.0 * std::f64::consts::PI / tp,
+            Spectrum::Tabulated { omega, density } => {
+                let (i, _) = density
+                    .iter()
+                    .enumerate()
+                    .fold((0, f64::MIN), |best, (i, &s)| if s > best.1 { (i, s) } else { best });
+                omega[i]
+            }
+        }
+    }
+
+    /// Checks ranges and finiteness; the error names the field.
+    pub fn validate(&self) -> Result<()> {
+        match self {
+            Spectrum::Jonswap { hs, tp, gamma } => {
+                require_positive("sea.spectrum.hs", *hs)?;
+                require_positive("sea.spectrum.tp", *tp)?;
+                if let Some(g) = gamma {
+                    require_finite("sea.spectrum.gamma", *g)?;
+                    if *g < 1.0 {
+                        return Err(Error::invalid("sea.spectrum.gamma", g, "must be at least 1"));
+                    }
+                }
+                Ok(())
+            }
+            Spectrum::PiersonMoskowitz { hs, tp } => {
+                require_positive("sea.spectrum.hs", *hs)?;
+                require_positive("sea.spectrum.tp", *tp)
+            }
+            Spectrum::Tabulated { omega, density } => validate_table(omega, density),
+        }
+    }
+}
+
+fn validate_table(omega: &[f64], density: &[f64]) -> Result<()> {
+    if omega.len() < 2 {
+        return Err(Error::invalid("sea.spectrum.omega", omega.len(), "a table needs at least 2 rows"));
+    }
+    if omega.len() != density.len() {
+        return Err(Error::invalid(
+            "sea.spectrum.density",
+            density.len(),
+            format!("has a different length from sea.spectrum.omega ({})", omega.len()),
+        ));
+    }
+    for (i, (&w, &s)) in omega.iter().zip(density).enumerate() {
+        require_positive(&format!("sea.spectrum.omega[{i}]"), w)?;
+        require_finite(&format!("sea.spectrum.density[{i}]"), s)?;
+        if s < 0.0 {
+            return Err(Error::invalid(format!("sea.spectrum.density[{i}]"), s, "must not be negative"));
+        }
+        if i > 0 && w <= omega[i - 1] {
+            return Err(Error::invalid(
+                format!("sea.spectrum.omega[{i}]"),
+                w,
+                "frequencies must be strictly increasing",
+            ));
+        }
+    }
+    if density.iter().all(|&s| s == 0.0) {
+        return Err(Error::invalid("sea.spectrum.density", "all zero", "the spectrum holds no energy"));
+    }
+    Ok(())
+}
+
+/// Linear interpolation in a strictly increasing table; zero outside it.
+fn interpolate_table(x: &[f64], y: &[f64], at: f64) -> f64 {
+    if at < x[0] || at > x[x.len() - 1] {
+        return 0.0;
+    }
+    let i = x.partition_point(|&v| v <= at).clamp(1, x.len() - 1);
+    let s = (at - x[i - 1]) / (x[i] - x[i - 1]);
+    y[i - 1] + s * (y[i] - y[i - 1])
+}
