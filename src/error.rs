@@ -33,7 +33,11 @@ pub enum Error {
 
 impl Error {
     /// Shorthand for [`Error::InvalidValue`].
-    pub fn invalid(field: impl Into<String>, value: impl fmt::Display, reason: impl Into<String>) -> Self {
+    pub fn invalid(
+        field: impl Into<String>,
+        value: impl fmt::Display,
+        reason: impl Into<String>,
+    ) -> Self {
         Error::InvalidValue {
             field: field.into(),
             value: value.to_string(),
@@ -45,12 +49,24 @@ impl Error {
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Error::InvalidValue { field, value, reason } => {
+            Error::InvalidValue {
+                field,
+                value,
+                reason,
+            } => {
                 write!(f, "invalid {field} = {value}: {reason}")
             }
             Error::Io { path, message } => write!(f, "{path}: {message}"),
-            Error::Parse { path, line: Some(line), message } => write!(f, "{path}:{line}: {message}"),
-            Error::Parse { path, line: None, message } => write!(f, "{path}: {message}"),
+            Error::Parse {
+                path,
+                line: Some(line),
+                message,
+            } => write!(f, "{path}:{line}: {message}"),
+            Error::Parse {
+                path,
+                line: None,
+                message,
+            } => write!(f, "{path}: {message}"),
             Error::NonFiniteInput { field, value } => {
                 write!(f, "input {field} = {value} is not finite; refused")
             }

@@ -4,14 +4,24 @@
 //! after Emmerhoff & Sclavounos, "The simulation of slow-drift motions of offshore
 //! structures", Applied Ocean Research 18 (1996) 55-64 ("E&S n" = their equation n).
 //!
+//! Data flow: [`sea_state`] (spectrum, spreading, seeded amplitudes) and [`hydro`] (drift
+//! table, Aranha damping) feed [`forces`] (records precomputed at the mean position by
+//! FFT), which [`dynamics`] (equations of motion, RK4) integrates; [`simulation`] is the
+//! one safe API over all of it.
+//!
 //! Conventions (physics.md section 1): SI units and radians; inertial frame XYZ with Z up
 //! and still water at Z = 0; the body frame follows the slow yaw theta; DOF order surge,
 //! sway, yaw; wave direction beta = direction of propagation from +X, counter-clockwise;
 //! a wave component is Re[a e^{i omega t}].
 
 pub mod config;
+pub mod dynamics;
 pub mod error;
+pub mod forces;
 pub mod hydro;
 pub mod sea_state;
+pub mod simulation;
 
+pub use config::Config;
 pub use error::{Error, Result};
+pub use simulation::{Outputs, Simulation, Snapshot};

@@ -4,7 +4,6 @@
 //! ([`file`]) and the embedded default platform ([`default_platform`]) both produce it;
 //! degrees exist only in the file format and are converted there, once.
 
-
 use crate::error::{
     require_finite, require_finite_matrix, require_non_negative, require_positive, Error, Result,
 };
@@ -176,7 +175,11 @@ impl Config {
         }
         self.validate_platform()?;
         if self.model.strips_per_column == 0 {
-            return Err(Error::invalid("model.strips_per_column", 0, "must be at least 1"));
+            return Err(Error::invalid(
+                "model.strips_per_column",
+                0,
+                "must be at least 1",
+            ));
         }
         match self.model.drag {
             DragModel::Off => {}

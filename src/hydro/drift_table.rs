@@ -50,7 +50,11 @@ impl DriftTable {
     /// is given on every row or on none.
     pub fn from_rows(rows: &[DriftRow]) -> Result<Self> {
         if rows.is_empty() {
-            return Err(Error::invalid("drift.rows", "[]", "the drift table is empty"));
+            return Err(Error::invalid(
+                "drift.rows",
+                "[]",
+                "the drift table is empty",
+            ));
         }
         let has_damping = rows[0].damping.is_some();
         for (r, row) in rows.iter().enumerate() {
@@ -70,19 +74,32 @@ impl DriftTable {
             .map(|r| r.omega)
             .collect();
         for (ih, &h) in headings.iter().enumerate() {
-            let these: Vec<(usize, &DriftRow)> =
-                rows.iter().enumerate().filter(|(_, r)| same(r.heading, h)).collect();
+            let these: Vec<(usize, &DriftRow)> = rows
+                .iter()
+                .enumerate()
+                .filter(|(_, r)| same(r.heading, h))
+                .collect();
             check_frequencies(h, &these, &omegas)?;
             if ih > 0 && h - headings[ih - 1] <= GRID_TOLERANCE {
-                return Err(Error::invalid("drift.heading", h.to_degrees(), "duplicated heading"));
+                return Err(Error::invalid(
+                    "drift.heading",
+                    h.to_degrees(),
+                    "duplicated heading",
+                ));
             }
         }
         let nw = omegas.len();
         let mut drift = vec![[0.0; 3]; headings.len() * nw];
         let mut damping = has_damping.then(|| vec![[[0.0; 3]; 3]; headings.len() * nw]);
         for row in rows {
-            let ih = headings.iter().position(|&h| same(h, row.heading)).expect("heading listed");
-            let iw = omegas.iter().position(|&w| same(w, row.omega)).expect("frequency checked");
+            let ih = headings
+                .iter()
+                .position(|&h| same(h, row.heading))
+                .expect("heading listed");
+            let iw = omegas
+                .iter()
+                .position(|&w| same(w, row.omega))
+                .expect("frequency checked");
             drift[ih * nw + iw] = row.drift;
             if let (Some(table), Some(b)) = (damping.as_mut(), row.damping) {
                 table[ih * nw + iw] = b;
@@ -91,7 +108,11 @@ impl DriftTable {
         if headings.last().expect("non-empty") - headings[0] > 2.0 * PI + GRID_TOLERANCE {
             return Err(Error::invalid(
                 "drift.heading",
-                format!("{} .. {} deg", headings[0].to_degrees(), headings.last().unwrap().to_degrees()),
+                format!(
+                    "{} .. {} deg",
+                    headings[0].to_degrees(),
+                    headings.last().unwrap().to_degrees()
+                ),
                 "headings span more than 360 deg",
             ));
         }
@@ -125,7 +146,11 @@ impl DriftTable {
 
     /// The same grid with damping coefficients replaced (heading-major like the drift).
     pub fn with_damping(mut self, damping: Vec<[[f64; 3]; 3]>) -> Self {
-        assert_eq!(damping.len(), self.drift.len(), "one damping matrix per node");
+        assert_eq!(
+            damping.len(),
+            self.drift.len(),
+            "one damping matrix per node"
+        );
         self.damping = Some(damping);
         self
     }
@@ -138,7 +163,11 @@ impl DriftTable {
             return false;
         }
         let span = self.headings[n - 1] - self.headings[0];
-        let widest = self.headings.windows(2).map(|w| w[1] - w[0]).fold(0.0, f64::max);
+        let widest = self
+            .headings
+            .windows(2)
+            .map(|w| w[1] - w[0])
+            .fold(0.0, f64::max);
         2.0 * PI - span <= widest * (1.0 + 1e-6)
     }
 
@@ -211,7 +240,11 @@ impl DriftTable {
             ));
         }
         if w.len() == 1 {
-            return Ok(Bracket { lo: 0, hi: 0, frac: 0.0 });
+            return Ok(Bracket {
+                lo: 0,
+                hi: 0,
+                frac: 0.0,
+            });
         }
         let omega = omega.clamp(lo, hi);
         let i = w.partition_point(|&v| v <= omega).clamp(1, w.len() - 1);
@@ -234,7 +267,11 @@ impl DriftTable {
         let last = h[h.len() - 1];
         if at <= last + GRID_TOLERANCE {
             if h.len() == 1 {
-                return Ok(Bracket { lo: 0, hi: 0, frac: 0.0 });
+                return Ok(Bracket {
+                    lo: 0,
+                    hi: 0,
+                    frac: 0.0,
+                });
             }
             let at = at.min(last);
             let i = h.partition_point(|&v| v <= at).clamp(1, h.len() - 1);
@@ -283,7 +320,11 @@ fn unflatten(v: &[f64; 9]) -> [[f64; 3]; 3] {
 fn validate_row(r: usize, row: &DriftRow, has_damping: bool) -> Result<()> {
     require_finite(&format!("drift.rows[{r}].omega"), row.omega)?;
     if row.omega <= 0.0 {
-        return Err(Error::invalid(format!("drift.rows[{r}].omega"), row.omega, "must be greater than zero"));
+        return Err(Error::invalid(
+            format!("drift.rows[{r}].omega"),
+            row.omega,
+            "must be greater than zero",
+        ));
     }
     require_finite(&format!("drift.rows[{r}].heading"), row.heading)?;
     for (i, v) in row.drift.iter().enumerate() {
@@ -311,11 +352,18 @@ fn check_frequencies(heading: f64, rows: &[(usize, &DriftRow)], reference: &[f64
     for pair in rows.windows(2) {
         let ((_, a), (r, b)) = (pair[0], pair[1]);
         if b.omega <= a.omega {
-            let what = if same(a.omega, b.omega) { "duplicated" } else { "not increasing" };
+            let what = if same(a.omega, b.omega) {
+                "duplicated"
+            } else {
+                "not increasing"
+            };
             return Err(Error::invalid(
                 format!("drift.rows[{r}].omega"),
                 b.omega,
-                format!("frequency {what} within heading {:.3} deg", heading.to_degrees()),
+                format!(
+                    "frequency {what} within heading {:.3} deg",
+                    heading.to_degrees()
+                ),
             ));
         }
     }

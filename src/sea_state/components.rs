@@ -126,7 +126,8 @@ impl WaveComponents {
         let mut amplitudes = Vec::with_capacity(directions.len() * grid.count);
         for dir in &directions {
             for j in 0..grid.count {
-                let scale = (sea.spectrum.density(grid.omega(j)) * dir.weight * grid.d_omega).sqrt();
+                let scale =
+                    (sea.spectrum.density(grid.omega(j)) * dir.weight * grid.d_omega).sqrt();
                 let (xi, xi_prime) = standard_normal_pair(&mut rng);
                 amplitudes.push(Complex64::new(scale * xi, scale * xi_prime));
             }

@@ -70,6 +70,7 @@ impl SeaState {
 
     /// The discrete directions and their weights (weights sum to 1).
     pub fn directions(&self) -> Vec<Direction> {
-        self.spreading.discretise(self.mean_direction, self.n_directions)
+        self.spreading
+            .discretise(self.mean_direction, self.n_directions)
     }
 }

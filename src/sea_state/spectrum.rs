@@ -8,7 +8,11 @@ pub enum Spectrum {
     /// JONSWAP in the DNV-RP-C205 (sec. 3.5.5) form. `gamma = None` takes DNV's default.
     /// Not renormalised: A_gamma = 1 - 0.287 ln(gamma) is DNV's fit, so m0 differs from
     /// Hs^2/16 by up to about 2 % for 1 <= gamma <= 7.
-    Jonswap { hs: f64, tp: f64, gamma: Option<f64> },
+    Jonswap {
+        hs: f64,
+        tp: f64,
+        gamma: Option<f64>,
+    },
     /// Pierson-Moskowitz: S = (5/16) Hs^2 wp^4 w^-5 exp(-(5/4)(w/wp)^-4).
     PiersonMoskowitz { hs: f64, tp: f64 },
     /// User table, linear interpolation, zero outside the table.
@@ -39,7 +43,9 @@ impl Spectrum {
     /// Spectral density at omega (rad/s), m^2 s/rad.
     pub fn density(&self, w: f64) -> f64 {
         match self {
-            Spectrum::PiersonMoskowitz { hs, tp } => pierson_moskowitz(*hs, 2.0 * std::f64::consts::PI / tp, w),
+            Spectrum::PiersonMoskowitz { hs, tp } => {
+                pierson_moskowitz(*hs, 2.0 * std::f64::consts::PI / tp, w)
+            }
             Spectrum::Jonswap { hs, tp, gamma } => {
                 let wp = 2.0 * std::f64::consts::PI / tp;
                 let gamma = gamma.unwrap_or_else(|| dnv_default_gamma(*hs, *tp));
@@ -55,12 +61,17 @@ impl Spectrum {
     /// Peak frequency wp, rad/s (for a table: the frequency of the largest entry).
     pub fn peak_frequency(&self) -> f64 {
         match self {
-            Spectrum::Jonswap { tp, .. } | Spectrum::PiersonMoskowitz { tp, .. } => 2.0 * std::f64::consts::PI / tp,
+            Spectrum::Jonswap { tp, .. } | Spectrum::PiersonMoskowitz { tp, .. } => {
+                2.0 * std::f64::consts::PI / tp
+            }
             Spectrum::Tabulated { omega, density } => {
                 let (i, _) = density
                     .iter()
                     .enumerate()
-                    .fold((0, f64::MIN), |best, (i, &s)| if s > best.1 { (i, s) } else { best });
+                    .fold(
+                        (0, f64::MIN),
+                        |best, (i, &s)| if s > best.1 { (i, s) } else { best },
+                    );
                 omega[i]
             }
         }
@@ -75,7 +86,11 @@ impl Spectrum {
                 if let Some(g) = gamma {
                     require_finite("sea.spectrum.gamma", *g)?;
                     if *g < 1.0 {
-                        return Err(Error::invalid("sea.spectrum.gamma", g, "must be at least 1"));
+                        return Err(Error::invalid(
+                            "sea.spectrum.gamma",
+                            g,
+                            "must be at least 1",
+                        ));
                     }
                 }
                 Ok(())
@@ -91,20 +106,31 @@ impl Spectrum {
 
 fn validate_table(omega: &[f64], density: &[f64]) -> Result<()> {
     if omega.len() < 2 {
-        return Err(Error::invalid("sea.spectrum.omega", omega.len(), "a table needs at least 2 rows"));
+        return Err(Error::invalid(
+            "sea.spectrum.omega",
+            omega.len(),
+            "a table needs at least 2 rows",
+        ));
     }
     if omega.len() != density.len() {
         return Err(Error::invalid(
             "sea.spectrum.density",
             density.len(),
-            format!("has a different length from sea.spectrum.omega ({})", omega.len()),
+            format!(
+                "has a different length from sea.spectrum.omega ({})",
+                omega.len()
+            ),
         ));
     }
     for (i, (&w, &s)) in omega.iter().zip(density).enumerate() {
         require_positive(&format!("sea.spectrum.omega[{i}]"), w)?;
         require_finite(&format!("sea.spectrum.density[{i}]"), s)?;
         if s < 0.0 {
-            return Err(Error::invalid(format!("sea.spectrum.density[{i}]"), s, "must not be negative"));
+            return Err(Error::invalid(
+                format!("sea.spectrum.density[{i}]"),
+                s,
+                "must not be negative",
+            ));
         }
         if i > 0 && w <= omega[i - 1] {
             return Err(Error::invalid(
@@ -115,7 +141,11 @@ fn validate_table(omega: &[f64], density: &[f64]) -> Result<()> {
         }
     }
     if density.iter().all(|&s| s == 0.0) {
-        return Err(Error::invalid("sea.spectrum.density", "all zero", "the spectrum holds no energy"));
+        return Err(Error::invalid(
+            "sea.spectrum.density",
+            "all zero",
+            "the spectrum holds no energy",
+        ));
     }
     Ok(())
 }

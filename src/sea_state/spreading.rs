@@ -5,7 +5,7 @@ use crate::error::{require_positive, Result};
 use std::f64::consts::PI;
 
 /// Number of Simpson panels used to integrate the spreading function over one cell.
-const SIMPSON_PANELS_PER_CELL: usize = 64;
+const SIMPSON_PANELS_PER_CELL: usize = 256;
 
 /// Directional spreading function D(beta - beta_0).
 #[derive(Debug, Clone, PartialEq)]
@@ -53,7 +53,10 @@ impl Spreading {
     /// weights sum to 1 (so the total variance is preserved exactly).
     pub fn discretise(&self, mean: f64, count: usize) -> Vec<Direction> {
         if matches!(self, Spreading::LongCrested) || count <= 1 {
-            return vec![Direction { heading: mean, weight: 1.0 }];
+            return vec![Direction {
+                heading: mean,
+                weight: 1.0,
+            }];
         }
         let width = PI / count as f64;
         let raw: Vec<f64> = (0..count)
@@ -98,7 +101,12 @@ mod tests {
         for d in &dirs {
             let rel = d.heading - 0.3;
             let exact = antiderivative(rel + width / 2.0) - antiderivative(rel - width / 2.0);
-            assert!((d.weight - exact).abs() < 1e-12, "{} vs {}", d.weight, exact);
+            assert!(
+                (d.weight - exact).abs() < 1e-12,
+                "{} vs {}",
+                d.weight,
+                exact
+            );
         }
         let total: f64 = dirs.iter().map(|d| d.weight).sum();
         assert!((total - 1.0).abs() < 1e-14);
@@ -119,7 +127,10 @@ mod tests {
     fn long_crested_is_one_direction() {
         assert_eq!(
             Spreading::LongCrested.discretise(0.5, 15),
-            vec![Direction { heading: 0.5, weight: 1.0 }]
+            vec![Direction {
+                heading: 0.5,
+                weight: 1.0
+            }]
         );
     }
 }

@@ -1,0 +1,145 @@
+//! Equations of motion in surge, sway and yaw (E&S 1; physics.md section 7):
+//!
+//!   S (M + A) S^T q'' + S B(t) (S^T q' - u_c) + C q = S (D(t) + f_drag + f_extra) + F_ext
+//!
+//! q = (X, Y, theta) inertial; S = S(theta) rotates body-frame vectors into the inertial
+//! frame; M + A the rigid and low-frequency added mass (body frame); B(t) the wave-drift
+//! damping acting on the body's velocity relative to the current u_c (E&S section 3);
+//! C the mooring stiffness on q; D(t) the slowly varying wave force (body frame);
+//! f_drag the Morison drag (body frame); f_extra = -B_lin v - B_quad v|v| the user's extra
+//! damping on the body-frame velocity v = S^T q'; F_ext an external force in the inertial
+//! frame. Second-order terms in the slow velocities are neglected, as in the paper. Since
+//! S is orthogonal, q'' = S (M + A)^{-1} S^T (right-hand side).
+
+use crate::config::{Config, DragModel};
+use crate::error::{Error, Result};
+use crate::forces::{drag_force, ForceRecords, SamplePoint};
+use nalgebra::{Matrix3, Vector3};
+
+/// Forces acting on the body at one instant, inertial frame (N, N, N m).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ForceBreakdown {
+    /// Slowly varying wave force S D(t).
+    pub wave: [f64; 3],
+    /// Wave-drift damping force -S B(t)(S^T q' - u_c).
+    pub damping: [f64; 3],
+    /// Morison drag S f_drag.
+    pub drag: [f64; 3],
+    /// Extra linear and quadratic damping S f_extra.
+    pub extra_damping: [f64; 3],
+    /// Mooring stiffness force -C q.
+    pub stiffness: [f64; 3],
+}
+
+/// The time-independent parts of the equations of motion.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SlowDriftModel {
+    inverse_mass: Matrix3<f64>,
+    stiffness: Matrix3<f64>,
+    linear_damping: Matrix3<f64>,
+    quadratic_damping: Matrix3<f64>,
+    drag: DragModel,
+    water_density: f64,
+    /// Current velocity, inertial frame (X, Y), m/s.
+    current: [f64; 2],
+}
+
+fn matrix(m: &[[f64; 3]; 3]) -> Matrix3<f64> {
+    Matrix3::from_fn(|i, j| m[i][j])
+}
+
+/// Body-to-inertial rotation of a (surge, sway, yaw) vector by theta.
+fn to_inertial(theta: f64, v: &Vector3<f64>) -> Vector3<f64> {
+    let (s, c) = theta.sin_cos();
+    Vector3::new(c * v[0] - s * v[1], s * v[0] + c * v[1], v[2])
+}
+
+/// Inertial-to-body rotation of a (surge, sway, yaw) vector by theta.
+fn to_body(theta: f64, v: &Vector3<f64>) -> Vector3<f64> {
+    to_inertial(-theta, v)
+}
+
+impl SlowDriftModel {
+    /// Builds the model; refuses a singular mass matrix M + A.
+    pub fn new(config: &Config) -> Result<Self> {
+        let p = &config.platform;
+        let rigid = Matrix3::from_diagonal(&Vector3::new(p.mass, p.mass, p.yaw_inertia));
+        let total = rigid + matrix(&p.added_mass);
+        let inverse_mass = total.try_inverse().ok_or_else(|| {
+            Error::invalid(
+                "platform.added_mass",
+                format!("{:?}", p.added_mass),
+                "M + A is singular",
+            )
+        })?;
+        let (s, c) = config.current.direction.sin_cos();
+        Ok(SlowDriftModel {
+            inverse_mass,
+            stiffness: matrix(&p.stiffness),
+            linear_damping: matrix(&p.linear_damping),
+            quadratic_damping: matrix(&p.quadratic_damping),
+            drag: config.model.drag,
+            water_density: config.environment.water_density,
+            current: [config.current.speed * c, config.current.speed * s],
+        })
+    }
+
+    /// The forces at a located instant for state (q, q') (inertial frame).
+    pub fn forces(
+        &self,
+        records: &ForceRecords,
+        at: &SamplePoint,
+        q: &[f64; 3],
+        qd: &[f64; 3],
+    ) -> ForceBreakdown {
+        let theta = q[2];
+        let velocity = to_body(theta, &Vector3::from(*qd));
+        let current = to_body(theta, &Vector3::new(self.current[0], self.current[1], 0.0));
+        let wave = Vector3::from_fn(|i, _| records.wave_force[i].at(at));
+        let damping = match &records.damping {
+            Some(b) => {
+                let relative = velocity - current;
+                -Matrix3::from_fn(|i, j| b[i][j].at(at)) * relative
+            }
+            None => Vector3::zeros(),
+        };
+        let drag = Vector3::from(drag_force(
+            &records.kinematics,
+            at,
+            self.drag,
+            self.water_density,
+            velocity.into(),
+            [current[0], current[1]],
+        ));
+        let quadratic = velocity.map(|v| v * v.abs());
+        let extra = -(self.linear_damping * velocity) - self.quadratic_damping * quadratic;
+        let stiffness = -(self.stiffness * Vector3::from(*q));
+        ForceBreakdown {
+            wave: to_inertial(theta, &wave).into(),
+            damping: to_inertial(theta, &damping).into(),
+            drag: to_inertial(theta, &drag).into(),
+            extra_damping: to_inertial(theta, &extra).into(),
+            stiffness: stiffness.into(),
+        }
+    }
+
+    /// The acceleration q'' for the total inertial force (forces plus F_ext).
+    pub fn acceleration(&self, theta: f64, total_force: &[f64; 3]) -> [f64; 3] {
+        let body = to_body(theta, &Vector3::from(*total_force));
+        to_inertial(theta, &(self.inverse_mass * body)).into()
+    }
+}
+
+impl ForceBreakdown {
+    /// Sum of all forces plus the external force, inertial frame.
+    pub fn total(&self, external: &[f64; 3]) -> [f64; 3] {
+        std::array::from_fn(|i| {
+            self.wave[i]
+                + self.damping[i]
+                + self.drag[i]
+                + self.extra_damping[i]
+                + self.stiffness[i]
+                + external[i]
+        })
+    }
+}

@@ -1,0 +1,117 @@
+//! Everything that depends only on time, computed once at initialisation for the body at
+//! its mean position and zero yaw (E&S section 2): the wave elevation, the slowly varying
+//! wave force D(t), the wave-drift damping B(t), and the columns' fast kinematics.
+
+mod kinematics;
+mod newman;
+mod record;
+mod synthesis;
+mod transfer;
+mod viscous;
+
+pub use kinematics::ColumnKinematics;
+pub use newman::NewmanBuilder;
+pub use record::{Record, RecordClock, SamplePoint};
+pub use synthesis::Synthesizer;
+pub use transfer::{transfers_on_grid, DirectionTransfer};
+pub use viscous::drag_force;
+
+use crate::config::{Column, NewmanForm};
+use crate::sea_state::WaveComponents;
+use rustfft::num_complex::Complex64;
+
+/// What to precompute besides the elevation and the wave force.
+pub struct RecordOptions<'a> {
+    pub newman: NewmanForm,
+    /// Columns (and strips per column) whose kinematics the drag needs; empty = no drag.
+    pub drag_columns: &'a [Column],
+    pub strips_per_column: usize,
+    pub gravity: f64,
+}
+
+/// The precomputed records on one clock.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ForceRecords {
+    pub clock: RecordClock,
+    /// Wave elevation at the body origin, m.
+    pub elevation: Record,
+    /// Slowly varying wave force D(t), body frame: surge, sway (N), yaw (N m).
+    pub wave_force: [Record; 3],
+    /// Wave-drift damping B_ij(t), rows force, columns velocity; `None` when off.
+    pub damping: Option<[[Record; 3]; 3]>,
+    /// Fast kinematics of the drag columns (empty without drag).
+    pub kinematics: Vec<ColumnKinematics>,
+}
+
+impl ForceRecords {
+    /// Builds every record from the wave components and the per-direction coefficients
+    /// (from [`transfers_on_grid`]). Cost: one FFT per direction for the elevation, one or
+    /// two per non-zero coefficient record and direction, one per strip and column.
+    pub fn build(
+        components: &WaveComponents,
+        transfers: &[DirectionTransfer],
+        options: &RecordOptions,
+    ) -> Self {
+        let grid = &components.grid;
+        let n = grid.len;
+        let mut synth = Synthesizer::new(grid);
+        let mut builder = NewmanBuilder::new(grid.count, n);
+        let mut eta_c = vec![Complex64::default(); n];
+        let mut elevation = vec![0.0; n];
+        let with_damping = transfers.iter().any(|t| t.damping.is_some());
+        let mut force: [Vec<f64>; 3] = std::array::from_fn(|_| vec![0.0; n]);
+        let mut damping: [[Vec<f64>; 3]; 3] = std::array::from_fn(|_| {
+            std::array::from_fn(|_| {
+                if with_damping {
+                    vec![0.0; n]
+                } else {
+                    Vec::new()
+                }
+            })
+        });
+        for (k, transfer) in transfers.iter().enumerate() {
+            let amplitudes = components.of_direction(k);
+            synth.complex_series(amplitudes, &mut eta_c);
+            for (e, c) in elevation.iter_mut().zip(&eta_c) {
+                *e += c.re;
+            }
+            for (out, t) in force.iter_mut().zip(&transfer.drift) {
+                builder.accumulate(&mut synth, options.newman, amplitudes, &eta_c, t, out);
+            }
+            if let Some(b) = &transfer.damping {
+                for (out_row, b_row) in damping.iter_mut().zip(b) {
+                    for (out, t) in out_row.iter_mut().zip(b_row) {
+                        builder.accumulate(&mut synth, options.newman, amplitudes, &eta_c, t, out);
+                    }
+                }
+            }
+        }
+        let kinematics = kinematics::column_kinematics(
+            components,
+            options.drag_columns,
+            options.strips_per_column,
+            options.gravity,
+            &mut synth,
+        );
+        ForceRecords {
+            clock: RecordClock {
+                start_time: grid.start_time,
+                dt: grid.dt,
+                len: n,
+            },
+            elevation: Record::new(elevation),
+            wave_force: force.map(record_or_zero),
+            damping: with_damping.then(|| damping.map(|row| row.map(record_or_zero))),
+            kinematics,
+        }
+    }
+}
+
+/// A record, or the empty zero record when every sample is exactly zero.
+fn record_or_zero(samples: Vec<f64>) -> Record {
+    if samples.iter().all(|&v| v == 0.0) {
+        Record::zero()
+    } else {
+        Record::new(samples)
+    }
+}

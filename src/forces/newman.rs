@@ -1,0 +1,86 @@
+//! Slowly varying records by Newman's approximation, evaluated as products of single sums
+//! with FFTs (E&S 3, 4; physics.md sections 4, 5).
+//!
+//! The full low-frequency double sum is
+//!   F(t) = Re sum_i sum_j a_i a_j* T_ij e^{i (omega_i - omega_j) t}.
+//! Newman's approximation builds T_ij from the diagonal T_i = T(omega_i, omega_i):
+//! - geometric (the paper's E&S 4): T_ij = sqrt(T_i T_j) where the signs agree and 0 where
+//!   they differ, so F = |P+|^2 - |P-|^2 with P+- = sum_{+-T_i > 0} a_i sqrt(|T_i|) e^{i omega_i t};
+//! - arithmetic: T_ij = (T_i + T_j)/2, so F = Re[Q eta_c*] with Q = sum a_i T_i e^{i omega_i t}
+//!   and eta_c = sum a_i e^{i omega_i t}.
+//! Both have the mean sum |a_i|^2 T_i -> 2 integral S T d omega. The same construction gives
+//! the time-varying damping B_ij(t) from b_ij(omega). Directions of a spread sea are summed
+//! without interaction between directions (each direction's double sum only).
+
+use super::synthesis::Synthesizer;
+use crate::config::NewmanForm;
+use rustfft::num_complex::Complex64;
+
+/// Scratch buffers for building slowly varying records, reused for every record.
+pub struct NewmanBuilder {
+    coefficients: Vec<Complex64>,
+    series: Vec<Complex64>,
+}
+
+impl NewmanBuilder {
+    /// Buffers for a grid of `count` components and records of `len` samples.
+    pub fn new(count: usize, len: usize) -> Self {
+        NewmanBuilder {
+            coefficients: vec![Complex64::default(); count],
+            series: vec![Complex64::default(); len],
+        }
+    }
+
+    /// Adds one direction's slowly varying record for the diagonal `transfer` (T_i at every
+    /// component) to `out`. `amplitudes` are the direction's a_i and `eta_c` its complex
+    /// elevation series sum a_i e^{i omega_i t_m} (used by the arithmetic form).
+    pub fn accumulate(
+        &mut self,
+        synth: &mut Synthesizer,
+        form: NewmanForm,
+        amplitudes: &[Complex64],
+        eta_c: &[Complex64],
+        transfer: &[f64],
+        out: &mut [f64],
+    ) {
+        match form {
+            NewmanForm::Geometric => {
+                for sign in [1.0, -1.0] {
+                    if self.fill_signed(amplitudes, transfer, sign) {
+                        synth.complex_series(&self.coefficients, &mut self.series);
+                        for (o, p) in out.iter_mut().zip(&self.series) {
+                            *o += sign * p.norm_sqr();
+                        }
+                    }
+                }
+            }
+            NewmanForm::Arithmetic => {
+                if transfer.iter().all(|&t| t == 0.0) {
+                    return;
+                }
+                for ((c, a), t) in self.coefficients.iter_mut().zip(amplitudes).zip(transfer) {
+                    *c = a * t;
+                }
+                synth.complex_series(&self.coefficients, &mut self.series);
+                for ((o, q), e) in out.iter_mut().zip(&self.series).zip(eta_c) {
+                    *o += (q * e.conj()).re;
+                }
+            }
+        }
+    }
+
+    /// Coefficients a_i sqrt(sign T_i) where sign T_i > 0, else 0; false if all are zero.
+    fn fill_signed(&mut self, amplitudes: &[Complex64], transfer: &[f64], sign: f64) -> bool {
+        let mut any = false;
+        for ((c, a), &t) in self.coefficients.iter_mut().zip(amplitudes).zip(transfer) {
+            let v = sign * t;
+            *c = if v > 0.0 {
+                any = true;
+                a * v.sqrt()
+            } else {
+                Complex64::default()
+            };
+        }
+        any
+    }
+}

@@ -1,0 +1,55 @@
+//! Drift and damping coefficients interpolated onto the simulation's frequency grid, one
+//! set per wave direction (physics.md sections 4, 5).
+
+use crate::error::Result;
+use crate::hydro::DriftTable;
+use crate::sea_state::{Direction, FrequencyGrid};
+
+/// Coefficients of one wave direction at the grid's components j = 0 .. count.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DirectionTransfer {
+    /// T_i(omega_j, beta) for i = surge, sway, yaw (body frame).
+    pub drift: [Vec<f64>; 3],
+    /// b_ij(omega_j, beta), when wave-drift damping is on.
+    pub damping: Option<[[Vec<f64>; 3]; 3]>,
+}
+
+/// Interpolates the table at every component frequency and direction. The records are
+/// computed for the body at zero yaw, so the table heading is the wave direction itself.
+pub fn transfers_on_grid(
+    table: &DriftTable,
+    grid: &FrequencyGrid,
+    directions: &[Direction],
+    with_damping: bool,
+) -> Result<Vec<DirectionTransfer>> {
+    let headings: Vec<f64> = directions.iter().map(|d| d.heading).collect();
+    table.check_covers((grid.omega(0), grid.omega(grid.count - 1)), &headings)?;
+    directions
+        .iter()
+        .map(|dir| {
+            let mut drift: [Vec<f64>; 3] = Default::default();
+            let mut damping: [[Vec<f64>; 3]; 3] = Default::default();
+            for j in 0..grid.count {
+                let w = grid.omega(j);
+                let t = table.drift(w, dir.heading)?;
+                for i in 0..3 {
+                    drift[i].push(t[i]);
+                }
+                if with_damping {
+                    let b = table
+                        .damping(w, dir.heading)?
+                        .expect("damping checked by the caller");
+                    for i in 0..3 {
+                        for k in 0..3 {
+                            damping[i][k].push(b[i][k]);
+                        }
+                    }
+                }
+            }
+            Ok(DirectionTransfer {
+                drift,
+                damping: with_damping.then_some(damping),
+            })
+        })
+        .collect()
+}

@@ -1,0 +1,313 @@
+//! [`Simulation`]: the one safe Rust API over the core, used by the CLI, the FMU, the tests
+//! and the benchmarks.
+//!
+//! `new` precomputes every record (E&S section 2: forces at the mean position); `step`
+//! advances one RK4 step h, `advance` any interval in equal substeps no longer than h.
+//! Time is always origin + count * step from an integer count, never an accumulated sum.
+
+use crate::config::{Config, DriftDamping};
+use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};
+use crate::error::{Error, Result};
+use crate::forces::{transfers_on_grid, ForceRecords, RecordOptions};
+use crate::hydro::aranha::aranha_damping;
+use crate::sea_state::{FrequencyGrid, WaveComponents};
+
+/// Relative tolerance for deciding that an interval is a whole number of steps.
+const WHOLE_STEPS_TOLERANCE: f64 = 1e-9;
+
+/// The complete dynamic state: what a snapshot holds and a restore brings back.
+/// (The records are a pure function of the configuration and are not part of it.)
+#[derive(Debug, Clone, PartialEq)]
+pub struct Snapshot {
+    /// Time = origin + count * step.
+    origin: f64,
+    count: u64,
+    step: f64,
+    /// (X, Y, theta), m, m, rad; inertial frame.
+    position: [f64; 3],
+    /// (X', Y', theta'), m/s, m/s, rad/s.
+    velocity: [f64; 3],
+    /// The external force of the last step, inertial frame (N, N, N m).
+    external_force: [f64; 3],
+}
+
+impl Snapshot {
+    /// Current time, s.
+    pub fn time(&self) -> f64 {
+        self.origin + self.count as f64 * self.step
+    }
+}
+
+/// Everything a user reads at an instant. Forces act on the body, inertial frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Outputs {
+    pub time: f64,
+    /// (X, Y, theta), m, m, rad.
+    pub position: [f64; 3],
+    /// (X', Y', theta'), m/s, m/s, rad/s.
+    pub velocity: [f64; 3],
+    /// Wave elevation at the origin of the mean position, m.
+    pub wave_elevation: f64,
+    /// Forces at this instant for the current state (see [`ForceBreakdown`]).
+    pub forces: ForceBreakdown,
+    /// The external force last applied.
+    pub external_force: [f64; 3],
+}
+
+/// One slow-drift simulation.
+#[derive(Debug, Clone)]
+pub struct Simulation {
+    config: Config,
+    model: SlowDriftModel,
+    records: ForceRecords,
+    state: Snapshot,
+}
+
+impl Simulation {
+    /// Validates the configuration and precomputes the records.
+    pub fn new(config: Config) -> Result<Self> {
+        config.validate()?;
+        let model = SlowDriftModel::new(&config)?;
+        let records = build_records(&config)?;
+        let state = initial_state(&config);
+        Ok(Simulation {
+            config,
+            model,
+            records,
+            state,
+        })
+    }
+
+    /// The configuration this simulation was built from.
+    pub fn config(&self) -> &Config {
+        &self.config
+    }
+
+    /// The precomputed records.
+    pub fn records(&self) -> &ForceRecords {
+        &self.records
+    }
+
+    /// Current time, s.
+    pub fn time(&self) -> f64 {
+        self.state.time()
+    }
+
+    /// Position (X, Y, theta).
+    pub fn position(&self) -> [f64; 3] {
+        self.state.position
+    }
+
+    /// Velocity (X', Y', theta').
+    pub fn velocity(&self) -> [f64; 3] {
+        self.state.velocity
+    }
+
+    /// One RK4 step of the configured h with the external force `external` (inertial frame,
+    /// held constant over the step).
+    pub fn step(&mut self, external: [f64; 3]) -> Result<()> {
+        check_external(&external)?;
+        let h = self.config.run.time_step;
+        if self.state.step != h {
+            self.state.origin = self.state.time();
+            self.state.count = 0;
+            self.state.step = h;
+        }
+        self.take_steps(1, external)
+    }
+
+    /// Advances by `interval` with the external force held constant: whole steps of h when
+    /// the interval is a whole number of them, else ceil(interval/h) equal substeps that end
+    /// exactly at the old time + interval.
+    pub fn advance(&mut self, interval: f64, external: [f64; 3]) -> Result<()> {
+        check_external(&external)?;
+        if !(interval.is_finite() && interval > 0.0) {
+            return Err(Error::invalid(
+                "interval",
+                interval,
+                "must be a finite positive time",
+            ));
+        }
+        let h = self.config.run.time_step;
+        let ratio = interval / h;
+        let whole = ratio.round();
+        if whole >= 1.0 && (ratio - whole).abs() <= WHOLE_STEPS_TOLERANCE * whole {
+            if self.state.step != h {
+                self.state.origin = self.state.time();
+                self.state.count = 0;
+                self.state.step = h;
+            }
+            return self.take_steps(whole as u64, external);
+        }
+        let start = self.state.time();
+        let substeps = ratio.ceil().max(1.0) as u64;
+        let saved = self.state.clone();
+        self.state.origin = start;
+        self.state.count = 0;
+        self.state.step = interval / substeps as f64;
+        if let Err(e) = self.take_steps(substeps, external) {
+            self.state = saved;
+            return Err(e);
+        }
+        // Land exactly on the requested time and return to the regular step.
+        self.state.origin = start + interval;
+        self.state.count = 0;
+        self.state.step = h;
+        Ok(())
+    }
+
+    fn take_steps(&mut self, count: u64, external: [f64; 3]) -> Result<()> {
+        let saved = self.state.clone();
+        for _ in 0..count {
+            if let Err(e) = self.rk4(external) {
+                self.state = saved;
+                return Err(e);
+            }
+        }
+        self.state.external_force = external;
+        Ok(())
+    }
+
+    fn rk4(&mut self, external: [f64; 3]) -> Result<()> {
+        let s = &self.state;
+        let t = s.time();
+        let y = [
+            s.position[0],
+            s.position[1],
+            s.position[2],
+            s.velocity[0],
+            s.velocity[1],
+            s.velocity[2],
+        ];
+        let (model, records) = (&self.model, &self.records);
+        let next = rk4_step(t, &y, s.step, |time, y| {
+            let at = records.clock.locate(time)?;
+            let q = [y[0], y[1], y[2]];
+            let qd = [y[3], y[4], y[5]];
+            let total = model.forces(records, &at, &q, &qd).total(&external);
+            let qdd = model.acceleration(q[2], &total);
+            Ok::<_, Error>([qd[0], qd[1], qd[2], qdd[0], qdd[1], qdd[2]])
+        })?;
+        if next.iter().any(|v| !v.is_finite()) {
+            return Err(Error::Diverged { time: t });
+        }
+        self.state.count += 1;
+        self.state.position = [next[0], next[1], next[2]];
+        self.state.velocity = [next[3], next[4], next[5]];
+        Ok(())
+    }
+
+    /// Outputs at the current time.
+    pub fn outputs(&self) -> Result<Outputs> {
+        let t = self.time();
+        let at = self.records.clock.locate(t)?;
+        let forces = self.model.forces(
+            &self.records,
+            &at,
+            &self.state.position,
+            &self.state.velocity,
+        );
+        Ok(Outputs {
+            time: t,
+            position: self.state.position,
+            velocity: self.state.velocity,
+            wave_elevation: self.records.elevation.at(&at),
+            forces,
+            external_force: self.state.external_force,
+        })
+    }
+
+    /// The complete dynamic state.
+    pub fn snapshot(&self) -> Snapshot {
+        self.state.clone()
+    }
+
+    /// Restores a state taken from a simulation of the same configuration.
+    pub fn restore(&mut self, snapshot: &Snapshot) -> Result<()> {
+        let values = snapshot
+            .position
+            .iter()
+            .chain(&snapshot.velocity)
+            .chain(&snapshot.external_force);
+        if values.clone().any(|v| !v.is_finite()) || !snapshot.time().is_finite() {
+            return Err(Error::invalid(
+                "snapshot",
+                format!("{snapshot:?}"),
+                "holds non-finite values",
+            ));
+        }
+        self.records.clock.locate(snapshot.time())?;
+        self.state = snapshot.clone();
+        Ok(())
+    }
+
+    /// Back to the initial condition at the start time.
+    pub fn reset(&mut self) {
+        self.state = initial_state(&self.config);
+    }
+}
+
+fn check_external(external: &[f64; 3]) -> Result<()> {
+    for (i, &v) in external.iter().enumerate() {
+        if !v.is_finite() {
+            return Err(Error::NonFiniteInput {
+                field: format!("external_force[{i}]"),
+                value: v,
+            });
+        }
+    }
+    Ok(())
+}
+
+fn initial_state(config: &Config) -> Snapshot {
+    Snapshot {
+        origin: config.run.start_time,
+        count: 0,
+        step: config.run.time_step,
+        position: config.initial.position,
+        velocity: config.initial.velocity,
+        external_force: [0.0; 3],
+    }
+}
+
+/// Records sampled at h/2, so that every RK4 stage of a regular step is a sample.
+fn build_records(config: &Config) -> Result<ForceRecords> {
+    let sea = &config.sea;
+    let grid = FrequencyGrid::new(
+        config.run.start_time,
+        config.run.duration,
+        0.5 * config.run.time_step,
+        sea.band(),
+    )?;
+    let components = WaveComponents::generate(sea, grid);
+    let damping_table = match config.model.drift_damping {
+        DriftDamping::Off => None,
+        DriftDamping::Table => Some(config.drift.clone()),
+        DriftDamping::Aranha => Some(aranha_damping(
+            &config.drift,
+            config.environment.gravity,
+            &config.platform.columns,
+        )?),
+    };
+    let table = damping_table.as_ref().unwrap_or(&config.drift);
+    let transfers = transfers_on_grid(
+        table,
+        &components.grid,
+        &components.directions,
+        damping_table.is_some(),
+    )?;
+    let drag_columns = match config.model.drag {
+        crate::config::DragModel::Off => &[][..],
+        _ => &config.platform.columns[..],
+    };
+    Ok(ForceRecords::build(
+        &components,
+        &transfers,
+        &RecordOptions {
+            newman: config.model.newman,
+            drag_columns,
+            strips_per_column: config.model.strips_per_column,
+            gravity: config.environment.gravity,
+        },
+    ))
+}
