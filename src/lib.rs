@@ -21,6 +21,7 @@ pub mod forces;
 pub mod hydro;
 pub mod sea_state;
 pub mod simulation;
+pub mod stats;
 
 pub use config::Config;
 pub use error::{Error, Result};

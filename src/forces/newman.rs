@@ -8,6 +8,7 @@
 //!   they differ, so F = |P+|^2 - |P-|^2 with P+- = sum_{+-T_i > 0} a_i sqrt(|T_i|) e^{i omega_i t};
 //! - arithmetic: T_ij = (T_i + T_j)/2, so F = Re[Q eta_c*] with Q = sum a_i T_i e^{i omega_i t}
 //!   and eta_c = sum a_i e^{i omega_i t}.
+//!
 //! Both have the mean sum |a_i|^2 T_i -> 2 integral S T d omega. The same construction gives
 //! the time-varying damping B_ij(t) from b_ij(omega). Directions of a spread sea are summed
 //! without interaction between directions (each direction's double sum only).

@@ -6,6 +6,7 @@
 //! wave-particle velocity, the force on the body is
 //! - separate model (E&S 8): dF = 1/2 rho D dz (C_DS (-U)|U| + C_DL u|u|)
 //! - combined model (E&S 9): dF = 1/2 rho D dz C_D w|w|, w = u - U
+//!
 //! with |.| the horizontal vector norm. Everything is in the body frame.
 
 use super::kinematics::ColumnKinematics;
