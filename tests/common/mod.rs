@@ -1,0 +1,99 @@
+//! Builders shared by the integration tests: a simple platform, sea and drift table whose
+//! expected answers the tests derive independently.
+#![allow(dead_code)] // each test binary uses a different subset
+
+use slowdrift::config::{
+    Current, DragModel, DriftDamping, Environment, InitialCondition, ModelOptions, NewmanForm,
+    Platform, Run,
+};
+use slowdrift::hydro::{DriftRow, DriftTable};
+use slowdrift::sea_state::{SeaState, Spectrum, Spreading};
+use slowdrift::Config;
+use std::f64::consts::PI;
+
+pub const GRAVITY: f64 = 9.80665;
+
+/// A drift table sampled from `drift(omega, beta)` on a regular grid of 0.02 .. 3 rad/s
+/// and headings every 10 degrees around the circle.
+pub fn drift_table(drift: impl Fn(f64, f64) -> [f64; 3]) -> DriftTable {
+    let mut rows = Vec::new();
+    for ih in 0..36 {
+        let beta = (ih as f64 * 10.0).to_radians();
+        for iw in 1..=150 {
+            let omega = 0.02 * iw as f64;
+            rows.push(DriftRow { omega, heading: beta, drift: drift(omega, beta), damping: None });
+        }
+    }
+    DriftTable::from_rows(&rows).unwrap()
+}
+
+/// A smooth positive surge drift of a plausible size (N/m^2), isotropic in heading.
+pub fn smooth_drift(omega: f64, beta: f64) -> [f64; 3] {
+    let f = 2.0e4 * (1.0 + omega * omega);
+    [f * beta.cos(), f * beta.sin(), 0.0]
+}
+
+pub fn jonswap(hs: f64, tp: f64) -> Spectrum {
+    Spectrum::Jonswap { hs, tp, gamma: Some(3.3) }
+}
+
+pub fn long_crested(spectrum: Spectrum, seed: u64) -> SeaState {
+    SeaState {
+        spectrum,
+        spreading: Spreading::LongCrested,
+        mean_direction: 0.0,
+        n_directions: 1,
+        seed,
+        band: None,
+    }
+}
+
+/// A platform with uncoupled surge, sway, yaw oscillators: natural periods `periods` (s)
+/// and linear damping ratios `zeta`, no added mass.
+pub fn oscillator_platform(mass: f64, yaw_inertia: f64, periods: [f64; 3], zeta: f64) -> Platform {
+    let inertia = [mass, mass, yaw_inertia];
+    let mut stiffness = [[0.0; 3]; 3];
+    let mut damping = [[0.0; 3]; 3];
+    for i in 0..3 {
+        let wn = 2.0 * PI / periods[i];
+        stiffness[i][i] = inertia[i] * wn * wn;
+        damping[i][i] = 2.0 * zeta * inertia[i] * wn;
+    }
+    Platform {
+        mass,
+        yaw_inertia,
+        added_mass: [[0.0; 3]; 3],
+        stiffness,
+        linear_damping: damping,
+        quadratic_damping: [[0.0; 3]; 3],
+        columns: Vec::new(),
+    }
+}
+
+/// Head seas on an oscillator platform, Newman geometric, no drift damping, no drag.
+pub fn base_config(duration: f64, time_step: f64, seed: u64) -> Config {
+    Config {
+        environment: Environment::default(),
+        sea: long_crested(jonswap(6.0, 10.0), seed),
+        current: Current::default(),
+        run: Run { duration, time_step, start_time: 0.0 },
+        platform: oscillator_platform(1.0e7, 1.0e10, [60.0, 60.0, 40.0], 0.2),
+        drift: drift_table(smooth_drift),
+        model: ModelOptions {
+            newman: NewmanForm::Geometric,
+            drift_damping: DriftDamping::Off,
+            drag: DragModel::Off,
+            strips_per_column: 20,
+        },
+        initial: InitialCondition::default(),
+    }
+}
+
+/// Composite Simpson integral of f over [a, b] with `panels` (even) panels.
+pub fn simpson(f: impl Fn(f64) -> f64, a: f64, b: f64, panels: usize) -> f64 {
+    let h = (b - a) / panels as f64;
+    let inner: f64 = (1..panels)
+        .map(|i| if i % 2 == 1 { 4.0 } else { 2.0 } * f(a + i as f64 * h))
+        .sum();
+    (f(a) + inner + f(b)) * h / 3.0
+}
