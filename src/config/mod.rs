@@ -4,6 +4,8 @@
 //! ([`file`]) and the embedded default platform ([`default_platform`]) both produce it;
 //! degrees exist only in the file format and are converted there, once.
 
+pub mod file;
+
 use crate::error::{
     require_finite, require_finite_matrix, require_non_negative, require_positive, Error, Result,
 };

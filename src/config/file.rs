@@ -1,0 +1,1313 @@
+//! The TOML configuration file: reads it into a validated [`Config`].
+//!
+//! Units are SI everywhere except angles: every angle in the file is in degrees and its key
+//! ends in `_deg` (rates in deg/s end in `_rate_deg`). This module converts them to radians,
+//! once; the core never sees a degree. Unknown keys are errors, so a typo never silently
+//! falls back to a default.
+//!
+//! # Format
+//!
+//! ```toml
+//! [environment]              # optional section
+//! gravity = 9.80665          # m/s^2
+//! water_density = 1025.0     # kg/m^3
+//!
+//! [sea]
+//! spectrum = "jonswap"       # "jonswap" | "pierson-moskowitz" | "table"
+//! hs = 4.0                   # m, jonswap and pierson-moskowitz only
+//! tp = 10.0                  # s, jonswap and pierson-moskowitz only
+//! gamma = 3.3                # jonswap only, optional: DNV-RP-C205 default from hs, tp
+//! # omega = [...]            # rad/s, strictly increasing, "table" only
+//! # density = [...]          # m^2 s/rad, same length, "table" only
+//! spreading = "long-crested" # default | "cos-n" | "cos-2s"
+//! # spreading_exponent = 2.0 # N of cos^N, or s of cos^2s; required for those, else refused
+//! direction_deg = 0.0        # mean direction of propagation, deg from +X, counter-clockwise
+//! # n_directions = 15        # short-crested only (default 15); long-crested: 1 or absent
+//! seed = 1                   # seed of the random amplitudes, 0 ..= 2^63 - 1
+//! # band = [0.3, 2.0]        # simulated band [omega_min, omega_max], rad/s; default from
+//!                            # the spectrum (0.5 .. 4 wp, or the table's range)
+//!
+//! [current]                  # optional section
+//! speed = 0.0                # m/s
+//! direction_deg = 0.0        # direction the current flows towards, deg from +X
+//!
+//! [run]
+//! duration = 10800.0         # s, required
+//! time_step = 1.0            # s (RK4 step)
+//! start_time = 0.0           # s
+//!
+//! [platform]                 # matrices are 3x3, rows and columns (surge, sway, yaw)
+//! mass = 1.2e7               # kg, required
+//! yaw_inertia = 7.5e9        # kg m^2, required
+//! stiffness = [[...], [...], [...]]  # N/m, N, N m/rad on (X, Y, theta), required
+//! added_mass = [[...], ...]          # kg, kg m, kg m^2; default zeros
+//! linear_damping = [[...], ...]      # N s/m, ...; default zeros
+//! quadratic_damping = [[...], ...]   # force_i = sum_j Bq_ij v_j |v_j|; default zeros
+//! [[platform.columns]]       # zero or more, body frame, m
+//! x = 25.0
+//! y = 25.0
+//! diameter = 10.0
+//! draft = 20.0
+//!
+//! [model]                    # optional section
+//! newman = "geometric"       # default | "arithmetic"
+//! drift_damping = "aranha"   # default | "table" (needs the b_ij columns) | "off"
+//! drag = "off"               # default | "separate" (cd_slow, cd_fast) | "combined" (cd)
+//! strips_per_column = 20
+//!
+//! [initial]                  # optional section, inertial frame, all zero by default
+//! position = [0.0, 0.0]      # X, Y in m
+//! heading_deg = 0.0          # yaw angle theta, deg
+//! velocity = [0.0, 0.0]      # dX/dt, dY/dt in m/s
+//! yaw_rate_deg = 0.0         # d theta/dt, deg/s
+//!
+//! [drift]                    # mean drift table, per unit wave amplitude squared
+//! source = "table"           # "table" (inline) | "csv"
+//! columns = ["omega", "beta_deg", "surge", "sway", "yaw"]
+//! rows = [[0.3, 0.0, 2.0e3, 0.0, 0.0], ...]
+//! # source = "csv"
+//! # file = "drift.csv"       # relative to the configuration file's directory
+//! ```
+//!
+//! Drift columns, in any order: `omega` (rad/s), `beta_deg` (wave heading relative to the
+//! body x axis, deg), `surge`, `sway` (N/m^2), `yaw` (N m/m^2), all required; optionally
+//! all nine of `b11` .. `b33` (wave-drift damping b_ij: row i = force surge/sway/yaw,
+//! column j = velocity surge/sway/yaw rate) or none of them. Every heading must list the
+//! same, strictly increasing frequencies. A CSV file's first line is the comma-separated
+//! header of column names, then one numeric row per line; blank lines and lines starting
+//! with `#` are skipped.
+
+use super::{
+    Column, Config, Current, DragModel, DriftDamping, Environment, InitialCondition, ModelOptions,
+    NewmanForm, Platform, Run,
+};
+use crate::error::{Error, Result};
+use crate::hydro::{DriftRow, DriftTable};
+use crate::sea_state::{SeaState, Spectrum, Spreading};
+use serde::Deserialize;
+use std::ops::Range;
+use std::path::{Path, PathBuf};
+use toml::Spanned;
+
+/// Default RK4 time step, s.
+pub const DEFAULT_TIME_STEP: f64 = 1.0;
+/// Default number of discrete directions of a short-crested sea.
+pub const DEFAULT_N_DIRECTIONS: usize = 15;
+/// Number of directions of a long-crested sea (the only value accepted for it).
+pub const LONG_CRESTED_DIRECTIONS: usize = 1;
+/// Default seed of the random wave amplitudes.
+pub const DEFAULT_SEED: u64 = 1;
+
+/// Drift column: wave frequency, rad/s.
+const COLUMN_OMEGA: &str = "omega";
+/// Drift column: wave heading relative to the body x axis, deg.
+const COLUMN_BETA: &str = "beta_deg";
+/// Drift columns: mean drift surge, sway (N/m^2) and yaw (N m/m^2).
+const COLUMNS_DRIFT: [&str; 3] = ["surge", "sway", "yaw"];
+/// Drift columns: wave-drift damping b_ij, row i = force, column j = velocity.
+const COLUMNS_DAMPING: [[&str; 3]; 3] = [
+    ["b11", "b12", "b13"],
+    ["b21", "b22", "b23"],
+    ["b31", "b32", "b33"],
+];
+
+/// First character of a comment line in a CSV drift file.
+const CSV_COMMENT: char = '#';
+/// Field separator of a CSV drift file.
+const CSV_SEPARATOR: char = ',';
+
+/// Reads and validates the configuration file at `path`. A CSV drift file it names is
+/// looked up relative to the directory of `path`.
+pub fn load(path: &Path) -> Result<Config> {
+    let text = std::fs::read_to_string(path).map_err(|e| Error::Io {
+        path: path.display().to_string(),
+        message: e.to_string(),
+    })?;
+    let base_dir = path.parent().unwrap_or_else(|| Path::new(""));
+    parse(&text, &path.display().to_string(), base_dir)
+}
+
+/// Parses and validates configuration text. `origin` names the text in error messages
+/// (normally the file name); a CSV drift file is looked up relative to `base_dir`.
+pub fn parse(text: &str, origin: &str, base_dir: &Path) -> Result<Config> {
+    let file: ConfigFile = toml::from_str(text).map_err(|e| Error::Parse {
+        path: origin.to_string(),
+        line: e.span().map(|span| line_of(text, span.start)),
+        message: e.message().to_string(),
+    })?;
+    let source = Source { text, origin };
+    let config = file.into_config(&source, base_dir)?;
+    config.validate()?;
+    Ok(config)
+}
+
+/// The configuration text and its name, to turn spans into `file:line` errors.
+struct Source<'a> {
+    text: &'a str,
+    origin: &'a str,
+}
+
+impl Source<'_> {
+    /// A parse error at the line where `span` starts.
+    fn error_at(&self, span: Range<usize>, message: String) -> Error {
+        Error::Parse {
+            path: self.origin.to_string(),
+            line: Some(line_of(self.text, span.start)),
+            message,
+        }
+    }
+}
+
+/// 1-based line number of byte `offset` in `text`.
+fn line_of(text: &str, offset: usize) -> usize {
+    let end = offset.min(text.len());
+    text.as_bytes()[..end]
+        .iter()
+        .filter(|&&b| b == b'\n')
+        .count()
+        + 1
+}
+
+/// The value of a key that the section's choice requires.
+fn required<T>(value: Option<T>, key: &str, because: &str) -> std::result::Result<T, String> {
+    value.ok_or_else(|| format!("{key} is required when {because}"))
+}
+
+/// Refuses a key that the section's choice ignores, so that it is not silently dropped.
+fn refused<T>(value: &Option<T>, key: &str, because: &str) -> std::result::Result<(), String> {
+    match value {
+        Some(_) => Err(format!("{key} does not apply when {because}")),
+        None => Ok(()),
+    }
+}
+
+/// The whole file.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ConfigFile {
+    #[serde(default)]
+    environment: EnvironmentFile,
+    sea: Spanned<SeaFile>,
+    #[serde(default)]
+    current: CurrentFile,
+    run: RunFile,
+    platform: PlatformFile,
+    #[serde(default)]
+    model: Option<Spanned<ModelFile>>,
+    #[serde(default)]
+    initial: InitialFile,
+    drift: Spanned<DriftFile>,
+}
+
+impl ConfigFile {
+    fn into_config(self, source: &Source, base_dir: &Path) -> Result<Config> {
+        let sea_span = self.sea.span();
+        let sea = self
+            .sea
+            .into_inner()
+            .into_core()
+            .map_err(|m| source.error_at(sea_span, format!("[sea] {m}")))?;
+        let model = match self.model {
+            Some(model) => {
+                let span = model.span();
+                model
+                    .into_inner()
+                    .into_core()
+                    .map_err(|m| source.error_at(span, format!("[model] {m}")))?
+            }
+            None => ModelOptions::default(),
+        };
+        let drift_span = self.drift.span();
+        let drift = self
+            .drift
+            .into_inner()
+            .into_table(source, drift_span, base_dir)?;
+        Ok(Config {
+            environment: self.environment.into_core(),
+            sea,
+            current: self.current.into_core(),
+            run: self.run.into_core(),
+            platform: self.platform.into_core(),
+            drift,
+            model,
+            initial: self.initial.into_core(),
+        })
+    }
+}
+
+/// `[environment]`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields, default)]
+struct EnvironmentFile {
+    /// m/s^2.
+    gravity: f64,
+    /// kg/m^3.
+    water_density: f64,
+}
+
+impl Default for EnvironmentFile {
+    fn default() -> Self {
+        let core = Environment::default();
+        EnvironmentFile {
+            gravity: core.gravity,
+            water_density: core.water_density,
+        }
+    }
+}
+
+impl EnvironmentFile {
+    fn into_core(self) -> Environment {
+        Environment {
+            gravity: self.gravity,
+            water_density: self.water_density,
+        }
+    }
+}
+
+/// `sea.spectrum`.
+#[derive(Deserialize, Clone, Copy)]
+#[serde(rename_all = "kebab-case")]
+enum SpectrumKind {
+    Jonswap,
+    PiersonMoskowitz,
+    Table,
+}
+
+/// `sea.spreading`.
+#[derive(Deserialize, Clone, Copy, Default)]
+enum SpreadingKind {
+    #[default]
+    #[serde(rename = "long-crested")]
+    LongCrested,
+    #[serde(rename = "cos-n")]
+    CosN,
+    #[serde(rename = "cos-2s")]
+    Cos2s,
+}
+
+/// `[sea]`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SeaFile {
+    spectrum: SpectrumKind,
+    /// Significant wave height, m.
+    hs: Option<f64>,
+    /// Peak period, s.
+    tp: Option<f64>,
+    /// JONSWAP peak enhancement factor.
+    gamma: Option<f64>,
+    /// Tabulated spectrum: frequencies, rad/s.
+    omega: Option<Vec<f64>>,
+    /// Tabulated spectrum: densities, m^2 s/rad.
+    density: Option<Vec<f64>>,
+    #[serde(default)]
+    spreading: SpreadingKind,
+    /// N of cos^N or s of cos^2s.
+    spreading_exponent: Option<f64>,
+    /// Mean direction of propagation, deg.
+    #[serde(default)]
+    direction_deg: f64,
+    n_directions: Option<usize>,
+    #[serde(default = "default_seed")]
+    seed: u64,
+    /// [omega_min, omega_max], rad/s.
+    band: Option<[f64; 2]>,
+}
+
+fn default_seed() -> u64 {
+    DEFAULT_SEED
+}
+
+impl SeaFile {
+    fn into_core(self) -> std::result::Result<SeaState, String> {
+        let spectrum = self.spectrum()?;
+        let (spreading, n_directions) = self.spreading()?;
+        Ok(SeaState {
+            spectrum,
+            spreading,
+            mean_direction: self.direction_deg.to_radians(),
+            n_directions,
+            seed: self.seed,
+            band: self.band.map(|[lo, hi]| (lo, hi)),
+        })
+    }
+
+    fn spectrum(&self) -> std::result::Result<Spectrum, String> {
+        match self.spectrum {
+            SpectrumKind::Jonswap => {
+                let because = "spectrum = \"jonswap\"";
+                refused(&self.omega, "omega", because)?;
+                refused(&self.density, "density", because)?;
+                Ok(Spectrum::Jonswap {
+                    hs: required(self.hs, "hs", because)?,
+                    tp: required(self.tp, "tp", because)?,
+                    gamma: self.gamma,
+                })
+            }
+            SpectrumKind::PiersonMoskowitz => {
+                let because = "spectrum = \"pierson-moskowitz\"";
+                refused(&self.gamma, "gamma", because)?;
+                refused(&self.omega, "omega", because)?;
+                refused(&self.density, "density", because)?;
+                Ok(Spectrum::PiersonMoskowitz {
+                    hs: required(self.hs, "hs", because)?,
+                    tp: required(self.tp, "tp", because)?,
+                })
+            }
+            SpectrumKind::Table => {
+                let because = "spectrum = \"table\"";
+                refused(&self.hs, "hs", because)?;
+                refused(&self.tp, "tp", because)?;
+                refused(&self.gamma, "gamma", because)?;
+                Ok(Spectrum::Tabulated {
+                    omega: required(self.omega.clone(), "omega", because)?,
+                    density: required(self.density.clone(), "density", because)?,
+                })
+            }
+        }
+    }
+
+    fn spreading(&self) -> std::result::Result<(Spreading, usize), String> {
+        match self.spreading {
+            SpreadingKind::LongCrested => {
+                let because = "spreading = \"long-crested\"";
+                refused(&self.spreading_exponent, "spreading_exponent", because)?;
+                match self.n_directions {
+                    None | Some(LONG_CRESTED_DIRECTIONS) => {
+                        Ok((Spreading::LongCrested, LONG_CRESTED_DIRECTIONS))
+                    }
+                    Some(n) => Err(format!(
+                        "n_directions = {n} does not apply when {because} (one direction)"
+                    )),
+                }
+            }
+            SpreadingKind::CosN => {
+                let n = required(
+                    self.spreading_exponent,
+                    "spreading_exponent",
+                    "spreading = \"cos-n\"",
+                )?;
+                Ok((
+                    Spreading::CosN { n },
+                    self.n_directions.unwrap_or(DEFAULT_N_DIRECTIONS),
+                ))
+            }
+            SpreadingKind::Cos2s => {
+                let s = required(
+                    self.spreading_exponent,
+                    "spreading_exponent",
+                    "spreading = \"cos-2s\"",
+                )?;
+                Ok((
+                    Spreading::Cos2s { s },
+                    self.n_directions.unwrap_or(DEFAULT_N_DIRECTIONS),
+                ))
+            }
+        }
+    }
+}
+
+/// `[current]`.
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+struct CurrentFile {
+    /// m/s.
+    speed: f64,
+    /// Direction the current flows towards, deg.
+    direction_deg: f64,
+}
+
+impl CurrentFile {
+    fn into_core(self) -> Current {
+        Current {
+            speed: self.speed,
+            direction: self.direction_deg.to_radians(),
+        }
+    }
+}
+
+/// `[run]`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RunFile {
+    /// s.
+    duration: f64,
+    /// s.
+    #[serde(default = "default_time_step")]
+    time_step: f64,
+    /// s.
+    #[serde(default)]
+    start_time: f64,
+}
+
+fn default_time_step() -> f64 {
+    DEFAULT_TIME_STEP
+}
+
+impl RunFile {
+    fn into_core(self) -> Run {
+        Run {
+            duration: self.duration,
+            time_step: self.time_step,
+            start_time: self.start_time,
+        }
+    }
+}
+
+/// `[platform]`; every matrix is indexed (surge, sway, yaw) like [`Platform`].
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct PlatformFile {
+    mass: f64,
+    yaw_inertia: f64,
+    #[serde(default)]
+    added_mass: [[f64; 3]; 3],
+    stiffness: [[f64; 3]; 3],
+    #[serde(default)]
+    linear_damping: [[f64; 3]; 3],
+    #[serde(default)]
+    quadratic_damping: [[f64; 3]; 3],
+    #[serde(default)]
+    columns: Vec<ColumnFile>,
+}
+
+/// `[[platform.columns]]`, body frame, m.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ColumnFile {
+    x: f64,
+    y: f64,
+    diameter: f64,
+    draft: f64,
+}
+
+impl PlatformFile {
+    fn into_core(self) -> Platform {
+        Platform {
+            mass: self.mass,
+            yaw_inertia: self.yaw_inertia,
+            added_mass: self.added_mass,
+            stiffness: self.stiffness,
+            linear_damping: self.linear_damping,
+            quadratic_damping: self.quadratic_damping,
+            columns: self
+                .columns
+                .into_iter()
+                .map(|c| Column {
+                    x: c.x,
+                    y: c.y,
+                    diameter: c.diameter,
+                    draft: c.draft,
+                })
+                .collect(),
+        }
+    }
+}
+
+/// `model.newman`.
+#[derive(Deserialize, Clone, Copy)]
+#[serde(rename_all = "kebab-case")]
+enum NewmanFile {
+    Geometric,
+    Arithmetic,
+}
+
+/// `model.drift_damping`.
+#[derive(Deserialize, Clone, Copy)]
+#[serde(rename_all = "kebab-case")]
+enum DriftDampingFile {
+    Aranha,
+    Table,
+    Off,
+}
+
+/// `model.drag`.
+#[derive(Deserialize, Clone, Copy)]
+#[serde(rename_all = "kebab-case")]
+enum DragKind {
+    Off,
+    Separate,
+    Combined,
+}
+
+/// `[model]`; absent keys take [`ModelOptions::default`].
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ModelFile {
+    newman: Option<NewmanFile>,
+    drift_damping: Option<DriftDampingFile>,
+    drag: Option<DragKind>,
+    /// Drag coefficient of the combined model.
+    cd: Option<f64>,
+    /// Slow drag coefficient of the separate model.
+    cd_slow: Option<f64>,
+    /// Fast drag coefficient of the separate model.
+    cd_fast: Option<f64>,
+    strips_per_column: Option<usize>,
+}
+
+impl ModelFile {
+    fn into_core(self) -> std::result::Result<ModelOptions, String> {
+        let default = ModelOptions::default();
+        let newman = match self.newman {
+            None => default.newman,
+            Some(NewmanFile::Geometric) => NewmanForm::Geometric,
+            Some(NewmanFile::Arithmetic) => NewmanForm::Arithmetic,
+        };
+        let drift_damping = match self.drift_damping {
+            None => default.drift_damping,
+            Some(DriftDampingFile::Aranha) => DriftDamping::Aranha,
+            Some(DriftDampingFile::Table) => DriftDamping::Table,
+            Some(DriftDampingFile::Off) => DriftDamping::Off,
+        };
+        let drag = match self.drag {
+            None => {
+                self.refuse_coefficients(&[], "drag is off (the default)")?;
+                default.drag
+            }
+            Some(DragKind::Off) => {
+                self.refuse_coefficients(&[], "drag = \"off\"")?;
+                DragModel::Off
+            }
+            Some(DragKind::Separate) => {
+                let because = "drag = \"separate\"";
+                self.refuse_coefficients(&["cd_slow", "cd_fast"], because)?;
+                DragModel::Separate {
+                    slow: required(self.cd_slow, "cd_slow", because)?,
+                    fast: required(self.cd_fast, "cd_fast", because)?,
+                }
+            }
+            Some(DragKind::Combined) => {
+                let because = "drag = \"combined\"";
+                self.refuse_coefficients(&["cd"], because)?;
+                DragModel::Combined {
+                    cd: required(self.cd, "cd", because)?,
+                }
+            }
+        };
+        Ok(ModelOptions {
+            newman,
+            drift_damping,
+            drag,
+            strips_per_column: self.strips_per_column.unwrap_or(default.strips_per_column),
+        })
+    }
+
+    /// Refuses every drag coefficient that is given but not in `used`.
+    fn refuse_coefficients(&self, used: &[&str], because: &str) -> std::result::Result<(), String> {
+        for (key, value) in [
+            ("cd", self.cd),
+            ("cd_slow", self.cd_slow),
+            ("cd_fast", self.cd_fast),
+        ] {
+            if !used.contains(&key) {
+                refused(&value, key, because)?;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// `[initial]`, inertial frame.
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+struct InitialFile {
+    /// X, Y in m.
+    position: [f64; 2],
+    /// Yaw angle theta, deg.
+    heading_deg: f64,
+    /// dX/dt, dY/dt in m/s.
+    velocity: [f64; 2],
+    /// d theta/dt, deg/s.
+    yaw_rate_deg: f64,
+}
+
+impl InitialFile {
+    fn into_core(self) -> InitialCondition {
+        let [x, y] = self.position;
+        let [vx, vy] = self.velocity;
+        InitialCondition {
+            position: [x, y, self.heading_deg.to_radians()],
+            velocity: [vx, vy, self.yaw_rate_deg.to_radians()],
+        }
+    }
+}
+
+/// `[drift]`, tagged by `source`. A new source is a new variant and a new arm in
+/// [`DriftFile::into_table`].
+#[derive(Deserialize)]
+#[serde(tag = "source", rename_all = "kebab-case", deny_unknown_fields)]
+enum DriftFile {
+    /// The table inline: column names and rows of numbers.
+    Table {
+        columns: Vec<String>,
+        rows: Vec<Vec<f64>>,
+    },
+    /// A CSV file, relative to the configuration file's directory.
+    Csv { file: PathBuf },
+}
+
+impl DriftFile {
+    /// Builds the drift table; `span` locates the `[drift]` section for error messages.
+    fn into_table(
+        self,
+        source: &Source,
+        span: Range<usize>,
+        base_dir: &Path,
+    ) -> Result<DriftTable> {
+        match self {
+            DriftFile::Table { columns, rows } => {
+                let at =
+                    |message: String| source.error_at(span.clone(), format!("[drift] {message}"));
+                let names: Vec<&str> = columns.iter().map(String::as_str).collect();
+                let layout = ColumnLayout::new(&names).map_err(at)?;
+                let rows = rows
+                    .iter()
+                    .enumerate()
+                    .map(|(r, values)| {
+                        layout
+                            .row(values)
+                            .map_err(|m| at(format!("rows[{r}]: {m}")))
+                    })
+                    .collect::<Result<Vec<_>>>()?;
+                DriftTable::from_rows(&rows)
+            }
+            DriftFile::Csv { file } => read_csv(&base_dir.join(file)),
+        }
+    }
+}
+
+/// Where each quantity sits in a row of the drift table.
+struct ColumnLayout {
+    width: usize,
+    omega: usize,
+    beta: usize,
+    drift: [usize; 3],
+    damping: Option<[[usize; 3]; 3]>,
+}
+
+impl ColumnLayout {
+    /// Locates the columns by name; every name must be known and appear once.
+    fn new(names: &[&str]) -> std::result::Result<Self, String> {
+        let known = |name: &str| {
+            name == COLUMN_OMEGA
+                || name == COLUMN_BETA
+                || COLUMNS_DRIFT.contains(&name)
+                || COLUMNS_DAMPING.iter().any(|line| line.contains(&name))
+        };
+        for (k, name) in names.iter().enumerate() {
+            if !known(name) {
+                return Err(format!(
+                    "unknown drift column \"{name}\"; known: {COLUMN_OMEGA}, {COLUMN_BETA}, {}, b11 .. b33",
+                    COLUMNS_DRIFT.join(", ")
+                ));
+            }
+            if names[..k].contains(name) {
+                return Err(format!("drift column \"{name}\" appears twice"));
+            }
+        }
+        let find = |name: &str| names.iter().position(|n| *n == name);
+        let require = |name: &str| {
+            find(name).ok_or_else(|| format!("the drift table has no \"{name}\" column (required)"))
+        };
+        let omega = require(COLUMN_OMEGA)?;
+        let beta = require(COLUMN_BETA)?;
+        let drift = [
+            require(COLUMNS_DRIFT[0])?,
+            require(COLUMNS_DRIFT[1])?,
+            require(COLUMNS_DRIFT[2])?,
+        ];
+        let damping_given = COLUMNS_DAMPING
+            .iter()
+            .flatten()
+            .filter(|n| find(n).is_some())
+            .count();
+        let damping = if damping_given == 0 {
+            None
+        } else {
+            let mut index = [[0; 3]; 3];
+            for (i, line) in COLUMNS_DAMPING.iter().enumerate() {
+                for (j, name) in line.iter().enumerate() {
+                    index[i][j] = find(name).ok_or_else(|| {
+                        format!(
+                            "the drift table has {damping_given} of the b_ij columns but no \"{name}\": \
+                             give all nine or none"
+                        )
+                    })?;
+                }
+            }
+            Some(index)
+        };
+        Ok(ColumnLayout {
+            width: names.len(),
+            omega,
+            beta,
+            drift,
+            damping,
+        })
+    }
+
+    /// One row of numbers as a [`DriftRow`], the heading converted to radians.
+    fn row(&self, values: &[f64]) -> std::result::Result<DriftRow, String> {
+        if values.len() != self.width {
+            return Err(format!(
+                "{} values, but the drift table has {} columns",
+                values.len(),
+                self.width
+            ));
+        }
+        Ok(DriftRow {
+            omega: values[self.omega],
+            heading: values[self.beta].to_radians(),
+            drift: self.drift.map(|k| values[k]),
+            damping: self
+                .damping
+                .map(|index| index.map(|line| line.map(|k| values[k]))),
+        })
+    }
+}
+
+/// Reads a CSV drift table: a header line of column names, then numeric rows.
+fn read_csv(path: &Path) -> Result<DriftTable> {
+    let name = path.display().to_string();
+    let text = std::fs::read_to_string(path).map_err(|e| Error::Io {
+        path: name.clone(),
+        message: e.to_string(),
+    })?;
+    let at = |line: usize, message: String| Error::Parse {
+        path: name.clone(),
+        line: Some(line),
+        message,
+    };
+    let mut lines = text
+        .lines()
+        .enumerate()
+        .map(|(k, line)| (k + 1, line.trim()))
+        .filter(|(_, line)| !line.is_empty() && !line.starts_with(CSV_COMMENT));
+    let Some((header_line, header)) = lines.next() else {
+        return Err(Error::Parse {
+            path: name.clone(),
+            line: None,
+            message: "no header line of column names".to_string(),
+        });
+    };
+    let names: Vec<&str> = header.split(CSV_SEPARATOR).map(str::trim).collect();
+    let layout = ColumnLayout::new(&names).map_err(|m| at(header_line, m))?;
+    let mut rows = Vec::new();
+    for (line_number, line) in lines {
+        let values = line
+            .split(CSV_SEPARATOR)
+            .zip(names.iter().chain(std::iter::repeat(&"(extra)")))
+            .map(|(field, column)| {
+                let field = field.trim();
+                field.parse::<f64>().map_err(|_| {
+                    at(
+                        line_number,
+                        format!("column \"{column}\": \"{field}\" is not a number"),
+                    )
+                })
+            })
+            .collect::<Result<Vec<f64>>>()?;
+        rows.push(layout.row(&values).map_err(|m| at(line_number, m))?);
+    }
+    DriftTable::from_rows(&rows)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::sync::atomic::{AtomicUsize, Ordering};
+
+    /// A complete file: every key given, none at its default.
+    const COMPLETE: &str = r#"
+[environment]
+gravity = 9.81
+water_density = 1000.0
+
+[sea]
+spectrum = "jonswap"
+hs = 4.0
+tp = 10.0
+gamma = 2.0
+spreading = "cos-n"
+spreading_exponent = 4
+direction_deg = 30.0
+n_directions = 9
+seed = 42
+band = [0.4, 1.8]
+
+[current]
+speed = 0.5
+direction_deg = 45.0
+
+[run]
+duration = 3600.0
+time_step = 0.5
+start_time = 10.0
+
+[platform]
+mass = 1.0e7
+yaw_inertia = 5.0e9
+added_mass = [[1.0e6, 0, 0], [0, 2.0e6, 0], [0, 0, 3.0e9]]
+stiffness = [[1.0e5, 0, 0], [0, 2.0e5, 0], [0, 0, 3.0e8]]
+linear_damping = [[1.0e4, 0, 0], [0, 1.0e4, 0], [0, 0, 1.0e7]]
+quadratic_damping = [[1.0e3, 0, 0], [0, 1.0e3, 0], [0, 0, 1.0e6]]
+
+[[platform.columns]]
+x = 20.0
+y = -20.0
+diameter = 8.0
+draft = 15.0
+
+[model]
+newman = "arithmetic"
+drift_damping = "table"
+drag = "separate"
+cd_slow = 0.6
+cd_fast = 0.9
+strips_per_column = 12
+
+[initial]
+position = [1.0, -2.0]
+heading_deg = 5.0
+velocity = [0.1, 0.2]
+yaw_rate_deg = 0.5
+
+[drift]
+source = "table"
+columns = ["beta_deg", "omega", "yaw", "surge", "sway",
+           "b11", "b12", "b13", "b21", "b22", "b23", "b31", "b32", "b33"]
+rows = [
+  [0.0, 0.3, 0.0, 100.0, 1.0, 11, 12, 13, 21, 22, 23, 31, 32, 33],
+  [0.0, 2.0, 0.0, 900.0, 2.0, 11, 12, 13, 21, 22, 23, 31, 32, 33],
+  [90.0, 0.3, 5.0, 3.0, 110.0, 11, 12, 13, 21, 22, 23, 31, 32, 33],
+  [90.0, 2.0, 6.0, 4.0, 950.0, 11, 12, 13, 21, 22, 23, 31, 32, 33],
+]
+"#;
+
+    /// A file with only the required keys.
+    const MINIMAL: &str = r#"
+[sea]
+spectrum = "pierson-moskowitz"
+hs = 2.0
+tp = 8.0
+
+[run]
+duration = 600.0
+
+[platform]
+mass = 1.0e7
+yaw_inertia = 5.0e9
+stiffness = [[1.0e5, 0, 0], [0, 1.0e5, 0], [0, 0, 1.0e8]]
+
+[drift]
+source = "table"
+columns = ["omega", "beta_deg", "surge", "sway", "yaw"]
+rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
+"#;
+
+    fn parse_text(text: &str) -> Result<Config> {
+        parse(text, "test.toml", Path::new("."))
+    }
+
+    fn error_text(text: &str) -> String {
+        parse_text(text).expect_err("must be refused").to_string()
+    }
+
+    /// A file under the temporary directory whose name no other test uses.
+    fn temp_file(stem: &str, contents: &str) -> PathBuf {
+        static COUNTER: AtomicUsize = AtomicUsize::new(0);
+        let unique = COUNTER.fetch_add(1, Ordering::Relaxed);
+        let path = std::env::temp_dir().join(format!(
+            "slowdrift-config-{}-{unique}-{stem}",
+            std::process::id()
+        ));
+        std::fs::write(&path, contents).expect("temporary file is writable");
+        path
+    }
+
+    /// MINIMAL with its drift section replaced by a CSV source.
+    fn minimal_with_csv(csv: &Path) -> String {
+        let head = MINIMAL
+            .split("[drift]")
+            .next()
+            .expect("MINIMAL has a drift section");
+        format!(
+            "{head}[drift]\nsource = \"csv\"\nfile = {:?}\n",
+            csv.display().to_string()
+        )
+    }
+
+    fn diagonal(a: f64, b: f64, c: f64) -> [[f64; 3]; 3] {
+        [[a, 0.0, 0.0], [0.0, b, 0.0], [0.0, 0.0, c]]
+    }
+
+    #[test]
+    fn complete_file_gives_every_value_in_si_and_radians() {
+        let config = parse_text(COMPLETE).expect("valid file");
+        assert_eq!(
+            config.environment,
+            Environment {
+                gravity: 9.81,
+                water_density: 1000.0
+            }
+        );
+        assert_eq!(
+            config.sea,
+            SeaState {
+                spectrum: Spectrum::Jonswap {
+                    hs: 4.0,
+                    tp: 10.0,
+                    gamma: Some(2.0)
+                },
+                spreading: Spreading::CosN { n: 4.0 },
+                mean_direction: 30f64.to_radians(),
+                n_directions: 9,
+                seed: 42,
+                band: Some((0.4, 1.8)),
+            }
+        );
+        assert_eq!(
+            config.current,
+            Current {
+                speed: 0.5,
+                direction: 45f64.to_radians()
+            }
+        );
+        assert_eq!(
+            config.run,
+            Run {
+                duration: 3600.0,
+                time_step: 0.5,
+                start_time: 10.0
+            }
+        );
+        assert_eq!(
+            config.platform,
+            Platform {
+                mass: 1.0e7,
+                yaw_inertia: 5.0e9,
+                added_mass: diagonal(1.0e6, 2.0e6, 3.0e9),
+                stiffness: diagonal(1.0e5, 2.0e5, 3.0e8),
+                linear_damping: diagonal(1.0e4, 1.0e4, 1.0e7),
+                quadratic_damping: diagonal(1.0e3, 1.0e3, 1.0e6),
+                columns: vec![Column {
+                    x: 20.0,
+                    y: -20.0,
+                    diameter: 8.0,
+                    draft: 15.0
+                }],
+            }
+        );
+        assert_eq!(
+            config.model,
+            ModelOptions {
+                newman: NewmanForm::Arithmetic,
+                drift_damping: DriftDamping::Table,
+                drag: DragModel::Separate {
+                    slow: 0.6,
+                    fast: 0.9
+                },
+                strips_per_column: 12,
+            }
+        );
+        assert_eq!(
+            config.initial,
+            InitialCondition {
+                position: [1.0, -2.0, 5f64.to_radians()],
+                velocity: [0.1, 0.2, 0.5f64.to_radians()],
+            }
+        );
+        let b = [[11.0, 12.0, 13.0], [21.0, 22.0, 23.0], [31.0, 32.0, 33.0]];
+        let row = |omega: f64, beta_deg: f64, drift: [f64; 3]| DriftRow {
+            omega,
+            heading: beta_deg.to_radians(),
+            drift,
+            damping: Some(b),
+        };
+        let expected = DriftTable::from_rows(&[
+            row(0.3, 0.0, [100.0, 1.0, 0.0]),
+            row(2.0, 0.0, [900.0, 2.0, 0.0]),
+            row(0.3, 90.0, [3.0, 110.0, 5.0]),
+            row(2.0, 90.0, [4.0, 950.0, 6.0]),
+        ])
+        .expect("valid rows");
+        assert_eq!(config.drift, expected);
+        assert_eq!(config.drift.headings(), &[0.0, 90f64.to_radians()]);
+    }
+
+    #[test]
+    fn absent_keys_take_their_documented_defaults() {
+        let config = parse_text(MINIMAL).expect("valid file");
+        assert_eq!(config.environment, Environment::default());
+        assert_eq!(config.current, Current::default());
+        assert_eq!(config.model, ModelOptions::default());
+        assert_eq!(config.initial, InitialCondition::default());
+        assert_eq!(config.sea.spreading, Spreading::LongCrested);
+        assert_eq!(config.sea.n_directions, LONG_CRESTED_DIRECTIONS);
+        assert_eq!(config.sea.mean_direction, 0.0);
+        assert_eq!(config.sea.seed, DEFAULT_SEED);
+        assert_eq!(config.sea.band, None);
+        assert_eq!(config.run.time_step, DEFAULT_TIME_STEP);
+        assert_eq!(config.run.start_time, 0.0);
+        assert_eq!(config.platform.added_mass, [[0.0; 3]; 3]);
+        assert_eq!(config.platform.linear_damping, [[0.0; 3]; 3]);
+        assert_eq!(config.platform.quadratic_damping, [[0.0; 3]; 3]);
+        assert!(config.platform.columns.is_empty());
+        assert!(!config.drift.has_damping());
+    }
+
+    #[test]
+    fn short_crested_sea_defaults_to_fifteen_directions_and_jonswap_to_dnv_gamma() {
+        let text = MINIMAL.replace(
+            "spectrum = \"pierson-moskowitz\"",
+            "spectrum = \"jonswap\"\nspreading = \"cos-2s\"\nspreading_exponent = 6",
+        );
+        let sea = parse_text(&text).expect("valid file").sea;
+        assert_eq!(
+            sea.spectrum,
+            Spectrum::Jonswap {
+                hs: 2.0,
+                tp: 8.0,
+                gamma: None
+            }
+        );
+        assert_eq!(sea.spreading, Spreading::Cos2s { s: 6.0 });
+        assert_eq!(sea.n_directions, DEFAULT_N_DIRECTIONS);
+    }
+
+    #[test]
+    fn tabulated_spectrum_is_read() {
+        let text = MINIMAL.replace(
+            "spectrum = \"pierson-moskowitz\"\nhs = 2.0\ntp = 8.0",
+            "spectrum = \"table\"\nomega = [0.3, 1.0, 2.0]\ndensity = [0.0, 1.5, 0.1]",
+        );
+        let sea = parse_text(&text).expect("valid file").sea;
+        assert_eq!(
+            sea.spectrum,
+            Spectrum::Tabulated {
+                omega: vec![0.3, 1.0, 2.0],
+                density: vec![0.0, 1.5, 0.1]
+            }
+        );
+    }
+
+    #[test]
+    fn unknown_key_is_refused_with_its_line() {
+        let text = MINIMAL.replace("tp = 8.0", "tp = 8.0\nheight = 3.0");
+        let line = text
+            .lines()
+            .position(|l| l.starts_with("height"))
+            .expect("inserted")
+            + 1;
+        let err = parse_text(&text).expect_err("unknown key");
+        match &err {
+            Error::Parse {
+                path,
+                line: Some(at),
+                message,
+            } => {
+                assert_eq!(path, "test.toml");
+                assert_eq!(*at, line);
+                assert!(message.contains("height"), "{message}");
+            }
+            other => panic!("expected a parse error, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn unknown_key_in_the_drift_section_is_refused() {
+        let text = MINIMAL.replace("source = \"table\"", "source = \"table\"\nunits = \"si\"");
+        assert!(error_text(&text).contains("units"));
+    }
+
+    #[test]
+    fn wrong_type_is_refused_with_its_line() {
+        let text = MINIMAL.replace("duration = 600.0", "duration = \"long\"");
+        let line = text
+            .lines()
+            .position(|l| l.starts_with("duration"))
+            .expect("present")
+            + 1;
+        let err = parse_text(&text).expect_err("wrong type");
+        assert!(
+            matches!(&err, Error::Parse { line: Some(at), .. } if *at == line),
+            "{err:?}"
+        );
+        assert!(
+            err.to_string().starts_with(&format!("test.toml:{line}: ")),
+            "{err}"
+        );
+    }
+
+    #[test]
+    fn syntax_error_is_refused_with_its_line() {
+        let text = MINIMAL.replace("hs = 2.0", "hs = = 2.0");
+        let line = text
+            .lines()
+            .position(|l| l.starts_with("hs"))
+            .expect("present")
+            + 1;
+        let err = parse_text(&text).expect_err("syntax error");
+        assert!(
+            matches!(&err, Error::Parse { line: Some(at), .. } if *at == line),
+            "{err:?}"
+        );
+    }
+
+    #[test]
+    fn negative_hs_is_refused_by_validation() {
+        let text = MINIMAL.replace("hs = 2.0", "hs = -1");
+        assert!(
+            error_text(&text).starts_with("invalid sea.spectrum.hs = -1: "),
+            "{}",
+            error_text(&text)
+        );
+    }
+
+    #[test]
+    fn gamma_below_one_is_refused() {
+        let text = MINIMAL.replace(
+            "spectrum = \"pierson-moskowitz\"",
+            "spectrum = \"jonswap\"\ngamma = 0.5",
+        );
+        assert!(error_text(&text).starts_with("invalid sea.spectrum.gamma = 0.5: "));
+    }
+
+    #[test]
+    fn nan_is_refused() {
+        let text = MINIMAL.replace("tp = 8.0", "tp = nan");
+        assert!(error_text(&text).starts_with("invalid sea.spectrum.tp = NaN: "));
+        let text = MINIMAL.replace("mass = 1.0e7", "mass = nan");
+        assert!(error_text(&text).starts_with("invalid platform.mass = NaN: "));
+    }
+
+    #[test]
+    fn key_that_does_not_apply_is_refused_with_the_section_line() {
+        let text = MINIMAL.replace("tp = 8.0", "tp = 8.0\ngamma = 3.3");
+        let err = parse_text(&text).expect_err("gamma with pierson-moskowitz");
+        assert!(
+            matches!(&err, Error::Parse { line: Some(_), .. }),
+            "{err:?}"
+        );
+        assert!(err.to_string().contains("gamma does not apply"), "{err}");
+    }
+
+    #[test]
+    fn missing_key_that_the_choice_requires_is_named() {
+        let text = MINIMAL.replace("hs = 2.0\n", "");
+        assert!(error_text(&text).contains("hs is required"));
+        let text = format!("{MINIMAL}\n[model]\ndrag = \"combined\"\n");
+        assert!(error_text(&text).contains("cd is required"));
+        let text = MINIMAL.replace("tp = 8.0", "tp = 8.0\nspreading = \"cos-n\"");
+        assert!(error_text(&text).contains("spreading_exponent is required"));
+    }
+
+    #[test]
+    fn hole_in_the_drift_table_is_refused() {
+        let text = MINIMAL.replace(
+            "rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]",
+            "rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0], [0.3, 90, 0, 100, 0]]",
+        );
+        assert!(error_text(&text).contains("hole in the drift table"));
+    }
+
+    #[test]
+    fn unsorted_drift_frequencies_are_refused() {
+        let text = MINIMAL.replace(
+            "rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]",
+            "rows = [[2.0, 0, 900, 0, 0], [0.3, 0, 100, 0, 0]]",
+        );
+        assert!(error_text(&text).contains("not increasing"));
+    }
+
+    #[test]
+    fn partial_damping_columns_and_short_rows_are_refused() {
+        let text = MINIMAL.replace("\"yaw\"]", "\"yaw\", \"b11\"]");
+        assert!(error_text(&text).contains("no \"b12\""));
+        let text = MINIMAL.replace("[2.0, 0, 900, 0, 0]", "[2.0, 0, 900, 0]");
+        let message = error_text(&text);
+        assert!(
+            message.contains("rows[1]") && message.contains("4 values"),
+            "{message}"
+        );
+    }
+
+    #[test]
+    fn csv_drift_table_is_read_relative_to_the_base_directory() {
+        let csv = temp_file(
+            "good.csv",
+            "# invented numbers\nomega, beta_deg, surge, sway, yaw\n\n0.3, 0, 100, 0, 0\n2.0, 0, 900, 0, 0\n",
+        );
+        let dir = csv.parent().expect("temp dir");
+        let name = csv
+            .file_name()
+            .expect("file name")
+            .to_string_lossy()
+            .to_string();
+        let head = MINIMAL.split("[drift]").next().expect("drift section");
+        let text = format!("{head}[drift]\nsource = \"csv\"\nfile = \"{name}\"\n");
+        let from_csv = parse(&text, "test.toml", dir).expect("valid file");
+        std::fs::remove_file(&csv).expect("remove temporary file");
+        assert_eq!(from_csv, parse_text(MINIMAL).expect("valid file"));
+    }
+
+    #[test]
+    fn malformed_csv_line_names_file_and_line() {
+        let csv = temp_file(
+            "bad.csv",
+            "omega,beta_deg,surge,sway,yaw\n# comment\n0.3,0,100,0,0\n2.0,0,9oo,0,0\n",
+        );
+        let err = parse_text(&minimal_with_csv(&csv)).expect_err("malformed line");
+        std::fs::remove_file(&csv).expect("remove temporary file");
+        match &err {
+            Error::Parse {
+                path,
+                line,
+                message,
+            } => {
+                assert_eq!(path, &csv.display().to_string());
+                assert_eq!(*line, Some(4));
+                assert!(
+                    message.contains("surge") && message.contains("9oo"),
+                    "{message}"
+                );
+            }
+            other => panic!("expected a parse error, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn csv_missing_a_column_names_it() {
+        let csv = temp_file(
+            "nosway.csv",
+            "omega,beta_deg,surge,yaw\n0.3,0,100,0\n2.0,0,900,0\n",
+        );
+        let err = parse_text(&minimal_with_csv(&csv)).expect_err("missing column");
+        std::fs::remove_file(&csv).expect("remove temporary file");
+        assert!(
+            matches!(&err, Error::Parse { line: Some(1), message, .. } if message.contains("\"sway\"")),
+            "{err:?}"
+        );
+    }
+
+    #[test]
+    fn unreadable_csv_is_an_io_error() {
+        let missing = std::env::temp_dir().join("slowdrift-config-no-such-file.csv");
+        let err = parse_text(&minimal_with_csv(&missing)).expect_err("no file");
+        assert!(matches!(err, Error::Io { .. }), "{err:?}");
+    }
+
+    #[test]
+    fn example_file_loads() {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/example.toml");
+        let config = load(&path).expect("the example is valid");
+        assert_eq!(config.drift.headings().len(), 2);
+        assert_eq!(config.drift.omegas().len(), 6);
+        let band = config.sea.band();
+        config
+            .drift
+            .check_covers(band, &[config.sea.mean_direction])
+            .expect("the example's drift table covers its sea state");
+    }
+}
