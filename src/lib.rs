@@ -13,5 +13,6 @@ pub mod config;
 pub mod error;
 pub mod hydro;
 pub mod sea_state;
+pub mod special;
 
 pub use error::{Error, Result};
