@@ -1,6 +1,7 @@
 //! Hydrodynamic data: the drift table, wave-drift damping by Aranha's formula, and the
 //! closed-form drift of isolated vertical columns.
 
+pub mod column_drift;
 mod drift_table;
 
 pub use drift_table::{DriftRow, DriftTable};
