@@ -21,6 +21,7 @@ pub mod forces;
 pub mod hydro;
 pub mod sea_state;
 pub mod simulation;
+pub mod special;
 pub mod stats;
 
 pub use config::Config;

@@ -13,7 +13,11 @@ use slowdrift::sea_state::{FrequencyGrid, SeaState, Spreading, WaveComponents};
 /// Drift that changes sign with frequency and heading, and a yaw moment.
 fn mixed_sign_drift(omega: f64, beta: f64) -> [f64; 3] {
     let f = 3.0e4 * (omega - 0.9);
-    [f * beta.cos(), 1.0e4 * (1.2 - omega) * beta.sin(), 5.0e5 * (omega - 0.6) * (2.0 * beta).sin()]
+    [
+        f * beta.cos(),
+        1.0e4 * (1.2 - omega) * beta.sin(),
+        5.0e5 * (omega - 0.6) * (2.0 * beta).sin(),
+    ]
 }
 
 fn spread_sea(seed: u64) -> SeaState {
@@ -28,7 +32,12 @@ fn spread_sea(seed: u64) -> SeaState {
 }
 
 /// The direct double sum Re sum_k sum_i sum_j a_ik a_jk* T_ij e^{i (w_i - w_j) t}.
-fn double_sum(components: &WaveComponents, diagonal: &[Vec<f64>], qtf: impl Fn(f64, f64) -> f64, t: f64) -> f64 {
+fn double_sum(
+    components: &WaveComponents,
+    diagonal: &[Vec<f64>],
+    qtf: impl Fn(f64, f64) -> f64,
+    t: f64,
+) -> f64 {
     let grid = &components.grid;
     let mut total = 0.0;
     for (k, t_k) in diagonal.iter().enumerate() {
@@ -78,14 +87,31 @@ fn damping_table() -> DriftTable {
     DriftTable::from_rows(&rows).unwrap()
 }
 
-fn build(form: NewmanForm) -> (WaveComponents, Vec<slowdrift::forces::DirectionTransfer>, ForceRecords) {
+fn build(
+    form: NewmanForm,
+) -> (
+    WaveComponents,
+    Vec<slowdrift::forces::DirectionTransfer>,
+    ForceRecords,
+) {
     let grid = FrequencyGrid::new(100.0, 300.0, 0.25, (0.3, 2.0)).unwrap();
     let components = WaveComponents::generate(&spread_sea(11), grid);
-    let transfers = transfers_on_grid(&damping_table(), &components.grid, &components.directions, true).unwrap();
+    let transfers = transfers_on_grid(
+        &damping_table(),
+        &components.grid,
+        &components.directions,
+        true,
+    )
+    .unwrap();
     let records = ForceRecords::build(
         &components,
         &transfers,
-        &RecordOptions { newman: form, drag_columns: &[], strips_per_column: 1, gravity: GRAVITY },
+        &RecordOptions {
+            newman: form,
+            drag_columns: &[],
+            strips_per_column: 1,
+            gravity: GRAVITY,
+        },
     );
     (components, transfers, records)
 }
@@ -101,7 +127,10 @@ fn assert_matches_double_sum(form: NewmanForm, qtf: fn(f64, f64) -> f64) {
     }
     let damping = records.damping.as_ref().unwrap();
     for (r, c) in [(0, 0), (1, 2), (2, 1), (2, 2)] {
-        let diag: Vec<Vec<f64>> = transfers.iter().map(|t| t.damping.as_ref().unwrap()[r][c].clone()).collect();
+        let diag: Vec<Vec<f64>> = transfers
+            .iter()
+            .map(|t| t.damping.as_ref().unwrap()[r][c].clone())
+            .collect();
         records_to_check.push((diag, damping[r][c].samples()));
     }
     for (diag, fft) in &records_to_check {
@@ -142,7 +171,9 @@ fn elevation_equals_the_direct_sum() {
         let direct: f64 = (0..components.directions.len())
             .map(|k| {
                 let a = components.of_direction(k);
-                (0..grid.count).map(|j| (a[j] * Complex64::from_polar(1.0, grid.omega(j) * t)).re).sum::<f64>()
+                (0..grid.count)
+                    .map(|j| (a[j] * Complex64::from_polar(1.0, grid.omega(j) * t)).re)
+                    .sum::<f64>()
             })
             .sum();
         assert!((eta[m] - direct).abs() < 1e-11 * scale, "sample {m}");
@@ -168,7 +199,8 @@ fn mean_force_is_twice_the_integral_of_spectrum_times_drift() {
         let grid = FrequencyGrid::new(0.0, 4000.0, 0.5, band).unwrap();
         let components = WaveComponents::generate(&sea, grid);
         let table = drift_table(smooth_drift);
-        let transfers = transfers_on_grid(&table, &components.grid, &components.directions, false).unwrap();
+        let transfers =
+            transfers_on_grid(&table, &components.grid, &components.directions, false).unwrap();
         let records = ForceRecords::build(
             &components,
             &transfers,
@@ -183,12 +215,18 @@ fn mean_force_is_twice_the_integral_of_spectrum_times_drift() {
         mean_of_means += f.iter().sum::<f64>() / f.len() as f64 / seeds as f64;
         let g = &components.grid;
         variance_of_mean += (0..g.count)
-            .map(|j| (2.0 * spectrum.density(g.omega(j)) * g.d_omega * transfers[0].drift[0][j]).powi(2))
+            .map(|j| {
+                (2.0 * spectrum.density(g.omega(j)) * g.d_omega * transfers[0].drift[0][j]).powi(2)
+            })
             .sum::<f64>()
             / (seeds * seeds) as f64;
     }
     let sigma = variance_of_mean.sqrt();
-    assert!(sigma < 0.02 * expected, "the check is tight: sigma/mean = {}", sigma / expected);
+    assert!(
+        sigma < 0.02 * expected,
+        "the check is tight: sigma/mean = {}",
+        sigma / expected
+    );
     assert!(
         (mean_of_means - expected).abs() < 4.0 * sigma + 1e-3 * expected,
         "mean {mean_of_means} vs 2 int S T = {expected} (sigma {sigma})"

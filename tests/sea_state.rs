@@ -4,9 +4,9 @@
 mod common;
 
 use common::*;
-use slowdrift::sea_state::{FrequencyGrid, SeaState, Spectrum, Spreading, WaveComponents};
-use slowdrift::forces::{ForceRecords, RecordOptions};
 use slowdrift::config::NewmanForm;
+use slowdrift::forces::{ForceRecords, RecordOptions};
+use slowdrift::sea_state::{FrequencyGrid, SeaState, Spectrum, Spreading, WaveComponents};
 use slowdrift::stats::{summarize, welch_spectrum};
 use std::f64::consts::PI;
 
@@ -21,7 +21,12 @@ fn elevation(sea: &SeaState, duration: f64, dt: f64) -> (Vec<f64>, FrequencyGrid
             damping: None,
         })
         .collect();
-    let options = RecordOptions { newman: NewmanForm::Geometric, drag_columns: &[], strips_per_column: 1, gravity: GRAVITY };
+    let options = RecordOptions {
+        newman: NewmanForm::Geometric,
+        drag_columns: &[],
+        strips_per_column: 1,
+        gravity: GRAVITY,
+    };
     let records = ForceRecords::build(&components, &transfers, &options);
     (records.elevation.samples().to_vec(), grid)
 }
@@ -32,16 +37,34 @@ fn elevation(sea: &SeaState, duration: f64, dt: f64) -> (Vec<f64>, FrequencyGrid
 fn variance_matches_hs_squared_over_16() {
     let hs = 4.0;
     for (spectrum, spreading) in [
-        (Spectrum::PiersonMoskowitz { hs, tp: 9.0 }, Spreading::LongCrested),
-        (Spectrum::Jonswap { hs, tp: 12.0, gamma: None }, Spreading::CosN { n: 4.0 }),
-        (Spectrum::Jonswap { hs, tp: 8.0, gamma: Some(5.0) }, Spreading::Cos2s { s: 6.0 }),
+        (
+            Spectrum::PiersonMoskowitz { hs, tp: 9.0 },
+            Spreading::LongCrested,
+        ),
+        (
+            Spectrum::Jonswap {
+                hs,
+                tp: 12.0,
+                gamma: None,
+            },
+            Spreading::CosN { n: 4.0 },
+        ),
+        (
+            Spectrum::Jonswap {
+                hs,
+                tp: 8.0,
+                gamma: Some(5.0),
+            },
+            Spreading::Cos2s { s: 6.0 },
+        ),
     ] {
         let mut sea = long_crested(spectrum.clone(), 3);
         sea.spreading = spreading;
         sea.n_directions = 7;
         let (eta, grid) = elevation(&sea, 3.0 * 3600.0, 0.25);
         let n = grid.len as f64;
-        let variance = eta.iter().map(|e| e * e).sum::<f64>() / n - (eta.iter().sum::<f64>() / n).powi(2);
+        let variance =
+            eta.iter().map(|e| e * e).sum::<f64>() / n - (eta.iter().sum::<f64>() / n).powi(2);
         let (lo, hi) = sea.band();
         let m0_band = simpson(|w| spectrum.density(w), lo, hi, 20000);
         // the sampling spread of (1/2) sum |a_n|^2 over the directions
@@ -49,11 +72,22 @@ fn variance_matches_hs_squared_over_16() {
             .map(|j| (spectrum.density(grid.omega(j)) * grid.d_omega).powi(2))
             .sum::<f64>()
             .sqrt()
-            * sea.directions().iter().map(|d| d.weight * d.weight).sum::<f64>().sqrt();
-        assert!((variance - m0_band).abs() < 5.0 * sigma + 1e-3 * m0_band, "{spectrum:?}: {variance} vs {m0_band}");
+            * sea
+                .directions()
+                .iter()
+                .map(|d| d.weight * d.weight)
+                .sum::<f64>()
+                .sqrt();
+        assert!(
+            (variance - m0_band).abs() < 5.0 * sigma + 1e-3 * m0_band,
+            "{spectrum:?}: {variance} vs {m0_band}"
+        );
         // The band holds all but the tails of Hs^2/16; DNV's A_gamma is a fit (physics.md 2).
         let m0 = hs * hs / 16.0;
-        assert!((m0_band / m0 - 1.0).abs() < 0.025, "{spectrum:?}: band m0 {m0_band} vs Hs^2/16 = {m0}");
+        assert!(
+            (m0_band / m0 - 1.0).abs() < 0.025,
+            "{spectrum:?}: band m0 {m0_band} vs Hs^2/16 = {m0}"
+        );
     }
 }
 
@@ -69,18 +103,35 @@ fn elevation_is_gaussian() {
     let skew = eta.iter().map(|e| (e - mean).powi(3)).sum::<f64>() / n / var.powf(1.5);
     let kurt = eta.iter().map(|e| (e - mean).powi(4)).sum::<f64>() / n / (var * var);
     let independent = 6.0 * 3600.0 / 6.0; // one per ~6 s
-    assert!(skew.abs() < 5.0 * (6.0 / independent as f64).sqrt(), "skewness {skew}");
-    assert!((kurt - 3.0).abs() < 5.0 * (24.0 / independent as f64).sqrt(), "kurtosis {kurt}");
+    assert!(
+        skew.abs() < 5.0 * (6.0 / independent as f64).sqrt(),
+        "skewness {skew}"
+    );
+    assert!(
+        (kurt - 3.0).abs() < 5.0 * (24.0 / independent as f64).sqrt(),
+        "kurtosis {kurt}"
+    );
     // Fraction of samples within one standard deviation: 68.27 %.
-    let inside = eta.iter().filter(|e| (*e - mean).abs() < var.sqrt()).count() as f64 / n;
-    assert!((inside - 0.6827).abs() < 0.02, "P(|eta| < sigma) = {inside}");
+    let inside = eta
+        .iter()
+        .filter(|e| (*e - mean).abs() < var.sqrt())
+        .count() as f64
+        / n;
+    assert!(
+        (inside - 0.6827).abs() < 0.02,
+        "P(|eta| < sigma) = {inside}"
+    );
 }
 
 /// The Welch estimate of the elevation spectrum against the input S(omega), averaged over
 /// bands so that the estimate's relative error (about 1/sqrt(segments x bins)) is small.
 #[test]
 fn periodogram_matches_the_input_spectrum() {
-    let spectrum = Spectrum::Jonswap { hs: 5.0, tp: 10.0, gamma: Some(2.0) };
+    let spectrum = Spectrum::Jonswap {
+        hs: 5.0,
+        tp: 10.0,
+        gamma: Some(2.0),
+    };
     let sea = long_crested(spectrum.clone(), 9);
     let dt = 0.5;
     let (eta, _) = elevation(&sea, 24.0 * 3600.0, dt);
@@ -95,10 +146,21 @@ fn periodogram_matches_the_input_spectrum() {
         if centre < 0.8 * wp || centre > 2.0 * wp {
             continue;
         }
-        let measured: f64 = estimate.density[start..start + band_bins].iter().sum::<f64>() * d_omega;
-        let expected = simpson(|w| spectrum.density(w), estimate.omega[start] - 0.5 * d_omega, estimate.omega[start + band_bins - 1] + 0.5 * d_omega, 200);
+        let measured: f64 = estimate.density[start..start + band_bins]
+            .iter()
+            .sum::<f64>()
+            * d_omega;
+        let expected = simpson(
+            |w| spectrum.density(w),
+            estimate.omega[start] - 0.5 * d_omega,
+            estimate.omega[start + band_bins - 1] + 0.5 * d_omega,
+            200,
+        );
         let rel_sigma = (1.06 * 1.94 / (segments * band_bins as f64)).sqrt();
-        assert!((measured / expected - 1.0).abs() < 5.0 * rel_sigma + 0.03, "omega {centre}: {measured} vs {expected}");
+        assert!(
+            (measured / expected - 1.0).abs() < 5.0 * rel_sigma + 0.03,
+            "omega {centre}: {measured} vs {expected}"
+        );
         checked += 1;
     }
     assert!(checked >= 10, "checked {checked} bands");

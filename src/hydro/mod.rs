@@ -2,6 +2,7 @@
 //! closed-form drift of isolated vertical columns.
 
 pub mod aranha;
+pub mod column_drift;
 mod drift_table;
 
 pub use drift_table::{DriftRow, DriftTable};

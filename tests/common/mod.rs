@@ -21,7 +21,12 @@ pub fn drift_table(drift: impl Fn(f64, f64) -> [f64; 3]) -> DriftTable {
         let beta = (ih as f64 * 10.0).to_radians();
         for iw in 1..=150 {
             let omega = 0.02 * iw as f64;
-            rows.push(DriftRow { omega, heading: beta, drift: drift(omega, beta), damping: None });
+            rows.push(DriftRow {
+                omega,
+                heading: beta,
+                drift: drift(omega, beta),
+                damping: None,
+            });
         }
     }
     DriftTable::from_rows(&rows).unwrap()
@@ -34,7 +39,11 @@ pub fn smooth_drift(omega: f64, beta: f64) -> [f64; 3] {
 }
 
 pub fn jonswap(hs: f64, tp: f64) -> Spectrum {
-    Spectrum::Jonswap { hs, tp, gamma: Some(3.3) }
+    Spectrum::Jonswap {
+        hs,
+        tp,
+        gamma: Some(3.3),
+    }
 }
 
 pub fn long_crested(spectrum: Spectrum, seed: u64) -> SeaState {
@@ -76,7 +85,11 @@ pub fn base_config(duration: f64, time_step: f64, seed: u64) -> Config {
         environment: Environment::default(),
         sea: long_crested(jonswap(6.0, 10.0), seed),
         current: Current::default(),
-        run: Run { duration, time_step, start_time: 0.0 },
+        run: Run {
+            duration,
+            time_step,
+            start_time: 0.0,
+        },
         platform: oscillator_platform(1.0e7, 1.0e10, [60.0, 60.0, 40.0], 0.2),
         drift: drift_table(smooth_drift),
         model: ModelOptions {

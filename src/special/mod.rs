@@ -1,0 +1,3 @@
+//! Special functions: Bessel functions of integer order and their derivatives.
+
+pub mod bessel;
