@@ -104,11 +104,11 @@ fn elevation_is_gaussian() {
     let kurt = eta.iter().map(|e| (e - mean).powi(4)).sum::<f64>() / n / (var * var);
     let independent = 6.0 * 3600.0 / 6.0; // one per ~6 s
     assert!(
-        skew.abs() < 5.0 * (6.0 / independent as f64).sqrt(),
+        skew.abs() < 5.0 * (6.0 / independent).sqrt(),
         "skewness {skew}"
     );
     assert!(
-        (kurt - 3.0).abs() < 5.0 * (24.0 / independent as f64).sqrt(),
+        (kurt - 3.0).abs() < 5.0 * (24.0 / independent).sqrt(),
         "kurtosis {kurt}"
     );
     // Fraction of samples within one standard deviation: 68.27 %.
