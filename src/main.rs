@@ -1,1 +1,186 @@
-fn main() {}
+//! `slowdrift`: the command-line tool.
+//!
+//! `slowdrift simulate [--config FILE] [--out FILE.csv] [--transient SECONDS]` runs one
+//! simulation (the embedded default platform without `--config`), prints the summary of
+//! surge, sway and yaw, and writes the time series as CSV.
+
+use slowdrift::config::default_platform::{default_config, DEFAULT_DRIFT_LABEL};
+use slowdrift::config::file;
+use slowdrift::stats::{summarize, Summary};
+use slowdrift::{Config, Outputs, Simulation};
+use std::io::{BufWriter, Write};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+/// Slow-drift cycles dropped as transient by default (E&S section 5: about ten cycles).
+const TRANSIENT_CYCLES: f64 = 10.0;
+
+const USAGE: &str =
+    "usage: slowdrift simulate [--config FILE.toml] [--out FILE.csv] [--transient SECONDS]";
+
+struct Arguments {
+    config: Option<PathBuf>,
+    out: Option<PathBuf>,
+    transient: Option<f64>,
+}
+
+fn main() -> ExitCode {
+    match run(std::env::args().skip(1).collect()) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => {
+            eprintln!("slowdrift: {message}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn run(args: Vec<String>) -> Result<(), String> {
+    match args.first().map(String::as_str) {
+        Some("simulate") => simulate(parse_arguments(&args[1..])?),
+        Some("--help") | Some("-h") | None => {
+            println!("{USAGE}");
+            Ok(())
+        }
+        Some(other) => Err(format!("unknown command '{other}'\n{USAGE}")),
+    }
+}
+
+fn parse_arguments(args: &[String]) -> Result<Arguments, String> {
+    let mut parsed = Arguments {
+        config: None,
+        out: None,
+        transient: None,
+    };
+    let mut rest = args.iter();
+    while let Some(flag) = rest.next() {
+        let mut value = || {
+            rest.next()
+                .ok_or_else(|| format!("{flag} needs a value\n{USAGE}"))
+        };
+        match flag.as_str() {
+            "--config" => parsed.config = Some(PathBuf::from(value()?)),
+            "--out" => parsed.out = Some(PathBuf::from(value()?)),
+            "--transient" => {
+                let text = value()?;
+                let seconds: f64 = text
+                    .parse()
+                    .map_err(|_| format!("--transient {text}: not a number"))?;
+                if !(seconds.is_finite() && seconds >= 0.0) {
+                    return Err(format!(
+                        "--transient {text}: must be a non-negative number of seconds"
+                    ));
+                }
+                parsed.transient = Some(seconds);
+            }
+            other => return Err(format!("unknown option '{other}'\n{USAGE}")),
+        }
+    }
+    Ok(parsed)
+}
+
+fn simulate(args: Arguments) -> Result<(), String> {
+    let config = match &args.config {
+        Some(path) => file::load(path).map_err(|e| e.to_string())?,
+        None => {
+            println!("embedded default platform; drift: {DEFAULT_DRIFT_LABEL}");
+            default_config().map_err(|e| e.to_string())?
+        }
+    };
+    let transient = args.transient.unwrap_or_else(|| default_transient(&config));
+    let started = std::time::Instant::now();
+    let mut sim = Simulation::new(config).map_err(|e| e.to_string())?;
+    let outputs = run_to_end(&mut sim)?;
+    let elapsed = started.elapsed();
+    print_summary(&sim, &outputs, transient)?;
+    println!(
+        "{} steps in {:.3} s (records and stepping)",
+        outputs.len() - 1,
+        elapsed.as_secs_f64()
+    );
+    if let Some(path) = &args.out {
+        write_csv(path, &outputs).map_err(|e| format!("{}: {e}", path.display()))?;
+        println!("time series written to {}", path.display());
+    }
+    Ok(())
+}
+
+/// Ten undamped surge periods 2 pi sqrt((M + A11) / C11), at most half the run.
+fn default_transient(config: &Config) -> f64 {
+    let p = &config.platform;
+    let half_run = 0.5 * config.run.duration;
+    if p.stiffness[0][0] <= 0.0 {
+        return 0.0;
+    }
+    let period =
+        2.0 * std::f64::consts::PI * ((p.mass + p.added_mass[0][0]) / p.stiffness[0][0]).sqrt();
+    (TRANSIENT_CYCLES * period).min(half_run)
+}
+
+fn run_to_end(sim: &mut Simulation) -> Result<Vec<Outputs>, String> {
+    let run = sim.config().run.clone();
+    let steps = (run.duration / run.time_step).round() as usize;
+    let mut outputs = Vec::with_capacity(steps + 1);
+    outputs.push(sim.outputs().map_err(|e| e.to_string())?);
+    for _ in 0..steps {
+        sim.step([0.0; 3]).map_err(|e| e.to_string())?;
+        outputs.push(sim.outputs().map_err(|e| e.to_string())?);
+    }
+    Ok(outputs)
+}
+
+fn print_summary(sim: &Simulation, outputs: &[Outputs], transient: f64) -> Result<(), String> {
+    let dt = sim.config().run.time_step;
+    println!(
+        "statistics after a transient of {transient:.0} s ({} samples at {dt} s):",
+        outputs.len()
+    );
+    println!(
+        "{:<10} {:>14} {:>14} {:>14} {:>14}",
+        "DOF", "mean", "rms", "max", "min"
+    );
+    let rows: [(&str, f64, &str); 3] = [
+        ("surge", 1.0, "m"),
+        ("sway", 1.0, "m"),
+        ("yaw", 180.0 / std::f64::consts::PI, "deg"),
+    ];
+    for (i, (name, scale, unit)) in rows.iter().enumerate() {
+        let record: Vec<f64> = outputs.iter().map(|o| o.position[i] * scale).collect();
+        let Summary {
+            mean,
+            rms,
+            max,
+            min,
+            ..
+        } = summarize(&record, dt, transient).map_err(|e| e.to_string())?;
+        println!(
+            "{:<10} {mean:>14.4} {rms:>14.4} {max:>14.4} {min:>14.4}",
+            format!("{name} [{unit}]")
+        );
+    }
+    Ok(())
+}
+
+fn write_csv(path: &std::path::Path, outputs: &[Outputs]) -> std::io::Result<()> {
+    let mut w = BufWriter::new(std::fs::File::create(path)?);
+    writeln!(
+        w,
+        "time_s,X_m,Y_m,theta_rad,Xdot_m_s,Ydot_m_s,thetadot_rad_s,eta_m,\
+         Fx_wave_N,Fy_wave_N,Mz_wave_Nm,Fx_damping_N,Fy_damping_N,Mz_damping_Nm,\
+         Fx_drag_N,Fy_drag_N,Mz_drag_Nm"
+    )?;
+    for o in outputs {
+        let f = &o.forces;
+        let fields: Vec<String> = [o.time]
+            .iter()
+            .chain(&o.position)
+            .chain(&o.velocity)
+            .chain(std::iter::once(&o.wave_elevation))
+            .chain(&f.wave)
+            .chain(&f.damping)
+            .chain(&f.drag)
+            .map(|v| format!("{v:.9e}"))
+            .collect();
+        writeln!(w, "{}", fields.join(","))?;
+    }
+    w.flush()
+}

@@ -82,6 +82,7 @@ use super::{
     NewmanForm, Platform, Run,
 };
 use crate::error::{Error, Result};
+use crate::hydro::column_drift::isolated_columns_table;
 use crate::hydro::{DriftRow, DriftTable};
 use crate::sea_state::{SeaState, Spectrum, Spreading};
 use serde::Deserialize;
@@ -217,17 +218,22 @@ impl ConfigFile {
             }
             None => ModelOptions::default(),
         };
+        let environment = self.environment.into_core();
+        let platform = self.platform.into_core();
         let drift_span = self.drift.span();
-        let drift = self
-            .drift
-            .into_inner()
-            .into_table(source, drift_span, base_dir)?;
+        let drift = self.drift.into_inner().into_table(
+            source,
+            drift_span,
+            base_dir,
+            &platform,
+            &environment,
+        )?;
         Ok(Config {
-            environment: self.environment.into_core(),
+            environment,
             sea,
             current: self.current.into_core(),
             run: self.run.into_core(),
-            platform: self.platform.into_core(),
+            platform,
             drift,
             model,
             initial: self.initial.into_core(),
@@ -645,6 +651,70 @@ enum DriftFile {
     },
     /// A CSV file, relative to the configuration file's directory.
     Csv { file: PathBuf },
+    /// The closed-form drift of the platform's columns, each treated as an isolated,
+    /// infinitely deep column (no interaction; see `hydro::column_drift`), on `n_omega`
+    /// frequencies from `omega_min` to `omega_max` (rad/s) and headings every
+    /// `heading_step_deg` around the circle.
+    Columns {
+        #[serde(default = "default_columns_omega_min")]
+        omega_min: f64,
+        #[serde(default = "default_columns_omega_max")]
+        omega_max: f64,
+        #[serde(default = "default_columns_n_omega")]
+        n_omega: usize,
+        #[serde(default = "default_columns_heading_step")]
+        heading_step_deg: f64,
+    },
+}
+
+/// Default frequency range and resolution of `source = "columns"`.
+const COLUMNS_OMEGA_MIN: f64 = 0.05;
+const COLUMNS_OMEGA_MAX: f64 = 3.0;
+const COLUMNS_N_OMEGA: usize = 100;
+const COLUMNS_HEADING_STEP_DEG: f64 = 10.0;
+
+fn default_columns_omega_min() -> f64 {
+    COLUMNS_OMEGA_MIN
+}
+fn default_columns_omega_max() -> f64 {
+    COLUMNS_OMEGA_MAX
+}
+fn default_columns_n_omega() -> usize {
+    COLUMNS_N_OMEGA
+}
+fn default_columns_heading_step() -> f64 {
+    COLUMNS_HEADING_STEP_DEG
+}
+
+/// `count` frequencies evenly spaced from `min` to `max`, and headings every `step_deg`
+/// from 0 up to (not including) 360 deg, in radians.
+fn columns_grid(
+    min: f64,
+    max: f64,
+    count: usize,
+    step_deg: f64,
+) -> std::result::Result<(Vec<f64>, Vec<f64>), String> {
+    if !(min > 0.0 && max > min && min.is_finite() && max.is_finite()) {
+        return Err(format!(
+            "omega_min = {min}, omega_max = {max}: need 0 < omega_min < omega_max"
+        ));
+    }
+    if count < 2 {
+        return Err(format!("n_omega = {count}: need at least 2"));
+    }
+    if !(step_deg > 0.0 && step_deg <= 180.0) {
+        return Err(format!(
+            "heading_step_deg = {step_deg}: need 0 < step <= 180"
+        ));
+    }
+    let omegas = (0..count)
+        .map(|i| min + (max - min) * i as f64 / (count - 1) as f64)
+        .collect();
+    let n_headings = (360.0 / step_deg).round() as usize;
+    let headings = (0..n_headings)
+        .map(|i| (i as f64 * 360.0 / n_headings as f64).to_radians())
+        .collect();
+    Ok((omegas, headings))
 }
 
 impl DriftFile {
@@ -654,8 +724,27 @@ impl DriftFile {
         source: &Source,
         span: Range<usize>,
         base_dir: &Path,
+        platform: &Platform,
+        environment: &Environment,
     ) -> Result<DriftTable> {
         match self {
+            DriftFile::Columns {
+                omega_min,
+                omega_max,
+                n_omega,
+                heading_step_deg,
+            } => {
+                let (omegas, headings) =
+                    columns_grid(omega_min, omega_max, n_omega, heading_step_deg)
+                        .map_err(|m| source.error_at(span.clone(), format!("[drift] {m}")))?;
+                if platform.columns.is_empty() {
+                    return Err(source.error_at(
+                        span,
+                        "[drift] source = \"columns\" needs [[platform.columns]]".to_string(),
+                    ));
+                }
+                isolated_columns_table(&platform.columns, environment, &omegas, &headings)
+            }
             DriftFile::Table { columns, rows } => {
                 let at =
                     |message: String| source.error_at(span.clone(), format!("[drift] {message}"));

@@ -4,6 +4,7 @@
 //! ([`file`]) and the embedded default platform ([`default_platform`]) both produce it;
 //! degrees exist only in the file format and are converted there, once.
 
+pub mod default_platform;
 pub mod file;
 
 use crate::error::{
