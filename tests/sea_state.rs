@@ -102,7 +102,7 @@ fn elevation_is_gaussian() {
     let var = eta.iter().map(|e| (e - mean).powi(2)).sum::<f64>() / n;
     let skew = eta.iter().map(|e| (e - mean).powi(3)).sum::<f64>() / n / var.powf(1.5);
     let kurt = eta.iter().map(|e| (e - mean).powi(4)).sum::<f64>() / n / (var * var);
-    let independent = 6.0 * 3600.0 / 6.0; // one per ~6 s
+    let independent: f64 = 6.0 * 3600.0 / 6.0; // one per ~6 s
     assert!(
         skew.abs() < 5.0 * (6.0 / independent).sqrt(),
         "skewness {skew}"
