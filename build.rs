@@ -1,1 +1,595 @@
-fn main() {}
+//! Checks `modelDescription/modelDescription.xml` and generates
+//! `$OUT_DIR/model_description.rs` from it (GUID, model identifier, value references,
+//! start values and the variable table), so the Rust code and the XML cannot drift apart.
+//!
+//! The build fails with a message naming the offending variable on: duplicate names,
+//! duplicate value references within a base type (Integer and Enumeration share one
+//! space), illegal causality/variability/initial combinations, missing or forbidden start
+//! values, missing descriptions, enumeration start values outside the declared items,
+//! and a ModelStructure whose Outputs or InitialUnknowns do not match the variables.
+
+use quick_xml::events::{BytesStart, Event};
+use quick_xml::{Reader, XmlVersion};
+use std::collections::{BTreeMap, BTreeSet};
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+const XML_PATH: &str = "modelDescription/modelDescription.xml";
+
+/// One `ScalarVariable` as read from the XML.
+#[derive(Debug, Default)]
+struct Var {
+    name: String,
+    vr: u32,
+    causality: String,
+    variability: String,
+    initial: Option<String>,
+    description: Option<String>,
+    /// Real, Integer, Boolean, String or Enumeration.
+    ty: String,
+    declared_type: Option<String>,
+    start: Option<String>,
+    line: usize,
+}
+
+/// One `Unknown` of `Outputs` or `InitialUnknowns`.
+#[derive(Debug)]
+struct Unknown {
+    index: usize,
+    dependencies: Option<Vec<usize>>,
+}
+
+#[derive(Debug, Default)]
+struct Model {
+    fmi_version: String,
+    guid: String,
+    model_identifier: Option<String>,
+    vars: Vec<Var>,
+    /// Enumeration type name -> item values.
+    enum_items: BTreeMap<String, BTreeSet<i64>>,
+    outputs: Vec<Unknown>,
+    initial_unknowns: Vec<Unknown>,
+    saw_model_structure: bool,
+}
+
+fn main() {
+    println!("cargo:rerun-if-changed={XML_PATH}");
+    println!("cargo:rerun-if-changed=build.rs");
+
+    let xml = std::fs::read_to_string(XML_PATH)
+        .unwrap_or_else(|e| fail(&format!("cannot read {XML_PATH}: {e}")));
+    let model = parse(&xml).unwrap_or_else(|e| fail(&e));
+    let errors = check(&model);
+    if !errors.is_empty() {
+        fail(&errors.join("\n  "));
+    }
+    let code = generate(&model);
+    let out = PathBuf::from(std::env::var("OUT_DIR").expect("cargo sets OUT_DIR"))
+        .join("model_description.rs");
+    std::fs::write(&out, code)
+        .unwrap_or_else(|e| fail(&format!("cannot write {}: {e}", out.display())));
+}
+
+fn fail(message: &str) -> ! {
+    panic!("{XML_PATH} is invalid:\n  {message}");
+}
+
+/// The attributes of an element as a name -> unescaped value map.
+fn attrs(e: &BytesStart, line: usize) -> Result<BTreeMap<String, String>, String> {
+    let mut map = BTreeMap::new();
+    for a in e.attributes() {
+        let a = a.map_err(|err| format!("line {line}: bad attribute: {err}"))?;
+        let key = a.key.as_ref().to_string();
+        let value = a
+            .normalized_value(XmlVersion::Implicit1_0)
+            .map_err(|err| format!("line {line}: bad value of {key}: {err}"))?
+            .into_owned();
+        if map.insert(key.clone(), value).is_some() {
+            return Err(format!("line {line}: attribute {key} given twice"));
+        }
+    }
+    Ok(map)
+}
+
+fn parse(xml: &str) -> Result<Model, String> {
+    let mut reader = Reader::from_str(xml);
+    let mut model = Model::default();
+    let mut stack: Vec<String> = Vec::new();
+    let mut current_enum: Option<String> = None;
+    loop {
+        let pos = reader.buffer_position() as usize;
+        let line = 1 + xml[..pos.min(xml.len())].matches('\n').count();
+        let event = reader
+            .read_event()
+            .map_err(|e| format!("line {line}: XML error: {e}"))?;
+        let (e, is_empty) = match event {
+            Event::Start(e) => (e, false),
+            Event::Empty(e) => (e, true),
+            Event::End(_) => {
+                if stack.pop().as_deref() == Some("SimpleType") {
+                    current_enum = None;
+                }
+                continue;
+            }
+            Event::Eof => break,
+            _ => continue,
+        };
+        let tag = e.name().as_ref().to_string();
+        let a = attrs(&e, line)?;
+        let parent = stack.last().map(String::as_str);
+        match (parent, tag.as_str()) {
+            (None, "fmiModelDescription") => {
+                model.fmi_version = a.get("fmiVersion").cloned().unwrap_or_default();
+                model.guid = a.get("guid").cloned().unwrap_or_default();
+            }
+            (Some("fmiModelDescription"), "CoSimulation") => {
+                model.model_identifier = a.get("modelIdentifier").cloned();
+            }
+            (Some("TypeDefinitions"), "SimpleType") => {
+                current_enum = a.get("name").cloned();
+            }
+            (Some("Enumeration"), "Item") => {
+                if let Some(t) = &current_enum {
+                    let value = a
+                        .get("value")
+                        .ok_or(format!("line {line}: Item without value"))?
+                        .parse::<i64>()
+                        .map_err(|err| format!("line {line}: Item value: {err}"))?;
+                    model.enum_items.entry(t.clone()).or_default().insert(value);
+                }
+            }
+            (Some("ModelVariables"), "ScalarVariable") => {
+                let get = |k: &str| {
+                    a.get(k)
+                        .cloned()
+                        .ok_or(format!("line {line}: ScalarVariable without {k}"))
+                };
+                let name = get("name")?;
+                let vr = get("valueReference")?
+                    .parse::<u32>()
+                    .map_err(|err| format!("line {line}: {name}: valueReference: {err}"))?;
+                model.vars.push(Var {
+                    name,
+                    vr,
+                    // FMI 2 defaults: causality local, variability continuous.
+                    causality: a.get("causality").cloned().unwrap_or("local".into()),
+                    variability: a.get("variability").cloned().unwrap_or("continuous".into()),
+                    initial: a.get("initial").cloned(),
+                    description: a.get("description").cloned(),
+                    line,
+                    ..Var::default()
+                });
+            }
+            (
+                Some("ScalarVariable"),
+                ty @ ("Real" | "Integer" | "Boolean" | "String" | "Enumeration"),
+            ) => {
+                let var = model.vars.last_mut().expect("inside a ScalarVariable");
+                if !var.ty.is_empty() {
+                    return Err(format!("line {line}: {} has two type elements", var.name));
+                }
+                var.ty = ty.to_string();
+                var.declared_type = a.get("declaredType").cloned();
+                var.start = a.get("start").cloned();
+            }
+            (Some("fmiModelDescription"), "ModelStructure") => model.saw_model_structure = true,
+            (Some(list @ ("Outputs" | "InitialUnknowns" | "Derivatives")), "Unknown") => {
+                let index = a
+                    .get("index")
+                    .ok_or(format!("line {line}: Unknown without index"))?
+                    .parse::<usize>()
+                    .map_err(|err| format!("line {line}: Unknown index: {err}"))?;
+                let dependencies = match a.get("dependencies") {
+                    None => None,
+                    Some(d) => Some(
+                        d.split_whitespace()
+                            .map(|s| s.parse::<usize>())
+                            .collect::<Result<Vec<_>, _>>()
+                            .map_err(|err| format!("line {line}: dependencies: {err}"))?,
+                    ),
+                };
+                let unknown = Unknown {
+                    index,
+                    dependencies,
+                };
+                match list {
+                    "Outputs" => model.outputs.push(unknown),
+                    "InitialUnknowns" => model.initial_unknowns.push(unknown),
+                    _ => return Err(format!("line {line}: this model declares no Derivatives")),
+                }
+            }
+            _ => {}
+        }
+        if !is_empty {
+            stack.push(tag);
+        }
+    }
+    Ok(model)
+}
+
+/// Every problem found, one line each (empty = valid).
+fn check(m: &Model) -> Vec<String> {
+    let mut errors = Vec::new();
+    if m.fmi_version != "2.0" {
+        errors.push(format!(
+            "fmiVersion is {:?}, expected \"2.0\"",
+            m.fmi_version
+        ));
+    }
+    if !(m.guid.starts_with('{') && m.guid.ends_with('}') && m.guid.len() > 2) {
+        errors.push(format!("guid {:?} is not a UUID in braces", m.guid));
+    }
+    match &m.model_identifier {
+        None => errors.push("no CoSimulation element with a modelIdentifier".into()),
+        Some(id) if !is_c_identifier(id) => {
+            errors.push(format!("modelIdentifier {id:?} is not a C identifier"))
+        }
+        Some(_) => {}
+    }
+    if m.vars.is_empty() {
+        errors.push("no ScalarVariable".into());
+    }
+
+    let mut names = BTreeMap::new();
+    let mut idents = BTreeMap::new();
+    let mut vrs = BTreeMap::new();
+    for v in &m.vars {
+        let at = format!("{} (line {})", v.name, v.line);
+        if let Some(first) = names.insert(v.name.as_str(), v.line) {
+            errors.push(format!("duplicate name {at}, first on line {first}"));
+        }
+        if !is_c_identifier(&v.name) {
+            errors.push(format!(
+                "{at}: name is not a flat C-like identifier (variableNamingConvention flat, \
+                 and it must map to a Rust constant)"
+            ));
+        }
+        if let Some(other) = idents.insert(const_name(&v.name), v.name.as_str()) {
+            if other != v.name {
+                errors.push(format!(
+                    "{at}: Rust constant {} clashes with {other}",
+                    const_name(&v.name)
+                ));
+            }
+        }
+        let space = vr_space(&v.ty);
+        if let Some(other) = vrs.insert((space, v.vr), v.name.as_str()) {
+            errors.push(format!(
+                "{at}: valueReference {} of type {space} already used by {other}",
+                v.vr
+            ));
+        }
+        if v.description.as_deref().is_none_or(|d| d.trim().is_empty()) {
+            errors.push(format!("{at}: no description"));
+        }
+        if v.ty.is_empty() {
+            errors.push(format!("{at}: no type element (Real, Integer, ...)"));
+            continue;
+        }
+        errors.extend(
+            check_combination(v)
+                .into_iter()
+                .map(|e| format!("{at}: {e}")),
+        );
+        if let Some(start) = &v.start {
+            if let Err(e) = start_literal(&v.ty, start) {
+                errors.push(format!("{at}: start {start:?}: {e}"));
+            }
+            if v.ty == "Enumeration" {
+                let items = v.declared_type.as_ref().and_then(|t| m.enum_items.get(t));
+                match (items, start.parse::<i64>()) {
+                    (Some(items), Ok(s)) if !items.contains(&s) => {
+                        errors.push(format!("{at}: start {s} is not an item of its enumeration"))
+                    }
+                    (None, _) => errors.push(format!("{at}: declaredType is not an enumeration")),
+                    _ => {}
+                }
+            }
+        }
+    }
+
+    if !m.saw_model_structure {
+        errors.push("no ModelStructure".into());
+    }
+    let n = m.vars.len();
+    let index_of = |pred: &dyn Fn(&Var) -> bool| -> Vec<usize> {
+        (1..=n).filter(|&i| pred(&m.vars[i - 1])).collect()
+    };
+    let outputs = index_of(&|v| v.causality == "output");
+    let listed: Vec<usize> = m.outputs.iter().map(|u| u.index).collect();
+    if listed != outputs {
+        errors.push(format!(
+            "ModelStructure/Outputs lists indices {listed:?}; the output variables \
+             (1-based, in order) are {outputs:?}"
+        ));
+    }
+    let initial = index_of(&|v| {
+        (v.causality == "output"
+            && matches!(
+                effective_initial(v).as_deref(),
+                Some("approx" | "calculated")
+            ))
+            || v.causality == "calculatedParameter"
+    });
+    let listed: Vec<usize> = m.initial_unknowns.iter().map(|u| u.index).collect();
+    if listed != initial {
+        errors.push(format!(
+            "ModelStructure/InitialUnknowns lists indices {listed:?}; expected exactly the \
+             outputs with initial approx/calculated and the calculated parameters, \
+             sorted: {initial:?}"
+        ));
+    }
+    for (list, unknowns) in [
+        ("Outputs", &m.outputs),
+        ("InitialUnknowns", &m.initial_unknowns),
+    ] {
+        for u in unknowns {
+            for &d in u.dependencies.iter().flatten() {
+                if d == 0 || d > n {
+                    errors.push(format!(
+                        "ModelStructure/{list}: index {}: dependency {d} out of 1..={n}",
+                        u.index
+                    ));
+                } else if list == "Outputs" {
+                    let dep = &m.vars[d - 1];
+                    if !matches!(dep.causality.as_str(), "input" | "independent") {
+                        errors.push(format!(
+                            "ModelStructure/Outputs: index {}: dependency {d} ({}) is not an \
+                             input (states are not declared in this model)",
+                            u.index, dep.name
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    errors
+}
+
+/// The legal causality/variability/initial/start combinations of FMI 2.0 (section 2.2.7),
+/// with `initial` defaulted as the standard says.
+fn check_combination(v: &Var) -> Vec<String> {
+    let mut errors = Vec::new();
+    let (c, var) = (v.causality.as_str(), v.variability.as_str());
+    let initial = v.initial.as_deref();
+    let has_start = v.start.is_some();
+    let legal_variability: &[&str] = match c {
+        "parameter" | "calculatedParameter" => &["fixed", "tunable"],
+        "input" => &["discrete", "continuous"],
+        "output" => &["constant", "discrete", "continuous"],
+        "local" => &["constant", "fixed", "tunable", "discrete", "continuous"],
+        "independent" => &["continuous"],
+        _ => {
+            errors.push(format!("unknown causality {c:?}"));
+            return errors;
+        }
+    };
+    if !legal_variability.contains(&var) {
+        errors.push(format!(
+            "causality {c} with variability {var} is illegal (allowed: {legal_variability:?})"
+        ));
+    }
+    if var == "continuous" && v.ty != "Real" {
+        errors.push(format!(
+            "variability continuous needs type Real, not {}",
+            v.ty
+        ));
+    }
+    match c {
+        "parameter" => {
+            if !matches!(initial, None | Some("exact")) {
+                errors.push(format!(
+                    "a parameter needs initial=\"exact\", not {initial:?}"
+                ));
+            }
+            if !has_start {
+                errors.push("a parameter needs a start value".into());
+            }
+        }
+        "calculatedParameter" => {
+            if !matches!(initial, None | Some("calculated" | "approx")) {
+                errors.push(format!(
+                    "a calculatedParameter needs initial calculated or approx, not {initial:?}"
+                ));
+            }
+        }
+        "input" => {
+            if initial.is_some() {
+                errors.push("an input must not have an initial attribute".into());
+            }
+            if !has_start {
+                errors.push("an input needs a start value".into());
+            }
+        }
+        "independent" => {
+            if initial.is_some() || has_start {
+                errors.push("the independent variable has neither initial nor start".into());
+            }
+        }
+        _ => {
+            // output and local
+            let allowed: &[&str] = if var == "constant" {
+                &["exact"]
+            } else if c == "local" && matches!(var, "fixed" | "tunable") {
+                &["calculated", "approx"]
+            } else {
+                &["exact", "approx", "calculated"]
+            };
+            let eff = effective_initial(v);
+            if let Some(i) = eff.as_deref() {
+                if !allowed.contains(&i) {
+                    errors.push(format!(
+                        "causality {c}, variability {var}: initial {i} is illegal \
+                         (allowed: {allowed:?})"
+                    ));
+                }
+            }
+        }
+    }
+    match (effective_initial(v).as_deref(), has_start) {
+        (Some("exact" | "approx"), false) => errors.push(format!(
+            "initial {} needs a start value",
+            effective_initial(v).unwrap_or_default()
+        )),
+        (Some("calculated"), true) => {
+            errors.push("initial calculated must not have a start value".into())
+        }
+        _ => {}
+    }
+    errors
+}
+
+/// `initial` as given, or its FMI 2.0 default for the causality and variability.
+fn effective_initial(v: &Var) -> Option<String> {
+    if let Some(i) = &v.initial {
+        return Some(i.clone());
+    }
+    match (v.causality.as_str(), v.variability.as_str()) {
+        ("input" | "independent", _) => None,
+        (_, "constant") => Some("exact".into()),
+        ("parameter", _) => Some("exact".into()),
+        ("calculatedParameter", _) => Some("calculated".into()),
+        ("local", "fixed" | "tunable") => Some("calculated".into()),
+        _ => Some("calculated".into()),
+    }
+}
+
+/// The value-reference space of a type: fmi2GetInteger serves Integer and Enumeration.
+fn vr_space(ty: &str) -> &str {
+    if ty == "Enumeration" {
+        "Integer"
+    } else {
+        ty
+    }
+}
+
+fn is_c_identifier(s: &str) -> bool {
+    let mut chars = s.chars();
+    chars
+        .next()
+        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+}
+
+/// `waveDirection` -> `WAVE_DIRECTION`, `Fx_ext` -> `FX_EXT`, `Hs` -> `HS`.
+fn const_name(name: &str) -> String {
+    let mut out = String::new();
+    let mut prev: Option<char> = None;
+    for c in name.chars() {
+        if c.is_ascii_uppercase()
+            && prev.is_some_and(|p| p.is_ascii_lowercase() || p.is_ascii_digit())
+        {
+            out.push('_');
+        }
+        out.push(c.to_ascii_uppercase());
+        prev = Some(c);
+    }
+    out
+}
+
+/// The Rust type and literal of a start value.
+fn start_literal(ty: &str, start: &str) -> Result<(&'static str, String), String> {
+    match ty {
+        "Real" => {
+            let x: f64 = start.trim().parse().map_err(|e| format!("{e}"))?;
+            if !x.is_finite() {
+                return Err("not finite".into());
+            }
+            Ok(("f64", format!("{x:?}")))
+        }
+        "Integer" | "Enumeration" => {
+            let x: i32 = start.trim().parse().map_err(|e| format!("{e}"))?;
+            Ok(("i32", x.to_string()))
+        }
+        "Boolean" => match start.trim() {
+            "true" | "1" => Ok(("bool", "true".into())),
+            "false" | "0" => Ok(("bool", "false".into())),
+            other => Err(format!("{other:?} is not a boolean")),
+        },
+        "String" => Ok(("&str", format!("{start:?}"))),
+        other => Err(format!("unknown type {other}")),
+    }
+}
+
+fn rust_variant(s: &str) -> String {
+    let mut c = s.chars();
+    c.next()
+        .map(|f| f.to_ascii_uppercase().to_string() + c.as_str())
+        .unwrap_or_default()
+}
+
+fn generate(m: &Model) -> String {
+    let mut s = String::new();
+    let w = &mut s;
+    let _ = writeln!(
+        w,
+        "// @generated by build.rs from {XML_PATH}. Do not edit.\n"
+    );
+    let _ = writeln!(
+        w,
+        "/// The GUID of the model description; fmi2Instantiate must receive it."
+    );
+    let _ = writeln!(w, "pub const GUID: &str = {:?};", m.guid);
+    let _ = writeln!(
+        w,
+        "/// The co-simulation model identifier (the shared library's name)."
+    );
+    let _ = writeln!(
+        w,
+        "pub const MODEL_IDENTIFIER: &str = {:?};",
+        m.model_identifier.as_deref().unwrap_or_default()
+    );
+    let _ = writeln!(w, "/// Number of model variables.");
+    let _ = writeln!(
+        w,
+        "pub const NUMBER_OF_VARIABLES: usize = {};\n",
+        m.vars.len()
+    );
+
+    let _ = writeln!(
+        w,
+        "/// Value references, one per variable (unique within a base type)."
+    );
+    let _ = writeln!(w, "pub mod vr {{");
+    for v in &m.vars {
+        let _ = writeln!(w, "    /// `{}` ({}, {}).", v.name, v.ty, v.causality);
+        let _ = writeln!(w, "    pub const {}: u32 = {};", const_name(&v.name), v.vr);
+    }
+    let _ = writeln!(w, "}}\n");
+
+    let _ = writeln!(w, "/// Start values of the variables that have one.");
+    let _ = writeln!(w, "pub mod start {{");
+    for v in &m.vars {
+        if let Some(start) = &v.start {
+            let (ty, lit) = start_literal(&v.ty, start).expect("checked");
+            let _ = writeln!(w, "    /// `{}`.", v.name);
+            let _ = writeln!(w, "    pub const {}: {ty} = {lit};", const_name(&v.name));
+        }
+    }
+    let _ = writeln!(w, "}}\n");
+
+    let _ = writeln!(
+        w,
+        "/// Every model variable in the XML's order (index = position + 1)."
+    );
+    let _ = writeln!(w, "pub const VARIABLES: &[VariableInfo] = &[");
+    for v in &m.vars {
+        let _ = writeln!(w, "    VariableInfo {{");
+        let _ = writeln!(w, "        name: {:?},", v.name);
+        let _ = writeln!(w, "        value_reference: {},", v.vr);
+        let _ = writeln!(w, "        var_type: VariableType::{},", v.ty);
+        let _ = writeln!(
+            w,
+            "        causality: Causality::{},",
+            rust_variant(&v.causality)
+        );
+        let _ = writeln!(
+            w,
+            "        variability: Variability::{},",
+            rust_variant(&v.variability)
+        );
+        let _ = writeln!(w, "    }},");
+    }
+    let _ = writeln!(w, "];");
+    s
+}

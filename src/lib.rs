@@ -19,6 +19,7 @@ pub mod dynamics;
 pub mod error;
 pub mod forces;
 pub mod hydro;
+pub mod model_description;
 pub mod sea_state;
 pub mod simulation;
 pub mod special;
