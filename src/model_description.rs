@@ -232,9 +232,5 @@ mod tests {
             [0.0; 3],
             "inputs start at zero"
         );
-        assert_eq!(
-            (start::HS, start::TP, start::SEED, start::STIFFNESS_YAW),
-            (7.0, 12.0, 1, 1.2e9)
-        );
     }
 }

@@ -40,6 +40,40 @@ mod tests {
         assert!((yaw - 100.0).abs() < 0.5, "yaw period {yaw}");
     }
 
+    /// The FMU's start values (modelDescription.xml) describe the same default as this file.
+    #[test]
+    fn model_description_start_values_match_the_default() {
+        use crate::config::{DragModel, DriftDamping};
+        use crate::model_description::start;
+        use crate::sea_state::{Spectrum, Spreading};
+        let c = default_config().unwrap();
+        let Spectrum::Jonswap { hs, tp, gamma } = c.sea.spectrum else {
+            panic!("the default sea is JONSWAP");
+        };
+        assert_eq!((hs, tp), (start::HS, start::TP));
+        assert_eq!(gamma.is_none(), start::GAMMA == 0.0);
+        assert_eq!(c.sea.mean_direction, start::WAVE_DIRECTION);
+        assert_eq!(
+            c.sea.spreading == Spreading::LongCrested,
+            start::SPREADING_EXPONENT == 0.0
+        );
+        assert_eq!(c.sea.seed, start::SEED as u64);
+        assert_eq!(c.current.speed, start::CURRENT_SPEED);
+        assert_eq!(c.run.time_step, start::STEP_SIZE);
+        let stiffness = [
+            start::STIFFNESS_SURGE,
+            start::STIFFNESS_SWAY,
+            start::STIFFNESS_YAW,
+        ];
+        for (i, k) in stiffness.iter().enumerate() {
+            assert_eq!(c.platform.stiffness[i][i], *k);
+        }
+        assert_eq!(c.model.drag, DragModel::Combined { cd: start::CD });
+        assert_eq!(start::DRAG_MODEL, 2, "2 = combined");
+        assert_eq!(c.model.drift_damping, DriftDamping::Aranha);
+        assert_eq!(start::DRIFT_DAMPING, 2, "2 = aranha");
+    }
+
     /// Mass equals rho times the displaced volume of the documented geometry.
     #[test]
     fn mass_is_the_displaced_water() {
