@@ -1,0 +1,433 @@
+//! Every invalid input is refused with a typed `slowdrift::Error` that names the field and
+//! the value, never a panic; a running simulation refuses bad inputs and keeps its state.
+
+mod common;
+
+use common::*;
+use slowdrift::hydro::{DriftRow, DriftTable};
+use slowdrift::sea_state::{Spectrum, Spreading};
+use slowdrift::{Config, Error, Simulation};
+
+fn config() -> Config {
+    base_config(200.0, 1.0, 1)
+}
+
+/// `Simulation::new` must fail with `InvalidValue` naming `field` and `value`, and the
+/// message must show both.
+fn refused(config: Config, field: &str, value: &str) -> Error {
+    let err = Simulation::new(config).expect_err("must be refused");
+    match &err {
+        Error::InvalidValue {
+            field: f, value: v, ..
+        } => {
+            assert_eq!(f, field, "{err}");
+            assert_eq!(v, value, "{err}");
+        }
+        other => panic!("expected InvalidValue for {field}, got {other:?}"),
+    }
+    let text = err.to_string();
+    assert!(text.contains(field) && text.contains(value), "{text}");
+    err
+}
+
+fn with(edit: impl FnOnce(&mut Config)) -> Config {
+    let mut c = config();
+    edit(&mut c);
+    c
+}
+
+#[test]
+fn the_base_configuration_is_accepted() {
+    assert!(Simulation::new(config()).is_ok());
+}
+
+#[test]
+fn non_positive_sea_state_parameters_are_refused() {
+    refused(
+        with(|c| c.sea.spectrum = jonswap(0.0, 10.0)),
+        "sea.spectrum.hs",
+        "0",
+    );
+    refused(
+        with(|c| c.sea.spectrum = jonswap(-2.0, 10.0)),
+        "sea.spectrum.hs",
+        "-2",
+    );
+    refused(
+        with(|c| c.sea.spectrum = jonswap(6.0, 0.0)),
+        "sea.spectrum.tp",
+        "0",
+    );
+    refused(
+        with(|c| c.sea.spectrum = Spectrum::PiersonMoskowitz { hs: 6.0, tp: -1.5 }),
+        "sea.spectrum.tp",
+        "-1.5",
+    );
+    let gamma = |g| {
+        with(|c| {
+            c.sea.spectrum = Spectrum::Jonswap {
+                hs: 6.0,
+                tp: 10.0,
+                gamma: Some(g),
+            }
+        })
+    };
+    refused(gamma(0.5), "sea.spectrum.gamma", "0.5");
+    assert!(
+        Simulation::new(gamma(1.0)).is_ok(),
+        "gamma = 1 is PM-like, valid"
+    );
+}
+
+#[test]
+fn non_positive_platform_and_run_parameters_are_refused() {
+    refused(with(|c| c.platform.mass = 0.0), "platform.mass", "0");
+    refused(
+        with(|c| c.platform.mass = -1.0e7),
+        "platform.mass",
+        "-10000000",
+    );
+    refused(
+        with(|c| c.platform.yaw_inertia = 0.0),
+        "platform.yaw_inertia",
+        "0",
+    );
+    refused(with(|c| c.run.time_step = 0.0), "run.time_step", "0");
+    refused(with(|c| c.run.time_step = -1.0), "run.time_step", "-1");
+    refused(with(|c| c.run.duration = 0.0), "run.duration", "0");
+    refused(with(|c| c.run.duration = -100.0), "run.duration", "-100");
+    refused(
+        with(|c| c.platform.added_mass[0][0] = -1.0e7),
+        "platform.added_mass",
+        "[[-10000000.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]]",
+    );
+}
+
+#[test]
+fn non_finite_values_are_refused() {
+    let nan = f64::NAN;
+    let inf = f64::INFINITY;
+    refused(
+        with(|c| c.sea.spectrum = jonswap(nan, 10.0)),
+        "sea.spectrum.hs",
+        "NaN",
+    );
+    refused(
+        with(|c| c.sea.spectrum = jonswap(6.0, inf)),
+        "sea.spectrum.tp",
+        "inf",
+    );
+    refused(
+        with(|c| {
+            c.sea.spectrum = Spectrum::Jonswap {
+                hs: 6.0,
+                tp: 10.0,
+                gamma: Some(nan),
+            }
+        }),
+        "sea.spectrum.gamma",
+        "NaN",
+    );
+    refused(
+        with(|c| {
+            c.sea.spectrum = Spectrum::Tabulated {
+                omega: vec![0.3, 0.6, 0.9],
+                density: vec![1.0, nan, 1.0],
+            }
+        }),
+        "sea.spectrum.density[1]",
+        "NaN",
+    );
+    refused(
+        with(|c| c.sea.mean_direction = inf),
+        "sea.mean_direction",
+        "inf",
+    );
+    refused(with(|c| c.platform.mass = nan), "platform.mass", "NaN");
+    refused(
+        with(|c| c.platform.yaw_inertia = inf),
+        "platform.yaw_inertia",
+        "inf",
+    );
+    refused(
+        with(|c| c.platform.added_mass[2][1] = nan),
+        "platform.added_mass[2][1]",
+        "NaN",
+    );
+    refused(
+        with(|c| c.platform.stiffness[1][2] = -inf),
+        "platform.stiffness[1][2]",
+        "-inf",
+    );
+    refused(
+        with(|c| c.platform.linear_damping[0][0] = nan),
+        "platform.linear_damping[0][0]",
+        "NaN",
+    );
+    refused(
+        with(|c| c.platform.quadratic_damping[2][2] = inf),
+        "platform.quadratic_damping[2][2]",
+        "inf",
+    );
+    refused(with(|c| c.current.speed = nan), "current.speed", "NaN");
+    refused(
+        with(|c| c.current.direction = inf),
+        "current.direction",
+        "inf",
+    );
+    refused(with(|c| c.run.start_time = nan), "run.start_time", "NaN");
+    refused(with(|c| c.run.duration = inf), "run.duration", "inf");
+    refused(
+        with(|c| c.initial.position[2] = nan),
+        "initial.position[2]",
+        "NaN",
+    );
+    refused(
+        with(|c| c.initial.velocity[0] = -inf),
+        "initial.velocity[0]",
+        "-inf",
+    );
+}
+
+/// Rows of a 3 x 3 table: headings 0, 10, 20 deg, omegas 0.5, 1.0, 1.5.
+fn small_rows() -> Vec<DriftRow> {
+    let mut rows = Vec::new();
+    for ih in 0..3 {
+        for iw in 1..=3 {
+            rows.push(DriftRow {
+                omega: 0.5 * iw as f64,
+                heading: (10.0 * ih as f64).to_radians(),
+                drift: [1.0, 2.0, 3.0],
+                damping: None,
+            });
+        }
+    }
+    rows
+}
+
+fn table_refused(rows: &[DriftRow], field: &str, value: &str, reason: &str) {
+    let err = DriftTable::from_rows(rows).expect_err("must be refused");
+    let text = err.to_string();
+    match &err {
+        Error::InvalidValue {
+            field: f, value: v, ..
+        } => {
+            assert_eq!((f.as_str(), v.as_str()), (field, value), "{text}");
+        }
+        other => panic!("expected InvalidValue, got {other:?}"),
+    }
+    assert!(
+        text.contains(field) && text.contains(value) && text.contains(reason),
+        "{text}"
+    );
+}
+
+#[test]
+fn malformed_drift_tables_are_refused() {
+    assert!(DriftTable::from_rows(&small_rows()).is_ok());
+    table_refused(&[], "drift.rows", "[]", "empty");
+
+    let mut rows = small_rows();
+    rows[4].drift[1] = f64::NAN;
+    table_refused(&rows, "drift.rows[4].drift[1]", "NaN", "finite");
+    let mut rows = small_rows();
+    rows[7].omega = f64::INFINITY;
+    table_refused(&rows, "drift.rows[7].omega", "inf", "finite");
+    let mut rows = small_rows();
+    rows[2].heading = f64::NAN;
+    table_refused(&rows, "drift.rows[2].heading", "NaN", "finite");
+    let mut rows = small_rows();
+    rows[0].omega = 0.0;
+    table_refused(&rows, "drift.rows[0].omega", "0", "greater than zero");
+
+    // A hole at a later heading: (1.0 rad/s, 20 deg) missing.
+    let mut rows = small_rows();
+    rows.remove(7);
+    table_refused(
+        &rows,
+        "drift.rows",
+        "omega = 1, heading = 20.000 deg",
+        "hole",
+    );
+    // A hole at the first heading: 1.0 rad/s exists only at the other headings.
+    let mut rows = small_rows();
+    rows.remove(1);
+    table_refused(&rows, "drift.rows[3].omega", "1", "hole");
+
+    // Unsorted frequencies within a heading (rows 3 and 4 swapped: 1.0 after 0.5 -> 0.5
+    // after 1.0 is not increasing).
+    let mut rows = small_rows();
+    rows.swap(3, 4);
+    table_refused(&rows, "drift.rows[4].omega", "0.5", "not increasing");
+    // A duplicated frequency.
+    let mut rows = small_rows();
+    rows.insert(5, rows[4].clone());
+    table_refused(&rows, "drift.rows[5].omega", "1", "duplicated");
+
+    // Damping on some rows only.
+    let mut rows = small_rows();
+    rows[6].damping = Some([[0.0; 3]; 3]);
+    table_refused(&rows, "drift.rows[6].damping", "present", "every row");
+}
+
+#[test]
+fn a_drift_table_that_misses_the_wave_band_or_heading_is_refused() {
+    // Table 0.5 .. 1.5 rad/s; the default band for Tp = 10 s is 0.31 .. 2.51 rad/s.
+    let mut full_circle = Vec::new();
+    for ih in 0..36 {
+        for iw in 1..=3 {
+            full_circle.push(DriftRow {
+                omega: 0.5 * iw as f64,
+                heading: (10.0 * ih as f64).to_radians(),
+                drift: [1.0, 0.0, 0.0],
+                damping: None,
+            });
+        }
+    }
+    let err = refused(
+        with(|c| c.drift = DriftTable::from_rows(&full_circle).unwrap()),
+        "drift.omega",
+        "[0.5, 1.5] rad/s",
+    );
+    assert!(err.to_string().contains("wave band"), "{err}");
+
+    // Headings 0 .. 20 deg only (not periodic); waves towards 90 deg.
+    // Frequencies 0.1 .. 3.0 rad/s cover the band.
+    let mut rows = Vec::new();
+    for ih in 0..3 {
+        for k in 1..=30 {
+            rows.push(DriftRow {
+                omega: 0.1 * k as f64,
+                heading: (10.0 * ih as f64).to_radians(),
+                drift: [1.0, 0.0, 0.0],
+                damping: None,
+            });
+        }
+    }
+    let narrow = DriftTable::from_rows(&rows).unwrap();
+    assert_eq!(narrow.headings().len(), 3);
+    let mut c = with(|c| c.drift = narrow.clone());
+    c.sea.mean_direction = 90f64.to_radians();
+    let err = refused(c, "drift.heading", "90.000 deg");
+    assert!(err.to_string().contains("[0.000, 20.000] deg"), "{err}");
+    // The same table serves waves inside its headings.
+    let mut c = with(|c| c.drift = narrow);
+    c.sea.mean_direction = 15f64.to_radians();
+    assert!(Simulation::new(c).is_ok());
+}
+
+#[test]
+fn zero_directions_with_spreading_are_refused() {
+    let c = with(|c| {
+        c.sea.spreading = Spreading::CosN { n: 2.0 };
+        c.sea.n_directions = 0;
+    });
+    refused(c, "sea.n_directions", "0");
+    let c = with(|c| c.sea.spreading = Spreading::CosN { n: 0.0 });
+    refused(c, "sea.spreading.n", "0");
+}
+
+#[test]
+fn a_time_step_too_large_for_the_wave_band_is_refused() {
+    // Band top 4 wp = 2.51 rad/s; records at h/2 have Nyquist 2 pi / h: h = 3 s is too long.
+    let err = refused(with(|c| c.run.time_step = 3.0), "run.time_step", "3");
+    assert!(err.to_string().contains("Nyquist"), "{err}");
+    assert!(Simulation::new(with(|c| c.run.time_step = 2.0)).is_ok());
+}
+
+#[test]
+fn stepping_past_the_record_is_refused_and_keeps_the_state() {
+    let duration = 50.0;
+    let mut sim = Simulation::new(base_config(duration, 1.0, 4)).unwrap();
+    for _ in 0..50 {
+        sim.step([0.0; 3]).unwrap();
+    }
+    assert_eq!(sim.time(), duration);
+    // The record holds a few samples of tail; keep stepping until it runs out.
+    let mut extra = 0;
+    let err = loop {
+        let before = sim.snapshot();
+        match sim.step([0.0; 3]) {
+            Ok(()) => extra += 1,
+            Err(e) => {
+                assert_eq!(sim.snapshot(), before, "a refused step changed the state");
+                break e;
+            }
+        }
+        assert!(extra < 50, "the record never ends");
+    };
+    match err {
+        Error::BeyondRecord { time, record_end } => {
+            assert!(time > duration && record_end >= duration, "{err}");
+            assert!(err.to_string().contains("run.duration"), "{err}");
+        }
+        other => panic!("expected BeyondRecord, got {other:?}"),
+    }
+    // advance is refused the same way, also without changing the state.
+    let before = sim.snapshot();
+    assert!(matches!(
+        sim.advance(0.7, [0.0; 3]),
+        Err(Error::BeyondRecord { .. })
+    ));
+    assert_eq!(sim.snapshot(), before);
+}
+
+#[test]
+fn non_finite_external_forces_are_refused_and_keep_the_state() {
+    let mut sim = Simulation::new(config()).unwrap();
+    for _ in 0..5 {
+        sim.step([1.0e5, 0.0, 0.0]).unwrap();
+    }
+    let before = sim.snapshot();
+    for (i, bad) in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY]
+        .into_iter()
+        .enumerate()
+    {
+        let mut force = [1.0, 2.0, 3.0];
+        force[i] = bad;
+        let field = format!("external_force[{i}]");
+        for result in [sim.step(force), sim.advance(2.5, force)] {
+            let err = result.expect_err("non-finite force must be refused");
+            match &err {
+                Error::NonFiniteInput { field: f, value } => {
+                    assert_eq!(f, &field);
+                    assert!(value.is_nan() == bad.is_nan() && (bad.is_nan() || *value == bad));
+                }
+                other => panic!("expected NonFiniteInput, got {other:?}"),
+            }
+            let text = err.to_string();
+            assert!(
+                text.contains(&field) && text.contains(&bad.to_string()),
+                "{text}"
+            );
+            assert_eq!(sim.snapshot(), before);
+        }
+    }
+    // Still usable afterwards.
+    sim.step([0.0; 3]).unwrap();
+}
+
+#[test]
+fn non_positive_advance_intervals_are_refused() {
+    let mut sim = Simulation::new(config()).unwrap();
+    sim.step([0.0; 3]).unwrap();
+    let before = sim.snapshot();
+    for (interval, text) in [
+        (0.0, "0"),
+        (-1.0, "-1"),
+        (f64::NAN, "NaN"),
+        (f64::INFINITY, "inf"),
+    ] {
+        let err = sim
+            .advance(interval, [0.0; 3])
+            .expect_err("must be refused");
+        match &err {
+            Error::InvalidValue { field, value, .. } => {
+                assert_eq!((field.as_str(), value.as_str()), ("interval", text));
+            }
+            other => panic!("expected InvalidValue, got {other:?}"),
+        }
+        assert!(err.to_string().contains("interval"), "{err}");
+        assert_eq!(sim.snapshot(), before);
+    }
+}
