@@ -19,7 +19,7 @@ const WHOLE_STEPS_TOLERANCE: f64 = 1e-9;
 /// (The records are a pure function of the configuration and are not part of it.)
 #[derive(Debug, Clone, PartialEq)]
 pub struct Snapshot {
-    /// Time = origin + count * step.
+    /// Time = origin + count * step, with the configured step h.
     origin: f64,
     count: u64,
     step: f64,
@@ -107,13 +107,7 @@ impl Simulation {
     /// held constant over the step).
     pub fn step(&mut self, external: [f64; 3]) -> Result<()> {
         check_external(&external)?;
-        let h = self.config.run.time_step;
-        if self.state.step != h {
-            self.state.origin = self.state.time();
-            self.state.count = 0;
-            self.state.step = h;
-        }
-        self.take_steps(1, external)
+        self.whole_steps(1, external)
     }
 
     /// Advances by `interval` with the external force held constant: whole steps of h when
@@ -128,49 +122,46 @@ impl Simulation {
                 "must be a finite positive time",
             ));
         }
-        let h = self.config.run.time_step;
-        let ratio = interval / h;
+        let ratio = interval / self.config.run.time_step;
         let whole = ratio.round();
         if whole >= 1.0 && (ratio - whole).abs() <= WHOLE_STEPS_TOLERANCE * whole {
-            if self.state.step != h {
-                self.state.origin = self.state.time();
-                self.state.count = 0;
-                self.state.step = h;
-            }
-            return self.take_steps(whole as u64, external);
+            return self.whole_steps(whole as u64, external);
         }
-        let start = self.state.time();
+        let saved = self.state.clone();
+        let start = self.time();
         let substeps = ratio.ceil().max(1.0) as u64;
-        let saved = self.state.clone();
-        self.state.origin = start;
-        self.state.count = 0;
-        self.state.step = interval / substeps as f64;
-        if let Err(e) = self.take_steps(substeps, external) {
-            self.state = saved;
-            return Err(e);
-        }
-        // Land exactly on the requested time and return to the regular step.
-        self.state.origin = start + interval;
-        self.state.count = 0;
-        self.state.step = h;
-        Ok(())
-    }
-
-    fn take_steps(&mut self, count: u64, external: [f64; 3]) -> Result<()> {
-        let saved = self.state.clone();
-        for _ in 0..count {
-            if let Err(e) = self.rk4(external) {
+        let h = interval / substeps as f64;
+        for i in 0..substeps {
+            if let Err(e) = self.rk4(start + i as f64 * h, h, external) {
                 self.state = saved;
                 return Err(e);
             }
+        }
+        // Land exactly on the requested time; the regular steps count from there.
+        self.state.origin = start + interval;
+        self.state.count = 0;
+        self.state.external_force = external;
+        Ok(())
+    }
+
+    /// `count` steps of h at times origin + n h; all or nothing.
+    fn whole_steps(&mut self, count: u64, external: [f64; 3]) -> Result<()> {
+        let saved = self.state.clone();
+        let h = self.config.run.time_step;
+        for _ in 0..count {
+            if let Err(e) = self.rk4(self.time(), h, external) {
+                self.state = saved;
+                return Err(e);
+            }
+            self.state.count += 1;
         }
         self.state.external_force = external;
         Ok(())
     }
 
-    fn rk4(&mut self, external: [f64; 3]) -> Result<()> {
+    /// One RK4 step of the position and velocity from time t over h.
+    fn rk4(&mut self, t: f64, h: f64, external: [f64; 3]) -> Result<()> {
         let s = &self.state;
-        let t = s.time();
         let y = [
             s.position[0],
             s.position[1],
@@ -180,7 +171,7 @@ impl Simulation {
             s.velocity[2],
         ];
         let (model, records) = (&self.model, &self.records);
-        let next = rk4_step(t, &y, s.step, |time, y| {
+        let next = rk4_step(t, &y, h, |time, y| {
             let at = records.clock.locate(time)?;
             let q = [y[0], y[1], y[2]];
             let qd = [y[3], y[4], y[5]];
@@ -191,7 +182,6 @@ impl Simulation {
         if next.iter().any(|v| !v.is_finite()) {
             return Err(Error::Diverged { time: t });
         }
-        self.state.count += 1;
         self.state.position = [next[0], next[1], next[2]];
         self.state.velocity = [next[3], next[4], next[5]];
         Ok(())
