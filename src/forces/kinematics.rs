@@ -44,6 +44,10 @@ pub fn column_kinematics(
     gravity: f64,
     synth: &mut Synthesizer,
 ) -> Vec<ColumnKinematics> {
+    if columns.is_empty() {
+        // No drag: no records, and no record-length scratch to allocate and fault in.
+        return Vec::new();
+    }
     let grid = &components.grid;
     let mut series = vec![Complex64::default(); grid.len];
     let zero = vec![Complex64::default(); grid.count];
