@@ -56,24 +56,22 @@ impl ForceRecords {
         let n = grid.len;
         let mut synth = Synthesizer::new(grid);
         let mut builder = NewmanBuilder::new(grid.count, n);
-        let mut eta_c = vec![Complex64::default(); n];
-        let mut elevation = vec![0.0; n];
-        let with_damping = transfers.iter().any(|t| t.damping.is_some());
-        let mut force: [Vec<f64>; 3] = std::array::from_fn(|_| vec![0.0; n]);
-        let mut damping: [[Vec<f64>; 3]; 3] = std::array::from_fn(|_| {
-            std::array::from_fn(|_| {
-                if with_damping {
-                    vec![0.0; n]
-                } else {
-                    Vec::new()
-                }
-            })
-        });
+        // The arithmetic form needs each direction's complex elevation series.
+        let mut eta_c = match options.newman {
+            NewmanForm::Arithmetic => vec![Complex64::default(); n],
+            NewmanForm::Geometric => Vec::new(),
+        };
+        let mut elevation_coefficients = vec![Complex64::default(); grid.count];
+        // Records are allocated by the first direction that adds to them.
+        let mut force: [Vec<f64>; 3] = Default::default();
+        let mut damping: [[Vec<f64>; 3]; 3] = Default::default();
         for (k, transfer) in transfers.iter().enumerate() {
             let amplitudes = components.of_direction(k);
-            synth.complex_series(amplitudes, &mut eta_c);
-            for (e, c) in elevation.iter_mut().zip(&eta_c) {
-                *e += c.re;
+            for (sum, a) in elevation_coefficients.iter_mut().zip(amplitudes) {
+                *sum += a;
+            }
+            if options.newman == NewmanForm::Arithmetic {
+                synth.complex_series(amplitudes, &mut eta_c);
             }
             for (out, t) in force.iter_mut().zip(&transfer.drift) {
                 builder.accumulate(&mut synth, options.newman, amplitudes, &eta_c, t, out);
@@ -86,6 +84,8 @@ impl ForceRecords {
                 }
             }
         }
+        let elevation = builder.real_series(&mut synth, &elevation_coefficients);
+        let with_damping = transfers.iter().any(|t| t.damping.is_some());
         let kinematics = kinematics::column_kinematics(
             components,
             options.drag_columns,
@@ -107,7 +107,8 @@ impl ForceRecords {
     }
 }
 
-/// A record, or the empty zero record when every sample is exactly zero.
+/// A record, or the empty zero record when no direction added to it or every sample is
+/// exactly zero.
 fn record_or_zero(samples: Vec<f64>) -> Record {
     if samples.iter().all(|&v| v == 0.0) {
         Record::zero()

@@ -33,8 +33,9 @@ impl NewmanBuilder {
     }
 
     /// Adds one direction's slowly varying record for the diagonal `transfer` (T_i at every
-    /// component) to `out`. `amplitudes` are the direction's a_i and `eta_c` its complex
-    /// elevation series sum a_i e^{i omega_i t_m} (used by the arithmetic form).
+    /// component) to `out`, which is allocated (zeros, record length) when first needed and
+    /// left empty if the transfer is zero. `amplitudes` are the direction's a_i and `eta_c`
+    /// its complex elevation series sum a_i e^{i omega_i t_m} (used by the arithmetic form).
     pub fn accumulate(
         &mut self,
         synth: &mut Synthesizer,
@@ -42,13 +43,15 @@ impl NewmanBuilder {
         amplitudes: &[Complex64],
         eta_c: &[Complex64],
         transfer: &[f64],
-        out: &mut [f64],
+        out: &mut Vec<f64>,
     ) {
+        let len = self.series.len();
         match form {
             NewmanForm::Geometric => {
                 for sign in [1.0, -1.0] {
                     if self.fill_signed(amplitudes, transfer, sign) {
                         synth.complex_series(&self.coefficients, &mut self.series);
+                        out.resize(len, 0.0);
                         for (o, p) in out.iter_mut().zip(&self.series) {
                             *o += sign * p.norm_sqr();
                         }
@@ -63,11 +66,18 @@ impl NewmanBuilder {
                     *c = a * t;
                 }
                 synth.complex_series(&self.coefficients, &mut self.series);
+                out.resize(len, 0.0);
                 for ((o, q), e) in out.iter_mut().zip(&self.series).zip(eta_c) {
                     *o += (q * e.conj()).re;
                 }
             }
         }
+    }
+
+    /// The real series Re sum_j c_j e^{i omega_j t_m} at every sample (e.g. the elevation).
+    pub fn real_series(&mut self, synth: &mut Synthesizer, coefficients: &[Complex64]) -> Vec<f64> {
+        synth.complex_series(coefficients, &mut self.series);
+        self.series.iter().map(|c| c.re).collect()
     }
 
     /// Coefficients a_i sqrt(sign T_i) where sign T_i > 0, else 0; false if all are zero.
