@@ -20,12 +20,16 @@
 //! clear_page). Records that stay zero are never allocated, and the geometric form needs no
 //! per-direction complex elevation buffer.
 
+#[path = "../tests/common/mod.rs"]
+mod common;
+
+use common::{four_columns, oscillator_platform};
 use criterion::Criterion;
 use rustfft::num_complex::Complex64;
 use rustfft::FftPlanner;
 use slowdrift::config::{
-    Column, Current, DragModel, DriftDamping, Environment, InitialCondition, ModelOptions,
-    NewmanForm, Platform, Run,
+    Current, DragModel, DriftDamping, Environment, InitialCondition, ModelOptions, NewmanForm,
+    Platform, Run,
 };
 use slowdrift::forces::{transfers_on_grid, ForceRecords, RecordOptions, Synthesizer};
 use slowdrift::hydro::aranha::aranha_damping;
@@ -33,7 +37,6 @@ use slowdrift::hydro::column_drift::isolated_columns_table;
 use slowdrift::hydro::{DriftRow, DriftTable};
 use slowdrift::sea_state::{FrequencyGrid, SeaState, Spectrum, Spreading, WaveComponents};
 use slowdrift::{Config, Simulation};
-use std::f64::consts::PI;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
@@ -41,26 +44,13 @@ const THREE_HOURS: f64 = 3.0 * 3600.0;
 
 // ---------------------------------------------------------------- configuration builder
 
-/// The paper's four-column platform: columns of radius 10 m at (+-35, +-35), draft 30 m.
-fn columns() -> Vec<Column> {
-    [(35.0, 35.0), (-35.0, 35.0), (-35.0, -35.0), (35.0, -35.0)]
-        .iter()
-        .map(|&(x, y)| Column {
-            x,
-            y,
-            diameter: 20.0,
-            draft: 30.0,
-        })
-        .collect()
-}
-
 /// Isolated-columns drift over omega 0.05 .. 3 rad/s and headings every 10 deg, plus a
 /// small artificial yaw drift (the square array alone has none): a 5 m lever on the
 /// horizontal drift, times sin(2 beta), so that every record of the 3 DOF is non-zero.
 fn drift_table(environment: &Environment) -> DriftTable {
     let omegas: Vec<f64> = (1..=60).map(|i| 0.05 * i as f64).collect();
     let headings: Vec<f64> = (0..36).map(|i| (10.0 * i as f64).to_radians()).collect();
-    let base = isolated_columns_table(&columns(), environment, &omegas, &headings).unwrap();
+    let base = isolated_columns_table(&four_columns(), environment, &omegas, &headings).unwrap();
     let mut rows = Vec::with_capacity(omegas.len() * headings.len());
     for (ih, &heading) in base.headings().iter().enumerate() {
         for (iw, &omega) in base.omegas().iter().enumerate() {
@@ -77,27 +67,12 @@ fn drift_table(environment: &Environment) -> DriftTable {
     DriftTable::from_rows(&rows).unwrap()
 }
 
+/// Four columns on an oscillator platform: 100 s surge/sway, 60 s yaw, 5 % damping.
 fn platform() -> Platform {
     let mass = 4.0e7;
-    let yaw_inertia = mass * 40.0 * 40.0;
-    let inertia = [mass, mass, yaw_inertia];
-    let periods = [100.0, 100.0, 60.0];
-    let zeta = 0.05;
-    let mut stiffness = [[0.0; 3]; 3];
-    let mut damping = [[0.0; 3]; 3];
-    for i in 0..3 {
-        let wn = 2.0 * PI / periods[i];
-        stiffness[i][i] = inertia[i] * wn * wn;
-        damping[i][i] = 2.0 * zeta * inertia[i] * wn;
-    }
     Platform {
-        mass,
-        yaw_inertia,
-        added_mass: [[0.0; 3]; 3],
-        stiffness,
-        linear_damping: damping,
-        quadratic_damping: [[0.0; 3]; 3],
-        columns: columns(),
+        columns: four_columns(),
+        ..oscillator_platform(mass, mass * 40.0 * 40.0, [100.0, 100.0, 60.0], 0.05)
     }
 }
 

@@ -4,21 +4,9 @@
 mod common;
 
 use common::*;
-use slowdrift::config::{Column, DragModel, DriftDamping};
+use slowdrift::config::{DragModel, DriftDamping};
 use slowdrift::hydro::{DriftRow, DriftTable};
 use slowdrift::Simulation;
-
-fn four_columns() -> Vec<Column> {
-    [(35.0, 35.0), (-35.0, 35.0), (-35.0, -35.0), (35.0, -35.0)]
-        .iter()
-        .map(|&(x, y)| Column {
-            x,
-            y,
-            diameter: 20.0,
-            draft: 30.0,
-        })
-        .collect()
-}
 
 /// Runs to the end and returns the mean position over the second half.
 fn mean_position(sim: &mut Simulation) -> [f64; 3] {

@@ -3,8 +3,8 @@
 #![allow(dead_code)] // each test binary uses a different subset
 
 use slowdrift::config::{
-    Current, DragModel, DriftDamping, Environment, InitialCondition, ModelOptions, NewmanForm,
-    Platform, Run,
+    Column, Current, DragModel, DriftDamping, Environment, InitialCondition, ModelOptions,
+    NewmanForm, Platform, Run,
 };
 use slowdrift::hydro::{DriftRow, DriftTable};
 use slowdrift::sea_state::{SeaState, Spectrum, Spreading};
@@ -30,6 +30,19 @@ pub fn drift_table(drift: impl Fn(f64, f64) -> [f64; 3]) -> DriftTable {
         }
     }
     DriftTable::from_rows(&rows).unwrap()
+}
+
+/// The paper's four columns: radius 10 m at (+-35, +-35) m, draft 30 m.
+pub fn four_columns() -> Vec<Column> {
+    [(35.0, 35.0), (-35.0, 35.0), (-35.0, -35.0), (35.0, -35.0)]
+        .iter()
+        .map(|&(x, y)| Column {
+            x,
+            y,
+            diameter: 20.0,
+            draft: 30.0,
+        })
+        .collect()
 }
 
 /// A smooth positive surge drift of a plausible size (N/m^2), isotropic in heading.
