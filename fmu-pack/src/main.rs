@@ -1,13 +1,154 @@
-//! `fmu-pack`: will package the SlowDrift cdylib as `target/fmu/SlowDrift.fmu` and run it
-//! through its C ABI. The FMI 2.0 exports it packs are issue #4's work; until they exist
-//! this tool says so and fails, rather than writing an FMU that cannot be loaded.
+//! `fmu-pack`: builds the SlowDrift cdylib in release mode, writes
+//! `target/fmu/SlowDrift.fmu` (modelDescription.xml, binaries/linux64/SlowDrift.so,
+//! resources/platform.toml, documentation/index.html), then loads the library from the
+//! archive through its C ABI, as a master would, runs the default platform in the default
+//! sea state for three hours and prints a short summary.
 
-use std::process::ExitCode;
+mod master;
+mod unzip;
+mod zip;
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, ExitCode};
+
+const MODEL_IDENTIFIER: &str = "SlowDrift";
+const THREE_HOURS: f64 = 3.0 * 3600.0;
+const COMMUNICATION_STEP: f64 = 1.0;
+/// Samples dropped before the statistics: ten 200 s surge periods of the default platform.
+const TRANSIENT: f64 = 2000.0;
 
 fn main() -> ExitCode {
-    eprintln!(
-        "fmu-pack: the FMI 2.0 co-simulation exports are not built yet (issue #4); \
-         nothing to pack. Run the simulation with `cargo run --release -- simulate`."
+    match run() {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => {
+            eprintln!("fmu-pack: {message}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn run() -> Result<(), String> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .ok_or("no workspace root")?
+        .to_path_buf();
+    let target = std::env::var_os("CARGO_TARGET_DIR")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| root.join("target"));
+    build_library(&root)?;
+    let fmu_path = target.join("fmu").join(format!("{MODEL_IDENTIFIER}.fmu"));
+    let library = target.join("release").join("libslowdrift.so");
+    pack(&root, &library, &fmu_path)?;
+    println!("wrote {}", fmu_path.display());
+    check_by_running(&fmu_path, &target.join("fmu").join("unpacked"))
+}
+
+fn build_library(root: &Path) -> Result<(), String> {
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    let status = Command::new(cargo)
+        .args(["build", "--release", "--lib", "-p", "slowdrift"])
+        .current_dir(root)
+        .status()
+        .map_err(|e| format!("running cargo: {e}"))?;
+    status
+        .success()
+        .then_some(())
+        .ok_or_else(|| "cargo build of the library failed".into())
+}
+
+fn read(path: &Path) -> Result<Vec<u8>, String> {
+    std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))
+}
+
+fn pack(root: &Path, library: &Path, fmu_path: &Path) -> Result<(), String> {
+    let readme = String::from_utf8_lossy(&read(&root.join("README.md"))?).into_owned();
+    let entries = vec![
+        zip::Entry {
+            path: "modelDescription.xml".into(),
+            data: read(&root.join("modelDescription/modelDescription.xml"))?,
+        },
+        zip::Entry {
+            path: format!("binaries/linux64/{MODEL_IDENTIFIER}.so"),
+            data: read(library)?,
+        },
+        zip::Entry {
+            path: "resources/platform.toml".into(),
+            data: read(&root.join("src/config/default.toml"))?,
+        },
+        zip::Entry {
+            path: "documentation/index.html".into(),
+            data: documentation(&readme).into_bytes(),
+        },
+    ];
+    std::fs::create_dir_all(fmu_path.parent().expect("has a parent")).map_err(|e| e.to_string())?;
+    let mut file =
+        std::fs::File::create(fmu_path).map_err(|e| format!("{}: {e}", fmu_path.display()))?;
+    zip::write_zip(&mut file, &entries).map_err(|e| format!("{}: {e}", fmu_path.display()))
+}
+
+/// The README as a preformatted HTML page.
+fn documentation(readme: &str) -> String {
+    let escaped = readme
+        .replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;");
+    format!("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>SlowDrift</title></head>\n<body><pre>\n{escaped}</pre></body></html>\n")
+}
+
+/// Unpacks the archive's library, model description and resources, loads the library and
+/// runs three hours of the default platform.
+fn check_by_running(fmu_path: &Path, unpack_dir: &Path) -> Result<(), String> {
+    let archive = read(fmu_path)?;
+    let entry = |p: &str| {
+        unzip::read_entry(&archive, p).map_err(|e| format!("{}: {e}", fmu_path.display()))
+    };
+    let resources = unpack_dir.join("resources");
+    std::fs::create_dir_all(&resources).map_err(|e| e.to_string())?;
+    let library = unpack_dir.join(format!("{MODEL_IDENTIFIER}.so"));
+    std::fs::write(
+        &library,
+        entry(&format!("binaries/linux64/{MODEL_IDENTIFIER}.so"))?,
+    )
+    .map_err(|e| e.to_string())?;
+    std::fs::write(
+        resources.join("platform.toml"),
+        entry("resources/platform.toml")?,
+    )
+    .map_err(|e| e.to_string())?;
+    let xml = String::from_utf8(entry("modelDescription.xml")?).map_err(|e| e.to_string())?;
+    let description = master::ModelDescription::parse(xml)?;
+    let fmu = master::Fmu::load(&library)?;
+    let uri = format!(
+        "file://{}",
+        resources
+            .canonicalize()
+            .map_err(|e| e.to_string())?
+            .display()
     );
-    ExitCode::from(2)
+    let names = ["X", "Y", "theta"];
+    let started = std::time::Instant::now();
+    let samples = master::run(
+        &fmu,
+        &description,
+        &uri,
+        &names,
+        (0.0, THREE_HOURS, COMMUNICATION_STEP),
+    )?;
+    let elapsed = started.elapsed().as_secs_f64();
+    println!("ran the packed FMU through its C ABI: 3 hours at a {COMMUNICATION_STEP} s communication step in {elapsed:.3} s");
+    println!("statistics after {TRANSIENT} s:");
+    println!(
+        "{:<10} {:>12} {:>12} {:>12}",
+        "output", "mean", "rms", "max"
+    );
+    let skip = (TRANSIENT / COMMUNICATION_STEP) as usize;
+    for (name, values) in names.iter().zip(&samples) {
+        let kept = &values[skip.min(values.len())..];
+        let n = kept.len().max(1) as f64;
+        let mean = kept.iter().sum::<f64>() / n;
+        let rms = (kept.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / n).sqrt();
+        let max = kept.iter().cloned().fold(f64::MIN, f64::max);
+        println!("{name:<10} {mean:>12.4} {rms:>12.4} {max:>12.4}");
+    }
+    Ok(())
 }
