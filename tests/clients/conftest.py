@@ -1,0 +1,30 @@
+"""Shared fixtures of the Python client tests (run them with tests/clients/run_clients.sh)."""
+
+import os
+import sys
+
+import pytest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+import mooring_stiffness  # noqa: E402
+import mooring_loop  # noqa: E402
+
+
+@pytest.fixture(scope="session")
+def stiffness():
+    """The mooring's measured static stiffness (mooring_stiffness.measure), computed once."""
+    return mooring_stiffness.measure()
+
+
+@pytest.fixture(scope="session")
+def fmu():
+    """Path of SlowDrift.fmu. Missing: skip, or fail when SLOWDRIFT_REQUIRE_FMU=1
+    (run_clients.sh sets it after building the FMU, so a missing FMU never passes silently)."""
+    path = mooring_loop.fmu_path()
+    if not os.path.isfile(path):
+        msg = f"{path} not found (build it with: cargo run --release -p fmu-pack)"
+        if os.environ.get("SLOWDRIFT_REQUIRE_FMU") == "1":
+            pytest.fail(msg)
+        pytest.skip(msg)
+    return path

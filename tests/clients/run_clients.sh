@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Python client tests of SlowDrift.fmu (issue #4): fmpy, fmu-manipulation-toolbox, libcosimpy,
+# and the closed mooring loop with MoorDyn. Creates target/client-venv from PyPI on first
+# use, builds target/fmu/SlowDrift.fmu if it is missing, runs pytest on tests/clients.
+#   tests/clients/run_clients.sh              # all client tests
+#   tests/clients/run_clients.sh -k mooring   # extra arguments go to pytest
+# Environment: SLOWDRIFT_FMU (another FMU file), PYTHON (interpreter for the venv, python3).
+set -euo pipefail
+
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+cd "$repo"
+
+venv="$repo/target/client-venv"
+packages=(fmpy==0.3.32 fmu-manipulation-toolbox==2.0 libcosimpy==0.0.6 moordyn==2.7.2 numpy pytest)
+stamp="$venv/.installed"
+
+if [[ ! -x "$venv/bin/python" ]]; then
+    echo "run_clients.sh: creating $venv" >&2
+    "${PYTHON:-python3}" -m venv "$venv"
+fi
+# Install (again) when the pinned list changes; the stamp holds the list that was installed.
+if [[ ! -f "$stamp" || "$(cat "$stamp")" != "${packages[*]}" ]]; then
+    echo "run_clients.sh: installing ${packages[*]}" >&2
+    "$venv/bin/python" -m pip install --quiet --disable-pip-version-check "${packages[@]}"
+    printf '%s' "${packages[*]}" > "$stamp"
+fi
+
+fmu="${SLOWDRIFT_FMU:-$repo/target/fmu/SlowDrift.fmu}"
+if [[ ! -f "$fmu" ]]; then
+    echo "run_clients.sh: $fmu missing, building it with cargo run --release -p fmu-pack" >&2
+    cargo run --release -p fmu-pack
+fi
+if [[ ! -f "$fmu" ]]; then
+    echo "run_clients.sh: $fmu still missing after cargo run --release -p fmu-pack" >&2
+    exit 1
+fi
+
+export SLOWDRIFT_FMU="$fmu"
+export SLOWDRIFT_REQUIRE_FMU=1
+# exec: pytest's exit status is the script's.
+exec "$venv/bin/python" -m pytest -ra "$repo/tests/clients" "$@"
