@@ -821,3 +821,44 @@ fn database_from_synthetic_wamit_files_prefers_the_momentum_drift() {
         HydroDatabase::from_wamit(&dir.join("nothing"), &WamitOptions::default()).unwrap_err();
     assert!(err.to_string().contains("no WAMIT file found"), "{err}");
 }
+
+// ------------------------------------------------------------------------ CLI
+
+#[test]
+fn cli_hydro_wamit_writes_the_database_and_summarises() {
+    let Some(root) = common::oc4_root_or_skip() else {
+        return;
+    };
+    let out = temp_dir("cli").join("oc4.json");
+    let run = std::process::Command::new(env!("CARGO_BIN_EXE_slowdrift"))
+        .args(["hydro", "wamit", "--root"])
+        .arg(&root)
+        .args(["--rho", "1025", "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        run.status.success(),
+        "{stdout}{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    assert!(
+        stdout.contains("56 frequencies 0.2500 .. 3.0000 rad/s x 1 headings"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("marin_semi.8: absent"), "{stdout}");
+    let expected = HydroDatabase::from_wamit(&root, &WamitOptions::default()).unwrap();
+    assert_eq!(HydroDatabase::load(&out).unwrap(), expected.database);
+
+    let refused = std::process::Command::new(env!("CARGO_BIN_EXE_slowdrift"))
+        .args([
+            "hydro", "wamit", "--root", "x", "--ulen", "-1", "--out", "y.json",
+        ])
+        .output()
+        .unwrap();
+    assert!(!refused.status.success());
+    assert!(
+        String::from_utf8_lossy(&refused.stderr).contains("--ulen -1: must be a positive number")
+    );
+}
