@@ -126,9 +126,14 @@ fn unique_sorted(mut values: Vec<f64>, same: fn(f64, f64) -> bool) -> Vec<f64> {
     values
 }
 
-/// Index of `value` in `grid` (made by [`unique_sorted`] from a set containing it).
+/// Index of `value` in `grid` (increasing, made by [`unique_sorted`]): the neighbour on
+/// either side of the insertion point that is the same value, if any.
 fn grid_index(grid: &[f64], value: f64, same: fn(f64, f64) -> bool) -> Option<usize> {
-    grid.iter().position(|&g| same(g, value))
+    let k = grid.partition_point(|&g| g < value);
+    [k.checked_sub(1), Some(k)]
+        .into_iter()
+        .flatten()
+        .find(|&i| i < grid.len() && same(grid[i], value))
 }
 
 /// One numeric line of a file: its 1-based line number and its numbers.
