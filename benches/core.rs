@@ -9,9 +9,12 @@
 //! 3. `run/run_3h_1s_stepping`, `run/run_3h_1s_new_and_stepping`: a 3-hour run at h = 1 s
 //!    without drag (Aranha damping on), stepping only, and `Simulation::new` + stepping.
 //! 4. Record memory for 1 h, 3 h and 6 h (printed, not timed).
+//! 5. `hydro/read_oc4_12d`: reading the OC4 semisubmersible's WAMIT QTF file
+//!    (`marin_semi.12d`, 1.2 MB, 9576 lines) from the shared data directory
+//!    (`$SLOWDRIFT_DATA` or `../shared/data`); skipped with a notice if it is absent.
 //!
 //! Targets (issue): records <= 30 FFTs, step < 1 us (no drag) and < 10 us (drag 4 x 20),
-//! 3-hour run at 1 s < 50 ms, memory linear in the record length.
+//! 3-hour run at 1 s < 50 ms, memory linear in the record length, OC4 .12d read < 100 ms.
 //!
 //! Profile of `records_3h` (perf, 2-core VM): the build does 11 FFTs (1 elevation, 3 force,
 //! 7 non-zero damping records) plus one plan (~3 FFTs of twiddles) and transfers_on_grid
@@ -34,6 +37,7 @@ use slowdrift::config::{
 use slowdrift::forces::{transfers_on_grid, ForceRecords, RecordOptions, Synthesizer};
 use slowdrift::hydro::aranha::aranha_damping;
 use slowdrift::hydro::column_drift::isolated_columns_table;
+use slowdrift::hydro::wamit::{read_difference_qtf, WamitOptions};
 use slowdrift::hydro::{DriftRow, DriftTable};
 use slowdrift::sea_state::{FrequencyGrid, SeaState, Spectrum, Spreading, WaveComponents};
 use slowdrift::{Config, Simulation};
@@ -450,6 +454,43 @@ fn memory(report: &mut Vec<String>) {
     }
 }
 
+// ---------------------------------------------------------------- 5. WAMIT import
+
+fn bench_wamit(c: &mut Criterion, report: &mut Vec<String>) {
+    let path = common::shared_data_dir().join("wamit/oc4-semi/marin_semi.12d");
+    if !path.is_file() {
+        let notice = format!(
+            "hydro/read_oc4_12d: skipped, data absent at {}",
+            path.display()
+        );
+        println!("{notice}");
+        report.push(notice);
+        return;
+    }
+    let options = WamitOptions::default();
+    let mut group = c.benchmark_group("hydro");
+    group
+        .sample_size(20)
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(3));
+    group.bench_function("read_oc4_12d", |b| {
+        b.iter(|| read_difference_qtf(black_box(&path), &options).unwrap())
+    });
+    group.finish();
+    let t = median_time(21, || {
+        black_box(read_difference_qtf(&path, &options).unwrap());
+    });
+    report.push(format!(
+        "read_oc4_12d: {:.2} ms (Instant median, 9576 lines, 56 x 56 x 6 QTF); target < 100 ms: {}",
+        t.as_secs_f64() * 1e3,
+        if t.as_secs_f64() < 0.1 {
+            "met"
+        } else {
+            "NOT met"
+        }
+    ));
+}
+
 fn main() {
     let mut c = Criterion::default().configure_from_args();
     let mut report = Vec::new();
@@ -457,6 +498,7 @@ fn main() {
     bench_steps(&mut c, &mut report);
     bench_run(&mut c, &mut report);
     memory(&mut report);
+    bench_wamit(&mut c, &mut report);
     c.final_summary();
     println!("\n==== slowdrift core summary (std::time::Instant medians) ====");
     for line in report {

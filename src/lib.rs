@@ -5,9 +5,9 @@
 //! structures", Applied Ocean Research 18 (1996) 55-64 ("E&S n" = their equation n).
 //!
 //! Data flow: [`sea_state`] (spectrum, spreading, seeded amplitudes) and [`hydro`] (drift
-//! table, Aranha damping) feed [`forces`] (records precomputed at the mean position by
-//! FFT), which [`dynamics`] (equations of motion, RK4) integrates; [`simulation`] is the
-//! one safe API over all of it.
+//! table, Aranha damping, WAMIT readers, the native hydro database) feed [`forces`]
+//! (records precomputed at the mean position by FFT), which [`dynamics`] (equations of
+//! motion, RK4) integrates; [`simulation`] is the one safe API over all of it.
 //!
 //! Conventions (physics.md section 1): SI units and radians; inertial frame XYZ with Z up
 //! and still water at Z = 0; the body frame follows the slow yaw theta; DOF order surge,

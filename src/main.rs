@@ -3,6 +3,11 @@
 //! `slowdrift simulate [--config FILE] [--out FILE.csv] [--transient SECONDS]` runs one
 //! simulation (the embedded default platform without `--config`), prints the summary of
 //! surge, sway and yaw, and writes the time series as CSV.
+//!
+//! `slowdrift hydro wamit --root PATH/NAME --out FILE.json` imports WAMIT output into a
+//! native hydro database ([`cli::hydro`]).
+
+mod cli;
 
 use slowdrift::config::default_platform::{default_config, DEFAULT_DRIFT_LABEL};
 use slowdrift::config::file;
@@ -15,8 +20,8 @@ use std::process::ExitCode;
 /// Slow-drift cycles dropped as transient by default (E&S section 5: about ten cycles).
 const TRANSIENT_CYCLES: f64 = 10.0;
 
-const USAGE: &str =
-    "usage: slowdrift simulate [--config FILE.toml] [--out FILE.csv] [--transient SECONDS]";
+const USAGE: &str = "usage: slowdrift simulate [--config FILE.toml] [--out FILE.csv] [--transient SECONDS]
+       slowdrift hydro wamit --root PATH/NAME [--ulen 1] [--rho 1025] [--g 9.80665] --out FILE.json";
 
 struct Arguments {
     config: Option<PathBuf>,
@@ -37,6 +42,7 @@ fn main() -> ExitCode {
 fn run(args: Vec<String>) -> Result<(), String> {
     match args.first().map(String::as_str) {
         Some("simulate") => simulate(parse_arguments(&args[1..])?),
+        Some("hydro") => cli::hydro::run(&args[1..]),
         Some("--help") | Some("-h") | None => {
             println!("{USAGE}");
             Ok(())

@@ -62,11 +62,15 @@
 //! yaw_rate_deg = 0.0         # d theta/dt, deg/s
 //!
 //! [drift]                    # mean drift table, per unit wave amplitude squared
-//! source = "table"           # "table" (inline) | "csv"
+//! source = "table"           # "table" (inline) | "csv" | "database" | "columns"
 //! columns = ["omega", "beta_deg", "surge", "sway", "yaw"]
 //! rows = [[0.3, 0.0, 2.0e3, 0.0, 0.0], ...]
 //! # source = "csv"
 //! # file = "drift.csv"       # relative to the configuration file's directory
+//! # source = "database"
+//! # file = "platform.json"   # native hydro database (`slowdrift hydro wamit`), relative
+//!                            # to the configuration file; its rho and g must equal
+//!                            # [environment]'s
 //! ```
 //!
 //! Drift columns, in any order: `omega` (rad/s), `beta_deg` (wave heading relative to the
@@ -83,6 +87,7 @@ use super::{
 };
 use crate::error::{Error, Result};
 use crate::hydro::column_drift::isolated_columns_table;
+use crate::hydro::database::HydroDatabase;
 use crate::hydro::{DriftRow, DriftTable};
 use crate::sea_state::{SeaState, Spectrum, Spreading};
 use serde::Deserialize;
@@ -651,6 +656,9 @@ enum DriftFile {
     },
     /// A CSV file, relative to the configuration file's directory.
     Csv { file: PathBuf },
+    /// The drift table of a native hydro database (JSON, `hydro::database`), relative to
+    /// the configuration file's directory.
+    Database { file: PathBuf },
     /// The closed-form drift of the platform's columns, each treated as an isolated,
     /// infinitely deep column (no interaction; see `hydro::column_drift`), on `n_omega`
     /// frequencies from `omega_min` to `omega_max` (rad/s) and headings every
@@ -762,6 +770,27 @@ impl DriftFile {
                 DriftTable::from_rows(&rows)
             }
             DriftFile::Csv { file } => read_csv(&base_dir.join(file)),
+            DriftFile::Database { file } => {
+                let path = base_dir.join(file);
+                let database = HydroDatabase::load(&path)?;
+                let made_with = (database.water_density, database.gravity);
+                if made_with != (environment.water_density, environment.gravity) {
+                    return Err(source.error_at(
+                        span,
+                        format!(
+                            "[drift] the database {} was made with water_density = {}, \
+                             gravity = {}, but [environment] has {}, {}: set [environment] \
+                             to the database's values or re-import with them",
+                            path.display(),
+                            made_with.0,
+                            made_with.1,
+                            environment.water_density,
+                            environment.gravity
+                        ),
+                    ));
+                }
+                database.to_drift_table()
+            }
         }
     }
 }
@@ -1377,6 +1406,59 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
         assert!(
             matches!(&err, Error::Parse { line: Some(1), message, .. } if message.contains("\"sway\"")),
             "{err:?}"
+        );
+    }
+
+    /// A database holding MINIMAL's drift table, made with `rho` and g = 9.80665.
+    fn database_with_minimal_drift(rho: f64) -> HydroDatabase {
+        use crate::hydro::database::{DriftPoint, FORMAT_VERSION};
+        let point = |omega: f64, surge: f64| DriftPoint {
+            omega,
+            heading: 0.0,
+            surge,
+            sway: 0.0,
+            yaw: 0.0,
+            damping: None,
+        };
+        HydroDatabase {
+            format_version: FORMAT_VERSION,
+            name: "minimal".into(),
+            source: "test".into(),
+            water_density: rho,
+            gravity: 9.80665,
+            mass_properties: None,
+            low_frequency_added_mass: None,
+            stiffness: None,
+            drift: vec![point(0.3, 100.0), point(2.0, 900.0)],
+            qtf: None,
+        }
+    }
+
+    #[test]
+    fn database_drift_is_read_relative_to_the_base_directory() {
+        let json = temp_file("db.json", "");
+        database_with_minimal_drift(1025.0)
+            .save(&json)
+            .expect("writable");
+        let dir = json.parent().expect("temp dir");
+        let name = json.file_name().expect("file name").to_string_lossy();
+        let head = MINIMAL.split("[drift]").next().expect("drift section");
+        let text = format!("{head}[drift]\nsource = \"database\"\nfile = \"{name}\"\n");
+        let from_database = parse(&text, "test.toml", dir);
+
+        database_with_minimal_drift(1000.0)
+            .save(&json)
+            .expect("writable");
+        let mismatch = parse(&text, "test.toml", dir).expect_err("rho differs");
+        std::fs::remove_file(&json).expect("remove temporary file");
+        assert_eq!(
+            from_database.expect("valid file"),
+            parse_text(MINIMAL).expect("valid file")
+        );
+        let message = mismatch.to_string();
+        assert!(
+            message.starts_with("test.toml:") && message.contains("water_density = 1000"),
+            "{message}"
         );
     }
 

@@ -123,3 +123,30 @@ pub fn simpson(f: impl Fn(f64) -> f64, a: f64, b: f64, panels: usize) -> f64 {
         .sum();
     (f(a) + inner + f(b)) * h / 3.0
 }
+
+/// The shared data directory: `$SLOWDRIFT_DATA` if set, else `../shared/data` next to the
+/// repository (where CI puts it).
+pub fn shared_data_dir() -> std::path::PathBuf {
+    std::env::var_os("SLOWDRIFT_DATA")
+        .map(std::path::PathBuf::from)
+        .unwrap_or_else(|| concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data").into())
+}
+
+/// The OC4 semisubmersible's WAMIT files without extension (`.../marin_semi`), or `None`
+/// after printing a "skipped" line when the data are absent. Under CI (env var `CI` set)
+/// absent data is a failure.
+pub fn oc4_root_or_skip() -> Option<std::path::PathBuf> {
+    let dir = shared_data_dir().join("wamit/oc4-semi");
+    if dir.join("marin_semi.12d").is_file() {
+        return Some(dir.join("marin_semi"));
+    }
+    if std::env::var_os("CI").is_some() {
+        panic!(
+            "the OC4 WAMIT data are absent at {} (CI is set: they must be there; set \
+             SLOWDRIFT_DATA to the shared data directory)",
+            dir.display()
+        );
+    }
+    println!("skipped: data absent at {}", dir.display());
+    None
+}

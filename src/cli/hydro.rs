@@ -1,0 +1,92 @@
+//! `slowdrift hydro wamit --root PATH/NAME [--ulen L] [--rho RHO] [--g G] --out FILE.json`:
+//! imports the WAMIT files `NAME.1`, `.hst`, `.8`, `.9`, `.12d` (or `.11d`, `.10d`) that
+//! exist into a native hydro database and prints what it found.
+
+use slowdrift::hydro::database::HydroDatabase;
+use slowdrift::hydro::wamit::WamitOptions;
+use std::path::PathBuf;
+
+pub const USAGE: &str =
+    "slowdrift hydro wamit --root PATH/NAME [--ulen 1] [--rho 1025] [--g 9.80665] --out FILE.json";
+
+/// Runs `slowdrift hydro ...` with the arguments after `hydro`.
+pub fn run(args: &[String]) -> Result<(), String> {
+    match args.first().map(String::as_str) {
+        Some("wamit") => wamit(&args[1..]),
+        _ => Err(format!("usage: {USAGE}")),
+    }
+}
+
+fn wamit(args: &[String]) -> Result<(), String> {
+    let mut root = None;
+    let mut out = None;
+    let mut options = WamitOptions::default();
+    let mut rest = args.iter();
+    while let Some(flag) = rest.next() {
+        let value = rest
+            .next()
+            .ok_or_else(|| format!("{flag} needs a value\nusage: {USAGE}"))?;
+        let number = || -> Result<f64, String> {
+            match value.parse::<f64>() {
+                Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
+                _ => Err(format!("{flag} {value}: must be a positive number")),
+            }
+        };
+        match flag.as_str() {
+            "--root" => root = Some(PathBuf::from(value)),
+            "--out" => out = Some(PathBuf::from(value)),
+            "--ulen" => options.ulen = number()?,
+            "--rho" => options.rho = number()?,
+            "--g" => options.gravity = number()?,
+            other => return Err(format!("unknown option '{other}'\nusage: {USAGE}")),
+        }
+    }
+    let root = root.ok_or_else(|| format!("--root is required\nusage: {USAGE}"))?;
+    let out = out.ok_or_else(|| format!("--out is required\nusage: {USAGE}"))?;
+    let import = HydroDatabase::from_wamit(&root, &options).map_err(|e| e.to_string())?;
+    println!(
+        "WAMIT files {}.* (ULEN = {} m, rho = {} kg/m^3, g = {} m/s^2):",
+        root.display(),
+        options.ulen,
+        options.rho,
+        options.gravity
+    );
+    for line in &import.files {
+        println!("  {line}");
+    }
+    let db = &import.database;
+    if db.drift.is_empty() {
+        println!("drift: none");
+    } else {
+        let table = db.to_drift_table().map_err(|e| e.to_string())?;
+        let (w, h) = (table.omegas(), table.headings());
+        println!(
+            "drift (surge, sway, yaw): {} frequencies {:.4} .. {:.4} rad/s x {} headings [{}] deg",
+            w.len(),
+            w[0],
+            w[w.len() - 1],
+            h.len(),
+            h.iter()
+                .map(|x| format!("{:.2}", x.to_degrees()))
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+    }
+    match &db.qtf {
+        Some(q) => println!(
+            "QTF (surge, sway, yaw): {n} x {n} frequencies, {} blocks",
+            q.blocks.len(),
+            n = q.omegas.len()
+        ),
+        None => println!("QTF: none"),
+    }
+    let yes = |b: bool| if b { "yes" } else { "no" };
+    println!(
+        "low-frequency added mass: {}; hydrostatic stiffness: {}",
+        yes(db.low_frequency_added_mass.is_some()),
+        yes(db.stiffness.is_some())
+    );
+    db.save(&out).map_err(|e| e.to_string())?;
+    println!("database \"{}\" written to {}", db.name, out.display());
+    Ok(())
+}

@@ -1,0 +1,3 @@
+//! Subcommands of the `slowdrift` tool other than `simulate`.
+
+pub mod hydro;

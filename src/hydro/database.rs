@@ -1,0 +1,508 @@
+//! The native hydrodynamic database: what a simulation needs from a diffraction code, in
+//! SI units and radians, as versioned JSON.
+//!
+//! Layout (format version [`FORMAT_VERSION`]; matrices are rows of numbers, indexed
+//! (surge, sway, yaw)):
+//!
+//! ```text
+//! {
+//!   "format_version": 1,
+//!   "name": "marin_semi",
+//!   "source": "free text: where the numbers come from",
+//!   "water_density": 1025.0,                 kg/m^3 the data were made with
+//!   "gravity": 9.80665,                      m/s^2
+//!   "mass_properties": null | {"mass": kg, "yaw_inertia": kg m^2},
+//!   "low_frequency_added_mass": null | 3x3   kg, kg m, kg m^2 (omega -> 0)
+//!   "stiffness": null | 3x3                  N/m, N, N m/rad (hydrostatic only; the mooring adds its own)
+//!   "drift": [{"omega": rad/s, "heading": rad, "surge": N/m^2, "sway": N/m^2, "yaw": N m/m^2,
+//!              "damping": null | 3x3 b_ij}, ...],
+//!   "qtf": null | {"omegas": [rad/s, increasing],
+//!                  "blocks": [{"dof": "surge" | "sway" | "yaw", "heading": rad,
+//!                              "re": n x n, "im": n x n}, ...]}
+//! }
+//! ```
+//!
+//! `re[i][j] + i im[i][j]` = T(w_i, w_j), the full difference-frequency QTF per unit
+//! amplitude squared with F(t) = Re sum a_i a_j* T_ij e^{i (w_i - w_j) t} (physics.md
+//! section 4). Numbers are written so that they read back bit for bit.
+
+use super::wamit::{
+    read_added_mass_damping, read_difference_qtf, read_hydrostatics, read_mean_drift,
+    DifferenceQtf, WamitOptions,
+};
+use super::{DriftRow, DriftTable};
+use crate::error::{require_finite, require_finite_matrix, require_positive, Error, Result};
+use serde::{Deserialize, Serialize};
+use std::ffi::OsString;
+use std::path::{Path, PathBuf};
+
+/// The database format this code writes and reads.
+pub const FORMAT_VERSION: u32 = 1;
+
+/// WAMIT DOFs of surge, sway and yaw.
+const SLOW_DOFS: [usize; 3] = [1, 2, 6];
+
+/// A platform's hydrodynamic data for the slow-drift DOFs (surge, sway, yaw).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HydroDatabase {
+    /// Always [`FORMAT_VERSION`] for data this code wrote.
+    pub format_version: u32,
+    /// Short name of the platform.
+    pub name: String,
+    /// Where the numbers come from (files, scales, choices).
+    pub source: String,
+    /// Water density the data were made dimensional with, kg/m^3.
+    pub water_density: f64,
+    /// Acceleration of gravity the data were made dimensional with, m/s^2.
+    pub gravity: f64,
+    /// Rigid-body mass properties, if known.
+    pub mass_properties: Option<MassProperties>,
+    /// Added mass as omega -> 0 (kg, kg m, kg m^2).
+    pub low_frequency_added_mass: Option<[[f64; 3]; 3]>,
+    /// Hydrostatic stiffness on (X, Y, theta) (N/m, N, N m/rad); zero for a floater in
+    /// these DOFs: the mooring supplies the stiffness.
+    pub stiffness: Option<[[f64; 3]; 3]>,
+    /// Mean drift (and optional wave-drift damping) per unit amplitude squared.
+    pub drift: Vec<DriftPoint>,
+    /// The full difference-frequency QTF, uni-directional headings.
+    pub qtf: Option<QtfData>,
+}
+
+/// Rigid-body mass properties.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MassProperties {
+    /// Mass, kg.
+    pub mass: f64,
+    /// Yaw moment of inertia about the body origin, kg m^2.
+    pub yaw_inertia: f64,
+}
+
+/// One node of the drift table.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DriftPoint {
+    /// Wave frequency, rad/s.
+    pub omega: f64,
+    /// Wave heading relative to the body x axis, rad.
+    pub heading: f64,
+    /// Mean surge drift, N/m^2.
+    pub surge: f64,
+    /// Mean sway drift, N/m^2.
+    pub sway: f64,
+    /// Mean yaw drift moment, N m/m^2.
+    pub yaw: f64,
+    /// Wave-drift damping b_ij (row: force, column: velocity), per unit amplitude squared.
+    pub damping: Option<[[f64; 3]; 3]>,
+}
+
+/// A slow-drift DOF as the database names it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SlowDof {
+    Surge,
+    Sway,
+    Yaw,
+}
+
+impl SlowDof {
+    const ALL: [SlowDof; 3] = [SlowDof::Surge, SlowDof::Sway, SlowDof::Yaw];
+}
+
+/// The difference-frequency QTF on its frequency grid.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct QtfData {
+    /// Frequencies, rad/s, increasing.
+    pub omegas: Vec<f64>,
+    /// One n x n matrix per (DOF, heading).
+    pub blocks: Vec<QtfMatrix>,
+}
+
+/// T(w_i, w_j) = re[i][j] + i im[i][j] of one DOF at one heading.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct QtfMatrix {
+    pub dof: SlowDof,
+    /// Heading, rad.
+    pub heading: f64,
+    pub re: Vec<Vec<f64>>,
+    pub im: Vec<Vec<f64>>,
+}
+
+/// A database made from WAMIT files, and what was found.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WamitImport {
+    pub database: HydroDatabase,
+    /// One line per file looked for: found and what was taken from it, or absent.
+    pub files: Vec<String>,
+}
+
+impl HydroDatabase {
+    /// Writes the database as JSON; the error names the file.
+    pub fn save(&self, path: &Path) -> Result<()> {
+        let name = path.display().to_string();
+        self.validate().map_err(|e| Error::Io {
+            path: name.clone(),
+            message: format!("not written: {e}"),
+        })?;
+        let text = serde_json::to_string_pretty(self).map_err(|e| Error::Io {
+            path: name.clone(),
+            message: e.to_string(),
+        })?;
+        std::fs::write(path, text + "\n").map_err(|e| Error::Io {
+            path: name,
+            message: e.to_string(),
+        })
+    }
+
+    /// Reads and validates a database; refuses other format versions. Errors name the
+    /// file (and the line, for JSON syntax).
+    pub fn load(path: &Path) -> Result<Self> {
+        let name = path.display().to_string();
+        let text = std::fs::read_to_string(path).map_err(|e| Error::Io {
+            path: name.clone(),
+            message: e.to_string(),
+        })?;
+        let at = |e: serde_json::Error| Error::Parse {
+            path: name.clone(),
+            line: (e.line() > 0).then(|| e.line()),
+            message: e.to_string(),
+        };
+        let value: serde_json::Value = serde_json::from_str(&text).map_err(at)?;
+        let version = value
+            .get("format_version")
+            .and_then(serde_json::Value::as_u64);
+        if version != Some(u64::from(FORMAT_VERSION)) {
+            return Err(Error::Parse {
+                path: name,
+                line: None,
+                message: format!(
+                    "format_version = {}: this program reads version {FORMAT_VERSION}",
+                    value
+                        .get("format_version")
+                        .map_or("(absent)".to_string(), |v| v.to_string())
+                ),
+            });
+        }
+        let database: HydroDatabase = serde_json::from_value(value).map_err(at)?;
+        database.validate().map_err(|e| Error::Parse {
+            path: name,
+            line: None,
+            message: e.to_string(),
+        })?;
+        Ok(database)
+    }
+
+    /// Checks the version, the constants, finiteness and the QTF's shape.
+    pub fn validate(&self) -> Result<()> {
+        if self.format_version != FORMAT_VERSION {
+            return Err(Error::invalid(
+                "database.format_version",
+                self.format_version,
+                format!("this program handles version {FORMAT_VERSION}"),
+            ));
+        }
+        require_positive("database.water_density", self.water_density)?;
+        require_positive("database.gravity", self.gravity)?;
+        if let Some(m) = &self.mass_properties {
+            require_positive("database.mass_properties.mass", m.mass)?;
+            require_positive("database.mass_properties.yaw_inertia", m.yaw_inertia)?;
+        }
+        if let Some(a) = &self.low_frequency_added_mass {
+            require_finite_matrix("database.low_frequency_added_mass", a)?;
+        }
+        if let Some(c) = &self.stiffness {
+            require_finite_matrix("database.stiffness", c)?;
+        }
+        for (k, p) in self.drift.iter().enumerate() {
+            for (name, v) in [
+                ("omega", p.omega),
+                ("heading", p.heading),
+                ("surge", p.surge),
+                ("sway", p.sway),
+                ("yaw", p.yaw),
+            ] {
+                require_finite(&format!("database.drift[{k}].{name}"), v)?;
+            }
+            if let Some(b) = &p.damping {
+                require_finite_matrix(&format!("database.drift[{k}].damping"), b)?;
+            }
+        }
+        if let Some(q) = &self.qtf {
+            q.validate()?;
+        }
+        Ok(())
+    }
+
+    /// The drift table of the database (with damping if every node has it).
+    pub fn to_drift_table(&self) -> Result<DriftTable> {
+        if self.drift.is_empty() {
+            return Err(Error::invalid(
+                "database.drift",
+                "[]",
+                format!("the database \"{}\" holds no drift table", self.name),
+            ));
+        }
+        let rows: Vec<DriftRow> = self
+            .drift
+            .iter()
+            .map(|p| DriftRow {
+                omega: p.omega,
+                heading: p.heading,
+                drift: [p.surge, p.sway, p.yaw],
+                damping: p.damping,
+            })
+            .collect();
+        DriftTable::from_rows(&rows)
+    }
+
+    /// Imports the WAMIT files `<root>.1`, `.hst`, `.8`, `.9` and `.12d` (else `.11d`, else
+    /// `.10d`) that exist, restricted to surge, sway and yaw (WAMIT DOFs 1, 2, 6):
+    /// - `.1`: the PER = -1 (omega = 0) added mass;
+    /// - `.hst`: the hydrostatic stiffness (zero in these DOFs for a floater);
+    /// - drift from `.8` (momentum), else `.9` (pressure), else the QTF diagonal;
+    /// - the QTF at its uni-directional headings (bi-directional pairs are not stored).
+    ///
+    /// At least one file must exist.
+    pub fn from_wamit(root: &Path, options: &WamitOptions) -> Result<WamitImport> {
+        options.validate()?;
+        let file = |ext: &str| -> PathBuf {
+            let mut s = OsString::from(root.as_os_str());
+            s.push(".");
+            s.push(ext);
+            PathBuf::from(s)
+        };
+        let mut files = Vec::new();
+        let mut used = Vec::new();
+
+        let mut low_frequency_added_mass = None;
+        let path = file("1");
+        if path.exists() {
+            let amd = read_added_mass_damping(&path, options)?;
+            low_frequency_added_mass = amd.zero_frequency_added_mass.map(|a| restrict(&a));
+            files.push(format!(
+                "{}: {} frequencies{}",
+                path.display(),
+                amd.omegas.len(),
+                if low_frequency_added_mass.is_some() {
+                    "; low-frequency added mass from PER = -1 (omega = 0)"
+                } else {
+                    "; no PER = -1 rows: low-frequency added mass not set"
+                }
+            ));
+            used.push(".1");
+        } else {
+            files.push(format!("{}: absent", path.display()));
+        }
+
+        let mut stiffness = None;
+        let path = file("hst");
+        if path.exists() {
+            let c = restrict(&read_hydrostatics(&path, options)?.c);
+            files.push(format!(
+                "{}: hydrostatic stiffness (surge, sway, yaw diagonal {:.4e}, {:.4e}, {:.4e}; \
+                 the mooring must add its own)",
+                path.display(),
+                c[0][0],
+                c[1][1],
+                c[2][2]
+            ));
+            stiffness = Some(c);
+            used.push(".hst");
+        } else {
+            files.push(format!("{}: absent", path.display()));
+        }
+
+        let mut qtf = None;
+        for ext in ["12d", "11d", "10d"] {
+            let path = file(ext);
+            if !path.exists() {
+                files.push(format!("{}: absent", path.display()));
+                continue;
+            }
+            let read = read_difference_qtf(&path, options)?;
+            let headings = read.headings();
+            let bidirectional = read
+                .blocks()
+                .iter()
+                .filter(|b| b.headings.0 != b.headings.1)
+                .count();
+            files.push(format!(
+                "{}: QTF, {} frequencies {:.4} .. {:.4} rad/s, headings {} deg, DOFs {:?} \
+                 (kept 1, 2, 6), {} values filled by Hermitian symmetry{}",
+                path.display(),
+                read.omegas().len(),
+                read.omegas()[0],
+                read.omegas()[read.omegas().len() - 1],
+                degrees(&headings),
+                read.dofs(),
+                read.filled_by_symmetry(),
+                if bidirectional > 0 {
+                    format!("; {bidirectional} bi-directional blocks not stored")
+                } else {
+                    String::new()
+                }
+            ));
+            used.push(match ext {
+                "12d" => ".12d",
+                "11d" => ".11d",
+                _ => ".10d",
+            });
+            qtf = Some(read);
+            break;
+        }
+
+        let mut drift_from = "none";
+        let mut drift = Vec::new();
+        for (ext, label) in [("8", ".8"), ("9", ".9")] {
+            let path = file(ext);
+            if !path.exists() {
+                files.push(format!("{}: absent", path.display()));
+                continue;
+            }
+            let mean = read_mean_drift(&path, options)?;
+            let headings = mean.headings();
+            drift = drift_points(&mean.to_drift_table(&headings, SLOW_DOFS)?);
+            files.push(format!(
+                "{}: mean drift, {} frequencies, headings {} deg",
+                path.display(),
+                mean.omegas().len(),
+                degrees(&headings)
+            ));
+            drift_from = label;
+            used.push(label);
+            break;
+        }
+        if drift.is_empty() {
+            if let Some(q) = &qtf {
+                drift = drift_points(&q.to_drift_table(&q.headings(), SLOW_DOFS)?);
+                drift_from = "the QTF diagonal";
+            }
+        }
+        if used.is_empty() {
+            return Err(Error::Io {
+                path: root.display().to_string(),
+                message: "no WAMIT file found (.1, .hst, .8, .9, .12d, .11d, .10d)".into(),
+            });
+        }
+        let qtf = qtf.as_ref().map(qtf_data).transpose()?;
+        let source = format!(
+            "WAMIT output {} ({}); ULEN = {} m, rho = {} kg/m^3, g = {} m/s^2; drift from {}",
+            root.display(),
+            used.join(", "),
+            options.ulen,
+            options.rho,
+            options.gravity,
+            drift_from
+        );
+        let name = root.file_name().map_or_else(
+            || root.display().to_string(),
+            |n| n.to_string_lossy().into(),
+        );
+        let database = HydroDatabase {
+            format_version: FORMAT_VERSION,
+            name,
+            source,
+            water_density: options.rho,
+            gravity: options.gravity,
+            mass_properties: None,
+            low_frequency_added_mass,
+            stiffness,
+            drift,
+            qtf,
+        };
+        database.validate()?;
+        Ok(WamitImport { database, files })
+    }
+}
+
+impl QtfData {
+    fn validate(&self) -> Result<()> {
+        let n = self.omegas.len();
+        for (k, w) in self.omegas.iter().enumerate() {
+            require_positive(&format!("database.qtf.omegas[{k}]"), *w)?;
+            if k > 0 && *w <= self.omegas[k - 1] {
+                return Err(Error::invalid(
+                    format!("database.qtf.omegas[{k}]"),
+                    w,
+                    "frequencies must be strictly increasing",
+                ));
+            }
+        }
+        for (k, b) in self.blocks.iter().enumerate() {
+            require_finite(&format!("database.qtf.blocks[{k}].heading"), b.heading)?;
+            for (part, m) in [("re", &b.re), ("im", &b.im)] {
+                let field = format!("database.qtf.blocks[{k}].{part}");
+                if m.len() != n || m.iter().any(|row| row.len() != n) {
+                    return Err(Error::invalid(
+                        field,
+                        format!("{} rows", m.len()),
+                        format!("must be {n} x {n} (one row and column per frequency)"),
+                    ));
+                }
+                if m.iter().flatten().any(|v| !v.is_finite()) {
+                    return Err(Error::invalid(field, "NaN or infinity", "must be finite"));
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The (surge, sway, yaw) = WAMIT (1, 2, 6) rows and columns of a 6x6 matrix.
+fn restrict(m: &[[f64; 6]; 6]) -> [[f64; 3]; 3] {
+    SLOW_DOFS.map(|i| SLOW_DOFS.map(|j| m[i - 1][j - 1]))
+}
+
+fn degrees(headings: &[f64]) -> String {
+    headings
+        .iter()
+        .map(|h| format!("{:.2}", h.to_degrees()))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// Every node of a drift table, heading-major.
+fn drift_points(table: &DriftTable) -> Vec<DriftPoint> {
+    let mut points = Vec::new();
+    for (ih, &heading) in table.headings().iter().enumerate() {
+        for (iw, &omega) in table.omegas().iter().enumerate() {
+            let [surge, sway, yaw] = table.drift_at_node(ih, iw);
+            points.push(DriftPoint {
+                omega,
+                heading,
+                surge,
+                sway,
+                yaw,
+                damping: None,
+            });
+        }
+    }
+    points
+}
+
+/// The uni-directional surge, sway and yaw blocks of a QTF.
+fn qtf_data(qtf: &DifferenceQtf) -> Result<QtfData> {
+    let n = qtf.omegas().len();
+    let mut blocks = Vec::new();
+    for heading in qtf.headings() {
+        for (dof, wamit_dof) in SlowDof::ALL.into_iter().zip(SLOW_DOFS) {
+            let m = qtf.matrix(wamit_dof, heading)?;
+            let part = |f: fn(&rustfft::num_complex::Complex64) -> f64| -> Vec<Vec<f64>> {
+                m.chunks(n).map(|row| row.iter().map(f).collect()).collect()
+            };
+            blocks.push(QtfMatrix {
+                dof,
+                heading,
+                re: part(|z| z.re),
+                im: part(|z| z.im),
+            });
+        }
+    }
+    Ok(QtfData {
+        omegas: qtf.omegas().to_vec(),
+        blocks,
+    })
+}

@@ -1,0 +1,262 @@
+//! The `.10d`, `.11d` and `.12d` files: difference-frequency quadratic transfer functions.
+
+use super::{
+    grid_index, require_present, same_frequency, same_heading, unique_sorted, NumericFile,
+    WamitOptions,
+};
+use crate::error::{Error, Result};
+use crate::hydro::{DriftRow, DriftTable};
+use rustfft::num_complex::Complex64;
+use std::collections::HashMap;
+use std::path::Path;
+
+/// The QTF of one DOF for one heading pair on the full frequency grid.
+#[derive(Debug, Clone, PartialEq)]
+pub struct QtfBlock {
+    /// WAMIT DOF, 1 ..= 6.
+    pub dof: usize,
+    /// (beta1, beta2), rad: the headings of the waves at w_i and w_j.
+    pub headings: (f64, f64),
+    /// Row-major n x n: `values[i * n + j]` = T(w_i, w_j), N/m^2 or N m/m^2.
+    pub values: Vec<Complex64>,
+}
+
+/// A difference-frequency QTF, complete on its grid: T(w_i, w_j; beta1, beta2) for every
+/// DOF and heading pair of the file, with the triangle the file omits filled by Hermitian
+/// symmetry T(w_j, w_i; beta2, beta1) = conj T(w_i, w_j; beta1, beta2).
+///
+/// Values follow F(t) = Re sum_i sum_j a_i a_j* T(w_i, w_j) e^{i (w_i - w_j) t}
+/// (physics.md section 4; WAMIT's own definition, see the module documentation).
+#[derive(Debug, Clone, PartialEq)]
+pub struct DifferenceQtf {
+    path: String,
+    omegas: Vec<f64>,
+    blocks: Vec<QtfBlock>,
+    filled_by_symmetry: usize,
+}
+
+/// One line of the file, scaled.
+struct Entry {
+    line: usize,
+    dof: usize,
+    heading_index: (usize, usize),
+    omega_index: (usize, usize),
+    value: Complex64,
+}
+
+/// Reads a `.10d`, `.11d` or `.12d` file: lines `PER1 PER2 beta1 beta2 I |F| phase Re Im`,
+/// T = rho g L^k (Re + i Im), k = 1 forces, 2 moments, per unit amplitude squared. One
+/// triangle or both may be given, in any order; after the Hermitian fill every (DOF,
+/// heading pair) must cover all pairs of the file's frequencies, or the error lists holes.
+pub fn read_difference_qtf(path: &Path, options: &WamitOptions) -> Result<DifferenceQtf> {
+    options.validate()?;
+    let file = NumericFile::read(path, &[9], "PER1 PER2 beta1 beta2 I |F| phase Re Im")?;
+    let mut omegas = Vec::with_capacity(2 * file.records.len());
+    let mut headings = Vec::new();
+    for r in &file.records {
+        omegas.push(file.frequency(r, 0, "PER1")?);
+        omegas.push(file.frequency(r, 1, "PER2")?);
+        headings.push(r.values[2].to_radians());
+        headings.push(r.values[3].to_radians());
+    }
+    let omegas = unique_sorted(omegas, same_frequency);
+    let headings = unique_sorted(headings, same_heading);
+    let frequency =
+        |v: f64| grid_index(&omegas, super::omega_of_period(v), same_frequency).expect("collected");
+    let heading = |v: f64| grid_index(&headings, v.to_radians(), same_heading).expect("collected");
+    let mut entries = Vec::with_capacity(file.records.len());
+    for r in &file.records {
+        let dof = file.dof(r, 4, "I")?;
+        let v = &r.values;
+        entries.push(Entry {
+            line: r.line,
+            dof,
+            heading_index: (heading(v[2]), heading(v[3])),
+            omega_index: (frequency(v[0]), frequency(v[1])),
+            value: Complex64::new(v[7], v[8]) * options.force_scale(dof),
+        });
+    }
+    let n = omegas.len();
+    // Block key (dof, beta1 index, beta2 index) -> (values, line of each value; 0 = filled).
+    type Slots = (Vec<Complex64>, Vec<Option<usize>>);
+    let mut blocks: HashMap<(usize, usize, usize), Slots> = HashMap::new();
+    for e in &entries {
+        let key = (e.dof, e.heading_index.0, e.heading_index.1);
+        let (values, lines) = blocks
+            .entry(key)
+            .or_insert_with(|| (vec![Complex64::new(0.0, 0.0); n * n], vec![None; n * n]));
+        let (i, j) = e.omega_index;
+        if let Some(first) = lines[i * n + j].replace(e.line) {
+            return Err(file.error(
+                e.line,
+                format!(
+                    "DOF {} at headings ({:.3}, {:.3}) deg and frequencies ({:.6}, {:.6}) rad/s \
+                     given twice (first at line {first})",
+                    e.dof,
+                    headings[key.1].to_degrees(),
+                    headings[key.2].to_degrees(),
+                    omegas[i],
+                    omegas[j]
+                ),
+            ));
+        }
+        values[i * n + j] = e.value;
+    }
+    let mut filled_by_symmetry = 0;
+    for e in &entries {
+        let mirror = (e.dof, e.heading_index.1, e.heading_index.0);
+        let (i, j) = e.omega_index;
+        let (values, lines) = blocks
+            .entry(mirror)
+            .or_insert_with(|| (vec![Complex64::new(0.0, 0.0); n * n], vec![None; n * n]));
+        if lines[j * n + i].is_none() {
+            lines[j * n + i] = Some(0);
+            values[j * n + i] = e.value.conj();
+            filled_by_symmetry += 1;
+        }
+    }
+    let mut keys: Vec<(usize, usize, usize)> = blocks.keys().copied().collect();
+    keys.sort_unstable();
+    let mut out = Vec::with_capacity(keys.len());
+    for key in keys {
+        let (values, lines) = blocks.remove(&key).expect("key listed");
+        let holes: Vec<usize> = (0..n * n).filter(|&k| lines[k].is_none()).collect();
+        if !holes.is_empty() {
+            let shown: Vec<String> = holes
+                .iter()
+                .take(5)
+                .map(|&k| format!("({:.6}, {:.6})", omegas[k / n], omegas[k % n]))
+                .collect();
+            return Err(Error::Parse {
+                path: file.path.clone(),
+                line: None,
+                message: format!(
+                    "DOF {} at headings ({:.3}, {:.3}) deg: {} of {} frequency pairs missing \
+                     even with Hermitian symmetry, e.g. {} rad/s",
+                    key.0,
+                    headings[key.1].to_degrees(),
+                    headings[key.2].to_degrees(),
+                    holes.len(),
+                    n * n,
+                    shown.join(", ")
+                ),
+            });
+        }
+        out.push(QtfBlock {
+            dof: key.0,
+            headings: (headings[key.1], headings[key.2]),
+            values,
+        });
+    }
+    Ok(DifferenceQtf {
+        path: file.path,
+        omegas,
+        blocks: out,
+        filled_by_symmetry,
+    })
+}
+
+impl DifferenceQtf {
+    /// Frequencies, rad/s, increasing and unique.
+    pub fn omegas(&self) -> &[f64] {
+        &self.omegas
+    }
+
+    /// Index of `omega` (rad/s) in [`Self::omegas`], within the relative tolerance.
+    pub fn omega_index(&self, omega: f64) -> Option<usize> {
+        grid_index(&self.omegas, omega, same_frequency)
+    }
+
+    /// Every (DOF, heading pair) block, sorted by DOF, then beta1, then beta2.
+    pub fn blocks(&self) -> &[QtfBlock] {
+        &self.blocks
+    }
+
+    /// DOFs present, increasing.
+    pub fn dofs(&self) -> Vec<usize> {
+        let mut dofs: Vec<usize> = self.blocks.iter().map(|b| b.dof).collect();
+        dofs.dedup();
+        dofs
+    }
+
+    /// Headings of the uni-directional blocks (beta1 = beta2), rad, increasing.
+    pub fn headings(&self) -> Vec<f64> {
+        unique_sorted(
+            self.blocks
+                .iter()
+                .filter(|b| same_heading(b.headings.0, b.headings.1))
+                .map(|b| b.headings.0)
+                .collect(),
+            same_heading,
+        )
+    }
+
+    /// How many values were filled in by Hermitian symmetry (0 when the file has both
+    /// triangles).
+    pub fn filled_by_symmetry(&self) -> usize {
+        self.filled_by_symmetry
+    }
+
+    /// T(w_i, w_j) of `dof` for waves at `headings` = (beta1, beta2), rad.
+    pub fn value(&self, dof: usize, headings: (f64, f64), i: usize, j: usize) -> Option<Complex64> {
+        let n = self.omegas.len();
+        self.block(dof, headings)
+            .filter(|_| i < n && j < n)
+            .map(|b| b.values[i * n + j])
+    }
+
+    /// The uni-directional n x n matrix of `dof` at `heading` (rad), row-major
+    /// (`[i * n + j]` = T(w_i, w_j)); the error lists what is missing.
+    pub fn matrix(&self, dof: usize, heading: f64) -> Result<&[Complex64]> {
+        self.require(&[dof], &[heading])?;
+        Ok(&self.block(dof, (heading, heading)).expect("checked").values)
+    }
+
+    /// The diagonal (omega, Re T(omega, omega)) of `dof` at `heading` (rad): the mean drift
+    /// in regular waves of unit amplitude. The imaginary part of the diagonal is numerical
+    /// noise in WAMIT's output and is dropped here (it stays in the stored QTF).
+    pub fn diagonal(&self, dof: usize, heading: f64) -> Result<Vec<(f64, f64)>> {
+        let n = self.omegas.len();
+        let m = self.matrix(dof, heading)?;
+        Ok((0..n).map(|i| (self.omegas[i], m[i * n + i].re)).collect())
+    }
+
+    /// The mean drift table from the diagonal of `dofs` (WAMIT numbering; surge, sway,
+    /// yaw = `[1, 2, 6]`) at `headings` (rad); no damping. The error lists every missing
+    /// DOF and heading.
+    pub fn to_drift_table(&self, headings: &[f64], dofs: [usize; 3]) -> Result<DriftTable> {
+        self.require(&dofs, headings)?;
+        let n = self.omegas.len();
+        let mut rows = Vec::with_capacity(headings.len() * n);
+        for &heading in headings {
+            let m = dofs.map(|d| &self.block(d, (heading, heading)).expect("checked").values);
+            for (i, &omega) in self.omegas.iter().enumerate() {
+                rows.push(DriftRow {
+                    omega,
+                    heading,
+                    drift: m.map(|v| v[i * n + i].re),
+                    damping: None,
+                });
+            }
+        }
+        DriftTable::from_rows(&rows)
+    }
+
+    fn block(&self, dof: usize, headings: (f64, f64)) -> Option<&QtfBlock> {
+        self.blocks.iter().find(|b| {
+            b.dof == dof
+                && same_heading(b.headings.0, headings.0)
+                && same_heading(b.headings.1, headings.1)
+        })
+    }
+
+    fn require(&self, dofs: &[usize], headings: &[f64]) -> Result<()> {
+        let present: Vec<(usize, f64)> = self
+            .blocks
+            .iter()
+            .filter(|b| same_heading(b.headings.0, b.headings.1))
+            .map(|b| (b.dof, b.headings.0))
+            .collect();
+        require_present(&self.path, dofs, headings, &present)
+    }
+}
