@@ -7,7 +7,8 @@
 //! Data flow: [`sea_state`] (spectrum, spreading, seeded amplitudes) and [`hydro`] (drift
 //! table, Aranha damping) feed [`forces`] (records precomputed at the mean position by
 //! FFT), which [`dynamics`] (equations of motion, RK4) integrates; [`simulation`] is the
-//! one safe API over all of it.
+//! one safe API over all of it; [`fmi2`] is the FMI 2.0 co-simulation C ABI over that API
+//! (the crate's only `unsafe` code).
 //!
 //! Conventions (physics.md section 1): SI units and radians; inertial frame XYZ with Z up
 //! and still water at Z = 0; the body frame follows the slow yaw theta; DOF order surge,
@@ -17,6 +18,7 @@
 pub mod config;
 pub mod dynamics;
 pub mod error;
+pub mod fmi2;
 pub mod forces;
 pub mod hydro;
 pub mod model_description;
