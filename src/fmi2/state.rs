@@ -107,17 +107,18 @@ impl FmuState {
         let real = |at: usize| f64::from_le_bytes(header[at..at + 8].try_into().expect("8"));
         let last_successful_time = real(19);
         let inputs = [real(27), real(35), real(43)];
-        let snapshot =
-            match (has_snapshot, rest.len()) {
-                (false, 0) => None,
-                (true, Snapshot::BYTES) => Some(Snapshot::from_bytes(rest)?),
-                (_, n) => return Err(refuse(
+        let snapshot = match (has_snapshot, rest.len()) {
+            (false, 0) => None,
+            (true, Snapshot::BYTES) => Some(Snapshot::from_bytes(rest)?),
+            (_, n) => {
+                return Err(refuse(
                     format!("{} bytes", bytes.len()),
                     &format!(
                         "has {n} bytes after the header, which does not match its snapshot flag"
                     ),
-                )),
-            };
+                ))
+            }
+        };
         Ok(FmuState {
             fingerprint,
             machine,
