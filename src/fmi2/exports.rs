@@ -173,7 +173,11 @@ pub unsafe extern "C" fn fmi2Instantiate(
         let logger = Logger::new(
             callbacks.and_then(|f| f.logger),
             callbacks.map_or(ptr::null_mut(), |f| f.componentEnvironment),
-            name.as_ref().map_or(MODEL_IDENTIFIER, |n| n),
+            // Messages about a missing name go out under the model identifier.
+            name.as_ref()
+                .ok()
+                .filter(|n| !n.is_empty())
+                .map_or(MODEL_IDENTIFIER, |n| n),
             loggingOn != fmi2False,
         );
         let refuse = |message: String| {

@@ -18,6 +18,9 @@ pub struct Entry {
     pub name: String,
     pub status: fmi2Status,
     pub category: String,
+    /// The message as the printf format the FMU passed (`%` doubled).
+    pub raw: String,
+    /// The message as printf would print it.
     pub message: String,
 }
 
@@ -42,6 +45,7 @@ unsafe extern "C" fn record(
         name: text(name),
         status,
         category: text(category),
+        raw: text(message),
         message: text(message).replace("%%", "%"),
     });
 }
