@@ -687,3 +687,63 @@ pub unsafe fn instance_state(c: fmi2Component) -> Option<MachineState> {
         unsafe { c.cast::<Instance>().as_ref() }.map(Instance::state)
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::ffi::c_void;
+    use std::sync::Mutex;
+
+    /// Records messages into the `Mutex<Vec<String>>` behind `env` (five fixed arguments:
+    /// the FMU passes no variadic ones, see `Logger::log`).
+    unsafe extern "C" fn record(
+        env: *mut c_void,
+        _name: fmi2String,
+        _status: fmi2Status,
+        _category: fmi2String,
+        message: fmi2String,
+    ) {
+        let log = unsafe { &*(env as *const Mutex<Vec<String>>) };
+        let text = unsafe { CStr::from_ptr(message) }.to_string_lossy();
+        log.lock().unwrap().push(text.into_owned());
+    }
+
+    #[test]
+    fn a_panic_becomes_an_error_and_a_log_line() {
+        type Fixed =
+            unsafe extern "C" fn(*mut c_void, fmi2String, fmi2Status, fmi2String, fmi2String);
+        let log = Mutex::new(Vec::<String>::new());
+        let functions = fmi2CallbackFunctions {
+            // SAFETY: a call with the five fixed arguments only has the same ABI.
+            logger: Some(unsafe { std::mem::transmute::<Fixed, fmi2CallbackLogger>(record) }),
+            allocateMemory: None,
+            freeMemory: None,
+            stepFinished: None,
+            componentEnvironment: &log as *const _ as *mut c_void,
+        };
+        let guid = std::ffi::CString::new(GUID).unwrap();
+        let c = unsafe {
+            fmi2Instantiate(
+                c"p".as_ptr(),
+                fmi2Type::fmi2CoSimulation,
+                guid.as_ptr(),
+                ptr::null(),
+                &functions,
+                fmi2False,
+                fmi2False,
+            )
+        };
+        assert!(!c.is_null());
+        let status = unsafe { with_instance(c, Call::Reset, |_| panic!("boom 100%")) };
+        assert_eq!(status, fmi2Status::fmi2Error);
+        assert_eq!(unsafe { instance_state(c) }, Some(MachineState::Error));
+        let messages = log.lock().unwrap().clone();
+        assert_eq!(
+            messages,
+            ["fmi2Reset: internal error (panic caught): boom 100%%"]
+        );
+        // The instance is still usable after a reset.
+        assert_eq!(unsafe { fmi2Reset(c) }, fmi2Status::fmi2OK);
+        unsafe { fmi2FreeInstance(c) };
+    }
+}

@@ -146,6 +146,10 @@ impl Fmu {
     }
 
     pub fn with_resources(name: &str, resources: Option<&str>) -> Fmu {
+        Fmu::instantiate(name, resources, true)
+    }
+
+    pub fn instantiate(name: &str, resources: Option<&str>, logging_on: bool) -> Fmu {
         let log: Box<Log> = Box::default();
         let functions = callbacks(&log);
         let name = CString::new(name).unwrap();
@@ -159,7 +163,7 @@ impl Fmu {
                 resources.as_ref().map_or(ptr::null(), |r| r.as_ptr()),
                 &functions,
                 fmi2False,
-                fmi2True,
+                if logging_on { fmi2True } else { fmi2False },
             )
         };
         assert!(!c.is_null(), "{:?}", log.lock().unwrap());
