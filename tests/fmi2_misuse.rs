@@ -504,15 +504,27 @@ fn a_refused_set_changes_nothing() {
 /// at initialisation, with the core's message naming field and value.
 #[test]
 fn bad_values_are_refused() {
-    for (vr, value, name) in [
-        (vr::FX_EXT, f64::NAN, "Fx_ext"),
-        (vr::MZ_EXT, f64::INFINITY, "Mz_ext"),
-        (vr::HS, f64::NEG_INFINITY, "Hs"),
-        (vr::STEP_SIZE, f64::NAN, "stepSize"),
+    for (vr, value, expected) in [
+        (vr::FX_EXT, f64::NAN, "input Fx_ext = NaN is not finite"),
+        (
+            vr::MZ_EXT,
+            f64::INFINITY,
+            "input Mz_ext = inf is not finite",
+        ),
+        (
+            vr::HS,
+            f64::NEG_INFINITY,
+            "invalid Hs = -inf: must be a finite number",
+        ),
+        (
+            vr::STEP_SIZE,
+            f64::NAN,
+            "invalid stepSize = NaN: must be a finite number",
+        ),
     ] {
         let fmu = in_state(MachineState::InitializationMode);
         let status = fmu.set_real(vr, value);
-        assert_error(&fmu, status, &[name, "not finite"]);
+        assert_error(&fmu, status, &[expected]);
     }
     type Case = (fn(&Fmu) -> fmi2Status, &'static [&'static str]);
     let cases: [Case; 6] = [

@@ -635,9 +635,10 @@ impl Instance {
             let causality = self.variable(VariableType::Real, vr)?;
             self.settable(causality, vr)?;
             if !value.is_finite() {
-                return Err(Error::NonFiniteInput {
-                    field: name_of(VariableType::Real, vr).to_string(),
-                    value,
+                let field = name_of(VariableType::Real, vr).to_string();
+                return Err(match causality {
+                    Causality::Input => Error::NonFiniteInput { field, value },
+                    _ => Error::invalid(field, value, "must be a finite number"),
                 }
                 .into());
             }
