@@ -116,6 +116,13 @@ fn variables_read_back() {
         bits(&fmu.outputs()),
         bits(&native_outputs(&sim.outputs().unwrap()))
     );
+    // A parameter set after that read is not lost: the records are rebuilt.
+    let eta = |f: &Fmu| f.get_reals(&[vr::ETA]).1[0];
+    let eta_before = eta(&fmu);
+    assert_eq!(fmu.set_real(vr::HS, 11.0), fmi2Status::fmi2OK);
+    assert_ne!(eta(&fmu), eta_before);
+    assert_eq!(fmu.set_real(vr::HS, 5.5), fmi2Status::fmi2OK);
+    assert_eq!(eta(&fmu).to_bits(), eta_before.to_bits());
     assert_eq!(
         unsafe { fmi2ExitInitializationMode(fmu.c) },
         fmi2Status::fmi2OK
@@ -307,6 +314,18 @@ fn foreign_or_damaged_state_bytes_are_refused() {
     );
     let other_stop = Fmu::running("stop", 17, 0.0, START, Some(STOP + 1.0));
     assert_eq!(deserialize(&other_stop, &good).0, fmi2Status::fmi2Error);
+    // The same check for a state handed over in memory.
+    let state = get_state(&a);
+    let other = Fmu::running("other in memory", 18, 0.0, START, Some(STOP));
+    assert_eq!(
+        unsafe { fmi2SetFMUstate(other.c, state) },
+        fmi2Status::fmi2Error
+    );
+    assert!(other
+        .last_message()
+        .message
+        .contains("another configuration"));
+    free_state(&a, state);
 
     let mut version = good.clone();
     version[4] = 2;
