@@ -15,6 +15,9 @@
 //! sway, yaw; wave direction beta = direction of propagation from +X, counter-clockwise;
 //! a wave component is Re[a e^{i omega t}].
 
+// Unsafe code lives in `fmi2` only, which allows it explicitly.
+#![deny(unsafe_code)]
+
 pub mod config;
 pub mod dynamics;
 pub mod error;

@@ -119,7 +119,10 @@ fn into_handle(state: FmuState) -> fmi2FMUstate {
     Box::into_raw(Box::new(state)).cast()
 }
 
-fn value_references<'a>(vr: *const fmi2ValueReference, nvr: usize) -> Result<&'a [u32], FmuError> {
+unsafe fn value_references<'a>(
+    vr: *const fmi2ValueReference,
+    nvr: usize,
+) -> Result<&'a [u32], FmuError> {
     // SAFETY: see slice.
     unsafe { slice(vr, nvr, "vr") }
 }

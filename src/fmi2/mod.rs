@@ -9,6 +9,8 @@
 //! The cdylib exports the `fmi2*` symbols only (`exports.map`, a linker version script
 //! that build.rs passes on Linux).
 
+#![allow(unsafe_code)]
+
 pub mod exports;
 pub mod instance;
 pub mod parameters;
