@@ -15,6 +15,16 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 const XML_PATH: &str = "modelDescription/modelDescription.xml";
+/// The log categories the FMU layer writes to; the XML must declare them.
+const REQUIRED_LOG_CATEGORIES: [&str; 5] = [
+    "logStatusError",
+    "logStatusWarning",
+    "logStatusDiscard",
+    "logEvents",
+    "logAll",
+];
+/// Linker version script of the cdylib: `fmi2*` global, everything else local.
+const VERSION_SCRIPT: &str = "src/fmi2/exports.map";
 
 /// One `ScalarVariable` as read from the XML.
 #[derive(Debug, Default)]
@@ -50,11 +60,14 @@ struct Model {
     outputs: Vec<Unknown>,
     initial_unknowns: Vec<Unknown>,
     saw_model_structure: bool,
+    /// `LogCategories/Category` names, in order.
+    log_categories: Vec<String>,
 }
 
 fn main() {
     println!("cargo:rerun-if-changed={XML_PATH}");
     println!("cargo:rerun-if-changed=build.rs");
+    export_only_fmi2_symbols();
 
     let xml = std::fs::read_to_string(XML_PATH)
         .unwrap_or_else(|e| fail(&format!("cannot read {XML_PATH}: {e}")));
@@ -68,6 +81,20 @@ fn main() {
         .join("model_description.rs");
     std::fs::write(&out, code)
         .unwrap_or_else(|e| fail(&format!("cannot write {}: {e}", out.display())));
+}
+
+/// The cdylib exports only `fmi2*` symbols (FMI 2.0: nothing else may clash with the
+/// host's symbols): a linker version script, on Linux, where the FMU's binaries are built.
+fn export_only_fmi2_symbols() {
+    println!("cargo:rerun-if-changed={VERSION_SCRIPT}");
+    if std::env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("linux") {
+        let dir = std::env::var("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR");
+        let script = PathBuf::from(dir).join(VERSION_SCRIPT);
+        println!(
+            "cargo:rustc-cdylib-link-arg=-Wl,--version-script={}",
+            script.display()
+        );
+    }
 }
 
 fn fail(message: &str) -> ! {
@@ -172,6 +199,12 @@ fn parse(xml: &str) -> Result<Model, String> {
                 var.declared_type = a.get("declaredType").cloned();
                 var.start = a.get("start").cloned();
             }
+            (Some("LogCategories"), "Category") => {
+                let name = a
+                    .get("name")
+                    .ok_or(format!("line {line}: Category without name"))?;
+                model.log_categories.push(name.clone());
+            }
             (Some("fmiModelDescription"), "ModelStructure") => model.saw_model_structure = true,
             (Some(list @ ("Outputs" | "InitialUnknowns" | "Derivatives")), "Unknown") => {
                 let index = a
@@ -228,6 +261,21 @@ fn check(m: &Model) -> Vec<String> {
     }
     if m.vars.is_empty() {
         errors.push("no ScalarVariable".into());
+    }
+    let mut categories = BTreeSet::new();
+    for c in &m.log_categories {
+        if !is_c_identifier(c) || !categories.insert(c) {
+            errors.push(format!(
+                "log category {c:?} is duplicated or not an identifier"
+            ));
+        }
+    }
+    for required in REQUIRED_LOG_CATEGORIES {
+        if !categories.contains(&required.to_string()) {
+            errors.push(format!(
+                "LogCategories lacks {required:?}, which the FMU logs to"
+            ));
+        }
     }
 
     let mut names = BTreeMap::new();
@@ -545,6 +593,26 @@ fn generate(m: &Model) -> String {
         "pub const NUMBER_OF_VARIABLES: usize = {};\n",
         m.vars.len()
     );
+
+    let _ = writeln!(
+        w,
+        "/// The `LogCategories` in the XML's order (`fmi2SetDebugLogging` accepts exactly these)."
+    );
+    let _ = writeln!(
+        w,
+        "pub const LOG_CATEGORIES: &[&str] = &{:?};",
+        m.log_categories
+    );
+    let _ = writeln!(
+        w,
+        "/// Indices into [`LOG_CATEGORIES`], one constant per category."
+    );
+    let _ = writeln!(w, "pub mod log_category {{");
+    for (i, c) in m.log_categories.iter().enumerate() {
+        let _ = writeln!(w, "    /// `{c}`.");
+        let _ = writeln!(w, "    pub const {}: usize = {i};", const_name(c));
+    }
+    let _ = writeln!(w, "}}\n");
 
     let _ = writeln!(
         w,

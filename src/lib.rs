@@ -7,16 +7,21 @@
 //! Data flow: [`sea_state`] (spectrum, spreading, seeded amplitudes) and [`hydro`] (drift
 //! table, Aranha damping, WAMIT readers, the native hydro database) feed [`forces`]
 //! (records precomputed at the mean position by FFT), which [`dynamics`] (equations of
-//! motion, RK4) integrates; [`simulation`] is the one safe API over all of it.
+//! motion, RK4) integrates; [`simulation`] is the one safe API over all of it; [`fmi2`] is
+//! the FMI 2.0 co-simulation C ABI over that API (the crate's only `unsafe` code).
 //!
 //! Conventions (physics.md section 1): SI units and radians; inertial frame XYZ with Z up
 //! and still water at Z = 0; the body frame follows the slow yaw theta; DOF order surge,
 //! sway, yaw; wave direction beta = direction of propagation from +X, counter-clockwise;
 //! a wave component is Re[a e^{i omega t}].
 
+// Unsafe code lives in `fmi2` only, which allows it explicitly.
+#![deny(unsafe_code)]
+
 pub mod config;
 pub mod dynamics;
 pub mod error;
+pub mod fmi2;
 pub mod forces;
 pub mod hydro;
 pub mod model_description;

@@ -32,9 +32,59 @@ pub struct Snapshot {
 }
 
 impl Snapshot {
+    /// Length of [`Snapshot::to_bytes`]: 12 little-endian 8-byte fields.
+    pub const BYTES: usize = 12 * 8;
+
     /// Current time, s.
     pub fn time(&self) -> f64 {
         self.origin + self.count as f64 * self.step
+    }
+
+    /// Position-independent bytes, little-endian, in this order: origin (f64), count (u64),
+    /// step (f64), position (3 f64), velocity (3 f64), external force (3 f64).
+    pub fn to_bytes(&self) -> [u8; Self::BYTES] {
+        let mut out = [0u8; Self::BYTES];
+        let words = [self.origin.to_bits(), self.count, self.step.to_bits()]
+            .into_iter()
+            .chain(self.position.iter().map(|v| v.to_bits()))
+            .chain(self.velocity.iter().map(|v| v.to_bits()))
+            .chain(self.external_force.iter().map(|v| v.to_bits()));
+        for (chunk, word) in out.chunks_exact_mut(8).zip(words) {
+            chunk.copy_from_slice(&word.to_le_bytes());
+        }
+        out
+    }
+
+    /// Reads [`Snapshot::to_bytes`]; refuses any other length. (Whether the values suit a
+    /// simulation is [`Simulation::restore`]'s check.)
+    pub fn from_bytes(bytes: &[u8]) -> Result<Snapshot> {
+        if bytes.len() != Self::BYTES {
+            return Err(Error::invalid(
+                "snapshot bytes",
+                bytes.len(),
+                format!("a snapshot is {} bytes", Self::BYTES),
+            ));
+        }
+        let mut words = bytes
+            .chunks_exact(8)
+            .map(|c| u64::from_le_bytes(c.try_into().expect("chunks of 8")));
+        let mut next = || words.next().expect("12 words");
+        let mut real = || f64::from_bits(next());
+        let origin = real();
+        let count = real().to_bits();
+        let step = real();
+        let mut triple = || [real(), real(), real()];
+        let position = triple();
+        let velocity = triple();
+        let external_force = triple();
+        Ok(Snapshot {
+            origin,
+            count,
+            step,
+            position,
+            velocity,
+            external_force,
+        })
     }
 }
 
@@ -300,4 +350,40 @@ fn build_records(config: &Config) -> Result<ForceRecords> {
             gravity: config.environment.gravity,
         },
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn snapshot_bytes_round_trip_bit_for_bit() {
+        let snapshot = Snapshot {
+            origin: -12.5,
+            count: 0x0123_4567_89ab_cdef,
+            step: 0.1,
+            position: [1.0 / 3.0, -0.0, f64::MIN_POSITIVE],
+            velocity: [1e300, -2.5e-7, 7.0],
+            external_force: [3e6, -4e6, 5e9],
+        };
+        let bytes = snapshot.to_bytes();
+        assert_eq!(&bytes[..8], &(-12.5f64).to_le_bytes());
+        assert_eq!(&bytes[8..16], &0x0123_4567_89ab_cdefu64.to_le_bytes());
+        let back = Snapshot::from_bytes(&bytes).unwrap();
+        assert_eq!(back.to_bytes(), bytes);
+        assert_eq!(back.position[1].to_bits(), (-0.0f64).to_bits());
+        assert_eq!(back, snapshot);
+    }
+
+    #[test]
+    fn snapshot_bytes_of_the_wrong_length_are_refused() {
+        let bytes = Snapshot::from_bytes(&[0u8; Snapshot::BYTES])
+            .unwrap()
+            .to_bytes();
+        for len in [0, Snapshot::BYTES - 1, Snapshot::BYTES + 1] {
+            let mut v = bytes.to_vec();
+            v.resize(len, 0);
+            assert!(Snapshot::from_bytes(&v).is_err(), "length {len}");
+        }
+    }
 }

@@ -1,0 +1,870 @@
+//! One FMU instance: its state machine, parameters, inputs, logger and the [`Simulation`]
+//! once initialised. Safe Rust; `exports.rs` turns C pointers into the arguments here.
+//!
+//! Every failure is an [`FmuError`], turned into an `fmi2Status` and a log line in one
+//! place, [`Instance::report`]. An `fmi2Error` puts the instance into
+//! [`MachineState::Error`] (FMI 2.0.4 section 2.1.3: unusable until `fmi2Reset`,
+//! `fmi2SetFMUstate` or `fmi2FreeInstance`); an `fmi2Discard` into
+//! [`MachineState::StepFailed`].
+
+use super::parameters::{Experiment, Parameters};
+use super::state::{fingerprint, mismatch, FmuState};
+use super::types::{fmi2CallbackLogger, fmi2ComponentEnvironment, fmi2Status};
+use crate::config::Config;
+use crate::error::Error;
+use crate::model_description::{
+    find, log_category, vr, Causality, VariableType, LOG_CATEGORIES, VARIABLES,
+};
+use crate::simulation::{Outputs, Simulation};
+use std::ffi::{CStr, CString};
+use std::fmt;
+use std::path::PathBuf;
+
+/// Relative tolerance of the communication point against the internal time (and of the
+/// stop time), times max(1, |t|).
+const TIME_TOLERANCE: f64 = 1e-9;
+
+/// The FMI 2.0 co-simulation states this FMU can be in (FMI 2.0.4 figure 8; there is no
+/// StepInProgress/StepCanceled: steps are never asynchronous).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MachineState {
+    Instantiated = 0,
+    InitializationMode = 1,
+    StepComplete = 2,
+    StepFailed = 3,
+    Terminated = 4,
+    Error = 5,
+}
+
+impl MachineState {
+    const fn bit(self) -> u8 {
+        1 << self as u8
+    }
+
+    /// The byte of the serialized state.
+    pub fn code(self) -> u8 {
+        self as u8
+    }
+
+    /// Inverse of [`MachineState::code`]; `Error` is never saved, so it is not accepted.
+    pub fn from_code(code: u8) -> Option<MachineState> {
+        use MachineState::*;
+        [
+            Instantiated,
+            InitializationMode,
+            StepComplete,
+            StepFailed,
+            Terminated,
+        ]
+        .into_iter()
+        .find(|s| s.code() == code)
+    }
+}
+
+/// Bit masks of states, combined by `|`.
+mod mask {
+    use super::MachineState::*;
+    pub const INSTANTIATED: u8 = Instantiated.bit();
+    pub const INIT: u8 = InitializationMode.bit();
+    pub const STEP_COMPLETE: u8 = StepComplete.bit();
+    pub const STEP_FAILED: u8 = StepFailed.bit();
+    pub const TERMINATED: u8 = Terminated.bit();
+    pub const ERROR: u8 = Error.bit();
+    pub const ALL: u8 = INSTANTIATED | INIT | STEP_COMPLETE | STEP_FAILED | TERMINATED | ERROR;
+    /// Where outputs can be read: after EnterInitializationMode, and in Error for debugging.
+    pub const GET: u8 = INIT | STEP_COMPLETE | STEP_FAILED | TERMINATED | ERROR;
+    pub const SET: u8 = INSTANTIATED | INIT | STEP_COMPLETE;
+    pub const STATUS: u8 = STEP_COMPLETE | STEP_FAILED | TERMINATED | ERROR;
+}
+
+/// Every exported function that takes an instance (`fmi2FreeInstance` is always allowed).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Call {
+    SetDebugLogging,
+    SetupExperiment,
+    EnterInitializationMode,
+    ExitInitializationMode,
+    Terminate,
+    Reset,
+    GetReal,
+    GetInteger,
+    GetBoolean,
+    GetString,
+    SetReal,
+    SetInteger,
+    SetBoolean,
+    SetString,
+    GetFMUstate,
+    SetFMUstate,
+    FreeFMUstate,
+    SerializedFMUstateSize,
+    SerializeFMUstate,
+    DeSerializeFMUstate,
+    GetDirectionalDerivative,
+    SetRealInputDerivatives,
+    GetRealOutputDerivatives,
+    DoStep,
+    CancelStep,
+    GetStatus,
+    GetRealStatus,
+    GetIntegerStatus,
+    GetBooleanStatus,
+    GetStringStatus,
+}
+
+impl Call {
+    /// Every call, for tests that try each one in each state.
+    pub const ALL: [Call; 30] = {
+        use Call::*;
+        [
+            SetDebugLogging,
+            SetupExperiment,
+            EnterInitializationMode,
+            ExitInitializationMode,
+            Terminate,
+            Reset,
+            GetReal,
+            GetInteger,
+            GetBoolean,
+            GetString,
+            SetReal,
+            SetInteger,
+            SetBoolean,
+            SetString,
+            GetFMUstate,
+            SetFMUstate,
+            FreeFMUstate,
+            SerializedFMUstateSize,
+            SerializeFMUstate,
+            DeSerializeFMUstate,
+            GetDirectionalDerivative,
+            SetRealInputDerivatives,
+            GetRealOutputDerivatives,
+            DoStep,
+            CancelStep,
+            GetStatus,
+            GetRealStatus,
+            GetIntegerStatus,
+            GetBooleanStatus,
+            GetStringStatus,
+        ]
+    };
+
+    /// The states in which the call is allowed (the Reference-FMUs' `MASK_fmi2*`, for
+    /// co-simulation without asynchronous steps). The unsupported functions are allowed
+    /// everywhere and then answer that they are unsupported.
+    pub const fn allowed(self) -> u8 {
+        use mask::*;
+        use Call::*;
+        match self {
+            SetDebugLogging
+            | Reset
+            | SetFMUstate
+            | FreeFMUstate
+            | SerializedFMUstateSize
+            | SerializeFMUstate
+            | DeSerializeFMUstate => ALL,
+            GetDirectionalDerivative
+            | SetRealInputDerivatives
+            | GetRealOutputDerivatives
+            | CancelStep => ALL,
+            SetupExperiment | EnterInitializationMode => INSTANTIATED,
+            ExitInitializationMode => INIT,
+            Terminate => STEP_COMPLETE | STEP_FAILED,
+            GetReal | GetInteger | GetBoolean | GetString => GET,
+            SetReal | SetInteger | SetBoolean | SetString => SET,
+            GetFMUstate => ALL & !ERROR,
+            DoStep => STEP_COMPLETE,
+            GetStatus | GetRealStatus | GetIntegerStatus | GetBooleanStatus | GetStringStatus => {
+                STATUS
+            }
+        }
+    }
+
+    /// The C function's name.
+    pub fn name(self) -> String {
+        format!("fmi2{self:?}")
+    }
+}
+
+/// Why a call failed; [`FmuError::status`] is the one place that picks the `fmi2Status`.
+#[derive(Debug, Clone, PartialEq)]
+pub enum FmuError {
+    /// The call is not allowed in the instance's current state.
+    IllegalCall { call: Call, state: MachineState },
+    /// A bad argument: NULL pointer, unknown value reference, wrong type, non-finite value.
+    Argument(String),
+    /// The core refused (invalid configuration, unreadable file, ...).
+    Core(Error),
+    /// A function this FMU does not implement, and why.
+    Unsupported(&'static str),
+    /// The step cannot be completed but the instance stays usable (end of the records).
+    Discard(Error),
+    /// A panic caught at the boundary.
+    Panic(String),
+}
+
+impl FmuError {
+    /// The status this error returns to the host.
+    pub fn status(&self) -> fmi2Status {
+        match self {
+            FmuError::Discard(_) => fmi2Status::fmi2Discard,
+            _ => fmi2Status::fmi2Error,
+        }
+    }
+}
+
+impl From<Error> for FmuError {
+    fn from(e: Error) -> Self {
+        FmuError::Core(e)
+    }
+}
+
+impl fmt::Display for FmuError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            FmuError::IllegalCall { call, state } => write!(
+                f,
+                "illegal call sequence: {} is not allowed in state {state:?}",
+                call.name()
+            ),
+            FmuError::Argument(m) => f.write_str(m),
+            FmuError::Core(e) => write!(f, "{e}"),
+            FmuError::Unsupported(why) => write!(f, "not supported: {why}"),
+            FmuError::Discard(e) => write!(f, "step discarded: {e}"),
+            FmuError::Panic(m) => write!(f, "internal error (panic caught): {m}"),
+        }
+    }
+}
+
+/// The host's logger, the instance name and the debug-logging switches.
+#[derive(Debug)]
+pub struct Logger {
+    callback: Option<fmi2CallbackLogger>,
+    environment: fmi2ComponentEnvironment,
+    name: CString,
+    enabled: [bool; LOG_CATEGORIES.len()],
+}
+
+impl Logger {
+    /// A logger that reports under `name` (interior NULs are replaced).
+    pub fn new(
+        callback: Option<fmi2CallbackLogger>,
+        environment: fmi2ComponentEnvironment,
+        name: &str,
+        logging_on: bool,
+    ) -> Logger {
+        Logger {
+            callback,
+            environment,
+            name: c_text(name),
+            enabled: [logging_on; LOG_CATEGORIES.len()],
+        }
+    }
+
+    /// The instance name.
+    pub fn name(&self) -> &CStr {
+        &self.name
+    }
+
+    /// Whether messages of `category` go to the host. Errors always do (the standard asks
+    /// the FMU to say why it returned fmi2Error); the rest obey `fmi2SetDebugLogging`.
+    pub fn enabled(&self, category: usize) -> bool {
+        category == log_category::LOG_STATUS_ERROR || self.enabled[category]
+    }
+
+    /// `fmi2SetDebugLogging`: no categories = all of them; an unknown one changes nothing
+    /// and is an error.
+    pub fn set(&mut self, on: bool, categories: &[&str]) -> Result<(), FmuError> {
+        if categories.is_empty() {
+            self.enabled = [on; LOG_CATEGORIES.len()];
+            return Ok(());
+        }
+        let mut indices = Vec::with_capacity(categories.len());
+        for c in categories {
+            let i = LOG_CATEGORIES.iter().position(|k| k == c).ok_or_else(|| {
+                FmuError::Argument(format!(
+                    "unknown log category {c:?}; the categories are {LOG_CATEGORIES:?}"
+                ))
+            })?;
+            indices.push(i);
+        }
+        for i in indices {
+            self.enabled[i] = on;
+        }
+        Ok(())
+    }
+
+    /// Sends `message` under `category` if enabled. The message is the logger's printf
+    /// format, so every `%` is doubled and no further arguments are passed (the standard's
+    /// logger is variadic; a format without conversions needs none).
+    pub fn log(&self, status: fmi2Status, category: usize, message: &str) {
+        let Some(callback) = self.callback else {
+            return;
+        };
+        if !self.enabled(category) {
+            return;
+        }
+        let text = c_text(&message.replace('%', "%%"));
+        let category = c_text(LOG_CATEGORIES[category]);
+        // SAFETY: the host gave this callback for this purpose; every pointer is a valid
+        // NUL-terminated string that outlives the call.
+        unsafe {
+            callback(
+                self.environment,
+                self.name.as_ptr(),
+                status,
+                category.as_ptr(),
+                text.as_ptr(),
+            )
+        };
+    }
+}
+
+/// A C string of `s`, with interior NULs shown as `\0`.
+fn c_text(s: &str) -> CString {
+    CString::new(s.replace('\0', "\\0")).expect("no interior NUL left")
+}
+
+/// The simulation with the fingerprint of the configuration it was built from.
+#[derive(Debug)]
+struct Built {
+    simulation: Simulation,
+    fingerprint: u64,
+}
+
+/// One FMU instance.
+#[derive(Debug)]
+pub struct Instance {
+    pub logger: Logger,
+    /// The FMU's `resources` folder, from `fmuResourceLocation`.
+    resources: Option<PathBuf>,
+    parameters: Parameters,
+    experiment: Experiment,
+    /// Fx_ext, Fy_ext, Mz_ext (inertial frame), held over each step.
+    inputs: [f64; 3],
+    state: MachineState,
+    /// Built in initialisation mode when an output is first read, else at
+    /// ExitInitializationMode; dropped when a parameter changes.
+    built: Option<Built>,
+    /// Outputs at the current time (no allocation when refreshed after a step).
+    outputs: Option<Outputs>,
+    /// Set when a step was discarded at the end of the records.
+    terminated: bool,
+    last_successful_time: f64,
+    /// The strings last returned by `fmi2GetString`; valid until the next call.
+    strings: Vec<CString>,
+}
+
+impl Instance {
+    /// A freshly instantiated instance.
+    pub fn new(logger: Logger, resources: Option<PathBuf>) -> Instance {
+        let experiment = Experiment::default();
+        Instance {
+            logger,
+            resources,
+            parameters: Parameters::default(),
+            experiment,
+            inputs: start_inputs(),
+            state: MachineState::Instantiated,
+            built: None,
+            outputs: None,
+            terminated: false,
+            last_successful_time: experiment.start_time,
+            strings: Vec::new(),
+        }
+    }
+
+    /// The current state.
+    pub fn state(&self) -> MachineState {
+        self.state
+    }
+
+    /// Refuses a call that the table does not allow in the current state.
+    pub fn check(&self, call: Call) -> Result<(), FmuError> {
+        if call.allowed() & self.state.bit() != 0 {
+            Ok(())
+        } else {
+            Err(FmuError::IllegalCall {
+                call,
+                state: self.state,
+            })
+        }
+    }
+
+    /// The one place where a result becomes an `fmi2Status`, a state change and a log line.
+    pub fn report(&mut self, call: Call, result: Result<(), FmuError>) -> fmi2Status {
+        match result {
+            Ok(()) => {
+                if self.logger.enabled(log_category::LOG_ALL) {
+                    let message = format!("{}: ok", call.name());
+                    self.logger
+                        .log(fmi2Status::fmi2OK, log_category::LOG_ALL, &message);
+                }
+                fmi2Status::fmi2OK
+            }
+            Err(e) => {
+                let status = e.status();
+                let category = match status {
+                    fmi2Status::fmi2Discard => {
+                        self.state = MachineState::StepFailed;
+                        log_category::LOG_STATUS_DISCARD
+                    }
+                    _ => {
+                        self.state = MachineState::Error;
+                        log_category::LOG_STATUS_ERROR
+                    }
+                };
+                self.logger
+                    .log(status, category, &format!("{}: {e}", call.name()));
+                status
+            }
+        }
+    }
+
+    fn event(&self, message: &str) {
+        self.logger
+            .log(fmi2Status::fmi2OK, log_category::LOG_EVENTS, message);
+    }
+
+    /// `fmi2SetupExperiment` (the tolerance is not used: RK4 has a fixed step).
+    pub fn setup_experiment(&mut self, start: f64, stop: Option<f64>) -> Result<(), FmuError> {
+        self.experiment = Experiment::new(start, stop)?;
+        self.last_successful_time = start;
+        self.built = None;
+        Ok(())
+    }
+
+    pub fn enter_initialization_mode(&mut self) -> Result<(), FmuError> {
+        self.state = MachineState::InitializationMode;
+        self.event("entered initialization mode");
+        Ok(())
+    }
+
+    /// Builds the simulation (precomputes the records) and its first outputs.
+    pub fn exit_initialization_mode(&mut self) -> Result<(), FmuError> {
+        self.simulation()?;
+        self.refresh_outputs()?;
+        self.last_successful_time = self.experiment.start_time;
+        self.state = MachineState::StepComplete;
+        self.event("initialized: records precomputed");
+        Ok(())
+    }
+
+    pub fn terminate(&mut self) -> Result<(), FmuError> {
+        self.state = MachineState::Terminated;
+        self.event("terminated");
+        Ok(())
+    }
+
+    /// Back to a freshly instantiated instance; the name, callbacks, logging switches and
+    /// resource location stay.
+    pub fn reset(&mut self) -> Result<(), FmuError> {
+        let logger = std::mem::replace(
+            &mut self.logger,
+            Logger::new(None, std::ptr::null_mut(), "", false),
+        );
+        *self = Instance::new(logger, self.resources.take());
+        self.event("reset");
+        Ok(())
+    }
+
+    /// The configuration of the current parameters and experiment.
+    fn config(&self) -> Result<Config, FmuError> {
+        Ok(self
+            .parameters
+            .to_config(self.resources.as_deref(), &self.experiment)?)
+    }
+
+    /// The simulation, built now if needed.
+    fn simulation(&mut self) -> Result<&mut Simulation, FmuError> {
+        if self.built.is_none() {
+            let config = self.config()?;
+            let fingerprint = fingerprint(&config);
+            let simulation = Simulation::new(config)?;
+            self.built = Some(Built {
+                simulation,
+                fingerprint,
+            });
+        }
+        Ok(&mut self.built.as_mut().expect("built above").simulation)
+    }
+
+    fn refresh_outputs(&mut self) -> Result<(), FmuError> {
+        let outputs = self.simulation()?.outputs()?;
+        self.outputs = Some(outputs);
+        Ok(())
+    }
+
+    fn current_fingerprint(&self) -> Result<u64, FmuError> {
+        match &self.built {
+            Some(b) => Ok(b.fingerprint),
+            None => Ok(fingerprint(&self.config()?)),
+        }
+    }
+
+    /// `fmi2DoStep`: one communication step with the current inputs.
+    pub fn do_step(&mut self, point: f64, h: f64) -> Result<(), FmuError> {
+        if !(h.is_finite() && h > 0.0) {
+            return Err(FmuError::Argument(format!(
+                "communicationStepSize = {h} must be finite and positive"
+            )));
+        }
+        let inputs = self.inputs;
+        let stop = self.experiment.stop_time;
+        let simulation = self.simulation()?;
+        let t = simulation.time();
+        if !point.is_finite() || (point - t).abs() > TIME_TOLERANCE * t.abs().max(1.0) {
+            return Err(FmuError::Argument(format!(
+                "currentCommunicationPoint = {point} s differs from the instance's time {t} s"
+            )));
+        }
+        if let Some(stop) = stop {
+            if t + h > stop + TIME_TOLERANCE * stop.abs().max(1.0) {
+                return Err(FmuError::Argument(format!(
+                    "a step of {h} s from {t} s passes stopTime = {stop} s"
+                )));
+            }
+        }
+        let advanced = simulation
+            .advance(h, inputs)
+            .and_then(|()| simulation.outputs());
+        match advanced {
+            Ok(outputs) => {
+                self.last_successful_time = outputs.time;
+                self.outputs = Some(outputs);
+                Ok(())
+            }
+            Err(e @ Error::BeyondRecord { .. }) => {
+                self.terminated = true;
+                Err(FmuError::Discard(e))
+            }
+            Err(e) => Err(e.into()),
+        }
+    }
+
+    /// `fmi2GetRealStatus`.
+    pub fn real_status(&self, last_successful_time: bool) -> Result<f64, FmuError> {
+        if last_successful_time {
+            Ok(self.last_successful_time)
+        } else {
+            Err(FmuError::Argument(
+                "fmi2GetRealStatus answers fmi2LastSuccessfulTime only".into(),
+            ))
+        }
+    }
+
+    /// `fmi2GetBooleanStatus`.
+    pub fn boolean_status(&self, terminated: bool) -> Result<bool, FmuError> {
+        if terminated {
+            Ok(self.terminated)
+        } else {
+            Err(FmuError::Argument(
+                "fmi2GetBooleanStatus answers fmi2Terminated only".into(),
+            ))
+        }
+    }
+
+    /// The variable of `ty` with value reference `vr`, or an error that says what it is.
+    fn variable(&self, ty: VariableType, vr: u32) -> Result<Causality, FmuError> {
+        if let Some(v) = find(ty, vr) {
+            return Ok(v.causality);
+        }
+        let other = VARIABLES
+            .iter()
+            .find(|v| v.value_reference == vr)
+            .map(|v| format!(" ({} is {:?})", v.name, v.var_type))
+            .unwrap_or_default();
+        Err(FmuError::Argument(format!(
+            "no {ty:?} variable has value reference {vr}{other}"
+        )))
+    }
+
+    /// May a variable of this causality be set now?
+    fn settable(&self, causality: Causality, vr: u32) -> Result<(), FmuError> {
+        let name = VARIABLES
+            .iter()
+            .find(|v| v.value_reference == vr && v.causality == causality)
+            .map_or("?", |v| v.name);
+        match causality {
+            Causality::Input => Ok(()),
+            Causality::Parameter
+                if matches!(
+                    self.state,
+                    MachineState::Instantiated | MachineState::InitializationMode
+                ) =>
+            {
+                Ok(())
+            }
+            Causality::Parameter => Err(FmuError::Argument(format!(
+                "parameter {name} is fixed: set it before fmi2ExitInitializationMode"
+            ))),
+            other => Err(FmuError::Argument(format!(
+                "{name} (value reference {vr}) is an {other:?} and cannot be set"
+            ))),
+        }
+    }
+
+    pub fn get_real(&mut self, vrs: &[u32], values: &mut [f64]) -> Result<(), FmuError> {
+        for (&vr, value) in vrs.iter().zip(values) {
+            *value = match self.variable(VariableType::Real, vr)? {
+                Causality::Parameter => *self.parameters.real_mut(vr).expect("a Real parameter"),
+                Causality::Input => self.inputs[input_index(vr)],
+                _ => self.output(vr)?,
+            };
+        }
+        Ok(())
+    }
+
+    /// An output; in initialisation mode the simulation is built to compute it.
+    fn output(&mut self, vr: u32) -> Result<f64, FmuError> {
+        if self.state == MachineState::InitializationMode && self.outputs.is_none() {
+            self.refresh_outputs()?;
+        }
+        let o = self.outputs.as_ref().ok_or_else(|| {
+            FmuError::Argument(
+                "outputs are not available: the instance was never initialized".into(),
+            )
+        })?;
+        Ok(output_value(o, vr))
+    }
+
+    /// `fmi2SetReal`: all values are checked before any is set.
+    pub fn set_real(&mut self, vrs: &[u32], values: &[f64]) -> Result<(), FmuError> {
+        for (&vr, &value) in vrs.iter().zip(values) {
+            let causality = self.variable(VariableType::Real, vr)?;
+            self.settable(causality, vr)?;
+            if !value.is_finite() {
+                let field = name_of(VariableType::Real, vr).to_string();
+                return Err(match causality {
+                    Causality::Input => Error::NonFiniteInput { field, value },
+                    _ => Error::invalid(field, value, "must be a finite number"),
+                }
+                .into());
+            }
+        }
+        for (&vr, &value) in vrs.iter().zip(values) {
+            if let Some(p) = self.parameters.real_mut(vr) {
+                if *p != value {
+                    *p = value;
+                    self.parameters_changed();
+                }
+            } else {
+                self.inputs[input_index(vr)] = value;
+            }
+        }
+        Ok(())
+    }
+
+    pub fn get_integer(&mut self, vrs: &[u32], values: &mut [i32]) -> Result<(), FmuError> {
+        for (&vr, value) in vrs.iter().zip(values) {
+            self.variable(VariableType::Integer, vr)?;
+            *value = *self
+                .parameters
+                .integer_mut(vr)
+                .expect("an Integer parameter");
+        }
+        Ok(())
+    }
+
+    pub fn set_integer(&mut self, vrs: &[u32], values: &[i32]) -> Result<(), FmuError> {
+        for &vr in vrs {
+            let causality = self.variable(VariableType::Integer, vr)?;
+            self.settable(causality, vr)?;
+        }
+        for (&vr, &value) in vrs.iter().zip(values) {
+            let p = self
+                .parameters
+                .integer_mut(vr)
+                .expect("an Integer parameter");
+            if *p != value {
+                *p = value;
+                self.parameters_changed();
+            }
+        }
+        Ok(())
+    }
+
+    /// `fmi2GetBoolean` / `fmi2SetBoolean`: this model has no Boolean variable.
+    pub fn boolean(&self, vrs: &[u32]) -> Result<(), FmuError> {
+        match vrs.first() {
+            Some(&vr) => self.variable(VariableType::Boolean, vr).map(|_| ()),
+            None => Ok(()),
+        }
+    }
+
+    /// `fmi2GetString`: the returned strings live in the instance until its next call.
+    pub fn get_string(&mut self, vrs: &[u32]) -> Result<&[CString], FmuError> {
+        let mut strings = Vec::with_capacity(vrs.len());
+        for &vr in vrs {
+            self.variable(VariableType::String, vr)?;
+            strings.push(c_text(
+                self.parameters.string_mut(vr).expect("a String parameter"),
+            ));
+        }
+        self.strings = strings;
+        Ok(&self.strings)
+    }
+
+    pub fn set_string(&mut self, vrs: &[u32], values: &[&str]) -> Result<(), FmuError> {
+        for &vr in vrs {
+            let causality = self.variable(VariableType::String, vr)?;
+            self.settable(causality, vr)?;
+        }
+        for (&vr, &value) in vrs.iter().zip(values) {
+            let p = self.parameters.string_mut(vr).expect("a String parameter");
+            if p != value {
+                *p = value.to_string();
+                self.parameters_changed();
+            }
+        }
+        Ok(())
+    }
+
+    fn parameters_changed(&mut self) {
+        self.built = None;
+        self.outputs = None;
+    }
+
+    /// `fmi2GetFMUstate`: a copy of everything needed to continue from here.
+    pub fn get_fmu_state(&mut self) -> Result<FmuState, FmuError> {
+        let initialized = matches!(
+            self.state,
+            MachineState::StepComplete | MachineState::StepFailed | MachineState::Terminated
+        );
+        let snapshot = match &self.built {
+            Some(b) if initialized => Some(b.simulation.snapshot()),
+            _ => None,
+        };
+        let state = FmuState {
+            fingerprint: self.current_fingerprint()?,
+            machine: self.state,
+            terminated: self.terminated,
+            last_successful_time: self.last_successful_time,
+            inputs: self.inputs,
+            snapshot,
+        };
+        self.event("state saved");
+        Ok(state)
+    }
+
+    /// `fmi2SetFMUstate`: refused unless this instance's configuration is the state's.
+    pub fn set_fmu_state(&mut self, state: &FmuState) -> Result<(), FmuError> {
+        let expected = self.current_fingerprint()?;
+        if state.fingerprint != expected {
+            return Err(mismatch(state.fingerprint, expected).into());
+        }
+        match &state.snapshot {
+            Some(snapshot) => {
+                self.simulation()?.restore(snapshot)?;
+                self.refresh_outputs()?;
+            }
+            None => {
+                if let Some(b) = &mut self.built {
+                    b.simulation.reset();
+                }
+                self.outputs = None;
+            }
+        }
+        self.state = state.machine;
+        self.terminated = state.terminated;
+        self.last_successful_time = state.last_successful_time;
+        self.inputs = state.inputs;
+        self.event("state restored");
+        Ok(())
+    }
+
+    /// `fmi2DeSerializeFMUstate`: checks the bytes against this instance's configuration.
+    pub fn deserialize(&self, bytes: &[u8]) -> Result<FmuState, FmuError> {
+        Ok(FmuState::from_bytes(bytes, self.current_fingerprint()?)?)
+    }
+}
+
+fn start_inputs() -> [f64; 3] {
+    use crate::model_description::start;
+    [start::FX_EXT, start::FY_EXT, start::MZ_EXT]
+}
+
+/// Position of an input in [`Instance::inputs`].
+fn input_index(vr: u32) -> usize {
+    match vr {
+        vr::FX_EXT => 0,
+        vr::FY_EXT => 1,
+        vr::MZ_EXT => 2,
+        other => unreachable!("value reference {other} is not an input"),
+    }
+}
+
+fn name_of(ty: VariableType, vr: u32) -> &'static str {
+    find(ty, vr).map_or("?", |v| v.name)
+}
+
+/// The output with value reference `vr` (an output of the model description).
+fn output_value(o: &Outputs, vr: u32) -> f64 {
+    match vr {
+        vr::X => o.position[0],
+        vr::Y => o.position[1],
+        vr::THETA => o.position[2],
+        vr::XDOT => o.velocity[0],
+        vr::YDOT => o.velocity[1],
+        vr::THETADOT => o.velocity[2],
+        vr::ETA => o.wave_elevation,
+        vr::FX_WAVE => o.forces.wave[0],
+        vr::FY_WAVE => o.forces.wave[1],
+        vr::MZ_WAVE => o.forces.wave[2],
+        vr::FX_DAMPING => o.forces.damping[0],
+        vr::FY_DAMPING => o.forces.damping[1],
+        vr::MZ_DAMPING => o.forces.damping[2],
+        vr::FX_DRAG => o.forces.drag[0],
+        vr::FY_DRAG => o.forces.drag[1],
+        vr::MZ_DRAG => o.forces.drag[2],
+        other => unreachable!("value reference {other} is not an output"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_output_and_input_has_a_slot() {
+        let o = Outputs {
+            time: 0.0,
+            position: [0.0; 3],
+            velocity: [0.0; 3],
+            wave_elevation: 0.0,
+            forces: Default::default(),
+            external_force: [0.0; 3],
+        };
+        for v in VARIABLES {
+            match v.causality {
+                Causality::Output => {
+                    output_value(&o, v.value_reference);
+                }
+                Causality::Input => assert!(input_index(v.value_reference) < 3),
+                _ => {}
+            }
+        }
+    }
+
+    #[test]
+    fn state_codes_round_trip_and_error_is_never_restored() {
+        use MachineState::*;
+        for s in [
+            Instantiated,
+            InitializationMode,
+            StepComplete,
+            StepFailed,
+            Terminated,
+        ] {
+            assert_eq!(MachineState::from_code(s.code()), Some(s));
+        }
+        assert_eq!(MachineState::from_code(Error.code()), None);
+    }
+
+    #[test]
+    fn call_names_are_the_c_names() {
+        assert_eq!(Call::DoStep.name(), "fmi2DoStep");
+        assert_eq!(Call::DeSerializeFMUstate.name(), "fmi2DeSerializeFMUstate");
+    }
+}

@@ -1,0 +1,433 @@
+//! The FMI 2.0 C ABI, called in-process as a master would: the lifecycle, outputs equal to a
+//! native `Simulation` bit for bit, variable communication steps, reset, FMU states and
+//! their bytes, the end of the records, and instances in parallel threads.
+
+mod fmu;
+
+use fmu::*;
+use slowdrift::fmi2::exports::*;
+use slowdrift::fmi2::instance::MachineState;
+use slowdrift::fmi2::parameters::MAX_DURATION_WITHOUT_STOP_TIME;
+use slowdrift::fmi2::types::*;
+use slowdrift::model_description::vr;
+use std::ptr;
+
+const START: f64 = 100.0;
+const STOP: f64 = 1300.0;
+
+#[test]
+fn types_platform_and_version() {
+    let text =
+        |p: *const std::ffi::c_char| unsafe { std::ffi::CStr::from_ptr(p) }.to_str().unwrap();
+    assert_eq!(text(fmi2GetTypesPlatform()), "default");
+    assert_eq!(text(fmi2GetVersion()), "2.0");
+}
+
+/// 1000 steps with time-varying external forces: every output equals the native
+/// simulation's bit for bit, at the initial point and after every step.
+#[test]
+fn outputs_equal_the_native_simulation_bit_for_bit() {
+    let fmu = Fmu::running("a", 7, 0.4, START, Some(STOP));
+    let mut sim = native(7, 0.4, START, STOP);
+    assert_eq!(
+        bits(&fmu.outputs()),
+        bits(&native_outputs(&sim.outputs().unwrap()))
+    );
+    let mut t = START;
+    for n in 0..1000 {
+        fmu.step_with(t, 1.0, external(n));
+        sim.advance(1.0, external(n)).unwrap();
+        t += 1.0;
+        assert_eq!(
+            bits(&fmu.outputs()),
+            bits(&native_outputs(&sim.outputs().unwrap())),
+            "step {n}"
+        );
+    }
+    // Sway and yaw move (waves at 0.4 rad and a yaw moment): all outputs were exercised.
+    let last = fmu.outputs();
+    assert!(last.iter().all(|v| v.is_finite()));
+    assert!(last[1] != 0.0 && last[2] != 0.0, "{last:?}");
+    assert_eq!(fmu.last_successful_time(), (fmi2Status::fmi2OK, sim.time()));
+    assert_eq!(unsafe { fmi2Terminate(fmu.c) }, fmi2Status::fmi2OK);
+    assert_eq!(fmu.terminated(), (fmi2Status::fmi2OK, false));
+}
+
+/// Communication steps of 0.3, 1.0 and 2.5 s with h = 1 s land exactly where the native
+/// `advance` lands, with the same outputs.
+#[test]
+fn variable_communication_steps_land_exactly() {
+    let fmu = Fmu::running("v", 3, 0.0, START, Some(STOP));
+    let mut sim = native(3, 0.0, START, STOP);
+    let mut t = START;
+    for n in 0..120 {
+        let h = [0.3, 1.0, 2.5][n % 3];
+        fmu.step_with(t, h, external(n));
+        sim.advance(h, external(n)).unwrap();
+        t += h;
+        let (_, last) = fmu.last_successful_time();
+        assert_eq!(last.to_bits(), sim.time().to_bits(), "step {n}");
+        assert!((last - t).abs() < 1e-9 * t, "{last} vs the master's {t}");
+        assert_eq!(
+            bits(&fmu.outputs()),
+            bits(&native_outputs(&sim.outputs().unwrap())),
+            "step {n}"
+        );
+    }
+}
+
+/// Parameters and inputs read back; outputs readable in initialisation mode.
+#[test]
+fn variables_read_back() {
+    let fmu = Fmu::new("r");
+    assert_eq!(fmu.setup(0.0, Some(600.0)), fmi2Status::fmi2OK);
+    assert_eq!(fmu.set_real(vr::HS, 5.5), fmi2Status::fmi2OK);
+    assert_eq!(fmu.set_int(vr::N_DIRECTIONS, 9), fmi2Status::fmi2OK);
+    assert_eq!(fmu.set_string(vr::HYDRO_DATABASE, ""), fmi2Status::fmi2OK);
+    assert_eq!(
+        unsafe { fmi2EnterInitializationMode(fmu.c) },
+        fmi2Status::fmi2OK
+    );
+    assert_eq!(fmu.set_reals(&INPUTS, &[1.0, 2.0, 3.0]), fmi2Status::fmi2OK);
+    let (s, v) = fmu.get_reals(&[vr::HS, vr::TP, vr::FX_EXT, vr::MZ_EXT]);
+    assert_eq!((s, v), (fmi2Status::fmi2OK, vec![5.5, 12.0, 1.0, 3.0]));
+    let mut n = [0; 2];
+    let vrs = [vr::N_DIRECTIONS, vr::SEED];
+    assert_eq!(
+        unsafe { fmi2GetInteger(fmu.c, vrs.as_ptr(), 2, n.as_mut_ptr()) },
+        fmi2Status::fmi2OK
+    );
+    assert_eq!(n, [9, 1]);
+    let mut p: fmi2String = ptr::null();
+    assert_eq!(
+        unsafe { fmi2GetString(fmu.c, &vr::HYDRO_DATABASE, 1, &mut p) },
+        fmi2Status::fmi2OK
+    );
+    assert_eq!(unsafe { std::ffi::CStr::from_ptr(p) }.to_str(), Ok(""));
+    // Initial outputs before ExitInitializationMode: the native simulation's at t = 0.
+    let mut config = native_config(1, 0.0, 0.0, 600.0);
+    config.sea.spectrum = slowdrift::sea_state::Spectrum::Jonswap {
+        hs: 5.5,
+        tp: 12.0,
+        gamma: None,
+    };
+    let sim = slowdrift::Simulation::new(config).unwrap();
+    assert_eq!(
+        bits(&fmu.outputs()),
+        bits(&native_outputs(&sim.outputs().unwrap()))
+    );
+    // A parameter set after that read is not lost: the records are rebuilt.
+    let eta = |f: &Fmu| f.get_reals(&[vr::ETA]).1[0];
+    let eta_before = eta(&fmu);
+    assert_eq!(fmu.set_real(vr::HS, 11.0), fmi2Status::fmi2OK);
+    assert_ne!(eta(&fmu), eta_before);
+    assert_eq!(fmu.set_real(vr::HS, 5.5), fmi2Status::fmi2OK);
+    assert_eq!(eta(&fmu).to_bits(), eta_before.to_bits());
+    assert_eq!(
+        unsafe { fmi2ExitInitializationMode(fmu.c) },
+        fmi2Status::fmi2OK
+    );
+    assert_eq!(
+        bits(&fmu.outputs()),
+        bits(&native_outputs(&sim.outputs().unwrap()))
+    );
+    // nvr = 0 with NULL arrays is a no-op.
+    assert_eq!(
+        unsafe { fmi2GetReal(fmu.c, ptr::null(), 0, ptr::null_mut()) },
+        fmi2Status::fmi2OK
+    );
+    assert_eq!(
+        unsafe { fmi2SetReal(fmu.c, ptr::null(), 0, ptr::null()) },
+        fmi2Status::fmi2OK
+    );
+    assert_eq!(
+        unsafe { fmi2GetBoolean(fmu.c, ptr::null(), 0, ptr::null_mut()) },
+        fmi2Status::fmi2OK
+    );
+}
+
+fn run(fmu: &Fmu, from_step: usize, steps: usize) -> Vec<Vec<f64>> {
+    (from_step..from_step + steps)
+        .map(|n| {
+            fmu.step_with(START + n as f64, 1.0, external(n));
+            fmu.outputs()
+        })
+        .collect()
+}
+
+/// Reset returns to a fresh instance: start values, time and inputs; the same run again
+/// gives the same outputs bit for bit.
+#[test]
+fn reset_replays_bit_for_bit() {
+    let fmu = Fmu::running("reset", 5, 0.2, START, Some(STOP));
+    let first = run(&fmu, 0, 200);
+    assert_eq!(unsafe { fmi2Reset(fmu.c) }, fmi2Status::fmi2OK);
+    assert_eq!(
+        unsafe { instance_state(fmu.c) },
+        Some(MachineState::Instantiated)
+    );
+    // Start values are back (seed and direction were changed before).
+    let mut seed = 0;
+    // Get is not allowed in Instantiated: check after entering initialisation mode.
+    assert_eq!(fmu.setup(START, Some(STOP)), fmi2Status::fmi2OK);
+    assert_eq!(
+        unsafe { fmi2EnterInitializationMode(fmu.c) },
+        fmi2Status::fmi2OK
+    );
+    assert_eq!(
+        unsafe { fmi2GetInteger(fmu.c, &vr::SEED, 1, &mut seed) },
+        fmi2Status::fmi2OK
+    );
+    let (_, v) = fmu.get_reals(&[vr::WAVE_DIRECTION, vr::FX_EXT, vr::FY_EXT, vr::MZ_EXT]);
+    assert_eq!((seed, v), (1, vec![0.0; 4]));
+    assert_eq!(fmu.set_int(vr::SEED, 5), fmi2Status::fmi2OK);
+    assert_eq!(fmu.set_real(vr::WAVE_DIRECTION, 0.2), fmi2Status::fmi2OK);
+    assert_eq!(
+        unsafe { fmi2ExitInitializationMode(fmu.c) },
+        fmi2Status::fmi2OK
+    );
+    let second = run(&fmu, 0, 200);
+    assert_eq!(
+        first.iter().map(|v| bits(v)).collect::<Vec<_>>(),
+        second.iter().map(|v| bits(v)).collect::<Vec<_>>()
+    );
+}
+
+fn get_state(fmu: &Fmu) -> fmi2FMUstate {
+    let mut state: fmi2FMUstate = ptr::null_mut();
+    assert_eq!(
+        unsafe { fmi2GetFMUstate(fmu.c, &mut state) },
+        fmi2Status::fmi2OK
+    );
+    assert!(!state.is_null());
+    state
+}
+
+fn free_state(fmu: &Fmu, mut state: fmi2FMUstate) {
+    assert_eq!(
+        unsafe { fmi2FreeFMUstate(fmu.c, &mut state) },
+        fmi2Status::fmi2OK
+    );
+    assert!(state.is_null(), "FreeFMUstate sets the pointer to NULL");
+}
+
+fn serialize(fmu: &Fmu, state: fmi2FMUstate) -> Vec<u8> {
+    let mut size = 0usize;
+    assert_eq!(
+        unsafe { fmi2SerializedFMUstateSize(fmu.c, state, &mut size) },
+        fmi2Status::fmi2OK
+    );
+    let mut bytes = vec![0u8; size];
+    let status = unsafe { fmi2SerializeFMUstate(fmu.c, state, bytes.as_mut_ptr().cast(), size) };
+    assert_eq!(status, fmi2Status::fmi2OK);
+    bytes
+}
+
+fn deserialize(fmu: &Fmu, bytes: &[u8]) -> (fmi2Status, fmi2FMUstate) {
+    let mut state: fmi2FMUstate = ptr::null_mut();
+    let s =
+        unsafe { fmi2DeSerializeFMUstate(fmu.c, bytes.as_ptr().cast(), bytes.len(), &mut state) };
+    (s, state)
+}
+
+/// Get the state, run on, set it back, run again: the same trajectory bit for bit; the
+/// restored inputs are those at the save.
+#[test]
+fn rollback_replays_bit_for_bit() {
+    let fmu = Fmu::running("rollback", 11, 0.3, START, Some(STOP));
+    run(&fmu, 0, 300);
+    let state = get_state(&fmu);
+    let ahead = run(&fmu, 300, 300);
+    assert_eq!(unsafe { fmi2SetFMUstate(fmu.c, state) }, fmi2Status::fmi2OK);
+    let (_, inputs) = fmu.get_reals(&INPUTS);
+    assert_eq!(bits(&inputs), bits(&external(299)));
+    let again = run(&fmu, 300, 300);
+    assert_eq!(
+        ahead.iter().map(|v| bits(v)).collect::<Vec<_>>(),
+        again.iter().map(|v| bits(v)).collect::<Vec<_>>()
+    );
+    free_state(&fmu, state);
+    // Freeing a NULL state is a no-op.
+    let mut null: fmi2FMUstate = ptr::null_mut();
+    assert_eq!(
+        unsafe { fmi2FreeFMUstate(fmu.c, &mut null) },
+        fmi2Status::fmi2OK
+    );
+}
+
+/// A state serialized in one instance, deserialized and set in a fresh instance with the
+/// same parameters, continues bit for bit.
+#[test]
+fn serialized_state_continues_in_a_fresh_instance() {
+    let a = Fmu::running("a", 13, 0.5, START, Some(STOP));
+    run(&a, 0, 400);
+    let state = get_state(&a);
+    let bytes = serialize(&a, state);
+    assert_eq!(&bytes[..4], b"SDFS");
+    free_state(&a, state);
+    let ahead = run(&a, 400, 300);
+
+    let b = Fmu::new("b");
+    assert_eq!(b.setup(START, Some(STOP)), fmi2Status::fmi2OK);
+    assert_eq!(b.set_int(vr::SEED, 13), fmi2Status::fmi2OK);
+    assert_eq!(b.set_real(vr::WAVE_DIRECTION, 0.5), fmi2Status::fmi2OK);
+    let (s, state) = deserialize(&b, &bytes);
+    assert_eq!(s, fmi2Status::fmi2OK, "{}", b.messages());
+    assert_eq!(
+        unsafe { fmi2SetFMUstate(b.c, state) },
+        fmi2Status::fmi2OK,
+        "{}",
+        b.messages()
+    );
+    assert_eq!(
+        unsafe { instance_state(b.c) },
+        Some(MachineState::StepComplete)
+    );
+    free_state(&b, state);
+    let again = run(&b, 400, 300);
+    assert_eq!(
+        ahead.iter().map(|v| bits(v)).collect::<Vec<_>>(),
+        again.iter().map(|v| bits(v)).collect::<Vec<_>>()
+    );
+}
+
+/// Bytes from a differently configured instance, of another version, truncated or with
+/// trailing bytes are refused with a log line; a good state still restores afterwards.
+#[test]
+fn foreign_or_damaged_state_bytes_are_refused() {
+    let a = Fmu::running("a", 17, 0.0, START, Some(STOP));
+    run(&a, 0, 10);
+    let state = get_state(&a);
+    let good = serialize(&a, state);
+    free_state(&a, state);
+
+    let other_seed = Fmu::running("other", 18, 0.0, START, Some(STOP));
+    let (s, p) = deserialize(&other_seed, &good);
+    assert_eq!((s, p.is_null()), (fmi2Status::fmi2Error, true));
+    assert!(
+        other_seed
+            .last_message()
+            .message
+            .contains("another configuration"),
+        "{}",
+        other_seed.messages()
+    );
+    let other_stop = Fmu::running("stop", 17, 0.0, START, Some(STOP + 1.0));
+    assert_eq!(deserialize(&other_stop, &good).0, fmi2Status::fmi2Error);
+    // The same check for a state handed over in memory.
+    let state = get_state(&a);
+    let other = Fmu::running("other in memory", 18, 0.0, START, Some(STOP));
+    assert_eq!(
+        unsafe { fmi2SetFMUstate(other.c, state) },
+        fmi2Status::fmi2Error
+    );
+    assert!(other
+        .last_message()
+        .message
+        .contains("another configuration"));
+    free_state(&a, state);
+
+    let mut version = good.clone();
+    version[4] = 2;
+    let cases: [(&str, Vec<u8>); 4] = [
+        ("version", version),
+        ("truncated", good[..good.len() - 3].to_vec()),
+        ("trailing", [good.clone(), vec![0]].concat()),
+        ("empty", Vec::new()),
+    ];
+    for (what, bytes) in cases {
+        let b = Fmu::running("b", 17, 0.0, START, Some(STOP));
+        let (s, p) = deserialize(&b, &bytes);
+        assert_eq!((s, p.is_null()), (fmi2Status::fmi2Error, true), "{what}");
+        assert!(
+            b.last_message().message.contains("FMU state"),
+            "{what}: {}",
+            b.messages()
+        );
+        // fmi2Error leaves the instance in Error, from which a good state restores it.
+        assert_eq!(unsafe { instance_state(b.c) }, Some(MachineState::Error));
+        let (s, p) = deserialize(&b, &good);
+        assert_eq!(s, fmi2Status::fmi2OK, "{what}: {}", b.messages());
+        assert_eq!(unsafe { fmi2SetFMUstate(b.c, p) }, fmi2Status::fmi2OK);
+        free_state(&b, p);
+        b.step_with(START + 10.0, 1.0, [0.0; 3]);
+    }
+}
+
+/// Without a stop time the records cover six hours; the step past them is discarded, the
+/// instance reports terminated and the last successful time, and can still be read and
+/// terminated.
+#[test]
+fn stepping_past_the_records_is_discarded() {
+    let fmu = Fmu::running("end", 1, 0.0, 0.0, None);
+    let hour = 3600.0;
+    let hours = (MAX_DURATION_WITHOUT_STOP_TIME / hour) as usize;
+    for k in 0..hours {
+        fmu.step_with(k as f64 * hour, hour, [0.0; 3]);
+    }
+    let before = fmu.outputs();
+    assert_eq!(fmu.terminated(), (fmi2Status::fmi2OK, false));
+    fmu.clear_log();
+    assert_eq!(
+        fmu.step(MAX_DURATION_WITHOUT_STOP_TIME, hour),
+        fmi2Status::fmi2Discard
+    );
+    let entry = fmu.last_message();
+    assert_eq!(
+        (entry.status, entry.category.as_str()),
+        (fmi2Status::fmi2Discard, "logStatusDiscard")
+    );
+    assert!(
+        entry
+            .message
+            .contains("past the end of the precomputed records"),
+        "{}",
+        entry.message
+    );
+    assert_eq!(
+        unsafe { instance_state(fmu.c) },
+        Some(MachineState::StepFailed)
+    );
+    assert_eq!(fmu.terminated(), (fmi2Status::fmi2OK, true));
+    assert_eq!(
+        fmu.last_successful_time(),
+        (fmi2Status::fmi2OK, MAX_DURATION_WITHOUT_STOP_TIME)
+    );
+    assert_eq!(
+        bits(&fmu.outputs()),
+        bits(&before),
+        "the failed step changed nothing"
+    );
+    assert_eq!(unsafe { fmi2Terminate(fmu.c) }, fmi2Status::fmi2OK);
+}
+
+/// Instances in parallel threads: the same seed gives identical outputs, another seed
+/// different ones.
+#[test]
+fn parallel_instances_are_independent_and_reproducible() {
+    let seeds = [21, 22, 21, 22];
+    let handles: Vec<_> = seeds
+        .iter()
+        .enumerate()
+        .map(|(i, &seed)| {
+            std::thread::spawn(move || {
+                let fmu = Fmu::running(&format!("thread{i}"), seed, 0.25, START, Some(STOP));
+                run(&fmu, 0, 500)
+                    .into_iter()
+                    .map(|v| bits(&v))
+                    .collect::<Vec<_>>()
+            })
+        })
+        .collect();
+    let results: Vec<_> = handles.into_iter().map(|h| h.join().unwrap()).collect();
+    assert_eq!(results[0], results[2]);
+    assert_eq!(results[1], results[3]);
+    assert_ne!(results[0], results[1]);
+    // And a thread's result is the native simulation's.
+    let mut sim = native(21, 0.25, START, STOP);
+    let last = (0..500).fold(Vec::new(), |_, n| {
+        sim.advance(1.0, external(n)).unwrap();
+        bits(&native_outputs(&sim.outputs().unwrap()))
+    });
+    assert_eq!(results[0].last(), Some(&last));
+}

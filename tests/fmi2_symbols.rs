@@ -1,0 +1,135 @@
+//! The shared library exports exactly the FMI 2.0 common and co-simulation functions and
+//! depends on nothing beyond the C runtime (FMI 2.0.4 section 2.1.1; fmpy checks both).
+//! Uses `nm` and `readelf` from GNU binutils.
+#![cfg(target_os = "linux")]
+
+use std::collections::BTreeSet;
+use std::path::PathBuf;
+use std::process::Command;
+
+/// The functions of `fmi2FunctionTypes.h` for co-simulation, typed from the standard.
+const FMI2_CO_SIMULATION: [&str; 34] = [
+    "fmi2GetTypesPlatform",
+    "fmi2GetVersion",
+    "fmi2SetDebugLogging",
+    "fmi2Instantiate",
+    "fmi2FreeInstance",
+    "fmi2SetupExperiment",
+    "fmi2EnterInitializationMode",
+    "fmi2ExitInitializationMode",
+    "fmi2Terminate",
+    "fmi2Reset",
+    "fmi2GetReal",
+    "fmi2GetInteger",
+    "fmi2GetBoolean",
+    "fmi2GetString",
+    "fmi2SetReal",
+    "fmi2SetInteger",
+    "fmi2SetBoolean",
+    "fmi2SetString",
+    "fmi2GetFMUstate",
+    "fmi2SetFMUstate",
+    "fmi2FreeFMUstate",
+    "fmi2SerializedFMUstateSize",
+    "fmi2SerializeFMUstate",
+    "fmi2DeSerializeFMUstate",
+    "fmi2GetDirectionalDerivative",
+    "fmi2SetRealInputDerivatives",
+    "fmi2GetRealOutputDerivatives",
+    "fmi2DoStep",
+    "fmi2CancelStep",
+    "fmi2GetStatus",
+    "fmi2GetRealStatus",
+    "fmi2GetIntegerStatus",
+    "fmi2GetBooleanStatus",
+    "fmi2GetStringStatus",
+];
+
+/// Libraries of the C runtime a Rust cdylib may need.
+const C_RUNTIME: [&str; 4] = ["libc.so", "libm.so", "libgcc_s.so", "ld-linux"];
+
+/// The cdylib of this build, in `<target>/<profile>/deps` or `<target>/<profile>`, found
+/// from this test's own path (`<target>/<profile>/deps/fmi2_symbols-*`), so it follows CARGO_TARGET_DIR and
+/// the profile. Cargo builds it with the rlib the test links; if it is missing anyway, it
+/// is built here.
+fn cdylib() -> PathBuf {
+    let exe = std::env::current_exe().expect("the test's own path");
+    let deps = exe.parent().expect("deps directory");
+    let profile_dir = deps.parent().expect("profile directory");
+    // deps/ first: `cargo test` builds the cdylib there with the rlib this test links, and
+    // only `cargo build` copies it up to the profile directory (which may be older).
+    let candidates = [
+        deps.join("libslowdrift.so"),
+        profile_dir.join("libslowdrift.so"),
+    ];
+    if let Some(found) = candidates.iter().find(|p| p.is_file()) {
+        return found.clone();
+    }
+    let mut build = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()));
+    build
+        .args(["build", "--lib", "--manifest-path"])
+        .arg(concat!(env!("CARGO_MANIFEST_DIR"), "/Cargo.toml"))
+        .env(
+            "CARGO_TARGET_DIR",
+            profile_dir.parent().expect("target directory"),
+        );
+    if profile_dir.file_name().is_some_and(|n| n == "release") {
+        build.arg("--release");
+    }
+    let status = build.status().expect("cargo runs");
+    assert!(status.success(), "cargo build --lib failed");
+    candidates
+        .into_iter()
+        .find(|p| p.is_file())
+        .unwrap_or_else(|| panic!("no libslowdrift.so in {}", profile_dir.display()))
+}
+
+fn binutils(tool: &str, args: &[&str]) -> String {
+    let library = cdylib();
+    let output = Command::new(tool)
+        .args(args)
+        .arg(&library)
+        .output()
+        .unwrap_or_else(|e| {
+            panic!("`{tool}` (GNU binutils) is needed for this test and could not run: {e}")
+        });
+    assert!(
+        output.status.success(),
+        "{tool} {args:?} {}: {}",
+        library.display(),
+        String::from_utf8_lossy(&output.stderr)
+    );
+    String::from_utf8(output.stdout).expect("UTF-8 output")
+}
+
+#[test]
+fn exports_exactly_the_fmi2_functions() {
+    let text = binutils("nm", &["-D", "--defined-only"]);
+    let exported: BTreeSet<&str> = text
+        .lines()
+        .filter_map(|line| line.split_whitespace().nth(2))
+        .map(|symbol| symbol.split('@').next().unwrap_or(symbol))
+        .collect();
+    let expected: BTreeSet<&str> = FMI2_CO_SIMULATION.into_iter().collect();
+    assert_eq!(exported, expected);
+}
+
+#[test]
+fn depends_only_on_the_c_runtime() {
+    let text = binutils("readelf", &["-d"]);
+    let needed: Vec<&str> = text
+        .lines()
+        .filter(|l| l.contains("(NEEDED)"))
+        .filter_map(|l| l.split('[').nth(1)?.split(']').next())
+        .collect();
+    assert!(
+        needed.iter().any(|n| n.starts_with("libc.so")),
+        "{needed:?}"
+    );
+    for library in needed {
+        assert!(
+            C_RUNTIME.iter().any(|c| library.starts_with(c)),
+            "{library} is not part of the C runtime"
+        );
+    }
+}
