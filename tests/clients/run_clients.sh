@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Python client tests of SlowDrift.fmu (issue #4): fmpy, fmu-manipulation-toolbox, libcosimpy,
 # and the closed mooring loop with MoorDyn. Creates target/client-venv from PyPI on first
-# use, builds target/fmu/SlowDrift.fmu if it is missing, runs pytest on tests/clients.
+# use, (re)builds target/fmu/SlowDrift.fmu with fmu-pack, runs pytest on tests/clients.
 #   tests/clients/run_clients.sh              # all client tests
 #   tests/clients/run_clients.sh -k mooring   # extra arguments go to pytest
 # Environment: SLOWDRIFT_FMU (another FMU file), PYTHON (interpreter for the venv, python3).
@@ -25,13 +25,14 @@ if [[ ! -f "$stamp" || "$(cat "$stamp")" != "${packages[*]}" ]]; then
     printf '%s' "${packages[*]}" > "$stamp"
 fi
 
-fmu="${SLOWDRIFT_FMU:-$repo/target/fmu/SlowDrift.fmu}"
-if [[ ! -f "$fmu" ]]; then
-    echo "run_clients.sh: $fmu missing, building it with cargo run --release -p fmu-pack" >&2
+if [[ -z "${SLOWDRIFT_FMU:-}" ]]; then
+    # Always pack the current sources (cargo only rebuilds what changed); fmu-pack checks
+    # the archive by running it and removes it when that check fails.
     cargo run --release -p fmu-pack
 fi
+fmu="${SLOWDRIFT_FMU:-$repo/target/fmu/SlowDrift.fmu}"
 if [[ ! -f "$fmu" ]]; then
-    echo "run_clients.sh: $fmu still missing after cargo run --release -p fmu-pack" >&2
+    echo "run_clients.sh: $fmu is missing" >&2
     exit 1
 fi
 
