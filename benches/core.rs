@@ -9,6 +9,10 @@
 //! 3. `run/run_3h_1s_stepping`, `run/run_3h_1s_new_and_stepping`: a 3-hour run at h = 1 s
 //!    without drag (Aranha damping on), stepping only, and `Simulation::new` + stepping.
 //! 4. Record memory for 1 h, 3 h and 6 h (printed, not timed).
+//! 5. `hydro/columns_100x37`: `ColumnArray::drift_table` of the paper's four columns
+//!    (radius 10 m on a 70 m square, deep water) at 100 frequencies 0.05..3 rad/s and 37
+//!    headings 0..360 deg: scattering, near- and far-field drift, exciting forces and
+//!    Aranha damping with the solver's own derivatives. Target (issue #3): well under 1 s.
 //!
 //! Targets (issue): records <= 30 FFTs, step < 1 us (no drag) and < 10 us (drag 4 x 20),
 //! 3-hour run at 1 s < 50 ms, memory linear in the record length.
@@ -34,6 +38,7 @@ use slowdrift::config::{
 use slowdrift::forces::{transfers_on_grid, ForceRecords, RecordOptions, Synthesizer};
 use slowdrift::hydro::aranha::aranha_damping;
 use slowdrift::hydro::column_drift::isolated_columns_table;
+use slowdrift::hydro::columns::ColumnArray;
 use slowdrift::hydro::{DriftRow, DriftTable};
 use slowdrift::sea_state::{FrequencyGrid, SeaState, Spectrum, Spreading, WaveComponents};
 use slowdrift::{Config, Simulation};
@@ -450,6 +455,36 @@ fn memory(report: &mut Vec<String>) {
     }
 }
 
+// ---------------------------------------------------------------- 5. column-array hydrodynamics
+
+fn bench_columns(c: &mut Criterion, report: &mut Vec<String>) {
+    let environment = Environment::default();
+    let array = ColumnArray::new(four_columns(), None).unwrap();
+    let omegas: Vec<f64> = (0..100).map(|i| 0.05 + 2.95 * i as f64 / 99.0).collect();
+    let headings: Vec<f64> = (0..37).map(|i| (10.0 * i as f64).to_radians()).collect();
+    let table = || array.drift_table(&environment, &omegas, &headings).unwrap();
+    let mut group = c.benchmark_group("hydro");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(6));
+    group.bench_function("columns_100x37", |b| b.iter(|| black_box(table())));
+    group.finish();
+    let time = median_time(5, || {
+        black_box(table());
+    });
+    report.push(format!(
+        "hydro/columns_100x37: {:.1} ms (four columns, 100 frequencies x 37 headings, drift \
+         near + far, excitation, Aranha damping); target well under 1 s: {}",
+        time.as_secs_f64() * 1e3,
+        if time.as_secs_f64() < 1.0 {
+            "met"
+        } else {
+            "NOT met"
+        }
+    ));
+}
+
 fn main() {
     let mut c = Criterion::default().configure_from_args();
     let mut report = Vec::new();
@@ -457,6 +492,7 @@ fn main() {
     bench_steps(&mut c, &mut report);
     bench_run(&mut c, &mut report);
     memory(&mut report);
+    bench_columns(&mut c, &mut report);
     c.final_summary();
     println!("\n==== slowdrift core summary (std::time::Instant medians) ====");
     for line in report {

@@ -114,18 +114,34 @@ fn signed_orders(n_max: usize, of: impl Fn(usize) -> Complex64) -> Vec<Complex64
         .collect()
 }
 
+/// Below this value of (pi k a / 2) |J'_m H'_m| the surface amplitude u_m of a row is
+/// computed from the regular coefficients c = inc + P b instead of from b alone (see
+/// [`FrequencySystem::solve`]): the shortcut divides by J'_m and would amplify the solver's
+/// round-off by up to 1/0.1 here, more near the zeros of J'_m.
+const SHORTCUT_LIMIT: f64 = 0.1;
+
+/// How the surface amplitude of one row follows from the solution (see
+/// [`FrequencySystem::solve`]).
+#[derive(Debug, Clone, Copy)]
+enum SurfaceRow {
+    /// u_m = factor * b_m, factor = -2 i / (pi k a J'_m |H'_m|).
+    FromScaled(Complex64),
+    /// u_m = factor * (inc_m + (P b)_m), factor = 2 i / (pi k a H'_m).
+    FromRegular(Complex64),
+}
+
 /// The factored scattering system of one wavenumber.
 pub(super) struct FrequencySystem {
     /// Wavenumber, 1/m.
     pub k: f64,
     /// Modes -M..=M are kept on every column.
     pub modes: usize,
-    /// Column radii, m.
-    radii: Vec<f64>,
-    /// H'_m(k a_c) at index c (2M+1) + m + M.
-    dh: Vec<Complex64>,
+    /// 1 / |H'_m(k a_c)| at index c (2M+1) + m + M.
+    inverse_norm: Vec<f64>,
     /// J'_m |H'_m| / H'_m (= |H'_m| Z_m), same index.
     row_scale: Vec<Complex64>,
+    /// Surface amplitude of every row, same index.
+    surface_rows: Vec<SurfaceRow>,
     /// P[(k, m), (j, n)] = e^{i (n-m) alpha_jk} H_{n-m}(k R_jk) / |H'_n(k a_j)|, j != k;
     /// zero diagonal blocks.
     interaction: DMatrix<Complex64>,
@@ -148,10 +164,21 @@ impl FrequencySystem {
         let width = 2 * modes + 1;
         let n = cylinders.len() * width;
         let mut dh = Vec::with_capacity(n);
+        let mut surface_rows = Vec::with_capacity(n);
         for c in cylinders {
-            let h = hankel_derivatives(modes, k * c.radius);
-            dh.extend(signed_orders(modes, |m| h[m]));
+            let ka = k * c.radius;
+            let h = hankel_derivatives(modes, ka);
+            for d in signed_orders(modes, |m| h[m]) {
+                let jh = d.re * d.norm();
+                surface_rows.push(if 0.5 * PI * ka * jh.abs() >= SHORTCUT_LIMIT {
+                    SurfaceRow::FromScaled(Complex64::new(0.0, -2.0 / (PI * ka * jh)))
+                } else {
+                    SurfaceRow::FromRegular(Complex64::new(0.0, 2.0 / (PI * ka)) / d)
+                });
+                dh.push(d);
+            }
         }
+        let inverse_norm: Vec<f64> = dh.iter().map(|d| 1.0 / d.norm()).collect();
         let row_scale: Vec<Complex64> = dh.iter().map(|&d| d.re * d.norm() / d).collect();
         let mut interaction = DMatrix::zeros(n, n);
         for (kk, ck) in cylinders.iter().enumerate() {
@@ -171,10 +198,11 @@ impl FrequencySystem {
                         v * Complex64::from_polar(1.0, d * alpha)
                     })
                     .collect();
-                for m in 0..width {
-                    for nn in 0..width {
+                for nn in 0..width {
+                    let scale = inverse_norm[j * width + nn];
+                    for m in 0..width {
                         interaction[(kk * width + m, j * width + nn)] =
-                            turned[nn + 2 * modes - m] / dh[j * width + nn].norm();
+                            turned[nn + 2 * modes - m] * scale;
                     }
                 }
             }
@@ -184,11 +212,11 @@ impl FrequencySystem {
             return None;
         }
         let mut system = interaction.clone();
-        for (r, s) in row_scale.iter().enumerate() {
-            for c in 0..n {
+        for c in 0..n {
+            for (r, s) in row_scale.iter().enumerate() {
                 system[(r, c)] *= s;
             }
-            system[(r, r)] += 1.0;
+            system[(c, c)] += 1.0;
         }
         let lu = system.lu();
         if !lu.is_invertible() {
@@ -197,9 +225,9 @@ impl FrequencySystem {
         Some(FrequencySystem {
             k,
             modes,
-            radii: cylinders.iter().map(|c| c.radius).collect(),
-            dh,
+            inverse_norm,
             row_scale,
+            surface_rows,
             interaction,
             lu,
         })
@@ -235,24 +263,39 @@ impl FrequencySystem {
 
     /// Solves for the incident waves given by their regular-wave coefficients (one per
     /// column of `incident`; see [`Self::incident`]).
+    ///
+    /// The scaled system (I + diag(row_scale) P) b = -row_scale inc gives b = -row_scale c
+    /// with c = inc + P b the regular coefficients, so u_m = 2 i c_m/(pi k a H'_m) =
+    /// -2 i b_m/(pi k a J'_m |H'_m|) needs no product with P, except on the few rows where
+    /// J'_m is nearly zero ([`SHORTCUT_LIMIT`]).
     pub fn solve(&self, incident: &DMatrix<Complex64>) -> Solution {
-        let width = 2 * self.modes + 1;
         let mut scaled = incident.clone();
-        for (r, s) in self.row_scale.iter().enumerate() {
-            for c in 0..scaled.ncols() {
+        for c in 0..scaled.ncols() {
+            for (r, s) in self.row_scale.iter().enumerate() {
                 scaled[(r, c)] *= -s;
             }
         }
         let ok = self.lu.solve_mut(&mut scaled);
         debug_assert!(ok, "the factored matrix was checked to be invertible");
-        let mut surface = &self.interaction * &scaled + incident;
+        let mut surface = DMatrix::zeros(scaled.nrows(), scaled.ncols());
+        for (r, row) in self.surface_rows.iter().enumerate() {
+            match *row {
+                SurfaceRow::FromScaled(factor) => {
+                    for c in 0..scaled.ncols() {
+                        surface[(r, c)] = factor * scaled[(r, c)];
+                    }
+                }
+                SurfaceRow::FromRegular(factor) => {
+                    let regular = self.interaction.row(r) * &scaled + incident.row(r);
+                    for c in 0..scaled.ncols() {
+                        surface[(r, c)] = factor * regular[c];
+                    }
+                }
+            }
+        }
         let mut scattered = scaled;
-        for r in 0..surface.nrows() {
-            let radius = self.radii[r / width];
-            let to_surface = Complex64::new(0.0, 2.0 / (PI * self.k * radius)) / self.dh[r];
-            let inverse_norm = 1.0 / self.dh[r].norm();
-            for c in 0..surface.ncols() {
-                surface[(r, c)] *= to_surface;
+        for c in 0..scattered.ncols() {
+            for (r, inverse_norm) in self.inverse_norm.iter().enumerate() {
                 scattered[(r, c)] *= inverse_norm;
             }
         }
