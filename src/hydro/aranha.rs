@@ -60,7 +60,8 @@ pub fn aranha_damping(table: &DriftTable, gravity: f64, columns: &[Column]) -> R
 
 /// Aranha's b_ij at one (omega, beta) from the drift F_i (surge, sway, yaw), dF_i/domega
 /// and dF_i/dbeta (module doc): rows i = surge, sway, yaw; columns j = surge, sway velocity
-/// filled, the yaw-rate column j = 3 left zero (see [`ColumnLayout::fill_yaw_rate_column`]).
+/// filled, the yaw-rate column (index 2) left zero: the module doc's per-column
+/// approximation fills it.
 pub fn aranha_coefficients(
     omega: f64,
     beta: f64,

@@ -223,7 +223,7 @@ impl ColumnArray {
 
     /// Exciting forces, near- and far-field drift and the drift's derivatives for every
     /// frequency and heading. One factorisation per frequency serves all headings; the
-    /// frequency derivative needs two more (central difference, [`FREQUENCY_STEP`]), the
+    /// frequency derivative needs two more (central difference with step 1e-4 omega / max(1, k L)), the
     /// heading derivative is exact (one more right-hand side).
     pub fn solve(
         &self,
