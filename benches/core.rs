@@ -12,6 +12,10 @@
 //! 5. `hydro/read_oc4_12d`: reading the OC4 semisubmersible's WAMIT QTF file
 //!    (`marin_semi.12d`, 1.2 MB, 9576 lines) from the shared data directory
 //!    (`$SLOWDRIFT_DATA` or `../shared/data`); skipped with a notice if it is absent.
+//! 6. `hydro/columns_100x37`: `ColumnArray::drift_table` of the paper's four columns
+//!    (radius 10 m on a 70 m square, deep water) at 100 frequencies 0.05..3 rad/s and 37
+//!    headings 0..360 deg: scattering, near- and far-field drift, exciting forces and
+//!    Aranha damping with the solver's own derivatives. Target (issue #3): well under 1 s.
 //!
 //! Targets (issue): records <= 30 FFTs, step < 1 us (no drag) and < 10 us (drag 4 x 20),
 //! 3-hour run at 1 s < 50 ms, memory linear in the record length, OC4 .12d read < 100 ms.
@@ -37,6 +41,7 @@ use slowdrift::config::{
 use slowdrift::forces::{transfers_on_grid, ForceRecords, RecordOptions, Synthesizer};
 use slowdrift::hydro::aranha::aranha_damping;
 use slowdrift::hydro::column_drift::isolated_columns_table;
+use slowdrift::hydro::columns::ColumnArray;
 use slowdrift::hydro::wamit::{read_difference_qtf, WamitOptions};
 use slowdrift::hydro::{DriftRow, DriftTable};
 use slowdrift::sea_state::{FrequencyGrid, SeaState, Spectrum, Spreading, WaveComponents};
@@ -491,6 +496,36 @@ fn bench_wamit(c: &mut Criterion, report: &mut Vec<String>) {
     ));
 }
 
+// ---------------------------------------------------------------- 6. column-array hydrodynamics
+
+fn bench_columns(c: &mut Criterion, report: &mut Vec<String>) {
+    let environment = Environment::default();
+    let array = ColumnArray::new(four_columns(), None).unwrap();
+    let omegas: Vec<f64> = (0..100).map(|i| 0.05 + 2.95 * i as f64 / 99.0).collect();
+    let headings: Vec<f64> = (0..37).map(|i| (10.0 * i as f64).to_radians()).collect();
+    let table = || array.drift_table(&environment, &omegas, &headings).unwrap();
+    let mut group = c.benchmark_group("hydro");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(6));
+    group.bench_function("columns_100x37", |b| b.iter(|| black_box(table())));
+    group.finish();
+    let time = median_time(5, || {
+        black_box(table());
+    });
+    report.push(format!(
+        "hydro/columns_100x37: {:.1} ms (four columns, 100 frequencies x 37 headings, drift \
+         near + far, excitation, Aranha damping); under 1 s (issue asks well under): {}",
+        time.as_secs_f64() * 1e3,
+        if time.as_secs_f64() < 1.0 {
+            "yes"
+        } else {
+            "no"
+        }
+    ));
+}
+
 fn main() {
     let mut c = Criterion::default().configure_from_args();
     let mut report = Vec::new();
@@ -499,6 +534,7 @@ fn main() {
     bench_run(&mut c, &mut report);
     memory(&mut report);
     bench_wamit(&mut c, &mut report);
+    bench_columns(&mut c, &mut report);
     c.final_summary();
     println!("\n==== slowdrift core summary (std::time::Instant medians) ====");
     for line in report {

@@ -50,13 +50,7 @@ pub fn aranha_damping(table: &DriftTable, gravity: f64, columns: &[Column]) -> R
             let f = table.drift_at_node(ih, iw);
             let df_domega = derivative(omegas, iw, false, |i| table.drift_at_node(ih, i));
             let df_dbeta = derivative(headings, ih, periodic, |i| table.drift_at_node(i, iw));
-            let (sin, cos) = beta.sin_cos();
-            let mut b = [[0.0; 3]; 3];
-            for i in 0..3 {
-                let radial = 4.0 * f[i] + omega * df_domega[i];
-                b[i][0] = omega / gravity * (cos * radial - 2.0 * sin * df_dbeta[i]);
-                b[i][1] = omega / gravity * (sin * radial + 2.0 * cos * df_dbeta[i]);
-            }
+            let mut b = aranha_coefficients(omega, beta, f, df_domega, df_dbeta, gravity);
             layout.fill_yaw_rate_column(&mut b);
             damping.push(b);
         }
@@ -64,8 +58,30 @@ pub fn aranha_damping(table: &DriftTable, gravity: f64, columns: &[Column]) -> R
     Ok(table.clone().with_damping(damping))
 }
 
-/// Mean position moments of the columns, for the yaw-rate approximation.
-struct ColumnLayout {
+/// Aranha's b_ij at one (omega, beta) from the drift F_i (surge, sway, yaw), dF_i/domega
+/// and dF_i/dbeta (module doc): rows i = surge, sway, yaw; columns j = surge, sway velocity
+/// filled, the yaw-rate column (index 2) left zero: the module doc's per-column
+/// approximation fills it.
+pub fn aranha_coefficients(
+    omega: f64,
+    beta: f64,
+    f: [f64; 3],
+    df_domega: [f64; 3],
+    df_dbeta: [f64; 3],
+    gravity: f64,
+) -> [[f64; 3]; 3] {
+    let (sin, cos) = beta.sin_cos();
+    let mut b = [[0.0; 3]; 3];
+    for i in 0..3 {
+        let radial = 4.0 * f[i] + omega * df_domega[i];
+        b[i][0] = omega / gravity * (cos * radial - 2.0 * sin * df_dbeta[i]);
+        b[i][1] = omega / gravity * (sin * radial + 2.0 * cos * df_dbeta[i]);
+    }
+    b
+}
+
+/// Mean position moments of the columns, for the yaw-rate approximation (module doc).
+pub(crate) struct ColumnLayout {
     mean_x: f64,
     mean_y: f64,
     mean_xx: f64,
@@ -74,7 +90,7 @@ struct ColumnLayout {
 }
 
 impl ColumnLayout {
-    fn of(columns: &[Column]) -> Self {
+    pub(crate) fn of(columns: &[Column]) -> Self {
         let n = columns.len().max(1) as f64;
         let sum = |f: &dyn Fn(&Column) -> f64| columns.iter().map(f).sum::<f64>() / n;
         ColumnLayout {
@@ -86,7 +102,8 @@ impl ColumnLayout {
         }
     }
 
-    fn fill_yaw_rate_column(&self, b: &mut [[f64; 3]; 3]) {
+    /// Fills b_16, b_26, b_66 from the translational columns (module doc).
+    pub(crate) fn fill_yaw_rate_column(&self, b: &mut [[f64; 3]; 3]) {
         b[0][2] = -self.mean_y * b[0][0] + self.mean_x * b[0][1];
         b[1][2] = -self.mean_y * b[1][0] + self.mean_x * b[1][1];
         b[2][2] =

@@ -1,8 +1,10 @@
 //! Hydrodynamic data: the drift table, wave-drift damping by Aranha's formula, the
-//! closed-form drift of isolated vertical columns, WAMIT readers and the native database.
+//! closed-form drift of isolated vertical columns, the interaction theory of column arrays,
+//! WAMIT readers and the native database.
 
 pub mod aranha;
 pub mod column_drift;
+pub mod columns;
 pub mod database;
 mod drift_table;
 pub mod wamit;
