@@ -20,8 +20,10 @@ use std::process::ExitCode;
 /// Slow-drift cycles dropped as transient by default (E&S section 5: about ten cycles).
 const TRANSIENT_CYCLES: f64 = 10.0;
 
-const USAGE: &str = "usage: slowdrift simulate [--config FILE.toml] [--out FILE.csv] [--transient SECONDS]
-       slowdrift hydro wamit --root PATH/NAME [--ulen 1] [--rho 1025] [--g 9.80665] --out FILE.json";
+const USAGE: &str =
+    "usage: slowdrift simulate [--config FILE.toml] [--out FILE.csv] [--transient SECONDS]
+       slowdrift hydro wamit --root PATH/NAME [--ulen 1] [--rho 1025] [--g 9.80665] --out FILE.json
+       slowdrift hydro columns [--config FILE.toml] --out FILE.json";
 
 struct Arguments {
     config: Option<PathBuf>,

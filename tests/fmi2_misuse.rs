@@ -690,7 +690,7 @@ fn hydro_database_files() {
 fn resources_platform_toml_is_the_default() {
     let scratch = Scratch::new("resources");
     let heavy = DEFAULT_TOML.replace("mass = 1.0097e8", "mass = 2.0e8");
-    let path = scratch.write(slowdrift::fmi2::parameters::RESOURCE_CONFIG, &heavy);
+    let path = scratch.write(slowdrift::config::default_platform::RESOURCE_CONFIG, &heavy);
     let expected = native_fifty_steps(file::load(&path).unwrap());
     let dir = scratch.0.display().to_string();
     for uri in [

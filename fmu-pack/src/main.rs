@@ -1,6 +1,7 @@
 //! `fmu-pack`: builds the SlowDrift cdylib in release mode, writes
 //! `target/fmu/SlowDrift.fmu` (modelDescription.xml, binaries/linux64/SlowDrift.so,
-//! resources/platform.toml, documentation/index.html), then loads the library from the
+//! resources/platform.toml with the default platform's drift precomputed in
+//! resources/platform_drift.json, documentation/index.html), then loads the library from the
 //! archive through its C ABI, as a master would, runs the default platform in the default
 //! sea state for three hours and prints a short summary.
 
@@ -8,6 +9,7 @@ mod master;
 mod unzip;
 mod zip;
 
+use slowdrift::config::default_platform::{write_resources, RESOURCE_CONFIG, RESOURCE_DRIFT};
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
 
@@ -38,7 +40,9 @@ fn run() -> Result<(), String> {
     build_library(&root)?;
     let fmu_path = target.join("fmu").join(format!("{MODEL_IDENTIFIER}.fmu"));
     let library = target.join("release").join("libslowdrift.so");
-    pack(&root, &library, &fmu_path)?;
+    let resources = target.join("fmu").join("resources");
+    write_resources(&resources).map_err(|e| e.to_string())?;
+    pack(&root, &library, &resources, &fmu_path)?;
     println!("wrote {}", fmu_path.display());
     check_by_running(&fmu_path, &target.join("fmu").join("unpacked")).inspect_err(|_| {
         // A packed FMU that fails its own check must not be left for a master to find.
@@ -63,7 +67,7 @@ fn read(path: &Path) -> Result<Vec<u8>, String> {
     std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))
 }
 
-fn pack(root: &Path, library: &Path, fmu_path: &Path) -> Result<(), String> {
+fn pack(root: &Path, library: &Path, resources: &Path, fmu_path: &Path) -> Result<(), String> {
     let readme = String::from_utf8_lossy(&read(&root.join("README.md"))?).into_owned();
     let entries = vec![
         zip::Entry {
@@ -75,8 +79,12 @@ fn pack(root: &Path, library: &Path, fmu_path: &Path) -> Result<(), String> {
             data: read(library)?,
         },
         zip::Entry {
-            path: "resources/platform.toml".into(),
-            data: read(&root.join("src/config/default.toml"))?,
+            path: format!("resources/{RESOURCE_CONFIG}"),
+            data: read(&resources.join(RESOURCE_CONFIG))?,
+        },
+        zip::Entry {
+            path: format!("resources/{RESOURCE_DRIFT}"),
+            data: read(&resources.join(RESOURCE_DRIFT))?,
         },
         zip::Entry {
             path: "documentation/index.html".into(),
@@ -113,11 +121,10 @@ fn check_by_running(fmu_path: &Path, unpack_dir: &Path) -> Result<(), String> {
         entry(&format!("binaries/linux64/{MODEL_IDENTIFIER}.so"))?,
     )
     .map_err(|e| e.to_string())?;
-    std::fs::write(
-        resources.join("platform.toml"),
-        entry("resources/platform.toml")?,
-    )
-    .map_err(|e| e.to_string())?;
+    for name in [RESOURCE_CONFIG, RESOURCE_DRIFT] {
+        std::fs::write(resources.join(name), entry(&format!("resources/{name}"))?)
+            .map_err(|e| e.to_string())?;
+    }
     let xml = String::from_utf8(entry("modelDescription.xml")?).map_err(|e| e.to_string())?;
     let description = master::ModelDescription::parse(xml)?;
     let fmu = master::Fmu::load(&library)?;

@@ -1,20 +1,69 @@
 //! `slowdrift hydro wamit --root PATH/NAME [--ulen L] [--rho RHO] [--g G] --out FILE.json`:
 //! imports the WAMIT files `NAME.1`, `.hst`, `.8`, `.9`, `.12d` (or `.11d`, `.10d`) that
 //! exist into a native hydro database and prints what it found.
+//!
+//! `slowdrift hydro columns [--config FILE.toml] --out FILE.json`: writes the drift table
+//! (and wave-drift damping) of a configuration (default: the embedded default platform,
+//! whose `[drift]` is the column-array solver) as a native hydro database.
 
+use slowdrift::config::default_platform::{default_config, DEFAULT_DRIFT_LABEL};
+use slowdrift::config::file;
 use slowdrift::hydro::database::HydroDatabase;
 use slowdrift::hydro::wamit::WamitOptions;
 use std::path::PathBuf;
 
 pub const USAGE: &str =
     "slowdrift hydro wamit --root PATH/NAME [--ulen 1] [--rho 1025] [--g 9.80665] --out FILE.json";
+pub const COLUMNS_USAGE: &str = "slowdrift hydro columns [--config FILE.toml] --out FILE.json";
 
 /// Runs `slowdrift hydro ...` with the arguments after `hydro`.
 pub fn run(args: &[String]) -> Result<(), String> {
     match args.first().map(String::as_str) {
         Some("wamit") => wamit(&args[1..]),
-        _ => Err(format!("usage: {USAGE}")),
+        Some("columns") => columns(&args[1..]),
+        _ => Err(format!("usage: {USAGE}\n       {COLUMNS_USAGE}")),
     }
+}
+
+fn columns(args: &[String]) -> Result<(), String> {
+    let (mut config_path, mut out) = (None, None);
+    let mut rest = args.iter();
+    while let Some(flag) = rest.next() {
+        let value = rest
+            .next()
+            .ok_or_else(|| format!("{flag} needs a value\nusage: {COLUMNS_USAGE}"))?;
+        match flag.as_str() {
+            "--config" => config_path = Some(PathBuf::from(value)),
+            "--out" => out = Some(PathBuf::from(value)),
+            other => return Err(format!("unknown option '{other}'\nusage: {COLUMNS_USAGE}")),
+        }
+    }
+    let out = out.ok_or_else(|| format!("--out is required\nusage: {COLUMNS_USAGE}"))?;
+    let (config, source) = match &config_path {
+        Some(path) => (
+            file::load(path).map_err(|e| e.to_string())?,
+            format!("[drift] of {}", path.display()),
+        ),
+        None => (
+            default_config().map_err(|e| e.to_string())?,
+            DEFAULT_DRIFT_LABEL.to_string(),
+        ),
+    };
+    let table = &config.drift;
+    let database = HydroDatabase::from_drift_table("platform", &source, &config.environment, table);
+    database.save(&out).map_err(|e| e.to_string())?;
+    println!(
+        "drift{} on {} frequencies x {} headings ({source}) written to {}",
+        if table.has_damping() {
+            " and damping"
+        } else {
+            ""
+        },
+        table.omegas().len(),
+        table.headings().len(),
+        out.display()
+    );
+    Ok(())
 }
 
 fn wamit(args: &[String]) -> Result<(), String> {

@@ -3,19 +3,57 @@
 //! derived). What a new user simulates without giving any data.
 
 use super::{file, Config};
-use crate::error::Result;
+use crate::error::{Error, Result};
+use crate::hydro::database::HydroDatabase;
 use std::path::Path;
+
+/// The configuration file an FMU carries in its `resources/` folder.
+pub const RESOURCE_CONFIG: &str = "platform.toml";
+/// The hydro database next to it, holding the default platform's precomputed drift.
+pub const RESOURCE_DRIFT: &str = "platform_drift.json";
 
 /// The default configuration file, as compiled into the library.
 pub const DEFAULT_CONFIG_TOML: &str = include_str!("default.toml");
 
 /// One line that says where the default platform's drift comes from.
-pub const DEFAULT_DRIFT_LABEL: &str = "closed-form drift of the four columns treated as isolated \
-     (Havelock 1940, no interaction, no pontoons): an interim approximation";
+pub const DEFAULT_DRIFT_LABEL: &str = "the four columns as an interacting array (Linton & Evans \
+     1990; deep water, no pontoons), Aranha damping from the solver";
 
 /// The default configuration.
 pub fn default_config() -> Result<Config> {
     file::parse(DEFAULT_CONFIG_TOML, "embedded default.toml", Path::new("."))
+}
+
+/// Writes the default platform for an FMU's `resources/` folder: its drift table (the
+/// column solver's, computed here once) as the hydro database [`RESOURCE_DRIFT`], and the
+/// default configuration as [`RESOURCE_CONFIG`] with its `[drift]` section pointing at that
+/// database, so that an instance loads the hydrodynamics instead of recomputing them.
+pub fn write_resources(dir: &Path) -> Result<()> {
+    let config = default_config()?;
+    let database = HydroDatabase::from_drift_table(
+        "SlowDrift default platform",
+        DEFAULT_DRIFT_LABEL,
+        &config.environment,
+        &config.drift,
+    );
+    std::fs::create_dir_all(dir).map_err(|e| Error::Io {
+        path: dir.display().to_string(),
+        message: e.to_string(),
+    })?;
+    database.save(&dir.join(RESOURCE_DRIFT))?;
+    let drift_section = DEFAULT_CONFIG_TOML
+        .find("\n[drift]")
+        .expect("default.toml ends with its [drift] section");
+    let text = format!(
+        "{}\n[drift]\n# precomputed by fmu-pack from the default's column-array source\n\
+         source = \"database\"\nfile = \"{RESOURCE_DRIFT}\"\n",
+        &DEFAULT_CONFIG_TOML[..drift_section]
+    );
+    let path = dir.join(RESOURCE_CONFIG);
+    std::fs::write(&path, text).map_err(|e| Error::Io {
+        path: path.display().to_string(),
+        message: e.to_string(),
+    })
 }
 
 #[cfg(test)]
@@ -70,8 +108,19 @@ mod tests {
         }
         assert_eq!(c.model.drag, DragModel::Combined { cd: start::CD });
         assert_eq!(start::DRAG_MODEL, 2, "2 = combined");
-        assert_eq!(c.model.drift_damping, DriftDamping::Aranha);
-        assert_eq!(start::DRIFT_DAMPING, 2, "2 = aranha");
+        assert_eq!(c.model.drift_damping, DriftDamping::Table);
+        assert_eq!(start::DRIFT_DAMPING, 1, "1 = table");
+    }
+
+    /// The resources an FMU carries describe exactly the default (the database keeps every
+    /// bit of the drift and damping).
+    #[test]
+    fn resources_reproduce_the_default() {
+        let dir = std::env::temp_dir().join(format!("slowdrift-resources-{}", std::process::id()));
+        write_resources(&dir).unwrap();
+        let loaded = file::load(&dir.join(RESOURCE_CONFIG)).unwrap();
+        std::fs::remove_dir_all(&dir).ok();
+        assert_eq!(loaded, default_config().unwrap());
     }
 
     /// Mass equals rho times the displaced volume of the documented geometry.

@@ -87,6 +87,7 @@ use super::{
 };
 use crate::error::{Error, Result};
 use crate::hydro::column_drift::isolated_columns_table;
+use crate::hydro::columns::ColumnArray;
 use crate::hydro::database::HydroDatabase;
 use crate::hydro::{DriftRow, DriftTable};
 use crate::sea_state::{SeaState, Spectrum, Spreading};
@@ -673,6 +674,21 @@ enum DriftFile {
         #[serde(default = "default_columns_heading_step")]
         heading_step_deg: f64,
     },
+    /// The platform's columns as an interacting array (Linton & Evans 1990;
+    /// `hydro::columns`): near-field drift with Aranha's wave-drift damping from the solver's
+    /// own derivatives, on the same grid keys as `columns`; `depth` in m for bottom-mounted
+    /// columns, absent for deep water and infinitely deep columns.
+    ColumnArray {
+        #[serde(default = "default_columns_omega_min")]
+        omega_min: f64,
+        #[serde(default = "default_columns_omega_max")]
+        omega_max: f64,
+        #[serde(default = "default_columns_n_omega")]
+        n_omega: usize,
+        #[serde(default = "default_columns_heading_step")]
+        heading_step_deg: f64,
+        depth: Option<f64>,
+    },
 }
 
 /// Default frequency range and resolution of `source = "columns"`.
@@ -752,6 +768,22 @@ impl DriftFile {
                     ));
                 }
                 isolated_columns_table(&platform.columns, environment, &omegas, &headings)
+            }
+            DriftFile::ColumnArray {
+                omega_min,
+                omega_max,
+                n_omega,
+                heading_step_deg,
+                depth,
+            } => {
+                let (omegas, headings) =
+                    columns_grid(omega_min, omega_max, n_omega, heading_step_deg)
+                        .map_err(|m| source.error_at(span.clone(), format!("[drift] {m}")))?;
+                ColumnArray::new(platform.columns.clone(), depth)?.drift_table(
+                    environment,
+                    &omegas,
+                    &headings,
+                )
             }
             DriftFile::Table { columns, rows } => {
                 let at =

@@ -26,8 +26,7 @@ use std::path::{Path, PathBuf};
 /// the usual three-hour storm and keeps an instance near 8 MB.
 pub const MAX_DURATION_WITHOUT_STOP_TIME: f64 = 6.0 * 3600.0;
 
-/// Name of the default configuration inside the FMU's `resources` folder.
-pub const RESOURCE_CONFIG: &str = "platform.toml";
+use crate::config::default_platform::RESOURCE_CONFIG;
 
 /// The FMU's parameters, one field per parameter of modelDescription.xml, initialised from
 /// its start values.

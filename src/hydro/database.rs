@@ -31,6 +31,7 @@ use super::wamit::{
     DifferenceQtf, WamitOptions,
 };
 use super::{DriftRow, DriftTable};
+use crate::config::Environment;
 use crate::error::{require_finite, require_finite_matrix, require_positive, Error, Result};
 use serde::{Deserialize, Serialize};
 use std::ffi::OsString;
@@ -234,6 +235,42 @@ impl HydroDatabase {
             q.validate()?;
         }
         Ok(())
+    }
+
+    /// A database holding just a drift table (and its damping, if any), e.g. the column
+    /// solver's, made dimensional with `environment`'s density and gravity.
+    pub fn from_drift_table(
+        name: &str,
+        source: &str,
+        environment: &Environment,
+        table: &DriftTable,
+    ) -> Self {
+        let mut drift = Vec::with_capacity(table.headings().len() * table.omegas().len());
+        for (ih, &heading) in table.headings().iter().enumerate() {
+            for (iw, &omega) in table.omegas().iter().enumerate() {
+                let [surge, sway, yaw] = table.drift_at_node(ih, iw);
+                drift.push(DriftPoint {
+                    omega,
+                    heading,
+                    surge,
+                    sway,
+                    yaw,
+                    damping: table.damping_at_node(ih, iw),
+                });
+            }
+        }
+        HydroDatabase {
+            format_version: FORMAT_VERSION,
+            name: name.to_string(),
+            source: source.to_string(),
+            water_density: environment.water_density,
+            gravity: environment.gravity,
+            mass_properties: None,
+            low_frequency_added_mass: None,
+            stiffness: None,
+            drift,
+            qtf: None,
+        }
     }
 
     /// The drift table of the database (with damping if every node has it).

@@ -144,6 +144,13 @@ impl DriftTable {
         self.drift[ih * self.omegas.len() + iw]
     }
 
+    /// Damping at grid node (heading ih, frequency iw), when the table has damping.
+    pub fn damping_at_node(&self, ih: usize, iw: usize) -> Option<[[f64; 3]; 3]> {
+        self.damping
+            .as_ref()
+            .map(|table| table[ih * self.omegas.len() + iw])
+    }
+
     /// The same grid with damping coefficients replaced (heading-major like the drift).
     pub fn with_damping(mut self, damping: Vec<[[f64; 3]; 3]>) -> Self {
         assert_eq!(

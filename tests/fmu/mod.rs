@@ -3,14 +3,32 @@
 //! values: a native [`Simulation`] built from a [`Config`] written here field by field.
 #![allow(dead_code)] // each test binary uses a different subset
 
-use slowdrift::config::default_platform::default_config;
+use slowdrift::config::default_platform::{default_config, write_resources};
 use slowdrift::fmi2::exports::*;
 use slowdrift::fmi2::types::*;
 use slowdrift::model_description::{vr, Causality, GUID, VARIABLES};
 use slowdrift::{Config, Outputs, Simulation};
 use std::ffi::{c_char, c_void, CStr, CString};
 use std::ptr;
-use std::sync::Mutex;
+use std::sync::{Mutex, OnceLock};
+
+/// The embedded default, computed once per test binary (the column solver takes about 1 s).
+pub fn default_platform() -> &'static Config {
+    static DEFAULT: OnceLock<Config> = OnceLock::new();
+    DEFAULT.get_or_init(|| default_config().unwrap())
+}
+
+/// A `resources` folder as fmu-pack writes it (the default with its drift precomputed),
+/// made once per test binary, as a file URI.
+pub fn packed_resources() -> &'static str {
+    static URI: OnceLock<String> = OnceLock::new();
+    URI.get_or_init(|| {
+        let dir =
+            std::env::temp_dir().join(format!("slowdrift-fmu-resources-{}", std::process::id()));
+        write_resources(&dir).unwrap();
+        format!("file://{}", dir.display())
+    })
+}
 
 /// One message the FMU sent to the logger.
 #[derive(Debug, Clone)]
@@ -104,7 +122,7 @@ pub fn native_outputs(o: &Outputs) -> Vec<f64> {
 /// The native configuration of the embedded default with a seed, a wave direction and a
 /// run, as the FMU parameters and `fmi2SetupExperiment` describe them.
 pub fn native_config(seed: u64, direction: f64, start: f64, stop: f64) -> Config {
-    let mut c = default_config().unwrap();
+    let mut c = default_platform().clone();
     c.sea.seed = seed;
     c.sea.mean_direction = direction;
     c.run.start_time = start;
@@ -140,9 +158,9 @@ pub struct Fmu {
 }
 
 impl Fmu {
-    /// A co-simulation instance with logging on and no resources.
+    /// A co-simulation instance with logging on and the packed default's resources.
     pub fn new(name: &str) -> Fmu {
-        Fmu::with_resources(name, None)
+        Fmu::with_resources(name, Some(packed_resources()))
     }
 
     pub fn with_resources(name: &str, resources: Option<&str>) -> Fmu {
