@@ -24,28 +24,25 @@ pub fn transfers_on_grid(
 ) -> Result<Vec<DirectionTransfer>> {
     let headings: Vec<f64> = directions.iter().map(|d| d.heading).collect();
     table.check_covers((grid.omega(0), grid.omega(grid.count - 1)), &headings)?;
+    let omegas: Vec<f64> = (0..grid.count).map(|j| grid.omega(j)).collect();
     directions
         .iter()
         .map(|dir| {
-            let mut drift: [Vec<f64>; 3] = Default::default();
+            let mut drift: [Vec<f64>; 3] = std::array::from_fn(|_| Vec::with_capacity(grid.count));
             let mut damping: [[Vec<f64>; 3]; 3] = Default::default();
-            for j in 0..grid.count {
-                let w = grid.omega(j);
-                let t = table.drift(w, dir.heading)?;
-                for i in 0..3 {
-                    drift[i].push(t[i]);
+            table.for_each_along_heading(dir.heading, &omegas, |t, b| {
+                for (column, value) in drift.iter_mut().zip(t) {
+                    column.push(value);
                 }
-                if with_damping {
-                    let b = table
-                        .damping(w, dir.heading)?
-                        .expect("damping checked by the caller");
-                    for i in 0..3 {
-                        for k in 0..3 {
-                            damping[i][k].push(b[i][k]);
+                if let (true, Some(b)) = (with_damping, b) {
+                    for (rows, b_row) in damping.iter_mut().zip(b) {
+                        for (column, value) in rows.iter_mut().zip(b_row) {
+                            column.push(value);
                         }
                     }
                 }
-            }
+            })?;
+            debug_assert!(!with_damping || damping[0][0].len() == grid.count);
             Ok(DirectionTransfer {
                 drift,
                 damping: with_damping.then_some(damping),

@@ -214,6 +214,71 @@ impl DriftTable {
         Ok(Some(unflatten(&flat)))
     }
 
+    /// Bilinear interpolation at one heading for every frequency of `omegas` (increasing),
+    /// handing `visit` the drift and, when the table has it, the damping at each. Same values
+    /// as [`DriftTable::drift`] and [`DriftTable::damping`], with one heading bracket and a
+    /// walking frequency bracket instead of two searches per frequency.
+    pub fn for_each_along_heading(
+        &self,
+        heading: f64,
+        omegas: &[f64],
+        mut visit: impl FnMut([f64; 3], Option<[[f64; 3]; 3]>),
+    ) -> Result<()> {
+        let (Some(&first), Some(&last)) = (omegas.first(), omegas.last()) else {
+            return Ok(());
+        };
+        self.frequency_bracket(first)?;
+        self.frequency_bracket(last)?;
+        let h = self.heading_bracket(heading)?;
+        let nw = self.omegas.len();
+        let mut upper = 1;
+        for &omega in omegas {
+            let w = if nw == 1 {
+                Bracket {
+                    lo: 0,
+                    hi: 0,
+                    frac: 0.0,
+                }
+            } else {
+                let omega = omega.clamp(self.omegas[0], self.omegas[nw - 1]);
+                while upper < nw - 1 && self.omegas[upper] < omega {
+                    upper += 1;
+                }
+                let (a, b) = (self.omegas[upper - 1], self.omegas[upper]);
+                Bracket {
+                    lo: upper - 1,
+                    hi: upper,
+                    frac: (omega - a) / (b - a),
+                }
+            };
+            let corners = [
+                (h.lo * nw + w.lo, (1.0 - h.frac) * (1.0 - w.frac)),
+                (h.lo * nw + w.hi, (1.0 - h.frac) * w.frac),
+                (h.hi * nw + w.lo, h.frac * (1.0 - w.frac)),
+                (h.hi * nw + w.hi, h.frac * w.frac),
+            ];
+            let mut drift = [0.0; 3];
+            for &(node, weight) in &corners {
+                for (d, v) in drift.iter_mut().zip(self.drift[node]) {
+                    *d += weight * v;
+                }
+            }
+            let damping = self.damping.as_ref().map(|table| {
+                let mut b = [[0.0; 3]; 3];
+                for &(node, weight) in &corners {
+                    for (row, node_row) in b.iter_mut().zip(&table[node]) {
+                        for (v, n) in row.iter_mut().zip(node_row) {
+                            *v += weight * n;
+                        }
+                    }
+                }
+                b
+            });
+            visit(drift, damping);
+        }
+        Ok(())
+    }
+
     fn interpolate<const N: usize>(
         &self,
         omega: f64,
@@ -395,4 +460,55 @@ fn check_frequencies(heading: f64, rows: &[(usize, &DriftRow)], reference: &[f64
         ));
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A periodic table with damping whose values vary in both directions.
+    fn table() -> DriftTable {
+        let mut rows = Vec::new();
+        for ih in 0..12 {
+            let heading = (30.0 * ih as f64).to_radians();
+            for iw in 1..=9 {
+                let omega = 0.1 * iw as f64 + 0.01 * (iw * iw) as f64;
+                let f = |k: f64| (k * omega).sin() * (heading + k).cos();
+                rows.push(DriftRow {
+                    omega,
+                    heading,
+                    drift: [f(1.0), f(2.0), f(3.0)],
+                    damping: Some(std::array::from_fn(|i| {
+                        std::array::from_fn(|j| f(4.0 + (3 * i + j) as f64))
+                    })),
+                });
+            }
+        }
+        DriftTable::from_rows(&rows).unwrap()
+    }
+
+    #[test]
+    fn walking_along_a_heading_equals_pointwise_interpolation() {
+        let t = table();
+        let omegas: Vec<f64> = (0..200).map(|i| 0.11 + 1.0 * i as f64 / 199.0).collect();
+        for heading in [0.0, 0.4, 3.0, 5.9, -0.2] {
+            let mut j = 0;
+            t.for_each_along_heading(heading, &omegas, |drift, damping| {
+                assert_eq!(drift, t.drift(omegas[j], heading).unwrap());
+                let expected = t.damping(omegas[j], heading).unwrap().unwrap();
+                let got = damping.unwrap();
+                for i in 0..3 {
+                    for k in 0..3 {
+                        assert!((got[i][k] - expected[i][k]).abs() < 1e-15);
+                    }
+                }
+                j += 1;
+            })
+            .unwrap();
+            assert_eq!(j, omegas.len());
+        }
+        assert!(t
+            .for_each_along_heading(0.0, &[0.05, 0.5], |_, _| {})
+            .is_err());
+    }
 }
