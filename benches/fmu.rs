@@ -37,7 +37,7 @@ use std::ptr;
 use std::time::{Duration, Instant};
 
 const THREE_HOURS: f64 = 3.0 * 3600.0;
-const STEPS: u64 = 10_800;
+const STEPS: u64 = 10_800; // 20 chunks of 540 in the summary
 const DT: f64 = 1.0;
 /// A held external force (N, N, N m), the same on both sides.
 const F: [f64; 3] = [1.0e5, -5.0e4, 1.0e7];
@@ -266,39 +266,42 @@ fn main() {
     }
     c.final_summary();
 
-    // Interleaved three-hour runs, Instant medians.
+    // Interleaved three-hour runs, Instant medians: four independent runs (two cores, two
+    // FMU instances) advance in alternating chunks of CHUNK steps, so that a change of the
+    // machine's load hits all four alike.
     const ROUNDS: usize = 15;
+    const CHUNK: u64 = 540;
+    let mut core2 = Core::new();
+    let mut fmu2 = Fmu::new();
     let mut out = [0.0; 16];
     let per_step = |d: Duration| d.as_secs_f64() / STEPS as f64 * 1e9;
     let mut t: [Vec<f64>; 4] = Default::default();
     let mut d: [Vec<f64>; 3] = Default::default();
     for _ in 0..ROUNDS {
         core.rewind();
+        core2.rewind();
         fmu.rewind();
-        let advance = per_step(timed(
-            &mut core,
-            STEPS,
-            |s| s.steps,
-            Core::rewind,
-            Core::step,
-        ));
-        core.rewind();
-        let with_outputs = per_step(timed(
-            &mut core,
-            STEPS,
-            |s| s.steps,
-            Core::rewind,
-            |s| s.cycle(&mut out),
-        ));
-        let do_step = per_step(timed(&mut fmu, STEPS, |s| s.steps, Fmu::rewind, Fmu::step));
-        fmu.rewind();
-        let cycle = per_step(timed(
-            &mut fmu,
-            STEPS,
-            |s| s.steps,
-            Fmu::rewind,
-            |s| s.cycle(&mut out),
-        ));
+        fmu2.rewind();
+        let mut total = [Duration::ZERO; 4];
+        for _ in 0..STEPS / CHUNK {
+            total[0] += timed(&mut core, CHUNK, |s| s.steps, Core::rewind, Core::step);
+            total[1] += timed(
+                &mut core2,
+                CHUNK,
+                |s| s.steps,
+                Core::rewind,
+                |s| s.cycle(&mut out),
+            );
+            total[2] += timed(&mut fmu, CHUNK, |s| s.steps, Fmu::rewind, Fmu::step);
+            total[3] += timed(
+                &mut fmu2,
+                CHUNK,
+                |s| s.steps,
+                Fmu::rewind,
+                |s| s.cycle(&mut out),
+            );
+        }
+        let [advance, with_outputs, do_step, cycle] = total.map(per_step);
         for (v, x) in t.iter_mut().zip([advance, with_outputs, do_step, cycle]) {
             v.push(x);
         }
