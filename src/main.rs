@@ -2,7 +2,8 @@
 //!
 //! `slowdrift simulate [--config FILE] [--out FILE.csv] [--transient SECONDS]` runs one
 //! simulation (the embedded default platform without `--config`), prints the summary of
-//! surge, sway and yaw, and writes the time series as CSV.
+//! surge, sway and yaw, and writes the time series as CSV (17 significant digits, so every
+//! value reads back bit for bit).
 //!
 //! `slowdrift hydro wamit --root PATH/NAME --out FILE.json` imports WAMIT output into a
 //! native hydro database ([`cli::hydro`]).
@@ -186,7 +187,8 @@ fn write_csv(path: &std::path::Path, outputs: &[Outputs]) -> std::io::Result<()>
             .chain(&f.wave)
             .chain(&f.damping)
             .chain(&f.drag)
-            .map(|v| format!("{v:.9e}"))
+            // 17 significant digits: every f64 reads back bit for bit.
+            .map(|v| format!("{v:.16e}"))
             .collect();
         writeln!(w, "{}", fields.join(","))?;
     }

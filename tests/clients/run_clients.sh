@@ -4,7 +4,8 @@
 # use, (re)builds target/fmu/SlowDrift.fmu with fmu-pack, runs pytest on tests/clients.
 #   tests/clients/run_clients.sh              # all client tests
 #   tests/clients/run_clients.sh -k mooring   # extra arguments go to pytest
-# Environment: SLOWDRIFT_FMU (another FMU file), PYTHON (interpreter for the venv, python3).
+# Environment: SLOWDRIFT_FMU (another FMU file: no packing), PYTHON (interpreter for the venv,
+# python3), CARGO_TARGET_DIR (where fmu-pack writes the FMU).
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -30,7 +31,11 @@ if [[ -z "${SLOWDRIFT_FMU:-}" ]]; then
     # the archive by running it and removes it when that check fails.
     cargo run --release -p fmu-pack
 fi
-fmu="${SLOWDRIFT_FMU:-$repo/target/fmu/SlowDrift.fmu}"
+# fmu-pack writes into cargo's target directory: $CARGO_TARGET_DIR when set (relative to the
+# workspace root, as cargo reads it here), else target/.
+target_dir="${CARGO_TARGET_DIR:-$repo/target}"
+[[ "$target_dir" = /* ]] || target_dir="$repo/$target_dir"
+fmu="${SLOWDRIFT_FMU:-$target_dir/fmu/SlowDrift.fmu}"
 if [[ ! -f "$fmu" ]]; then
     echo "run_clients.sh: $fmu is missing" >&2
     exit 1

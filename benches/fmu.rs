@@ -1,0 +1,334 @@
+//! FMU benchmark: `cargo bench --bench fmu`.
+//!
+//! What the FMI 2.0 C ABI adds over the core per communication step (issue #4 target: under
+//! 1 us per fmi2DoStep). Both sides run the default platform with the default sea and drag
+//! (the embedded default.toml: combined drag on 4 columns x 20 strips, Aranha damping) for a
+//! three-hour run at a 1 s step, in the same process and the same run:
+//!
+//! - `fmu/core_advance_1s`: `Simulation::advance(1.0, f)` on a `Simulation` of the default
+//!   `Config`;
+//! - `fmu/fmi2DoStep_1s`: `fmi2DoStep(c, t, 1.0, fmi2True)` through the exported functions
+//!   (`slowdrift::fmi2::exports`), called in-process on an instance with its start values,
+//!   `fmi2SetupExperiment(0, 10800)` and the same held input f. Same configuration, so the
+//!   same records and the same arithmetic: the bench checks that both end on the same state
+//!   bit for bit;
+//! - `fmu/core_advance_outputs_1s`: `advance` followed by `outputs()` (position, velocity,
+//!   elevation and the wave, damping and drag forces at the new state), which is what
+//!   fmi2DoStep computes: it evaluates the outputs once per step so that fmi2GetReal only
+//!   copies. With drag on 80 strips that evaluation is most of the difference between
+//!   fmi2DoStep and a bare `advance`;
+//! - `fmu/fmi2_cycle_1s`: a master's whole step: `fmi2SetReal` (3 inputs) + `fmi2DoStep` +
+//!   `fmi2GetReal` (16 outputs), against `core_advance_outputs_1s`.
+//!
+//! When a run reaches the end of the records both sides roll back to t = 0 outside the timed
+//! region (`Simulation::restore`, `fmi2SetFMUstate`). The summary at the end times
+//! interleaved three-hour runs of both sides with `Instant` and prints the medians and the
+//! per-step overhead.
+
+use criterion::Criterion;
+use slowdrift::config::default_platform::default_config;
+use slowdrift::fmi2::exports::*;
+use slowdrift::fmi2::types::*;
+use slowdrift::model_description::{vr, GUID};
+use slowdrift::{Outputs, Simulation};
+use std::ffi::CString;
+use std::hint::black_box;
+use std::ptr;
+use std::time::{Duration, Instant};
+
+const THREE_HOURS: f64 = 3.0 * 3600.0;
+const STEPS: u64 = 10_800; // 20 chunks of 540 in the summary
+const DT: f64 = 1.0;
+/// A held external force (N, N, N m), the same on both sides.
+const F: [f64; 3] = [1.0e5, -5.0e4, 1.0e7];
+const INPUTS: [u32; 3] = [vr::FX_EXT, vr::FY_EXT, vr::MZ_EXT];
+/// The 16 outputs, value references 30..45 (modelDescription.xml).
+const OUTPUTS: [u32; 16] = [
+    30, 31, 32, 33, 34, 35, 36, 37, 38, 39, 40, 41, 42, 43, 44, 45,
+];
+
+fn ok(status: fmi2Status, what: &str) {
+    assert_eq!(status, fmi2Status::fmi2OK, "{what}");
+}
+
+/// The core side: a `Simulation` of the default configuration over three hours.
+struct Core {
+    sim: Simulation,
+    start: slowdrift::simulation::Snapshot,
+    steps: u64,
+}
+
+impl Core {
+    fn new() -> Core {
+        let mut config = default_config().expect("default config");
+        config.run.duration = THREE_HOURS;
+        config.run.start_time = 0.0;
+        let sim = Simulation::new(config).expect("simulation");
+        let start = sim.snapshot();
+        Core {
+            sim,
+            start,
+            steps: 0,
+        }
+    }
+
+    fn rewind(&mut self) {
+        self.sim.restore(&self.start).unwrap();
+        self.steps = 0;
+    }
+
+    fn step(&mut self) {
+        self.sim.advance(DT, black_box(F)).unwrap();
+        self.steps += 1;
+    }
+
+    fn cycle(&mut self, out: &mut [f64; 16]) {
+        self.sim.advance(DT, black_box(F)).unwrap();
+        let o: Outputs = self.sim.outputs().unwrap();
+        let f = &o.forces;
+        out[..3].copy_from_slice(&o.position);
+        out[3..6].copy_from_slice(&o.velocity);
+        out[6] = o.wave_elevation;
+        out[7..10].copy_from_slice(&f.wave);
+        out[10..13].copy_from_slice(&f.damping);
+        out[13..].copy_from_slice(&f.drag);
+        black_box(out);
+        self.steps += 1;
+    }
+}
+
+/// The FMU side: one instance driven through the exported C functions.
+struct Fmu {
+    c: fmi2Component,
+    start: fmi2FMUstate,
+    steps: u64,
+}
+
+impl Fmu {
+    fn new() -> Fmu {
+        let name = CString::new("bench").unwrap();
+        let guid = CString::new(GUID).unwrap();
+        // No resource location: the embedded default platform; no callbacks: no logger.
+        let c = unsafe {
+            fmi2Instantiate(
+                name.as_ptr(),
+                fmi2Type::fmi2CoSimulation,
+                guid.as_ptr(),
+                ptr::null(),
+                ptr::null(),
+                fmi2False,
+                fmi2False,
+            )
+        };
+        assert!(!c.is_null(), "fmi2Instantiate");
+        unsafe {
+            ok(
+                fmi2SetupExperiment(c, fmi2False, 0.0, 0.0, fmi2True, THREE_HOURS),
+                "fmi2SetupExperiment",
+            );
+            ok(fmi2EnterInitializationMode(c), "enter");
+            ok(fmi2SetReal(c, INPUTS.as_ptr(), 3, F.as_ptr()), "inputs");
+            ok(fmi2ExitInitializationMode(c), "exit");
+        }
+        let mut start: fmi2FMUstate = ptr::null_mut();
+        ok(unsafe { fmi2GetFMUstate(c, &mut start) }, "fmi2GetFMUstate");
+        Fmu { c, start, steps: 0 }
+    }
+
+    fn rewind(&mut self) {
+        ok(
+            unsafe { fmi2SetFMUstate(self.c, self.start) },
+            "fmi2SetFMUstate",
+        );
+        self.steps = 0;
+    }
+
+    fn step(&mut self) {
+        let t = self.steps as f64 * DT;
+        let s = unsafe { fmi2DoStep(self.c, black_box(t), DT, fmi2True) };
+        debug_assert_eq!(s, fmi2Status::fmi2OK);
+        black_box(s);
+        self.steps += 1;
+    }
+
+    fn cycle(&mut self, out: &mut [f64; 16]) {
+        let t = self.steps as f64 * DT;
+        let f = black_box(F);
+        unsafe {
+            let s1 = fmi2SetReal(self.c, INPUTS.as_ptr(), 3, f.as_ptr());
+            let s2 = fmi2DoStep(self.c, t, DT, fmi2True);
+            let s3 = fmi2GetReal(self.c, OUTPUTS.as_ptr(), 16, out.as_mut_ptr());
+            black_box((s1, s2, s3));
+        }
+        black_box(out);
+        self.steps += 1;
+    }
+
+    fn outputs(&self) -> [f64; 16] {
+        let mut out = [0.0; 16];
+        ok(
+            unsafe { fmi2GetReal(self.c, OUTPUTS.as_ptr(), 16, out.as_mut_ptr()) },
+            "fmi2GetReal",
+        );
+        out
+    }
+}
+
+impl Drop for Fmu {
+    fn drop(&mut self) {
+        unsafe {
+            fmi2FreeFMUstate(self.c, &mut self.start);
+            fmi2FreeInstance(self.c);
+        }
+    }
+}
+
+/// Times `iters` calls of `step`, rewinding (untimed) whenever a run reaches three hours.
+fn timed<S>(
+    side: &mut S,
+    iters: u64,
+    steps: impl Fn(&S) -> u64,
+    rewind: impl Fn(&mut S),
+    mut step: impl FnMut(&mut S),
+) -> Duration {
+    let mut total = Duration::ZERO;
+    let mut left = iters;
+    while left > 0 {
+        if steps(side) >= STEPS {
+            rewind(side);
+        }
+        let chunk = left.min(STEPS - steps(side));
+        let t0 = Instant::now();
+        for _ in 0..chunk {
+            step(side);
+        }
+        total += t0.elapsed();
+        left -= chunk;
+    }
+    total
+}
+
+fn check_same_run(core: &mut Core, fmu: &mut Fmu) {
+    core.rewind();
+    fmu.rewind();
+    let mut a = [0.0; 16];
+    for _ in 0..STEPS {
+        core.cycle(&mut a);
+        fmu.step();
+    }
+    let b = fmu.outputs();
+    assert!(
+        a.iter().zip(&b).all(|(x, y)| x.to_bits() == y.to_bits()),
+        "core and FMU differ after three hours: {a:?} vs {b:?}"
+    );
+    core.rewind();
+    fmu.rewind();
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+fn main() {
+    let mut c = Criterion::default()
+        .configure_from_args()
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(3));
+    let mut core = Core::new();
+    let mut fmu = Fmu::new();
+    check_same_run(&mut core, &mut fmu);
+
+    {
+        let mut g = c.benchmark_group("fmu");
+        g.bench_function("core_advance_1s", |b| {
+            b.iter_custom(|n| timed(&mut core, n, |s| s.steps, Core::rewind, Core::step))
+        });
+        g.bench_function("fmi2DoStep_1s", |b| {
+            b.iter_custom(|n| timed(&mut fmu, n, |s| s.steps, Fmu::rewind, Fmu::step))
+        });
+        let mut out = [0.0; 16];
+        g.bench_function("core_advance_outputs_1s", |b| {
+            b.iter_custom(|n| {
+                timed(
+                    &mut core,
+                    n,
+                    |s| s.steps,
+                    Core::rewind,
+                    |s| s.cycle(&mut out),
+                )
+            })
+        });
+        g.bench_function("fmi2_cycle_1s", |b| {
+            b.iter_custom(|n| timed(&mut fmu, n, |s| s.steps, Fmu::rewind, |s| s.cycle(&mut out)))
+        });
+        g.finish();
+    }
+    c.final_summary();
+
+    // Interleaved three-hour runs, Instant medians: four independent runs (two cores, two
+    // FMU instances) advance in alternating chunks of CHUNK steps, so that a change of the
+    // machine's load hits all four alike.
+    const ROUNDS: usize = 15;
+    const CHUNK: u64 = 540;
+    let mut core2 = Core::new();
+    let mut fmu2 = Fmu::new();
+    let mut out = [0.0; 16];
+    let per_step = |d: Duration| d.as_secs_f64() / STEPS as f64 * 1e9;
+    let mut t: [Vec<f64>; 4] = Default::default();
+    let mut d: [Vec<f64>; 3] = Default::default();
+    for _ in 0..ROUNDS {
+        core.rewind();
+        core2.rewind();
+        fmu.rewind();
+        fmu2.rewind();
+        let mut total = [Duration::ZERO; 4];
+        for _ in 0..STEPS / CHUNK {
+            total[0] += timed(&mut core, CHUNK, |s| s.steps, Core::rewind, Core::step);
+            total[1] += timed(
+                &mut core2,
+                CHUNK,
+                |s| s.steps,
+                Core::rewind,
+                |s| s.cycle(&mut out),
+            );
+            total[2] += timed(&mut fmu, CHUNK, |s| s.steps, Fmu::rewind, Fmu::step);
+            total[3] += timed(
+                &mut fmu2,
+                CHUNK,
+                |s| s.steps,
+                Fmu::rewind,
+                |s| s.cycle(&mut out),
+            );
+        }
+        let [advance, with_outputs, do_step, cycle] = total.map(per_step);
+        for (v, x) in t.iter_mut().zip([advance, with_outputs, do_step, cycle]) {
+            v.push(x);
+        }
+        d[0].push(do_step - advance);
+        d[1].push(do_step - with_outputs);
+        d[2].push(cycle - with_outputs);
+    }
+    let [advance, with_outputs, do_step, cycle] = t.map(median);
+    let [over_advance, over_abi, over_cycle] = d.map(median);
+    println!(
+        "\n==== slowdrift FMU summary ({ROUNDS} interleaved 3-hour runs at 1 s, default platform \
+         and drag, Instant medians per step) ===="
+    );
+    println!("core and FMU end on the same state bit for bit after {STEPS} steps (checked)");
+    println!("Simulation::advance(1.0, f)                 {advance:7.0} ns");
+    println!("advance + outputs()                         {with_outputs:7.0} ns");
+    println!("fmi2DoStep(c, t, 1.0)                       {do_step:7.0} ns");
+    println!("fmi2SetReal(3) + fmi2DoStep + fmi2GetReal(16) {cycle:5.0} ns");
+    println!(
+        "fmi2DoStep - advance: {over_advance:.0} ns per step (target < 1000 ns: {}); of which the \
+         output evaluation fmi2DoStep does each step: {:.0} ns, the C ABI layer: {over_abi:.0} ns",
+        if over_advance < 1000.0 {
+            "met"
+        } else {
+            "NOT met"
+        },
+        over_advance - over_abi
+    );
+    println!("whole master step (set inputs, step, get outputs) - (advance + outputs): {over_cycle:.0} ns");
+}
