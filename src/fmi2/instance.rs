@@ -526,13 +526,12 @@ impl Instance {
                 )));
             }
         }
-        let advanced = simulation
-            .advance(h, inputs)
-            .and_then(|()| simulation.outputs());
+        let advanced = simulation.advance(h, inputs).map(|()| simulation.time());
+        // Outputs are computed when a getter first asks for them after the step.
+        self.outputs = None;
         match advanced {
-            Ok(outputs) => {
-                self.last_successful_time = outputs.time;
-                self.outputs = Some(outputs);
+            Ok(time) => {
+                self.last_successful_time = time;
                 Ok(())
             }
             Err(e @ Error::BeyondRecord { .. }) => {
@@ -616,9 +615,11 @@ impl Instance {
         Ok(())
     }
 
-    /// An output; in initialisation mode the simulation is built to compute it.
+    /// An output, computed at the first request after a step (in initialisation mode the
+    /// simulation is built to compute it).
     fn output(&mut self, vr: u32) -> Result<f64, FmuError> {
-        if self.state == MachineState::InitializationMode && self.outputs.is_none() {
+        let computable = self.state == MachineState::InitializationMode || self.built.is_some();
+        if self.outputs.is_none() && computable {
             self.refresh_outputs()?;
         }
         let o = self.outputs.as_ref().ok_or_else(|| {
