@@ -36,7 +36,7 @@ use rustfft::num_complex::Complex64;
 use rustfft::FftPlanner;
 use slowdrift::config::{
     Current, DragModel, DriftDamping, Environment, InitialCondition, ModelOptions, NewmanForm,
-    Platform, Run,
+    Platform, Run, SecondOrder, DEFAULT_QTF_TOLERANCE,
 };
 use slowdrift::forces::{transfers_on_grid, ForceRecords, RecordOptions, Synthesizer};
 use slowdrift::hydro::aranha::aranha_damping;
@@ -111,7 +111,10 @@ fn config(duration: f64, time_step: f64, drag: DragModel) -> Config {
         },
         platform: platform(),
         drift,
+        qtf: None,
         model: ModelOptions {
+            second_order: SecondOrder::Newman,
+            qtf_tolerance: DEFAULT_QTF_TOLERANCE,
             newman: NewmanForm::Geometric,
             drift_damping: DriftDamping::Aranha,
             drag,
@@ -168,6 +171,7 @@ impl RecordInputs {
             &transfers,
             &RecordOptions {
                 newman: NewmanForm::Geometric,
+                full_qtf: None,
                 drag_columns: &[],
                 strips_per_column: 20,
                 gravity: self.gravity,

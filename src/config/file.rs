@@ -50,7 +50,9 @@
 //! draft = 20.0
 //!
 //! [model]                    # optional section
-//! newman = "geometric"       # default | "arithmetic"
+//! second_order = "newman"    # default | "full-qtf" (the database's QTF, factorised)
+//! qtf_tolerance = 1e-6       # full-qtf only: discarded share of the QTF's eigenvalues
+//! newman = "geometric"       # default | "arithmetic" (force under newman; damping always)
 //! drift_damping = "aranha"   # default | "table" (needs the b_ij columns) | "off"
 //! drag = "off"               # default | "separate" (cd_slow, cd_fast) | "combined" (cd)
 //! strips_per_column = 20
@@ -70,7 +72,7 @@
 //! # source = "database"
 //! # file = "platform.json"   # native hydro database (`slowdrift hydro wamit`), relative
 //!                            # to the configuration file; its rho and g must equal
-//!                            # [environment]'s
+//!                            # [environment]'s; its QTF (if any) serves full-qtf
 //! ```
 //!
 //! Drift columns, in any order: `omega` (rad/s), `beta_deg` (wave heading relative to the
@@ -83,12 +85,12 @@
 
 use super::{
     Column, Config, Current, DragModel, DriftDamping, Environment, InitialCondition, ModelOptions,
-    NewmanForm, Platform, Run,
+    NewmanForm, Platform, Run, SecondOrder,
 };
 use crate::error::{Error, Result};
 use crate::hydro::column_drift::isolated_columns_table;
 use crate::hydro::columns::ColumnArray;
-use crate::hydro::database::HydroDatabase;
+use crate::hydro::database::{HydroDatabase, QtfData};
 use crate::hydro::{DriftRow, DriftTable};
 use crate::sea_state::{SeaState, Spectrum, Spreading};
 use serde::Deserialize;
@@ -227,7 +229,7 @@ impl ConfigFile {
         let environment = self.environment.into_core();
         let platform = self.platform.into_core();
         let drift_span = self.drift.span();
-        let drift = self.drift.into_inner().into_table(
+        let (drift, qtf) = self.drift.into_inner().into_table(
             source,
             drift_span,
             base_dir,
@@ -241,6 +243,7 @@ impl ConfigFile {
             run: self.run.into_core(),
             platform,
             drift,
+            qtf,
             model,
             initial: self.initial.into_core(),
         })
@@ -542,10 +545,20 @@ enum DragKind {
     Combined,
 }
 
+/// `model.second_order`.
+#[derive(Deserialize, Clone, Copy)]
+#[serde(rename_all = "kebab-case")]
+enum SecondOrderFile {
+    Newman,
+    FullQtf,
+}
+
 /// `[model]`; absent keys take [`ModelOptions::default`].
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct ModelFile {
+    second_order: Option<SecondOrderFile>,
+    qtf_tolerance: Option<f64>,
     newman: Option<NewmanFile>,
     drift_damping: Option<DriftDampingFile>,
     drag: Option<DragKind>,
@@ -561,6 +574,20 @@ struct ModelFile {
 impl ModelFile {
     fn into_core(self) -> std::result::Result<ModelOptions, String> {
         let default = ModelOptions::default();
+        let (second_order, qtf_tolerance) = match self.second_order {
+            None | Some(SecondOrderFile::Newman) => {
+                refused(
+                    &self.qtf_tolerance,
+                    "qtf_tolerance",
+                    "second_order is \"newman\" (the default)",
+                )?;
+                (SecondOrder::Newman, default.qtf_tolerance)
+            }
+            Some(SecondOrderFile::FullQtf) => (
+                SecondOrder::FullQtf,
+                self.qtf_tolerance.unwrap_or(default.qtf_tolerance),
+            ),
+        };
         let newman = match self.newman {
             None => default.newman,
             Some(NewmanFile::Geometric) => NewmanForm::Geometric,
@@ -598,6 +625,8 @@ impl ModelFile {
             }
         };
         Ok(ModelOptions {
+            second_order,
+            qtf_tolerance,
             newman,
             drift_damping,
             drag,
@@ -742,7 +771,8 @@ fn columns_grid(
 }
 
 impl DriftFile {
-    /// Builds the drift table; `span` locates the `[drift]` section for error messages.
+    /// Builds the drift table, and takes the QTF when the source has one (a database);
+    /// `span` locates the `[drift]` section for error messages.
     fn into_table(
         self,
         source: &Source,
@@ -750,8 +780,11 @@ impl DriftFile {
         base_dir: &Path,
         platform: &Platform,
         environment: &Environment,
-    ) -> Result<DriftTable> {
-        match self {
+    ) -> Result<(DriftTable, Option<QtfData>)> {
+        if let DriftFile::Database { file } = self {
+            return database_drift(source, span, &base_dir.join(file), environment);
+        }
+        let table = match self {
             DriftFile::Columns {
                 omega_min,
                 omega_max,
@@ -802,29 +835,38 @@ impl DriftFile {
                 DriftTable::from_rows(&rows)
             }
             DriftFile::Csv { file } => read_csv(&base_dir.join(file)),
-            DriftFile::Database { file } => {
-                let path = base_dir.join(file);
-                let database = HydroDatabase::load(&path)?;
-                let made_with = (database.water_density, database.gravity);
-                if made_with != (environment.water_density, environment.gravity) {
-                    return Err(source.error_at(
-                        span,
-                        format!(
-                            "[drift] the database {} was made with water_density = {}, \
-                             gravity = {}, but [environment] has {}, {}: set [environment] \
-                             to the database's values or re-import with them",
-                            path.display(),
-                            made_with.0,
-                            made_with.1,
-                            environment.water_density,
-                            environment.gravity
-                        ),
-                    ));
-                }
-                database.to_drift_table()
-            }
-        }
+            DriftFile::Database { .. } => unreachable!("handled above"),
+        }?;
+        Ok((table, None))
     }
+}
+
+/// The drift table and the QTF (if any) of a native hydro database made with
+/// `environment`'s density and gravity.
+fn database_drift(
+    source: &Source,
+    span: Range<usize>,
+    path: &Path,
+    environment: &Environment,
+) -> Result<(DriftTable, Option<QtfData>)> {
+    let database = HydroDatabase::load(path)?;
+    let made_with = (database.water_density, database.gravity);
+    if made_with != (environment.water_density, environment.gravity) {
+        return Err(source.error_at(
+            span,
+            format!(
+                "[drift] the database {} was made with water_density = {}, \
+                 gravity = {}, but [environment] has {}, {}: set [environment] \
+                 to the database's values or re-import with them",
+                path.display(),
+                made_with.0,
+                made_with.1,
+                environment.water_density,
+                environment.gravity
+            ),
+        ));
+    }
+    Ok((database.to_drift_table()?, database.qtf))
 }
 
 /// Where each quantity sits in a row of the drift table.
@@ -1152,6 +1194,8 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
         assert_eq!(
             config.model,
             ModelOptions {
+                second_order: SecondOrder::Newman,
+                qtf_tolerance: crate::config::DEFAULT_QTF_TOLERANCE,
                 newman: NewmanForm::Arithmetic,
                 drift_damping: DriftDamping::Table,
                 drag: DragModel::Separate {
