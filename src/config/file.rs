@@ -1538,6 +1538,85 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
         );
     }
 
+    /// MINIMAL with its drift from a database whose QTF spans `omegas` at `heading_deg`,
+    /// and `model` as the [model] section.
+    fn with_qtf_database(
+        stem: &str,
+        omegas: &[f64],
+        heading_deg: f64,
+        model: &str,
+    ) -> Result<Config> {
+        use crate::hydro::database::{QtfData, QtfMatrix, SlowDof};
+        let n = omegas.len();
+        let mut database = database_with_minimal_drift(1025.0);
+        database.qtf = Some(QtfData {
+            omegas: omegas.to_vec(),
+            blocks: SlowDof::ALL
+                .into_iter()
+                .map(|dof| QtfMatrix {
+                    dof,
+                    heading: heading_deg.to_radians(),
+                    re: (0..n)
+                        .map(|i| (0..n).map(|j| 1.0e3 * (1 + i + j) as f64).collect())
+                        .collect(),
+                    im: (0..n)
+                        .map(|i| (0..n).map(|j| 10.0 * (i as f64 - j as f64)).collect())
+                        .collect(),
+                })
+                .collect(),
+        });
+        let json = temp_file(stem, "");
+        database.save(&json).expect("writable");
+        let dir = json.parent().expect("temp dir");
+        let name = json.file_name().expect("file name").to_string_lossy();
+        let head = MINIMAL.split("[drift]").next().expect("drift section");
+        let text = format!("{head}{model}\n[drift]\nsource = \"database\"\nfile = \"{name}\"\n");
+        let config = parse(&text, "test.toml", dir);
+        std::fs::remove_file(&json).expect("remove temporary file");
+        config
+    }
+
+    #[test]
+    fn full_qtf_mode_takes_the_database_qtf_and_names_what_is_missing() {
+        // PM, Tp = 8 s: the default band is 0.39 .. 3.14 rad/s.
+        let covering = [0.3, 1.0, 2.0, 3.5];
+        let full = "[model]\nsecond_order = \"full-qtf\"\nqtf_tolerance = 1e-4";
+        let config = with_qtf_database("qtf-ok.json", &covering, 0.0, full).expect("valid");
+        assert_eq!(config.model.second_order, SecondOrder::FullQtf);
+        assert_eq!(config.model.qtf_tolerance, 1e-4);
+        assert_eq!(config.qtf.as_ref().map(|q| q.omegas.len()), Some(4));
+        let defaults = with_qtf_database("qtf-default.json", &covering, 0.0, "").expect("valid");
+        assert_eq!(defaults.model.second_order, SecondOrder::Newman);
+        assert!(
+            defaults.qtf.is_some(),
+            "the QTF is carried even when unused"
+        );
+
+        let short = with_qtf_database("qtf-short.json", &[0.3, 1.0, 2.0], 0.0, full)
+            .expect_err("band not covered")
+            .to_string();
+        assert!(short.contains("2.0000 .. 3.1416 rad/s"), "{short}");
+        let heading = with_qtf_database("qtf-heading.json", &covering, 30.0, full)
+            .expect_err("no QTF at 0 deg")
+            .to_string();
+        assert!(
+            heading.contains("0.000 deg") && heading.contains("30.000 deg"),
+            "{heading}"
+        );
+        let tolerance = "[model]\nsecond_order = \"full-qtf\"\nqtf_tolerance = 0.0";
+        assert!(with_qtf_database("qtf-tol.json", &covering, 0.0, tolerance)
+            .expect_err("zero tolerance")
+            .to_string()
+            .contains("model.qtf_tolerance"));
+        let newman = "[model]\nqtf_tolerance = 1e-4";
+        assert!(with_qtf_database("qtf-newman.json", &covering, 0.0, newman)
+            .expect_err("tolerance without full-qtf")
+            .to_string()
+            .contains("qtf_tolerance"));
+        let no_qtf = MINIMAL.replace("[drift]", "[model]\nsecond_order = \"full-qtf\"\n\n[drift]");
+        assert!(error_text(&no_qtf).contains("needs a QTF"));
+    }
+
     #[test]
     fn unreadable_csv_is_an_io_error() {
         let missing = std::env::temp_dir().join("slowdrift-config-no-such-file.csv");

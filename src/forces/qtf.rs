@@ -60,7 +60,11 @@ impl QtfFactorisation {
     pub fn new(omegas: &[f64], matrix: &[Complex64], tolerance: f64) -> Result<Self> {
         check_tolerance(tolerance)?;
         let n = omegas.len();
-        if n < 2 || omegas.windows(2).any(|w| !(w[1] > w[0])) || !(omegas[0] > 0.0) {
+        if n < 2
+            || omegas.windows(2).any(|w| w[1] <= w[0])
+            || omegas[0] <= 0.0
+            || omegas.iter().any(|w| !w.is_finite())
+        {
             return Err(Error::invalid(
                 "qtf.omegas",
                 format!("{n} frequencies"),
@@ -100,8 +104,7 @@ impl QtfFactorisation {
         let discarded = if total > 0.0 {
             order[rank..]
                 .iter()
-                .map(|&r| eigen.eigenvalues[r].abs())
-                .sum::<f64>()
+                .fold(0.0, |sum, &r| sum + eigen.eigenvalues[r].abs())
                 / total
         } else {
             0.0
