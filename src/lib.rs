@@ -32,4 +32,4 @@ pub mod stats;
 
 pub use config::Config;
 pub use error::{Error, Result};
-pub use simulation::{Outputs, Simulation, Snapshot};
+pub use simulation::{Outputs, QtfRank, Simulation, Snapshot};

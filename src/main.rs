@@ -98,6 +98,17 @@ fn simulate(args: Arguments) -> Result<(), String> {
     let transient = args.transient.unwrap_or_else(|| default_transient(&config));
     let started = std::time::Instant::now();
     let mut sim = Simulation::new(config).map_err(|e| e.to_string())?;
+    for r in sim.qtf_ranks() {
+        println!(
+            "full QTF, {:?} at {:.1} deg: rank {} of {} (discarded {:.1e} of the eigenvalues' \
+             absolute sum)",
+            r.dof,
+            r.heading.to_degrees(),
+            r.rank,
+            r.size,
+            r.discarded
+        );
+    }
     let outputs = run_to_end(&mut sim)?;
     let elapsed = started.elapsed();
     print_summary(&sim, &outputs, transient)?;

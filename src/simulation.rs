@@ -5,11 +5,13 @@
 //! advances one RK4 step h, `advance` any interval in equal substeps no longer than h.
 //! Time is always origin + count * step from an integer count, never an accumulated sum.
 
-use crate::config::{Config, DriftDamping};
+use crate::config::{Config, DriftDamping, SecondOrder};
 use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};
 use crate::error::{Error, Result};
-use crate::forces::{transfers_on_grid, ForceRecords, RecordOptions};
+use crate::forces::{transfers_on_grid, ForceRecords, GridQtf, QtfFactorisation, RecordOptions};
 use crate::hydro::aranha::aranha_damping;
+use crate::hydro::database::SlowDof;
+use crate::hydro::wamit::HEADING_TOLERANCE;
 use crate::sea_state::{FrequencyGrid, WaveComponents};
 
 /// Relative tolerance for deciding that an interval is a whole number of steps.
@@ -110,7 +112,23 @@ pub struct Simulation {
     config: Config,
     model: SlowDriftModel,
     records: ForceRecords,
+    qtf_ranks: Vec<QtfRank>,
     state: Snapshot,
+}
+
+/// The truncation of one full-QTF block (one DOF of one wave direction).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct QtfRank {
+    /// Index of the wave direction.
+    pub direction: usize,
+    /// Wave heading of that direction, rad.
+    pub heading: f64,
+    pub dof: SlowDof,
+    /// Retained rank R and the QTF's full rank n.
+    pub rank: usize,
+    pub size: usize,
+    /// Trace-norm share of the discarded eigenvalues (<= `model.qtf_tolerance`).
+    pub discarded: f64,
 }
 
 impl Simulation {
@@ -118,12 +136,13 @@ impl Simulation {
     pub fn new(config: Config) -> Result<Self> {
         config.validate()?;
         let model = SlowDriftModel::new(&config)?;
-        let records = build_records(&config)?;
+        let (records, qtf_ranks) = build_records(&config)?;
         let state = initial_state(&config);
         Ok(Simulation {
             config,
             model,
             records,
+            qtf_ranks,
             state,
         })
     }
@@ -136,6 +155,11 @@ impl Simulation {
     /// The precomputed records.
     pub fn records(&self) -> &ForceRecords {
         &self.records
+    }
+
+    /// The rank kept for every full-QTF block (empty under Newman's approximation).
+    pub fn qtf_ranks(&self) -> &[QtfRank] {
+        &self.qtf_ranks
     }
 
     /// Current time, s.
@@ -310,8 +334,9 @@ fn initial_state(config: &Config) -> Snapshot {
     }
 }
 
-/// Records sampled at h/2, so that every RK4 stage of a regular step is a sample.
-fn build_records(config: &Config) -> Result<ForceRecords> {
+/// Records sampled at h/2, so that every RK4 stage of a regular step is a sample; with the
+/// ranks of the full QTF's blocks.
+fn build_records(config: &Config) -> Result<(ForceRecords, Vec<QtfRank>)> {
     let sea = &config.sea;
     let grid = FrequencyGrid::new(
         config.run.start_time,
@@ -340,16 +365,61 @@ fn build_records(config: &Config) -> Result<ForceRecords> {
         crate::config::DragModel::Off => &[][..],
         _ => &config.platform.columns[..],
     };
-    Ok(ForceRecords::build(
+    let (full_qtf, ranks) = match config.model.second_order {
+        SecondOrder::Newman => (None, Vec::new()),
+        SecondOrder::FullQtf => {
+            let (qtf, ranks) = full_qtf_on_grid(config, &components)?;
+            (Some(qtf), ranks)
+        }
+    };
+    let records = ForceRecords::build(
         &components,
         &transfers,
         &RecordOptions {
             newman: config.model.newman,
+            full_qtf: full_qtf.as_deref(),
             drag_columns,
             strips_per_column: config.model.strips_per_column,
             gravity: config.environment.gravity,
         },
-    ))
+    );
+    Ok((records, ranks))
+}
+
+/// The QTF of every direction and DOF, factorised and interpolated onto the grid.
+type DirectionQtfs = Vec<[GridQtf; 3]>;
+
+fn full_qtf_on_grid(
+    config: &Config,
+    components: &WaveComponents,
+) -> Result<(DirectionQtfs, Vec<QtfRank>)> {
+    let qtf = config
+        .qtf
+        .as_ref()
+        .expect("Config::validate requires the QTF for full-qtf");
+    let mut ranks = Vec::new();
+    let mut on_grid = Vec::with_capacity(components.directions.len());
+    for (k, direction) in components.directions.iter().enumerate() {
+        let mut blocks = Vec::with_capacity(3);
+        for dof in SlowDof::ALL {
+            let block = qtf
+                .block(dof, direction.heading, HEADING_TOLERANCE)
+                .expect("Config::validate requires every direction's QTF");
+            let factors =
+                QtfFactorisation::new(&qtf.omegas, &block.values(), config.model.qtf_tolerance)?;
+            ranks.push(QtfRank {
+                direction: k,
+                heading: direction.heading,
+                dof,
+                rank: factors.rank(),
+                size: factors.size(),
+                discarded: factors.discarded(),
+            });
+            blocks.push(factors.on_grid(&components.grid)?);
+        }
+        on_grid.push(blocks.try_into().expect("three DOFs"));
+    }
+    Ok((on_grid, ranks))
 }
 
 #[cfg(test)]

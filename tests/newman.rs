@@ -108,6 +108,7 @@ fn build(
         &transfers,
         &RecordOptions {
             newman: form,
+            full_qtf: None,
             drag_columns: &[],
             strips_per_column: 1,
             gravity: GRAVITY,
@@ -206,6 +207,7 @@ fn mean_force_is_twice_the_integral_of_spectrum_times_drift() {
             &transfers,
             &RecordOptions {
                 newman: NewmanForm::Geometric,
+                full_qtf: None,
                 drag_columns: &[],
                 strips_per_column: 1,
                 gravity: GRAVITY,

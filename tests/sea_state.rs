@@ -23,6 +23,7 @@ fn elevation(sea: &SeaState, duration: f64, dt: f64) -> (Vec<f64>, FrequencyGrid
         .collect();
     let options = RecordOptions {
         newman: NewmanForm::Geometric,
+        full_qtf: None,
         drag_columns: &[],
         strips_per_column: 1,
         gravity: GRAVITY,

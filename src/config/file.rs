@@ -50,7 +50,9 @@
 //! draft = 20.0
 //!
 //! [model]                    # optional section
-//! newman = "geometric"       # default | "arithmetic"
+//! second_order = "newman"    # default | "full-qtf" (the database's QTF, factorised)
+//! qtf_tolerance = 1e-6       # full-qtf only: discarded share of the QTF's eigenvalues
+//! newman = "geometric"       # default | "arithmetic" (force under newman; damping always)
 //! drift_damping = "aranha"   # default | "table" (needs the b_ij columns) | "off"
 //! drag = "off"               # default | "separate" (cd_slow, cd_fast) | "combined" (cd)
 //! strips_per_column = 20
@@ -70,7 +72,7 @@
 //! # source = "database"
 //! # file = "platform.json"   # native hydro database (`slowdrift hydro wamit`), relative
 //!                            # to the configuration file; its rho and g must equal
-//!                            # [environment]'s
+//!                            # [environment]'s; its QTF (if any) serves full-qtf
 //! ```
 //!
 //! Drift columns, in any order: `omega` (rad/s), `beta_deg` (wave heading relative to the
@@ -83,12 +85,12 @@
 
 use super::{
     Column, Config, Current, DragModel, DriftDamping, Environment, InitialCondition, ModelOptions,
-    NewmanForm, Platform, Run,
+    NewmanForm, Platform, Run, SecondOrder,
 };
 use crate::error::{Error, Result};
 use crate::hydro::column_drift::isolated_columns_table;
 use crate::hydro::columns::ColumnArray;
-use crate::hydro::database::HydroDatabase;
+use crate::hydro::database::{HydroDatabase, QtfData};
 use crate::hydro::{DriftRow, DriftTable};
 use crate::sea_state::{SeaState, Spectrum, Spreading};
 use serde::Deserialize;
@@ -227,7 +229,7 @@ impl ConfigFile {
         let environment = self.environment.into_core();
         let platform = self.platform.into_core();
         let drift_span = self.drift.span();
-        let drift = self.drift.into_inner().into_table(
+        let (drift, qtf) = self.drift.into_inner().into_table(
             source,
             drift_span,
             base_dir,
@@ -241,6 +243,7 @@ impl ConfigFile {
             run: self.run.into_core(),
             platform,
             drift,
+            qtf,
             model,
             initial: self.initial.into_core(),
         })
@@ -542,10 +545,20 @@ enum DragKind {
     Combined,
 }
 
+/// `model.second_order`.
+#[derive(Deserialize, Clone, Copy)]
+#[serde(rename_all = "kebab-case")]
+enum SecondOrderFile {
+    Newman,
+    FullQtf,
+}
+
 /// `[model]`; absent keys take [`ModelOptions::default`].
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct ModelFile {
+    second_order: Option<SecondOrderFile>,
+    qtf_tolerance: Option<f64>,
     newman: Option<NewmanFile>,
     drift_damping: Option<DriftDampingFile>,
     drag: Option<DragKind>,
@@ -561,6 +574,20 @@ struct ModelFile {
 impl ModelFile {
     fn into_core(self) -> std::result::Result<ModelOptions, String> {
         let default = ModelOptions::default();
+        let (second_order, qtf_tolerance) = match self.second_order {
+            None | Some(SecondOrderFile::Newman) => {
+                refused(
+                    &self.qtf_tolerance,
+                    "qtf_tolerance",
+                    "second_order is \"newman\" (the default)",
+                )?;
+                (SecondOrder::Newman, default.qtf_tolerance)
+            }
+            Some(SecondOrderFile::FullQtf) => (
+                SecondOrder::FullQtf,
+                self.qtf_tolerance.unwrap_or(default.qtf_tolerance),
+            ),
+        };
         let newman = match self.newman {
             None => default.newman,
             Some(NewmanFile::Geometric) => NewmanForm::Geometric,
@@ -598,6 +625,8 @@ impl ModelFile {
             }
         };
         Ok(ModelOptions {
+            second_order,
+            qtf_tolerance,
             newman,
             drift_damping,
             drag,
@@ -742,7 +771,8 @@ fn columns_grid(
 }
 
 impl DriftFile {
-    /// Builds the drift table; `span` locates the `[drift]` section for error messages.
+    /// Builds the drift table, and takes the QTF when the source has one (a database);
+    /// `span` locates the `[drift]` section for error messages.
     fn into_table(
         self,
         source: &Source,
@@ -750,8 +780,11 @@ impl DriftFile {
         base_dir: &Path,
         platform: &Platform,
         environment: &Environment,
-    ) -> Result<DriftTable> {
-        match self {
+    ) -> Result<(DriftTable, Option<QtfData>)> {
+        if let DriftFile::Database { file } = self {
+            return database_drift(source, span, &base_dir.join(file), environment);
+        }
+        let table = match self {
             DriftFile::Columns {
                 omega_min,
                 omega_max,
@@ -802,29 +835,38 @@ impl DriftFile {
                 DriftTable::from_rows(&rows)
             }
             DriftFile::Csv { file } => read_csv(&base_dir.join(file)),
-            DriftFile::Database { file } => {
-                let path = base_dir.join(file);
-                let database = HydroDatabase::load(&path)?;
-                let made_with = (database.water_density, database.gravity);
-                if made_with != (environment.water_density, environment.gravity) {
-                    return Err(source.error_at(
-                        span,
-                        format!(
-                            "[drift] the database {} was made with water_density = {}, \
-                             gravity = {}, but [environment] has {}, {}: set [environment] \
-                             to the database's values or re-import with them",
-                            path.display(),
-                            made_with.0,
-                            made_with.1,
-                            environment.water_density,
-                            environment.gravity
-                        ),
-                    ));
-                }
-                database.to_drift_table()
-            }
-        }
+            DriftFile::Database { .. } => unreachable!("handled above"),
+        }?;
+        Ok((table, None))
     }
+}
+
+/// The drift table and the QTF (if any) of a native hydro database made with
+/// `environment`'s density and gravity.
+fn database_drift(
+    source: &Source,
+    span: Range<usize>,
+    path: &Path,
+    environment: &Environment,
+) -> Result<(DriftTable, Option<QtfData>)> {
+    let database = HydroDatabase::load(path)?;
+    let made_with = (database.water_density, database.gravity);
+    if made_with != (environment.water_density, environment.gravity) {
+        return Err(source.error_at(
+            span,
+            format!(
+                "[drift] the database {} was made with water_density = {}, \
+                 gravity = {}, but [environment] has {}, {}: set [environment] \
+                 to the database's values or re-import with them",
+                path.display(),
+                made_with.0,
+                made_with.1,
+                environment.water_density,
+                environment.gravity
+            ),
+        ));
+    }
+    Ok((database.to_drift_table()?, database.qtf))
 }
 
 /// Where each quantity sits in a row of the drift table.
@@ -1152,6 +1194,8 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
         assert_eq!(
             config.model,
             ModelOptions {
+                second_order: SecondOrder::Newman,
+                qtf_tolerance: crate::config::DEFAULT_QTF_TOLERANCE,
                 newman: NewmanForm::Arithmetic,
                 drift_damping: DriftDamping::Table,
                 drag: DragModel::Separate {
@@ -1492,6 +1536,85 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
             message.starts_with("test.toml:") && message.contains("water_density = 1000"),
             "{message}"
         );
+    }
+
+    /// MINIMAL with its drift from a database whose QTF spans `omegas` at `heading_deg`,
+    /// and `model` as the [model] section.
+    fn with_qtf_database(
+        stem: &str,
+        omegas: &[f64],
+        heading_deg: f64,
+        model: &str,
+    ) -> Result<Config> {
+        use crate::hydro::database::{QtfData, QtfMatrix, SlowDof};
+        let n = omegas.len();
+        let mut database = database_with_minimal_drift(1025.0);
+        database.qtf = Some(QtfData {
+            omegas: omegas.to_vec(),
+            blocks: SlowDof::ALL
+                .into_iter()
+                .map(|dof| QtfMatrix {
+                    dof,
+                    heading: heading_deg.to_radians(),
+                    re: (0..n)
+                        .map(|i| (0..n).map(|j| 1.0e3 * (1 + i + j) as f64).collect())
+                        .collect(),
+                    im: (0..n)
+                        .map(|i| (0..n).map(|j| 10.0 * (i as f64 - j as f64)).collect())
+                        .collect(),
+                })
+                .collect(),
+        });
+        let json = temp_file(stem, "");
+        database.save(&json).expect("writable");
+        let dir = json.parent().expect("temp dir");
+        let name = json.file_name().expect("file name").to_string_lossy();
+        let head = MINIMAL.split("[drift]").next().expect("drift section");
+        let text = format!("{head}{model}\n[drift]\nsource = \"database\"\nfile = \"{name}\"\n");
+        let config = parse(&text, "test.toml", dir);
+        std::fs::remove_file(&json).expect("remove temporary file");
+        config
+    }
+
+    #[test]
+    fn full_qtf_mode_takes_the_database_qtf_and_names_what_is_missing() {
+        // PM, Tp = 8 s: the default band is 0.39 .. 3.14 rad/s.
+        let covering = [0.3, 1.0, 2.0, 3.5];
+        let full = "[model]\nsecond_order = \"full-qtf\"\nqtf_tolerance = 1e-4";
+        let config = with_qtf_database("qtf-ok.json", &covering, 0.0, full).expect("valid");
+        assert_eq!(config.model.second_order, SecondOrder::FullQtf);
+        assert_eq!(config.model.qtf_tolerance, 1e-4);
+        assert_eq!(config.qtf.as_ref().map(|q| q.omegas.len()), Some(4));
+        let defaults = with_qtf_database("qtf-default.json", &covering, 0.0, "").expect("valid");
+        assert_eq!(defaults.model.second_order, SecondOrder::Newman);
+        assert!(
+            defaults.qtf.is_some(),
+            "the QTF is carried even when unused"
+        );
+
+        let short = with_qtf_database("qtf-short.json", &[0.3, 1.0, 2.0], 0.0, full)
+            .expect_err("band not covered")
+            .to_string();
+        assert!(short.contains("2.0000 .. 3.1416 rad/s"), "{short}");
+        let heading = with_qtf_database("qtf-heading.json", &covering, 30.0, full)
+            .expect_err("no QTF at 0 deg")
+            .to_string();
+        assert!(
+            heading.contains("0.000 deg") && heading.contains("30.000 deg"),
+            "{heading}"
+        );
+        let tolerance = "[model]\nsecond_order = \"full-qtf\"\nqtf_tolerance = 0.0";
+        assert!(with_qtf_database("qtf-tol.json", &covering, 0.0, tolerance)
+            .expect_err("zero tolerance")
+            .to_string()
+            .contains("model.qtf_tolerance"));
+        let newman = "[model]\nqtf_tolerance = 1e-4";
+        assert!(with_qtf_database("qtf-newman.json", &covering, 0.0, newman)
+            .expect_err("tolerance without full-qtf")
+            .to_string()
+            .contains("qtf_tolerance"));
+        let no_qtf = MINIMAL.replace("[drift]", "[model]\nsecond_order = \"full-qtf\"\n\n[drift]");
+        assert!(error_text(&no_qtf).contains("needs a QTF"));
     }
 
     #[test]

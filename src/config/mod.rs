@@ -10,6 +10,8 @@ pub mod file;
 use crate::error::{
     require_finite, require_finite_matrix, require_non_negative, require_positive, Error, Result,
 };
+use crate::hydro::database::{QtfData, SlowDof};
+use crate::hydro::wamit::HEADING_TOLERANCE;
 use crate::hydro::DriftTable;
 use crate::sea_state::SeaState;
 
@@ -95,6 +97,16 @@ pub enum NewmanForm {
     Arithmetic,
 }
 
+/// How the slowly varying wave force is computed from second-order theory (physics.md 4).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SecondOrder {
+    /// Newman's approximation from the drift table's diagonal, in the form `newman`.
+    Newman,
+    /// The full difference-frequency QTF of [`Config::qtf`], factorised at FFT cost
+    /// (`forces::QtfFactorisation`), truncated at `qtf_tolerance`.
+    FullQtf,
+}
+
 /// Where the wave-drift damping coefficients b_ij(omega, beta) come from (physics.md 5).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum DriftDamping {
@@ -117,9 +129,17 @@ pub enum DragModel {
     Combined { cd: f64 },
 }
 
+/// Default [`ModelOptions::qtf_tolerance`].
+pub const DEFAULT_QTF_TOLERANCE: f64 = 1e-6;
+
 /// Modelling choices.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ModelOptions {
+    pub second_order: SecondOrder,
+    /// Relative trace-norm share of the QTF's eigenvalues that may be discarded (full QTF).
+    pub qtf_tolerance: f64,
+    /// The form of Newman's approximation: the wave force under [`SecondOrder::Newman`],
+    /// and the wave-drift damping records always.
     pub newman: NewmanForm,
     pub drift_damping: DriftDamping,
     pub drag: DragModel,
@@ -130,6 +150,8 @@ pub struct ModelOptions {
 impl Default for ModelOptions {
     fn default() -> Self {
         ModelOptions {
+            second_order: SecondOrder::Newman,
+            qtf_tolerance: DEFAULT_QTF_TOLERANCE,
             newman: NewmanForm::Geometric,
             drift_damping: DriftDamping::Aranha,
             drag: DragModel::Off,
@@ -154,6 +176,9 @@ pub struct Config {
     pub run: Run,
     pub platform: Platform,
     pub drift: DriftTable,
+    /// The full difference-frequency QTF (uni-directional headings), when the drift source
+    /// has one; used by [`SecondOrder::FullQtf`].
+    pub qtf: Option<QtfData>,
     pub model: ModelOptions,
     pub initial: InitialCondition,
 }
@@ -206,6 +231,7 @@ impl Config {
                 "the drift table has no b_ij columns",
             ));
         }
+        self.validate_qtf()?;
         for (i, v) in self.initial.position.iter().enumerate() {
             require_finite(&format!("initial.position[{i}]"), *v)?;
         }
@@ -213,6 +239,57 @@ impl Config {
             require_finite(&format!("initial.velocity[{i}]"), *v)?;
         }
         Ok(())
+    }
+
+    /// The full QTF, when selected: present, with surge, sway and yaw at every wave
+    /// direction's heading (within 0.01 deg; no interpolation in heading), covering the band.
+    fn validate_qtf(&self) -> Result<()> {
+        if let Some(q) = &self.qtf {
+            q.validate()?;
+        }
+        if self.model.second_order != SecondOrder::FullQtf {
+            return Ok(());
+        }
+        crate::forces::check_tolerance(self.model.qtf_tolerance)?;
+        let Some(q) = &self.qtf else {
+            return Err(Error::invalid(
+                "model.second_order",
+                "full-qtf",
+                "needs a QTF: use [drift] source = \"database\" with a database that holds one \
+                 (`slowdrift hydro wamit` with a .12d, .11d or .10d file)",
+            ));
+        };
+        let missing: Vec<String> = self
+            .sea
+            .directions()
+            .iter()
+            .filter(|d| {
+                SlowDof::ALL
+                    .iter()
+                    .any(|&dof| q.block(dof, d.heading, HEADING_TOLERANCE).is_none())
+            })
+            .map(|d| format!("{:.3}", d.heading.to_degrees()))
+            .collect();
+        if !missing.is_empty() {
+            let mut have: Vec<String> = q
+                .blocks
+                .iter()
+                .map(|b| format!("{:.3}", b.heading.to_degrees()))
+                .collect();
+            have.dedup();
+            return Err(Error::invalid(
+                "model.second_order",
+                "full-qtf",
+                format!(
+                    "the QTF has no surge, sway and yaw blocks at the wave heading(s) {} deg \
+                     (it has {} deg); the full QTF is not interpolated in heading, so every \
+                     direction of the sea needs its own QTF heading",
+                    missing.join(", "),
+                    have.join(", ")
+                ),
+            ));
+        }
+        crate::forces::check_covers(&q.omegas, self.sea.band())
     }
 
     fn validate_platform(&self) -> Result<()> {

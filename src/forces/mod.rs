@@ -4,6 +4,7 @@
 
 mod kinematics;
 mod newman;
+mod qtf;
 mod record;
 mod synthesis;
 mod transfer;
@@ -11,6 +12,7 @@ mod viscous;
 
 pub use kinematics::ColumnKinematics;
 pub use newman::NewmanBuilder;
+pub use qtf::{check_covers, check_tolerance, GridQtf, QtfFactorisation, MIN_QTF_TOLERANCE};
 pub use record::{Record, RecordClock, SamplePoint};
 pub use synthesis::Synthesizer;
 pub use transfer::{transfers_on_grid, DirectionTransfer};
@@ -23,6 +25,10 @@ use rustfft::num_complex::Complex64;
 /// What to precompute besides the elevation and the wave force.
 pub struct RecordOptions<'a> {
     pub newman: NewmanForm,
+    /// The full QTF of every direction (surge, sway, yaw), factorised on the grid: when
+    /// given, the wave force comes from it instead of Newman's approximation (the damping
+    /// records stay Newman's, from the transfers' b_ij).
+    pub full_qtf: Option<&'a [[GridQtf; 3]]>,
     /// Columns (and strips per column) whose kinematics the drag needs; empty = no drag.
     pub drag_columns: &'a [Column],
     pub strips_per_column: usize,
@@ -46,7 +52,9 @@ pub struct ForceRecords {
 impl ForceRecords {
     /// Builds every record from the wave components and the per-direction coefficients
     /// (from [`transfers_on_grid`]). Cost: one FFT per direction for the elevation, one or
-    /// two per non-zero coefficient record and direction, one per strip and column.
+    /// two per non-zero coefficient record and direction (with the full QTF: one per
+    /// retained term, DOF and direction instead, for the force), one per strip and column.
+    /// `options.full_qtf`, when given, holds one entry per direction of `components`.
     pub fn build(
         components: &WaveComponents,
         transfers: &[DirectionTransfer],
@@ -62,6 +70,14 @@ impl ForceRecords {
             NewmanForm::Geometric => Vec::new(),
         };
         let mut elevation_coefficients = vec![Complex64::default(); grid.count];
+        // Scratch of the full-QTF synthesis.
+        let (mut qtf_coefficients, mut qtf_series) = match options.full_qtf {
+            Some(_) => (
+                vec![Complex64::default(); grid.count],
+                vec![Complex64::default(); n],
+            ),
+            None => (Vec::new(), Vec::new()),
+        };
         // Records are allocated by the first direction that adds to them.
         let mut force: [Vec<f64>; 3] = Default::default();
         let mut damping: [[Vec<f64>; 3]; 3] = Default::default();
@@ -73,8 +89,23 @@ impl ForceRecords {
             if options.newman == NewmanForm::Arithmetic {
                 synth.complex_series(amplitudes, &mut eta_c);
             }
-            for (out, t) in force.iter_mut().zip(&transfer.drift) {
-                builder.accumulate(&mut synth, options.newman, amplitudes, &eta_c, t, out);
+            match options.full_qtf {
+                Some(qtf) => {
+                    for (out, t) in force.iter_mut().zip(&qtf[k]) {
+                        t.accumulate(
+                            &mut synth,
+                            amplitudes,
+                            &mut qtf_coefficients,
+                            &mut qtf_series,
+                            out,
+                        );
+                    }
+                }
+                None => {
+                    for (out, t) in force.iter_mut().zip(&transfer.drift) {
+                        builder.accumulate(&mut synth, options.newman, amplitudes, &eta_c, t, out);
+                    }
+                }
             }
             if let Some(b) = &transfer.damping {
                 for (out_row, b_row) in damping.iter_mut().zip(b) {

@@ -34,6 +34,7 @@ use super::{DriftRow, DriftTable};
 use crate::config::Environment;
 use crate::error::{require_finite, require_finite_matrix, require_positive, Error, Result};
 use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
 use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 
@@ -108,7 +109,8 @@ pub enum SlowDof {
 }
 
 impl SlowDof {
-    const ALL: [SlowDof; 3] = [SlowDof::Surge, SlowDof::Sway, SlowDof::Yaw];
+    /// Surge, sway, yaw: the order of the crate's force arrays.
+    pub const ALL: [SlowDof; 3] = [SlowDof::Surge, SlowDof::Sway, SlowDof::Yaw];
 }
 
 /// The difference-frequency QTF on its frequency grid.
@@ -456,7 +458,17 @@ impl HydroDatabase {
 }
 
 impl QtfData {
-    fn validate(&self) -> Result<()> {
+    /// The block of `dof` at `heading` (rad, within `tolerance`, modulo 2 pi), if any.
+    pub fn block(&self, dof: SlowDof, heading: f64, tolerance: f64) -> Option<&QtfMatrix> {
+        let apart = |a: f64, b: f64| (a - b + PI).rem_euclid(2.0 * PI) - PI;
+        self.blocks
+            .iter()
+            .find(|b| b.dof == dof && apart(b.heading, heading).abs() <= tolerance)
+    }
+
+    /// Checks the frequencies (positive, strictly increasing) and every block's shape and
+    /// finiteness.
+    pub fn validate(&self) -> Result<()> {
         let n = self.omegas.len();
         for (k, w) in self.omegas.iter().enumerate() {
             require_positive(&format!("database.qtf.omegas[{k}]"), *w)?;
@@ -485,6 +497,21 @@ impl QtfData {
             }
         }
         Ok(())
+    }
+}
+
+impl QtfMatrix {
+    /// Row-major n x n values, `[i * n + j]` = T(w_i, w_j).
+    pub fn values(&self) -> Vec<rustfft::num_complex::Complex64> {
+        self.re
+            .iter()
+            .zip(&self.im)
+            .flat_map(|(re, im)| {
+                re.iter()
+                    .zip(im)
+                    .map(|(&a, &b)| rustfft::num_complex::Complex64::new(a, b))
+            })
+            .collect()
     }
 }
 

@@ -4,7 +4,7 @@
 
 use slowdrift::config::{
     Column, Current, DragModel, DriftDamping, Environment, InitialCondition, ModelOptions,
-    NewmanForm, Platform, Run,
+    NewmanForm, Platform, Run, SecondOrder, DEFAULT_QTF_TOLERANCE,
 };
 use slowdrift::hydro::{DriftRow, DriftTable};
 use slowdrift::sea_state::{SeaState, Spectrum, Spreading};
@@ -105,7 +105,10 @@ pub fn base_config(duration: f64, time_step: f64, seed: u64) -> Config {
         },
         platform: oscillator_platform(1.0e7, 1.0e10, [60.0, 60.0, 40.0], 0.2),
         drift: drift_table(smooth_drift),
+        qtf: None,
         model: ModelOptions {
+            second_order: SecondOrder::Newman,
+            qtf_tolerance: DEFAULT_QTF_TOLERANCE,
             newman: NewmanForm::Geometric,
             drift_damping: DriftDamping::Off,
             drag: DragModel::Off,

@@ -1,0 +1,382 @@
+//! The slowly varying force from the full difference-frequency QTF at FFT cost
+//! (physics.md section 4; issue #5 part 1).
+//!
+//! Definition (WAMIT's and the crate's convention, e^{i omega t}; the WAMIT import stores
+//! the file's Re + i Im unchanged):
+//!   F(t) = Re sum_i sum_j a_i a_j* T(w_i, w_j) e^{i (w_i - w_j) t}.
+//! Only the Hermitian part (T + T^H)/2 contributes (the anti-Hermitian part pairs (i, j)
+//! with (j, i) into purely imaginary terms), so it is the Hermitian part that is factorised,
+//! exactly; a QTF filled by symmetry is Hermitian already.
+//!
+//! Factorisation: on the QTF's own n-point grid, the eigen-decomposition of the Hermitian
+//! matrix T = sum_r s_r u_r u_r^H (s_r real, of either sign; u_r orthonormal), terms sorted
+//! by decreasing |s_r|. The rank R is the smallest with
+//!   discarded = sum_{r >= R} |s_r| / sum_r |s_r| <= tolerance
+//! (the trace-norm share of the dropped terms). It bounds the force error rigorously:
+//! |F - F_R|(t) = |sum_{r >= R} s_r |U_r(t)|^2| <= discarded * sum_r |s_r| * (sum_i |a_i|)^2,
+//! since |U_r(t)| <= sum_i |a_i| max_i |u_r(w_i)| and interpolated unit vectors have no
+//! component above 1.
+//!
+//! Interpolation: the factors u_r are interpolated linearly in omega onto the simulation
+//! grid. Linear interpolation is a linear map L, so the factorised QTF on the simulation grid
+//! is L T_R L^T: the bilinear interpolation (in w_i and w_j) of the truncated QTF. The
+//! truncation error (above) and the interpolation error (of bilinear interpolation of the
+//! true QTF, O(h^2) in the QTF grid step h) are therefore separate; the tests check each.
+//! Nothing is extrapolated: the QTF grid must cover the wave band.
+//!
+//! Synthesis: F(t) = sum_r s_r |U_r(t)|^2 with U_r(t) = sum_i a_i u_r(w_i) e^{i w_i t}: one
+//! complex FFT per retained term. (The general factorisation T = sum_r u_r s_r v_r^H of an
+//! SVD needs U_r and V_r, two FFTs per term, F = sum_r s_r Re[U_r V_r*]; for a Hermitian T
+//! the SVD has v_r = +-u_r, so V_r = +-U_r and one FFT suffices.) Memory: the factors,
+//! count x R complex numbers, and one record-length buffer.
+
+use super::synthesis::Synthesizer;
+use crate::error::{Error, Result};
+use crate::sea_state::FrequencyGrid;
+use nalgebra::{DMatrix, SymmetricEigen};
+use rustfft::num_complex::Complex64;
+
+/// Smallest accepted truncation tolerance: below it the discarded eigenvalues are the
+/// round-off of the decomposition itself (about n * 1e-16 of the largest).
+pub const MIN_QTF_TOLERANCE: f64 = 1e-12;
+
+/// A Hermitian QTF factorised on its own grid and truncated: sum_r s_r u_r u_r^H.
+#[derive(Debug, Clone, PartialEq)]
+pub struct QtfFactorisation {
+    /// The QTF's frequencies, rad/s, strictly increasing.
+    omegas: Vec<f64>,
+    /// Retained eigenvalues s_r (N/m^2 or N m/m^2), by decreasing |s_r|.
+    eigenvalues: Vec<f64>,
+    /// Retained unit eigenvectors u_r, one value per QTF frequency.
+    vectors: Vec<Vec<Complex64>>,
+    /// Trace-norm share of the discarded terms, <= the tolerance.
+    discarded: f64,
+}
+
+impl QtfFactorisation {
+    /// Factorises the n x n QTF `matrix` (row-major, `[i * n + j]` = T(w_i, w_j)) given on
+    /// `omegas` and keeps the fewest terms whose discarded trace-norm share is at most
+    /// `tolerance` (in [`MIN_QTF_TOLERANCE`], 1)).
+    pub fn new(omegas: &[f64], matrix: &[Complex64], tolerance: f64) -> Result<Self> {
+        check_tolerance(tolerance)?;
+        let n = omegas.len();
+        if n < 2
+            || omegas.windows(2).any(|w| w[1] <= w[0])
+            || omegas[0] <= 0.0
+            || omegas.iter().any(|w| !w.is_finite())
+        {
+            return Err(Error::invalid(
+                "qtf.omegas",
+                format!("{n} frequencies"),
+                "need at least 2 positive, strictly increasing frequencies",
+            ));
+        }
+        if matrix.len() != n * n
+            || matrix
+                .iter()
+                .any(|z| !(z.re.is_finite() && z.im.is_finite()))
+        {
+            return Err(Error::invalid(
+                "qtf.matrix",
+                format!("{} values", matrix.len()),
+                format!("must be {n} x {n} finite values"),
+            ));
+        }
+        let hermitian = DMatrix::from_fn(n, n, |i, j| {
+            0.5 * (matrix[i * n + j] + matrix[j * n + i].conj())
+        });
+        let eigen = SymmetricEigen::new(hermitian);
+        let mut order: Vec<usize> = (0..n).collect();
+        order.sort_by(|&a, &b| {
+            eigen.eigenvalues[b]
+                .abs()
+                .total_cmp(&eigen.eigenvalues[a].abs())
+        });
+        let total: f64 = eigen.eigenvalues.iter().map(|s| s.abs()).sum();
+        // Keep terms until what is left is within the tolerance.
+        let mut left = total;
+        let mut rank = 0;
+        while rank < n && left > tolerance * total {
+            left -= eigen.eigenvalues[order[rank]].abs();
+            rank += 1;
+        }
+        let kept = &order[..rank];
+        let discarded = if total > 0.0 {
+            order[rank..]
+                .iter()
+                .fold(0.0, |sum, &r| sum + eigen.eigenvalues[r].abs())
+                / total
+        } else {
+            0.0
+        };
+        Ok(QtfFactorisation {
+            omegas: omegas.to_vec(),
+            eigenvalues: kept.iter().map(|&r| eigen.eigenvalues[r]).collect(),
+            vectors: kept
+                .iter()
+                .map(|&r| eigen.eigenvectors.column(r).iter().copied().collect())
+                .collect(),
+            discarded,
+        })
+    }
+
+    /// Retained rank R.
+    pub fn rank(&self) -> usize {
+        self.eigenvalues.len()
+    }
+
+    /// Size n of the QTF grid (the full rank).
+    pub fn size(&self) -> usize {
+        self.omegas.len()
+    }
+
+    /// Trace-norm share of the discarded terms (<= the tolerance).
+    pub fn discarded(&self) -> f64 {
+        self.discarded
+    }
+
+    /// Retained eigenvalues s_r, by decreasing magnitude.
+    pub fn eigenvalues(&self) -> &[f64] {
+        &self.eigenvalues
+    }
+
+    /// The factors interpolated linearly onto the components of `grid`; an error naming the
+    /// gap when the QTF's frequencies do not cover the grid's band.
+    pub fn on_grid(&self, grid: &FrequencyGrid) -> Result<GridQtf> {
+        let band = (grid.omega(0), grid.omega(grid.count - 1));
+        check_covers(&self.omegas, band)?;
+        let stencils: Vec<(usize, f64)> = (0..grid.count)
+            .map(|j| bracket(&self.omegas, grid.omega(j)))
+            .collect();
+        let factors = self
+            .vectors
+            .iter()
+            .map(|u| {
+                stencils
+                    .iter()
+                    .map(|&(k, s)| {
+                        if s == 0.0 {
+                            u[k]
+                        } else {
+                            (1.0 - s) * u[k] + s * u[k + 1]
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
+        Ok(GridQtf {
+            eigenvalues: self.eigenvalues.clone(),
+            factors,
+        })
+    }
+}
+
+/// A factorised QTF on a simulation grid: T(w_i, w_j) = sum_r s_r f_r(w_i) f_r(w_j)*.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GridQtf {
+    eigenvalues: Vec<f64>,
+    /// f_r at the grid's components j = 0 .. count, one vector per retained term.
+    factors: Vec<Vec<Complex64>>,
+}
+
+impl GridQtf {
+    /// Retained rank R.
+    pub fn rank(&self) -> usize {
+        self.eigenvalues.len()
+    }
+
+    /// The represented QTF between components i and j (for checks; O(R)).
+    pub fn value(&self, i: usize, j: usize) -> Complex64 {
+        self.eigenvalues
+            .iter()
+            .zip(&self.factors)
+            .map(|(s, f)| *s * f[i] * f[j].conj())
+            .sum()
+    }
+
+    /// Adds sum_r s_r |U_r(t_m)|^2, U_r = sum_i a_i f_r(w_i) e^{i w_i t_m}, to `out`
+    /// (allocated to the record length when first needed; left alone at rank 0).
+    /// `coefficients` (grid count) and `series` (record length) are scratch.
+    pub fn accumulate(
+        &self,
+        synth: &mut Synthesizer,
+        amplitudes: &[Complex64],
+        coefficients: &mut [Complex64],
+        series: &mut [Complex64],
+        out: &mut Vec<f64>,
+    ) {
+        for (s, f) in self.eigenvalues.iter().zip(&self.factors) {
+            for ((c, a), u) in coefficients.iter_mut().zip(amplitudes).zip(f) {
+                *c = a * u;
+            }
+            synth.complex_series(coefficients, series);
+            out.resize(series.len(), 0.0);
+            for (o, p) in out.iter_mut().zip(series.iter()) {
+                *o += s * p.norm_sqr();
+            }
+        }
+    }
+}
+
+/// Refuses a tolerance outside [[`MIN_QTF_TOLERANCE`], 1).
+pub fn check_tolerance(tolerance: f64) -> Result<()> {
+    if (MIN_QTF_TOLERANCE..1.0).contains(&tolerance) {
+        Ok(())
+    } else {
+        Err(Error::invalid(
+            "model.qtf_tolerance",
+            tolerance,
+            format!(
+                "must be at least {MIN_QTF_TOLERANCE} (below it the discarded eigenvalues are \
+                 round-off) and below 1"
+            ),
+        ))
+    }
+}
+
+/// Refuses a QTF grid that does not cover `band` (rad/s), naming the gap.
+pub fn check_covers(omegas: &[f64], band: (f64, f64)) -> Result<()> {
+    let (low, high) = (omegas[0], omegas[omegas.len() - 1]);
+    let mut gaps = Vec::new();
+    if band.0 < low {
+        gaps.push(format!("{:.4} .. {low:.4} rad/s", band.0));
+    }
+    if band.1 > high {
+        gaps.push(format!("{high:.4} .. {:.4} rad/s", band.1));
+    }
+    if gaps.is_empty() {
+        return Ok(());
+    }
+    Err(Error::invalid(
+        "qtf.omegas",
+        format!("[{low:.4}, {high:.4}] rad/s"),
+        format!(
+            "the QTF does not cover the wave band [{:.4}, {:.4}] rad/s: no data for {} \
+             (nothing is extrapolated; narrow sea.band or supply QTF data there)",
+            band.0,
+            band.1,
+            gaps.join(" and ")
+        ),
+    ))
+}
+
+/// Lower node k and weight s of `w` in `omegas` (covered): w = (1 - s) w_k + s w_{k+1};
+/// s is exactly 0 at a node.
+fn bracket(omegas: &[f64], w: f64) -> (usize, f64) {
+    let above = omegas.partition_point(|&o| o <= w);
+    let k = above.saturating_sub(1).min(omegas.len() - 2);
+    if omegas[k] == w {
+        return (k, 0.0);
+    }
+    (k, (w - omegas[k]) / (omegas[k + 1] - omegas[k]))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn smooth_qtf(w1: f64, w2: f64) -> Complex64 {
+        // A smooth positive kernel less an oscillating rank-1 term: indefinite.
+        let amplitude = 1.0e4 * (1.0 + w1 * w2) * (-(w1 - w2).powi(2) / 0.5).exp()
+            - 2.0e4 * (4.0 * w1).sin() * (4.0 * w2).sin();
+        amplitude * Complex64::from_polar(1.0, 2.0 * (w1 - w2))
+    }
+
+    fn sampled(omegas: &[f64]) -> Vec<Complex64> {
+        omegas
+            .iter()
+            .flat_map(|&a| omegas.iter().map(move |&b| smooth_qtf(a, b)))
+            .collect()
+    }
+
+    fn linspace(a: f64, b: f64, n: usize) -> Vec<f64> {
+        (0..n)
+            .map(|i| a + (b - a) * i as f64 / (n - 1) as f64)
+            .collect()
+    }
+
+    #[test]
+    fn complex_hermitian_eigen_decomposition_reconstructs_the_qtf() {
+        let omegas = linspace(0.2, 2.5, 40);
+        let t = sampled(&omegas);
+        let full = QtfFactorisation::new(&omegas, &t, MIN_QTF_TOLERANCE).unwrap();
+        let scale = t.iter().fold(0.0f64, |m, z| m.max(z.norm()));
+        let n = omegas.len();
+        for i in 0..n {
+            for j in 0..n {
+                let r: Complex64 = full
+                    .eigenvalues
+                    .iter()
+                    .zip(&full.vectors)
+                    .map(|(s, u)| *s * u[i] * u[j].conj())
+                    .sum();
+                assert!((r - t[i * n + j]).norm() < 1e-11 * scale, "({i}, {j})");
+            }
+        }
+        assert!(
+            full.eigenvalues.iter().any(|&s| s < 0.0),
+            "indefinite QTF: {:?}",
+            full.eigenvalues
+        );
+    }
+
+    #[test]
+    fn rank_grows_as_the_tolerance_shrinks_and_discarded_stays_below_it() {
+        let omegas = linspace(0.2, 2.5, 40);
+        let t = sampled(&omegas);
+        let mut last = 0;
+        for tolerance in [1e-2, 1e-4, 1e-6, 1e-9] {
+            let f = QtfFactorisation::new(&omegas, &t, tolerance).unwrap();
+            assert!(f.discarded() <= tolerance);
+            assert!(
+                f.rank() >= last && f.rank() < f.size(),
+                "{tolerance}: {}",
+                f.rank()
+            );
+            last = f.rank();
+        }
+    }
+
+    /// The interpolation error, separately from the truncation: the factorised QTF on a
+    /// fine grid against the analytic QTF converges at O(h^2) in the QTF grid step.
+    #[test]
+    fn interpolation_error_is_second_order_in_the_qtf_step() {
+        let grid = FrequencyGrid::new(0.0, 600.0, 0.25, (0.3, 2.0)).unwrap();
+        let error = |n: usize| {
+            let omegas = linspace(0.25, 2.1, n);
+            let g = QtfFactorisation::new(&omegas, &sampled(&omegas), MIN_QTF_TOLERANCE)
+                .unwrap()
+                .on_grid(&grid)
+                .unwrap();
+            let mut worst = 0.0f64;
+            for i in (0..grid.count).step_by(3) {
+                for j in (0..grid.count).step_by(3) {
+                    let exact = smooth_qtf(grid.omega(i), grid.omega(j));
+                    worst = worst.max((g.value(i, j) - exact).norm());
+                }
+            }
+            worst
+        };
+        let (coarse, fine) = (error(21), error(41));
+        let order = (coarse / fine).log2();
+        assert!(
+            (1.8..2.3).contains(&order),
+            "order {order}: {coarse} -> {fine}"
+        );
+    }
+
+    #[test]
+    fn a_qtf_short_of_the_band_is_refused_naming_the_gap() {
+        let omegas = linspace(0.5, 1.5, 10);
+        let f = QtfFactorisation::new(&omegas, &sampled(&omegas), 1e-6).unwrap();
+        let grid = FrequencyGrid::new(0.0, 600.0, 0.25, (0.3, 2.0)).unwrap();
+        let message = f.on_grid(&grid).unwrap_err().to_string();
+        assert!(
+            message.contains("0.5000 rad/s") && message.contains("1.5000 .."),
+            "{message}"
+        );
+        for bad in [0.0, 1e-13, 1.0, f64::NAN] {
+            assert!(QtfFactorisation::new(&omegas, &sampled(&omegas), bad).is_err());
+        }
+    }
+}
