@@ -54,8 +54,11 @@ fn runs_file(out: &Path) -> PathBuf {
     ))
 }
 
-/// The per-run file as (case, seed, fields by column name), one entry per line.
-fn per_run_lines(out: &Path) -> Vec<(String, u64, Vec<(String, String)>)> {
+/// One line of the per-run file: case, seed, and (column, field) pairs.
+type RunLine = (String, u64, Vec<(String, String)>);
+
+/// The per-run file, one entry per line.
+fn per_run_lines(out: &Path) -> Vec<RunLine> {
     let text = read(&runs_file(out));
     let mut lines = text.lines();
     let header: Vec<String> = lines.next().unwrap().split(',').map(String::from).collect();
