@@ -25,6 +25,7 @@ pub mod fmi2;
 pub mod forces;
 pub mod hydro;
 pub mod model_description;
+pub mod montecarlo;
 pub mod sea_state;
 pub mod simulation;
 pub mod special;

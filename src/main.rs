@@ -7,24 +7,26 @@
 //!
 //! `slowdrift hydro wamit --root PATH/NAME --out FILE.json` imports WAMIT output into a
 //! native hydro database ([`cli::hydro`]).
+//!
+//! `slowdrift montecarlo ... --seeds N --out RESULTS.csv` runs many seeds of one case or a
+//! table of cases on all cores, resumably ([`cli::montecarlo`]).
 
 mod cli;
 
 use slowdrift::config::default_platform::{default_config, DEFAULT_DRIFT_LABEL};
 use slowdrift::config::file;
 use slowdrift::stats::{summarize, Summary};
-use slowdrift::{Config, Outputs, Simulation};
+use slowdrift::{Outputs, Simulation};
 use std::io::{BufWriter, Write};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-/// Slow-drift cycles dropped as transient by default (E&S section 5: about ten cycles).
-const TRANSIENT_CYCLES: f64 = 10.0;
-
 const USAGE: &str =
     "usage: slowdrift simulate [--config FILE.toml] [--out FILE.csv] [--transient SECONDS]
        slowdrift hydro wamit --root PATH/NAME [--ulen 1] [--rho 1025] [--g 9.80665] --out FILE.json
-       slowdrift hydro columns [--config FILE.toml] --out FILE.json";
+       slowdrift hydro columns [--config FILE.toml] --out FILE.json
+       slowdrift montecarlo [--config FILE.toml] [--cases CASES.csv] --seeds N [--first-seed 1]
+                            [--duration SECONDS] [--transient SECONDS] [--threads T] --out RESULTS.csv";
 
 struct Arguments {
     config: Option<PathBuf>,
@@ -46,6 +48,7 @@ fn run(args: Vec<String>) -> Result<(), String> {
     match args.first().map(String::as_str) {
         Some("simulate") => simulate(parse_arguments(&args[1..])?),
         Some("hydro") => cli::hydro::run(&args[1..]),
+        Some("montecarlo") => cli::montecarlo::run(&args[1..]),
         Some("--help") | Some("-h") | None => {
             println!("{USAGE}");
             Ok(())
@@ -95,7 +98,7 @@ fn simulate(args: Arguments) -> Result<(), String> {
             default_config().map_err(|e| e.to_string())?
         }
     };
-    let transient = args.transient.unwrap_or_else(|| default_transient(&config));
+    let transient = args.transient.unwrap_or_else(|| config.default_transient());
     let started = std::time::Instant::now();
     let mut sim = Simulation::new(config).map_err(|e| e.to_string())?;
     for r in sim.qtf_ranks() {
@@ -122,18 +125,6 @@ fn simulate(args: Arguments) -> Result<(), String> {
         println!("time series written to {}", path.display());
     }
     Ok(())
-}
-
-/// Ten undamped surge periods 2 pi sqrt((M + A11) / C11), at most half the run.
-fn default_transient(config: &Config) -> f64 {
-    let p = &config.platform;
-    let half_run = 0.5 * config.run.duration;
-    if p.stiffness[0][0] <= 0.0 {
-        return 0.0;
-    }
-    let period =
-        2.0 * std::f64::consts::PI * ((p.mass + p.added_mass[0][0]) / p.stiffness[0][0]).sqrt();
-    (TRANSIENT_CYCLES * period).min(half_run)
 }
 
 fn run_to_end(sim: &mut Simulation) -> Result<Vec<Outputs>, String> {

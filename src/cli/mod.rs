@@ -1,3 +1,4 @@
 //! Subcommands of the `slowdrift` tool other than `simulate`.
 
 pub mod hydro;
+pub mod montecarlo;

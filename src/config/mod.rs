@@ -183,7 +183,28 @@ pub struct Config {
     pub initial: InitialCondition,
 }
 
+/// Slow-drift cycles dropped as start-up transient by default (E&S section 5: the
+/// statistics settle after about ten cycles of the surge natural period).
+pub const TRANSIENT_CYCLES: f64 = 10.0;
+
 impl Config {
+    /// The undamped surge natural period 2 pi sqrt((M + A11) / C11), s; `None` without
+    /// surge stiffness.
+    pub fn surge_natural_period(&self) -> Option<f64> {
+        let p = &self.platform;
+        (p.stiffness[0][0] > 0.0).then(|| {
+            2.0 * std::f64::consts::PI * ((p.mass + p.added_mass[0][0]) / p.stiffness[0][0]).sqrt()
+        })
+    }
+
+    /// The default start-up transient, s: [`TRANSIENT_CYCLES`] surge natural periods, at
+    /// most half the run (0 without surge stiffness).
+    pub fn default_transient(&self) -> f64 {
+        self.surge_natural_period().map_or(0.0, |period| {
+            (TRANSIENT_CYCLES * period).min(0.5 * self.run.duration)
+        })
+    }
+
     /// Checks every field; the error names the first offending field and value.
     pub fn validate(&self) -> Result<()> {
         require_positive("environment.gravity", self.environment.gravity)?;

@@ -127,6 +127,39 @@ pub fn simpson(f: impl Fn(f64) -> f64, a: f64, b: f64, panels: usize) -> f64 {
     (f(a) + inner + f(b)) * h / 3.0
 }
 
+/// Frequency-domain variance of the surge of an oscillator platform (uncoupled surge:
+/// mass + A11, stiffness C11, linear damping B11) in the long-crested head sea of `config`
+/// driven by Newman's geometric force of the [`smooth_drift`] surge drift:
+/// var x = integral S_F(mu) |H(mu)|^2 dmu with S_F(mu) = 8 integral S(w) S(w + mu)
+/// T(w) T(w + mu) dw over the simulated band (physics.md section 8).
+pub fn oscillator_surge_variance(config: &Config) -> f64 {
+    let p = &config.platform;
+    let (mass, stiffness, damping) = (
+        p.mass + p.added_mass[0][0],
+        p.stiffness[0][0],
+        p.linear_damping[0][0],
+    );
+    let transfer_squared =
+        |mu: f64| 1.0 / ((stiffness - mass * mu * mu).powi(2) + (damping * mu).powi(2));
+    let drift = |w: f64| smooth_drift(w, 0.0)[0];
+    let spectrum = &config.sea.spectrum;
+    let (lo, hi) = config.sea.band();
+    let force_spectrum = |mu: f64| {
+        8.0 * simpson(
+            |w| spectrum.density(w) * spectrum.density(w + mu) * drift(w) * drift(w + mu),
+            lo,
+            hi - mu,
+            2000,
+        )
+    };
+    simpson(
+        |mu| force_spectrum(mu) * transfer_squared(mu),
+        0.0,
+        hi - lo,
+        4000,
+    )
+}
+
 /// The shared data directory: `$SLOWDRIFT_DATA` if set, else `../shared/data` next to the
 /// repository (where CI puts it).
 pub fn shared_data_dir() -> std::path::PathBuf {

@@ -1,0 +1,143 @@
+//! The paper's Fig. 10 workload: `cargo bench --bench montecarlo`.
+//!
+//! Default platform (column-solver drift and damping, computed once), long-crested head
+//! seas, Newman geometric, table drift damping, combined drag on 4 columns x 20 strips,
+//! 2^14 s at h = 1 s, transient 10 surge periods; one run = `Simulation::new` + 16384 RK4
+//! steps + the statistics ([`run_seed`]).
+//!
+//! 1. `montecarlo/fig10_one_run` (criterion): one run on one thread.
+//! 2. The workload itself, 1000 runs through [`run_jobs`] on all cores, is too long for
+//!    criterion's repetitions: it is timed once with `Instant` and printed with runs per
+//!    second per core (`SLOWDRIFT_BENCH_RUNS` overrides the count for a quick look).
+//! 3. The NumPy reference `tests/clients/bench_numpy.py` (same case, records vectorised,
+//!    RK4 loop in Python) is run in the same process when `target/client-venv` exists
+//!    (created by `tests/clients/run_clients.sh`), and the ratio of the single-core times
+//!    per run is printed; otherwise the summary says it is absent.
+
+use criterion::Criterion;
+use slowdrift::config::default_platform::{default_config, DEFAULT_DRIFT_LABEL};
+use slowdrift::hydro::database::HydroDatabase;
+use slowdrift::montecarlo::{run_jobs, run_seed, Case, Job};
+use std::hint::black_box;
+use std::path::Path;
+use std::process::Command;
+use std::time::{Duration, Instant};
+
+const DURATION: f64 = 16_384.0;
+const WORKLOAD_RUNS: u64 = 1000;
+/// Seeds of the NumPy reference (each takes seconds).
+const NUMPY_RUNS: usize = 2;
+
+fn fig10_case() -> Case {
+    let mut config = default_config().expect("the default platform");
+    config.run.duration = DURATION;
+    let transient = config.default_transient();
+    Case {
+        name: "fig10".into(),
+        config,
+        transient,
+    }
+}
+
+/// Seconds per run of `runs` single-thread runs.
+fn single_core_seconds(case: &Case, runs: u64) -> f64 {
+    let start = Instant::now();
+    for seed in 0..runs {
+        black_box(run_seed(case, 10_000 + seed).expect("a Fig. 10 run"));
+    }
+    start.elapsed().as_secs_f64() / runs as f64
+}
+
+/// The NumPy reference's seconds per run, or why there is none.
+fn numpy_seconds(case: &Case) -> Result<(f64, String), String> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let python = root.join("target/client-venv/bin/python");
+    if !python.exists() {
+        return Err(format!(
+            "absent: {} does not exist (tests/clients/run_clients.sh creates it)",
+            python.display()
+        ));
+    }
+    let dir = std::env::temp_dir().join(format!("slowdrift-bench-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).map_err(|e| e.to_string())?;
+    let database = dir.join("platform.json");
+    HydroDatabase::from_drift_table(
+        "platform",
+        DEFAULT_DRIFT_LABEL,
+        &case.config.environment,
+        &case.config.drift,
+    )
+    .save(&database)
+    .map_err(|e| e.to_string())?;
+    let output = Command::new(&python)
+        .arg(root.join("tests/clients/bench_numpy.py"))
+        .arg(&database)
+        .args(["--runs", &NUMPY_RUNS.to_string()])
+        .args(["--duration", &DURATION.to_string()])
+        .output()
+        .map_err(|e| e.to_string())?;
+    std::fs::remove_dir_all(&dir).ok();
+    let stdout = String::from_utf8_lossy(&output.stdout).trim().to_string();
+    if !output.status.success() {
+        return Err(format!(
+            "failed: {}",
+            String::from_utf8_lossy(&output.stderr)
+        ));
+    }
+    let json: serde_json::Value = serde_json::from_str(&stdout).map_err(|e| e.to_string())?;
+    let seconds = json["seconds_per_run"]
+        .as_f64()
+        .ok_or("no seconds_per_run in the output")?;
+    Ok((seconds, stdout))
+}
+
+fn main() {
+    let case = fig10_case();
+    let mut criterion = Criterion::default()
+        .sample_size(10)
+        .measurement_time(Duration::from_secs(5))
+        .configure_from_args();
+    let mut seed = 0;
+    criterion.bench_function("montecarlo/fig10_one_run", |b| {
+        b.iter(|| {
+            seed += 1;
+            run_seed(black_box(&case), seed).expect("a Fig. 10 run")
+        })
+    });
+    criterion.final_summary();
+
+    let runs: u64 = std::env::var("SLOWDRIFT_BENCH_RUNS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(WORKLOAD_RUNS);
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let jobs: Vec<Job> = (1..=runs).map(|seed| Job { case: 0, seed }).collect();
+    let start = Instant::now();
+    let mut failed = 0;
+    run_jobs(std::slice::from_ref(&case), &jobs, cores, |event| {
+        failed += usize::from(matches!(event, Some(f) if f.result.is_err()));
+    });
+    let wall = start.elapsed().as_secs_f64();
+    let single = single_core_seconds(&case, 5);
+
+    println!("\n=== Monte Carlo summary (Fig. 10 workload: default platform, 2^14 s at 1 s, drag on) ===");
+    println!(
+        "{runs} runs on {cores} threads: {wall:.1} s wall (timed once with Instant, not criterion; \
+         target 1000 runs < 20 s), {:.2} runs/s, {:.2} runs/s per core; {failed} failed",
+        runs as f64 / wall,
+        runs as f64 / wall / cores as f64
+    );
+    println!(
+        "one run on one thread: {:.1} ms ({:.2} runs/s)",
+        1e3 * single,
+        1.0 / single
+    );
+    match numpy_seconds(&case) {
+        Ok((numpy, line)) => println!(
+            "NumPy reference ({NUMPY_RUNS} runs, one core): {numpy:.2} s per run = {:.1} x the Rust \
+             run on one core, same process\n  {line}",
+            numpy / single
+        ),
+        Err(why) => println!("NumPy reference: {why}"),
+    }
+}

@@ -1,0 +1,415 @@
+//! `slowdrift montecarlo`: many seeds of one case or of a table of cases, on all cores,
+//! resumable (see README "Monte Carlo").
+//!
+//! The per-run file `RESULTS.runs.csv` ([`runs_file`]) is appended and flushed as runs
+//! finish; a restart with the same `--out` reads it back, refuses runs made with another
+//! configuration, skips the (case, seed) pairs already done and runs the rest (failed runs
+//! again). The summary `RESULTS.csv` is always recomputed from the per-run file, for the
+//! requested seeds in seed order, so it does not depend on the threads, the finishing
+//! order or the interruptions.
+
+use slowdrift::config::default_platform::{default_config, DEFAULT_DRIFT_LABEL};
+use slowdrift::config::file;
+use slowdrift::montecarlo::cases::{read_case_table, CaseRow};
+use slowdrift::montecarlo::runs_file::{self, RunRow};
+use slowdrift::montecarlo::{run_jobs, seed_statistics, Case, Job, DOFS, STATISTICS};
+use std::io::{IsTerminal, Write};
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+pub const USAGE: &str = "slowdrift montecarlo [--config FILE.toml] [--cases CASES.csv] --seeds N \
+     [--first-seed 1] [--duration SECONDS] [--transient SECONDS] [--threads T] --out RESULTS.csv";
+
+struct Options {
+    config: Option<PathBuf>,
+    cases: Option<PathBuf>,
+    seeds: u64,
+    first_seed: u64,
+    duration: Option<f64>,
+    transient: Option<f64>,
+    threads: usize,
+    out: PathBuf,
+}
+
+fn parse(args: &[String]) -> Result<Options, String> {
+    let usage = |message: String| format!("{message}\nusage: {USAGE}");
+    let (mut config, mut cases, mut seeds, mut first_seed) = (None, None, None, 1);
+    let (mut duration, mut transient, mut threads, mut out) = (None, None, None, None);
+    let mut rest = args.iter();
+    while let Some(flag) = rest.next() {
+        let value = rest
+            .next()
+            .ok_or_else(|| usage(format!("{flag} needs a value")))?;
+        let whole = |least: u64| match value.parse::<u64>() {
+            Ok(n) if n >= least => Ok(n),
+            _ => Err(format!(
+                "{flag} {value}: must be a whole number of at least {least}"
+            )),
+        };
+        let seconds = |positive: bool| match value.parse::<f64>() {
+            Ok(v) if v.is_finite() && (v > 0.0 || (!positive && v == 0.0)) => Ok(v),
+            _ => Err(format!(
+                "{flag} {value}: must be a {} number of seconds",
+                if positive { "positive" } else { "non-negative" }
+            )),
+        };
+        match flag.as_str() {
+            "--config" => config = Some(PathBuf::from(value)),
+            "--cases" => cases = Some(PathBuf::from(value)),
+            "--seeds" => seeds = Some(whole(1)?),
+            "--first-seed" => first_seed = whole(0)?,
+            "--duration" => duration = Some(seconds(true)?),
+            "--transient" => transient = Some(seconds(false)?),
+            "--threads" => threads = Some(whole(1)? as usize),
+            "--out" => out = Some(PathBuf::from(value)),
+            other => return Err(usage(format!("unknown option '{other}'"))),
+        }
+    }
+    let seeds = seeds.ok_or_else(|| usage("--seeds is required".into()))?;
+    first_seed
+        .checked_add(seeds - 1)
+        .ok_or_else(|| format!("--first-seed {first_seed} + --seeds {seeds} overflows"))?;
+    Ok(Options {
+        config,
+        cases,
+        seeds,
+        first_seed,
+        duration,
+        transient,
+        threads: threads.unwrap_or_else(|| {
+            std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)
+        }),
+        out: out.ok_or_else(|| usage("--out is required".into()))?,
+    })
+}
+
+/// The per-run file next to the summary: `RESULTS.csv` -> `RESULTS.runs.csv`.
+pub fn runs_path(out: &Path) -> PathBuf {
+    let stem = out.file_stem().unwrap_or_default().to_string_lossy();
+    out.with_file_name(format!("{stem}.runs.csv"))
+}
+
+/// Runs `slowdrift montecarlo` with the arguments after `montecarlo`.
+pub fn run(args: &[String]) -> Result<(), String> {
+    let options = parse(args)?;
+    let mut base = match &options.config {
+        Some(path) => file::load(path).map_err(|e| e.to_string())?,
+        None => {
+            println!("embedded default platform; drift: {DEFAULT_DRIFT_LABEL}");
+            default_config().map_err(|e| e.to_string())?
+        }
+    };
+    if let Some(duration) = options.duration {
+        base.run.duration = duration;
+    }
+    let (rows, source) = match &options.cases {
+        Some(path) => (
+            read_case_table(path).map_err(|e| e.to_string())?,
+            path.display().to_string(),
+        ),
+        None => (vec![base_row()], String::new()),
+    };
+    let cases = rows
+        .iter()
+        .map(|row| row.case(&base, options.transient, &source))
+        .collect::<Result<Vec<Case>, _>>()
+        .map_err(|e| e.to_string())?;
+    let runs_path = runs_path(&options.out);
+    let (done, mut file) = runs_file::open(&runs_path).map_err(|e| e.to_string())?;
+    check_fingerprints(&cases, &done, &runs_path)?;
+
+    let seeds = options.first_seed..options.first_seed + options.seeds;
+    let jobs: Vec<Job> = (0..cases.len())
+        .flat_map(|case| seeds.clone().map(move |seed| Job { case, seed }))
+        .filter(|job| {
+            !done
+                .iter()
+                .any(|r| r.case == cases[job.case].name && r.seed == job.seed && r.result.is_ok())
+        })
+        .collect();
+    let total = cases.len() * options.seeds as usize;
+    println!(
+        "{} case(s) x {} seeds ({}..={}) = {total} runs; {} already in {}; {} to run on {} thread(s)",
+        cases.len(),
+        options.seeds,
+        seeds.start,
+        seeds.end - 1,
+        total - jobs.len(),
+        runs_path.display(),
+        jobs.len(),
+        options.threads
+    );
+    for case in &cases {
+        println!(
+            "  {}: {} s at {} s, transient {:.1} s",
+            case.name, case.config.run.duration, case.config.run.time_step, case.transient
+        );
+    }
+
+    let mut progress = Progress::new(jobs.len());
+    let mut write_error = None;
+    run_jobs(&cases, &jobs, options.threads, |event| {
+        if let Some(finished) = event {
+            let job = jobs[finished.job];
+            progress.failed += usize::from(finished.result.is_err());
+            let line =
+                runs_file::format_row(&runs_file::row(&cases[job.case], job.seed, finished.result));
+            if let Err(e) = file.write_all(line.as_bytes()).and_then(|()| file.flush()) {
+                write_error.get_or_insert(format!("{}: {e}", runs_path.display()));
+            }
+            progress.done += 1;
+        }
+        progress.show(false);
+    });
+    progress.show(true);
+    if let Some(e) = write_error {
+        return Err(e);
+    }
+
+    let text =
+        std::fs::read_to_string(&runs_path).map_err(|e| format!("{}: {e}", runs_path.display()))?;
+    let runs =
+        runs_file::parse(&text, &runs_path.display().to_string()).map_err(|e| e.to_string())?;
+    let summaries: Vec<CaseSummary> = cases
+        .iter()
+        .map(|case| CaseSummary::new(case, &runs, &seeds))
+        .collect();
+    write_summary(&options.out, &summaries, options.seeds)
+        .map_err(|e| format!("{}: {e}", options.out.display()))?;
+    print_summary(&summaries, options.seeds);
+    println!(
+        "summary written to {}, runs to {}",
+        options.out.display(),
+        runs_path.display()
+    );
+    let failed: usize = summaries.iter().map(|s| s.failed).sum();
+    if failed > 0 {
+        return Err(format!(
+            "{failed} of {total} runs failed (their errors are in {} and the summary)",
+            runs_path.display()
+        ));
+    }
+    Ok(())
+}
+
+/// The single case of a campaign without a case table.
+fn base_row() -> CaseRow {
+    CaseRow {
+        row: 1,
+        line: 1,
+        name: "base".into(),
+        values: Vec::new(),
+    }
+}
+
+fn check_fingerprints(cases: &[Case], done: &[RunRow], path: &Path) -> Result<(), String> {
+    for case in cases {
+        let fingerprint = case.fingerprint();
+        if let Some(other) = done
+            .iter()
+            .find(|r| r.case == case.name && r.result.is_ok() && r.fingerprint != fingerprint)
+        {
+            return Err(format!(
+                "{}: case '{}' was run with another configuration or transient (fingerprint \
+                 {}, now {fingerprint}); give another --out or remove the file",
+                path.display(),
+                case.name,
+                other.fingerprint
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// What the summary says about one case.
+struct CaseSummary {
+    name: String,
+    /// Per DOF and statistic, the values of the seeds done, in seed order.
+    values: [[Vec<f64>; 4]; 3],
+    failed: usize,
+    first_error: Option<String>,
+}
+
+impl CaseSummary {
+    fn new(case: &Case, runs: &[RunRow], seeds: &std::ops::Range<u64>) -> Self {
+        let mut mine: Vec<&RunRow> = runs
+            .iter()
+            .filter(|r| r.case == case.name && seeds.contains(&r.seed))
+            .collect();
+        mine.sort_by_key(|r| r.seed);
+        let mut values: [[Vec<f64>; 4]; 3] = Default::default();
+        let (mut failed, mut first_error) = (0, None);
+        for run in mine {
+            match &run.result {
+                Ok(stats) => {
+                    for (dof, s) in values.iter_mut().zip(stats) {
+                        for (list, v) in dof.iter_mut().zip(s.values()) {
+                            list.push(v);
+                        }
+                    }
+                }
+                Err(message) => {
+                    failed += 1;
+                    first_error.get_or_insert_with(|| format!("seed {}: {message}", run.seed));
+                }
+            }
+        }
+        CaseSummary {
+            name: case.name.clone(),
+            values,
+            failed,
+            first_error,
+        }
+    }
+
+    fn done(&self) -> usize {
+        self.values[0][0].len()
+    }
+
+    fn status(&self, requested: u64) -> &'static str {
+        match self.done() {
+            0 => "failed",
+            n if n as u64 == requested => "complete",
+            _ => "partial",
+        }
+    }
+}
+
+fn write_summary(path: &Path, summaries: &[CaseSummary], requested: u64) -> std::io::Result<()> {
+    let mut w = std::io::BufWriter::new(std::fs::File::create(path)?);
+    let mut header = "case,dof,unit,seeds_requested,seeds_done,seeds_failed,status".to_string();
+    for stat in STATISTICS {
+        header += &format!(",{stat},{stat}_se");
+    }
+    writeln!(w, "{header},error")?;
+    for s in summaries {
+        for ((dof, unit), stats) in DOFS.iter().zip(&s.values) {
+            write!(
+                w,
+                "{},{dof},{unit},{requested},{},{},{}",
+                s.name,
+                s.done(),
+                s.failed,
+                s.status(requested)
+            )?;
+            for list in stats {
+                match seed_statistics(list) {
+                    Some(m) => write!(
+                        w,
+                        ",{},{}",
+                        m.mean,
+                        m.standard_error.map_or(String::new(), |e| e.to_string())
+                    )?,
+                    None => write!(w, ",,")?,
+                }
+            }
+            let error = s.first_error.as_deref().unwrap_or_default();
+            if error.is_empty() {
+                writeln!(w, ",")?;
+            } else {
+                writeln!(w, ",\"{}\"", error.replace('"', "\"\""))?;
+            }
+        }
+    }
+    w.flush()
+}
+
+fn print_summary(summaries: &[CaseSummary], requested: u64) {
+    println!(
+        "{:<16} {:<11} {:>9} {:>24} {:>24} {:>24}",
+        "case", "dof", "seeds", "mean +- se", "rms +- se", "max +- se"
+    );
+    for s in summaries {
+        for ((dof, unit), stats) in DOFS.iter().zip(&s.values) {
+            let cells: Vec<String> = stats[..3]
+                .iter()
+                .map(|list| match seed_statistics(list) {
+                    Some(m) => match m.standard_error {
+                        Some(e) => format!("{:.4} +- {e:.4}", m.mean),
+                        None => format!("{:.4}", m.mean),
+                    },
+                    None => "-".into(),
+                })
+                .collect();
+            println!(
+                "{:<16} {:<11} {:>9} {:>24} {:>24} {:>24}",
+                s.name,
+                format!("{dof} [{unit}]"),
+                format!("{}/{requested}", s.done()),
+                cells[0],
+                cells[1],
+                cells[2]
+            );
+        }
+        if let Some(error) = &s.first_error {
+            println!("{:<16} {} run(s) failed; first: {error}", s.name, s.failed);
+        }
+    }
+}
+
+/// The progress line on stderr: on a terminal redrawn in place at most 4 times a second,
+/// otherwise one line every 10 s; always a last line.
+struct Progress {
+    total: usize,
+    done: usize,
+    failed: usize,
+    started: Instant,
+    shown: Option<Instant>,
+    terminal: bool,
+}
+
+impl Progress {
+    fn new(total: usize) -> Self {
+        Progress {
+            total,
+            done: 0,
+            failed: 0,
+            started: Instant::now(),
+            shown: None,
+            terminal: std::io::stderr().is_terminal(),
+        }
+    }
+
+    fn show(&mut self, last: bool) {
+        let interval = Duration::from_millis(if self.terminal { 250 } else { 10_000 });
+        if !last && self.shown.is_some_and(|t| t.elapsed() < interval) {
+            return;
+        }
+        self.shown = Some(Instant::now());
+        let elapsed = self.started.elapsed().as_secs_f64();
+        let rate = self.done as f64 / elapsed.max(1e-9);
+        let left = if self.done == 0 {
+            "time left unknown".to_string()
+        } else {
+            format!("{} left", clock((self.total - self.done) as f64 / rate))
+        };
+        let failed = if self.failed > 0 {
+            format!(" ({} failed)", self.failed)
+        } else {
+            String::new()
+        };
+        let line = format!(
+            "montecarlo: {}/{} runs{failed}, {rate:.2} runs/s, {} elapsed, {left}",
+            self.done,
+            self.total,
+            clock(elapsed)
+        );
+        let mut err = std::io::stderr().lock();
+        // Progress is best effort: a closed stderr must not stop the campaign.
+        let _ = if self.terminal {
+            write!(err, "\r{line:<100}{}", if last { "\n" } else { "" })
+        } else {
+            writeln!(err, "{line}")
+        };
+    }
+}
+
+/// `h:mm:ss` or `m:ss`.
+fn clock(seconds: f64) -> String {
+    let s = seconds.round() as u64;
+    if s >= 3600 {
+        format!("{}:{:02}:{:02}", s / 3600, s / 60 % 60, s % 60)
+    } else {
+        format!("{}:{:02}", s / 60, s % 60)
+    }
+}

@@ -1,0 +1,207 @@
+//! Monte Carlo campaigns: many seeds of one or many cases, on all cores.
+//!
+//! A [`Case`] is a complete [`Config`] (its seed is replaced per run) with the start-up
+//! transient to drop. [`run_seed`] simulates one (case, seed) and summarises surge, sway and
+//! yaw after the transient ([`DofStats`]); [`run_jobs`] runs a list of (case, seed) jobs on
+//! scoped threads that take the next job from a shared counter and hand each result to the
+//! calling thread as it finishes; [`seed_statistics`] is the mean over seeds and its
+//! standard error. The results depend only on (case, seed): not on the thread count or the
+//! order in which runs finish.
+//!
+//! [`cases`] reads the case table (CSV) and applies its overrides to a base configuration;
+//! [`runs_file`] writes and reads the per-run CSV that makes a campaign resumable.
+
+pub mod cases;
+pub mod runs_file;
+
+use crate::error::{Error, Result};
+use crate::stats::summarize;
+use crate::{Config, Simulation};
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::mpsc;
+use std::time::Duration;
+
+/// The degrees of freedom summarised, in order, with the unit of their statistics.
+pub const DOFS: [(&str, &str); 3] = [("surge", "m"), ("sway", "m"), ("yaw", "deg")];
+
+/// One case of a campaign.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Case {
+    /// Unique name (the case table's `name`, or `case<row>`).
+    pub name: String,
+    /// The configuration; `sea.seed` is set per run.
+    pub config: Config,
+    /// Start-up transient dropped from the statistics, s from the start of the run.
+    pub transient: f64,
+}
+
+impl Case {
+    /// A stable 64-bit FNV-1a hash of everything that determines the results except the
+    /// seed (the configuration with seed 0, and the transient), as 16 hex digits: the
+    /// per-run file stores it so that a resumed campaign refuses to mix configurations.
+    pub fn fingerprint(&self) -> String {
+        let mut config = self.config.clone();
+        config.sea.seed = 0;
+        let text = format!("{config:?} transient {:?}", self.transient);
+        let hash = text.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
+            (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+        });
+        format!("{hash:016x}")
+    }
+}
+
+/// Statistics of one DOF of one run after the transient: surge and sway in m, yaw in deg.
+/// `rms` is about the mean (see [`crate::stats::Summary`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DofStats {
+    pub mean: f64,
+    pub rms: f64,
+    pub max: f64,
+    pub min: f64,
+}
+
+impl DofStats {
+    /// The four statistics in the order mean, rms, max, min.
+    pub fn values(&self) -> [f64; 4] {
+        [self.mean, self.rms, self.max, self.min]
+    }
+}
+
+/// The names of [`DofStats::values`].
+pub const STATISTICS: [&str; 4] = ["mean", "rms", "max", "min"];
+
+/// Simulates `case` with `seed` from its start for its duration (no external force) and
+/// summarises (X, Y, theta) after the transient; yaw is reported in degrees.
+pub fn run_seed(case: &Case, seed: u64) -> Result<[DofStats; 3]> {
+    let mut config = case.config.clone();
+    config.sea.seed = seed;
+    let (duration, dt) = (config.run.duration, config.run.time_step);
+    let mut sim = Simulation::new(config)?;
+    let steps = (duration / dt).round() as usize;
+    let mut records: [Vec<f64>; 3] = std::array::from_fn(|_| Vec::with_capacity(steps + 1));
+    let mut push = |q: [f64; 3]| records.iter_mut().zip(q).for_each(|(r, v)| r.push(v));
+    push(sim.position());
+    for _ in 0..steps {
+        sim.step([0.0; 3])?;
+        push(sim.position());
+    }
+    let mut out = [DofStats {
+        mean: 0.0,
+        rms: 0.0,
+        max: 0.0,
+        min: 0.0,
+    }; 3];
+    for (i, record) in records.iter().enumerate() {
+        let s = summarize(record, dt, case.transient)?;
+        let scale = if i == 2 {
+            180.0 / std::f64::consts::PI
+        } else {
+            1.0
+        };
+        out[i] = DofStats {
+            mean: s.mean * scale,
+            rms: s.rms * scale,
+            max: s.max * scale,
+            min: s.min * scale,
+        };
+    }
+    Ok(out)
+}
+
+/// One run of a campaign: the index of its case and its seed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Job {
+    pub case: usize,
+    pub seed: u64,
+}
+
+/// A finished job: its index in the job list and the outcome (the error as text; a panic
+/// in the core becomes an error too, so one bad run never takes the campaign down).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Finished {
+    pub job: usize,
+    pub result: std::result::Result<[DofStats; 3], String>,
+}
+
+/// How often [`run_jobs`] calls back while no run finishes (for a progress display).
+pub const TICK: Duration = Duration::from_millis(250);
+
+/// Runs `jobs` on `threads` scoped threads (at least 1) sharing one job counter. On the
+/// calling thread, `on_event` receives `Some(finished)` as each run finishes (in finishing
+/// order) and `None` every [`TICK`] while nothing finishes. Returns when every job is done.
+pub fn run_jobs(
+    cases: &[Case],
+    jobs: &[Job],
+    threads: usize,
+    mut on_event: impl FnMut(Option<Finished>),
+) {
+    let next = AtomicUsize::new(0);
+    let (sender, receiver) = mpsc::channel();
+    std::thread::scope(|scope| {
+        for _ in 0..threads.max(1).min(jobs.len().max(1)) {
+            let sender = sender.clone();
+            let next = &next;
+            scope.spawn(move || loop {
+                let index = next.fetch_add(1, Ordering::Relaxed);
+                let Some(job) = jobs.get(index) else { break };
+                let result =
+                    catch_unwind(AssertUnwindSafe(|| run_seed(&cases[job.case], job.seed)))
+                        .unwrap_or_else(|panic| {
+                            Err(Error::invalid("run", "panic", panic_text(&*panic)))
+                        })
+                        .map_err(|e| e.to_string());
+                if sender.send(Finished { job: index, result }).is_err() {
+                    break;
+                }
+            });
+        }
+        drop(sender);
+        loop {
+            match receiver.recv_timeout(TICK) {
+                Ok(finished) => on_event(Some(finished)),
+                Err(mpsc::RecvTimeoutError::Timeout) => on_event(None),
+                Err(mpsc::RecvTimeoutError::Disconnected) => break,
+            }
+        }
+    });
+}
+
+fn panic_text(panic: &(dyn std::any::Any + Send)) -> String {
+    let message = panic
+        .downcast_ref::<&str>()
+        .map(|s| s.to_string())
+        .or_else(|| panic.downcast_ref::<String>().cloned())
+        .unwrap_or_default();
+    format!("the run panicked: {message}")
+}
+
+/// Mean over seeds of one statistic and its sampling uncertainty.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SeedStatistics {
+    /// Number of seeds.
+    pub n: usize,
+    /// Arithmetic mean of the values, summed in the order given.
+    pub mean: f64,
+    /// Standard error of the mean, s / sqrt(n) with the sample standard deviation
+    /// s = sqrt(sum (x - mean)^2 / (n - 1)); `None` for fewer than two seeds.
+    pub standard_error: Option<f64>,
+}
+
+/// The mean of `values` (one per seed) and its standard error; `None` when empty.
+pub fn seed_statistics(values: &[f64]) -> Option<SeedStatistics> {
+    if values.is_empty() {
+        return None;
+    }
+    let n = values.len();
+    let mean = values.iter().sum::<f64>() / n as f64;
+    let standard_error = (n >= 2).then(|| {
+        let variance = values.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1) as f64;
+        (variance / n as f64).sqrt()
+    });
+    Some(SeedStatistics {
+        n,
+        mean,
+        standard_error,
+    })
+}

@@ -1,0 +1,258 @@
+//! The per-run CSV of a campaign: one line per finished run, appended and flushed as runs
+//! finish, so that an interrupted campaign keeps them and a restart skips them.
+//!
+//! Columns: `case`, `seed`, `fingerprint` ([`Case::fingerprint`]), `status` (`ok` or
+//! `failed`), then for surge, sway and yaw the mean, rms, max and min after the transient
+//! (`surge_mean_m`, ..., `yaw_min_deg`; empty for a failed run), and `error` (the message
+//! of a failed run, in double quotes with inner quotes doubled; empty otherwise). Numbers
+//! are written in Rust's shortest form that reads back to the same bits.
+//!
+//! Reading keeps the last line of each (case, seed): a run that failed and was run again
+//! counts once. A last line without its newline (the process was killed while writing it)
+//! is dropped, and cut off before anything is appended.
+
+use super::{Case, DofStats, DOFS, STATISTICS};
+use crate::error::{Error, Result};
+use std::fs::{File, OpenOptions};
+use std::io::{Seek, SeekFrom, Write};
+use std::path::Path;
+
+/// One line of the per-run file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunRow {
+    pub case: String,
+    pub seed: u64,
+    pub fingerprint: String,
+    pub result: std::result::Result<[DofStats; 3], String>,
+}
+
+/// The header line (without its newline).
+pub fn header() -> String {
+    let mut columns = vec![
+        "case".to_string(),
+        "seed".into(),
+        "fingerprint".into(),
+        "status".into(),
+    ];
+    for (dof, unit) in DOFS {
+        for stat in STATISTICS {
+            columns.push(format!("{dof}_{stat}_{unit}"));
+        }
+    }
+    columns.push("error".into());
+    columns.join(",")
+}
+
+/// A line of the file, newline included.
+pub fn format_row(row: &RunRow) -> String {
+    let mut fields = vec![
+        row.case.clone(),
+        row.seed.to_string(),
+        row.fingerprint.clone(),
+    ];
+    match &row.result {
+        Ok(stats) => {
+            fields.push("ok".into());
+            for s in stats {
+                fields.extend(s.values().iter().map(|v| v.to_string()));
+            }
+            fields.push(String::new());
+        }
+        Err(message) => {
+            fields.push("failed".into());
+            fields.extend(std::iter::repeat_n(String::new(), 12));
+            fields.push(quote(message));
+        }
+    }
+    fields.join(",") + "\n"
+}
+
+/// A row for `case` and `seed`.
+pub fn row(case: &Case, seed: u64, result: std::result::Result<[DofStats; 3], String>) -> RunRow {
+    RunRow {
+        case: case.name.clone(),
+        seed,
+        fingerprint: case.fingerprint(),
+        result,
+    }
+}
+
+fn quote(text: &str) -> String {
+    format!("\"{}\"", text.replace('"', "\"\""))
+}
+
+/// Splits a CSV line into fields, honouring double quotes.
+fn split(line: &str) -> Vec<String> {
+    let mut fields = vec![String::new()];
+    let mut quoted = false;
+    let mut chars = line.chars().peekable();
+    while let Some(c) = chars.next() {
+        let field = fields.last_mut().expect("at least one field");
+        match (c, quoted) {
+            ('"', true) if chars.peek() == Some(&'"') => {
+                field.push('"');
+                chars.next();
+            }
+            ('"', _) => quoted = !quoted,
+            (',', false) => fields.push(String::new()),
+            (c, _) => field.push(c),
+        }
+    }
+    fields
+}
+
+/// Opens (or creates) the per-run file for appending and returns the runs it already holds
+/// (the last line of each (case, seed), in file order).
+pub fn open(path: &Path) -> Result<(Vec<RunRow>, File)> {
+    let io = |e: std::io::Error| Error::Io {
+        path: path.display().to_string(),
+        message: e.to_string(),
+    };
+    let text = match std::fs::read_to_string(path) {
+        Ok(text) => text,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => String::new(),
+        Err(e) => return Err(io(e)),
+    };
+    let complete = text.rfind('\n').map_or(0, |i| i + 1);
+    let runs = parse(&text[..complete], &path.display().to_string())?;
+    let mut file = OpenOptions::new()
+        .read(true)
+        .write(true)
+        .create(true)
+        .truncate(false)
+        .open(path)
+        .map_err(io)?;
+    file.set_len(complete as u64).map_err(io)?;
+    file.seek(SeekFrom::End(0)).map_err(io)?;
+    if complete == 0 {
+        writeln!(file, "{}", header()).map_err(io)?;
+        file.flush().map_err(io)?;
+    }
+    Ok((runs, file))
+}
+
+/// Reads the runs of a per-run file's text; `source` names it in errors.
+pub fn parse(text: &str, source: &str) -> Result<Vec<RunRow>> {
+    let error = |line: usize, message: String| Error::Parse {
+        path: source.to_string(),
+        line: Some(line),
+        message,
+    };
+    let mut lines = text.lines().enumerate().map(|(i, l)| (i + 1, l));
+    match lines.next() {
+        None => return Ok(Vec::new()),
+        Some((_, first)) if first == header() => {}
+        Some(_) => {
+            return Err(error(
+                1,
+                format!(
+                    "not a per-run file of this version: the header must be {}",
+                    header()
+                ),
+            ))
+        }
+    }
+    let mut runs: Vec<RunRow> = Vec::new();
+    for (line, text) in lines {
+        let fields = split(text);
+        if fields.len() != 17 {
+            return Err(error(line, format!("{} fields, expected 17", fields.len())));
+        }
+        let seed = fields[1]
+            .parse()
+            .map_err(|_| error(line, format!("seed '{}' is not a whole number", fields[1])))?;
+        let result = match fields[3].as_str() {
+            "ok" => {
+                let mut v = [0.0; 12];
+                for (k, value) in v.iter_mut().enumerate() {
+                    *value = fields[4 + k].parse().map_err(|_| {
+                        error(
+                            line,
+                            format!("field {} '{}' is not a number", 5 + k, fields[4 + k]),
+                        )
+                    })?;
+                }
+                Ok(std::array::from_fn(|d| DofStats {
+                    mean: v[4 * d],
+                    rms: v[4 * d + 1],
+                    max: v[4 * d + 2],
+                    min: v[4 * d + 3],
+                }))
+            }
+            "failed" => Err(fields[16].clone()),
+            other => {
+                return Err(error(
+                    line,
+                    format!("status '{other}' is neither 'ok' nor 'failed'"),
+                ))
+            }
+        };
+        let row = RunRow {
+            case: fields[0].clone(),
+            seed,
+            fingerprint: fields[2].clone(),
+            result,
+        };
+        runs.retain(|r| !(r.case == row.case && r.seed == row.seed));
+        runs.push(row);
+    }
+    Ok(runs)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rows_read_back_bit_for_bit() {
+        let stats = [
+            DofStats {
+                mean: 0.1 + 0.2,
+                rms: 1.0 / 3.0,
+                max: 1e-300,
+                min: -2.5e10,
+            },
+            DofStats {
+                mean: 0.0,
+                rms: 0.0,
+                max: 0.0,
+                min: -0.0,
+            },
+            DofStats {
+                mean: std::f64::consts::PI,
+                rms: 7.0,
+                max: 8.0,
+                min: -9.0,
+            },
+        ];
+        let ok = RunRow {
+            case: "sea 1".into(),
+            seed: 7,
+            fingerprint: "00ff".into(),
+            result: Ok(stats),
+        };
+        let failed = RunRow {
+            case: "bad".into(),
+            seed: u64::MAX,
+            fingerprint: "abcd".into(),
+            result: Err("invalid x = \"-1\", y: must be, positive".into()),
+        };
+        let text = format!("{}\n{}{}", header(), format_row(&ok), format_row(&failed));
+        assert_eq!(
+            parse(&text, "runs.csv").unwrap(),
+            vec![ok.clone(), failed.clone()]
+        );
+        // A later line for the same (case, seed) replaces the earlier one.
+        let rerun = RunRow {
+            result: Ok(stats),
+            ..failed
+        };
+        let again = format!("{text}{}", format_row(&rerun));
+        assert_eq!(parse(&again, "runs.csv").unwrap(), vec![ok.clone(), rerun]);
+        let bad = format!("{text}{}", format_row(&ok).replace(",7,", ",u,"));
+        assert!(parse(&bad, "runs.csv")
+            .unwrap_err()
+            .to_string()
+            .contains("runs.csv:4: seed 'u'"));
+    }
+}
