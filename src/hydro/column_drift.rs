@@ -201,6 +201,16 @@ fn validate_inputs(
         require_finite(&format!("platform.columns[{i}].y"), c.y)?;
         require_positive(&format!("platform.columns[{i}].diameter"), c.diameter)?;
     }
+    validate_grid(environment, omegas, headings)
+}
+
+/// Environment, frequencies and headings of a drift request (shared with
+/// [`crate::hydro::columns`]).
+pub(crate) fn validate_grid(
+    environment: &Environment,
+    omegas: &[f64],
+    headings: &[f64],
+) -> Result<()> {
     require_positive("environment.gravity", environment.gravity)?;
     require_positive("environment.water_density", environment.water_density)?;
     if omegas.is_empty() {

@@ -64,7 +64,7 @@ mod scattering;
 use crate::config::{Column, Environment};
 use crate::error::{require_finite, require_positive, Error, Result};
 use crate::hydro::aranha::{aranha_coefficients, ColumnLayout};
-use crate::hydro::column_drift::MAX_KA;
+use crate::hydro::column_drift::{validate_grid, MAX_KA};
 use crate::hydro::{DriftRow, DriftTable};
 use drift::{near_field_form, real_parts, FarField};
 use nalgebra::DMatrix;
@@ -591,25 +591,6 @@ fn geometric_modes(cylinders: &[Cylinder]) -> usize {
     }
     let modes = MODE_TOLERANCE.ln() / (2.0 * q.ln());
     (modes.ceil() as usize).min(MAX_GEOMETRIC_MODES)
-}
-
-/// Environment, frequencies and headings of a request.
-fn validate_grid(environment: &Environment, omegas: &[f64], headings: &[f64]) -> Result<()> {
-    require_positive("environment.gravity", environment.gravity)?;
-    require_positive("environment.water_density", environment.water_density)?;
-    if omegas.is_empty() {
-        return Err(Error::invalid("drift.omegas", "[]", "no frequencies"));
-    }
-    for (i, &w) in omegas.iter().enumerate() {
-        require_positive(&format!("drift.omegas[{i}]"), w)?;
-    }
-    if headings.is_empty() {
-        return Err(Error::invalid("drift.headings", "[]", "no headings"));
-    }
-    for (i, &h) in headings.iter().enumerate() {
-        require_finite(&format!("drift.headings[{i}]"), h)?;
-    }
-    Ok(())
 }
 
 #[cfg(test)]
