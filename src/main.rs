@@ -141,31 +141,33 @@ fn run_to_end(sim: &mut Simulation) -> Result<Vec<Outputs>, String> {
 
 fn print_summary(sim: &Simulation, outputs: &[Outputs], transient: f64) -> Result<(), String> {
     let dt = sim.config().run.time_step;
-    println!(
-        "statistics after a transient of {transient:.0} s ({} samples at {dt} s):",
-        outputs.len()
-    );
-    println!(
-        "{:<10} {:>14} {:>14} {:>14} {:>14}",
-        "DOF", "mean", "rms", "max", "min"
-    );
     let rows: [(&str, f64, &str); 3] = [
         ("surge", 1.0, "m"),
         ("sway", 1.0, "m"),
         ("yaw", 180.0 / std::f64::consts::PI, "deg"),
     ];
-    for (i, (name, scale, unit)) in rows.iter().enumerate() {
-        let record: Vec<f64> = outputs.iter().map(|o| o.position[i] * scale).collect();
-        let Summary {
-            mean,
-            rms,
-            max,
-            min,
-            ..
-        } = summarize(&record, dt, transient).map_err(|e| e.to_string())?;
+    let summaries = (0..3)
+        .map(|i| {
+            let record: Vec<f64> = outputs.iter().map(|o| o.position[i] * rows[i].1).collect();
+            summarize(&record, dt, transient).map_err(|e| e.to_string())
+        })
+        .collect::<Result<Vec<Summary>, String>>()?;
+    println!(
+        "statistics after a transient of {transient:.0} s ({} samples at {dt} s):",
+        summaries[0].samples
+    );
+    println!(
+        "{:<10} {:>14} {:>14} {:>14} {:>14}",
+        "DOF", "mean", "rms", "max", "min"
+    );
+    for ((name, _, unit), s) in rows.iter().zip(&summaries) {
         println!(
-            "{:<10} {mean:>14.4} {rms:>14.4} {max:>14.4} {min:>14.4}",
-            format!("{name} [{unit}]")
+            "{:<10} {:>14.4} {:>14.4} {:>14.4} {:>14.4}",
+            format!("{name} [{unit}]"),
+            s.mean,
+            s.rms,
+            s.max,
+            s.min
         );
     }
     Ok(())

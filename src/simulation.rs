@@ -300,6 +300,16 @@ impl Simulation {
                 "holds non-finite values",
             ));
         }
+        if snapshot.step != self.config.run.time_step {
+            return Err(Error::invalid(
+                "snapshot.step",
+                snapshot.step,
+                format!(
+                    "differs from this simulation's run.time_step = {}",
+                    self.config.run.time_step
+                ),
+            ));
+        }
         self.records.clock.locate(snapshot.time())?;
         self.state = snapshot.clone();
         Ok(())

@@ -73,9 +73,21 @@ fn non_positive_sea_state_parameters_are_refused() {
         })
     };
     refused(gamma(0.5), "sea.spectrum.gamma", "0.5");
+    // A_gamma = 1 - 0.287 ln(gamma) <= 0 above 32.6: the spectrum would turn negative.
+    refused(gamma(40.0), "sea.spectrum.gamma", "40");
     assert!(
         Simulation::new(gamma(1.0)).is_ok(),
         "gamma = 1 is PM-like, valid"
+    );
+}
+
+/// A duration whose records could not be allocated is a clear error, not an abort.
+#[test]
+fn an_absurd_duration_is_refused() {
+    refused(
+        with(|c| c.run.duration = 1.0e12),
+        "run.duration",
+        "1000000000000",
     );
 }
 

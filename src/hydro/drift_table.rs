@@ -11,6 +11,9 @@ use std::f64::consts::PI;
 
 /// Relative tolerance when matching headings and frequencies.
 const GRID_TOLERANCE: f64 = 1e-9;
+/// How closely a heading 360 deg after the first must repeat the first's drift (relative to
+/// the table's largest value) to be accepted as the same direction listed twice.
+const CLOSING_HEADING_TOLERANCE: f64 = 1e-6;
 
 /// One row of a drift table as a user writes it.
 #[derive(Debug, Clone, PartialEq)]
@@ -116,12 +119,55 @@ impl DriftTable {
                 "headings span more than 360 deg",
             ));
         }
-        Ok(DriftTable {
+        let mut table = DriftTable {
             omegas,
             headings,
             drift,
             damping,
-        })
+        };
+        table.drop_closing_heading()?;
+        Ok(table)
+    }
+
+    /// A table listing both ends of the circle (0 and 360 deg, or -180 and 180 deg) lists one
+    /// direction twice: its last heading's values must equal the first's (relative
+    /// [`CLOSING_HEADING_TOLERANCE`] of the largest value), and that duplicate is dropped, so
+    /// the headings stay distinct directions and wrap around.
+    fn drop_closing_heading(&mut self) -> Result<()> {
+        let n = self.headings.len();
+        let (first, last) = (self.headings[0], self.headings[n - 1]);
+        if n < 2 || (last - first - 2.0 * PI).abs() > GRID_TOLERANCE * (1.0 + last.abs()) {
+            return Ok(());
+        }
+        let nw = self.omegas.len();
+        let scale = self
+            .drift
+            .iter()
+            .flatten()
+            .fold(0.0f64, |m, v| m.max(v.abs()))
+            .max(f64::MIN_POSITIVE);
+        for iw in 0..nw {
+            let (a, b) = (self.drift[iw], self.drift[(n - 1) * nw + iw]);
+            if a.iter()
+                .zip(&b)
+                .any(|(x, y)| (x - y).abs() > CLOSING_HEADING_TOLERANCE * scale)
+            {
+                return Err(Error::invalid(
+                    "drift.heading",
+                    format!("{} and {} deg", first.to_degrees(), last.to_degrees()),
+                    format!(
+                        "are the same direction but their drift differs at omega = {} rad/s",
+                        self.omegas[iw]
+                    ),
+                ));
+            }
+        }
+        self.headings.pop();
+        self.drift.truncate((n - 1) * nw);
+        if let Some(damping) = self.damping.as_mut() {
+            damping.truncate((n - 1) * nw);
+        }
+        Ok(())
     }
 
     /// Frequencies of the grid, rad/s, increasing.
@@ -258,14 +304,14 @@ impl DriftTable {
                 (h.hi * nw + w.hi, h.frac * w.frac),
             ];
             let mut drift = [0.0; 3];
-            for &(node, weight) in &corners {
+            for &(node, weight) in corners.iter().filter(|(_, w)| *w != 0.0) {
                 for (d, v) in drift.iter_mut().zip(self.drift[node]) {
                     *d += weight * v;
                 }
             }
             let damping = self.damping.as_ref().map(|table| {
                 let mut b = [[0.0; 3]; 3];
-                for &(node, weight) in &corners {
+                for &(node, weight) in corners.iter().filter(|(_, w)| *w != 0.0) {
                     for (row, node_row) in b.iter_mut().zip(&table[node]) {
                         for (v, n) in row.iter_mut().zip(node_row) {
                             *v += weight * n;
@@ -485,6 +531,39 @@ mod tests {
             }
         }
         DriftTable::from_rows(&rows).unwrap()
+    }
+
+    /// 0 and 360 deg listed both: the duplicate is dropped and the table wraps, so Aranha's
+    /// heading derivative stays finite at head seas; a mismatched closing heading is refused.
+    #[test]
+    fn both_ends_of_the_circle_are_one_direction() {
+        let rows_for = |skew: f64| -> Vec<DriftRow> {
+            let mut rows = Vec::new();
+            for ih in 0..=12 {
+                let heading = (30.0 * ih as f64).to_radians();
+                for iw in 1..=5 {
+                    let omega = 0.2 * iw as f64;
+                    let f = 1.0e4 * omega * omega + if ih == 12 { skew } else { 0.0 };
+                    rows.push(DriftRow {
+                        omega,
+                        heading,
+                        drift: [f * heading.cos(), f * heading.sin(), 0.0],
+                        damping: None,
+                    });
+                }
+            }
+            rows
+        };
+        let t = DriftTable::from_rows(&rows_for(0.0)).unwrap();
+        assert_eq!(t.headings().len(), 12);
+        assert!(t.is_periodic_in_heading());
+        let b = crate::hydro::aranha::aranha_damping(&t, 9.80665, &[]).unwrap();
+        let at_head_seas = b.damping(0.5, 0.0).unwrap().unwrap();
+        assert!(at_head_seas.iter().flatten().all(|v| v.is_finite()));
+        let err = DriftTable::from_rows(&rows_for(50.0))
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("same direction"), "{err}");
     }
 
     #[test]

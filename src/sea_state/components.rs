@@ -15,6 +15,9 @@ use std::f64::consts::PI;
 /// Extra samples past the run's end so that the last RK4 stage and the 4-point
 /// interpolation stencil stay inside the record.
 const RECORD_TAIL_SAMPLES: usize = 3;
+/// Longest record accepted (2^24 samples: 97 days at 0.5 s), so that a huge duration is a
+/// clear error instead of an allocation failure that would abort the process.
+const MAX_RECORD_SAMPLES: usize = 1 << 24;
 
 /// The common time and frequency grid of every record: N samples at spacing dt, and the
 /// wave components n = first .. first + count - 1 at omega_n = n d_omega.
@@ -39,7 +42,18 @@ impl FrequencyGrid {
     /// components cover the band [omega_min, omega_max]. The length is the smallest
     /// 2^a 3^b 5^c 7^d that is long enough, so the FFTs stay fast.
     pub fn new(start_time: f64, duration: f64, dt: f64, band: (f64, f64)) -> Result<Self> {
-        let needed = (duration / dt).ceil() as usize + RECORD_TAIL_SAMPLES;
+        let samples = (duration / dt).ceil();
+        if !(samples.is_finite() && samples <= MAX_RECORD_SAMPLES as f64) {
+            return Err(Error::invalid(
+                "run.duration",
+                duration,
+                format!(
+                    "needs {samples} record samples at {dt} s; at most {MAX_RECORD_SAMPLES} \
+                     (about 128 MiB per record) are allowed: split the run or raise the time step"
+                ),
+            ));
+        }
+        let needed = samples as usize + RECORD_TAIL_SAMPLES;
         let len = smooth_length_at_least(needed);
         let d_omega = 2.0 * PI / (len as f64 * dt);
         let first = ((band.0 / d_omega).ceil() as usize).max(1);

@@ -12,7 +12,8 @@ pub use spreading::{Direction, Spreading};
 use crate::error::{require_finite, Error, Result};
 
 /// Default lower edge of the simulated band, as a fraction of the peak frequency.
-/// JONSWAP and PM densities at 0.5 wp are below 1e-8 of the peak.
+/// The PM and JONSWAP densities at 0.5 wp are about 2e-7 and 1e-7 of the peak, and the
+/// variance below it is a fraction e^-20 (2e-9) of m0.
 const DEFAULT_BAND_LOW_RATIO: f64 = 0.5;
 /// Default upper edge of the simulated band, as a multiple of the peak frequency.
 /// The PM tail above 4 wp holds 1.25 / 4^4 = 0.5 % of m0.

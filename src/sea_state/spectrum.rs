@@ -19,6 +19,10 @@ pub enum Spectrum {
     Tabulated { omega: Vec<f64>, density: Vec<f64> },
 }
 
+/// Largest accepted peak enhancement factor: DNV-RP-C205 fits A_gamma for gamma up to 7;
+/// 10 leaves room for narrow swell spectra while A_gamma stays well above zero (0.34).
+const MAX_GAMMA: f64 = 10.0;
+
 /// DNV-RP-C205 3.5.5.5: gamma when none is given, from Tp / sqrt(Hs) (s / m^0.5).
 pub fn dnv_default_gamma(hs: f64, tp: f64) -> f64 {
     let ratio = tp / hs.sqrt();
@@ -90,6 +94,17 @@ impl Spectrum {
                             "sea.spectrum.gamma",
                             g,
                             "must be at least 1",
+                        ));
+                    }
+                    if *g > MAX_GAMMA {
+                        return Err(Error::invalid(
+                            "sea.spectrum.gamma",
+                            g,
+                            format!(
+                                "must be at most {MAX_GAMMA}: DNV's normalisation A_gamma = \
+                                 1 - 0.287 ln(gamma) is fitted for 1 <= gamma <= 7 and is not \
+                                 positive above 32.6"
+                            ),
                         ));
                     }
                 }
