@@ -97,6 +97,23 @@ fn pack(root: &Path, library: &Path, resources: &Path, fmu_path: &Path) -> Resul
     zip::write_zip(&mut file, &entries).map_err(|e| format!("{}: {e}", fmu_path.display()))
 }
 
+/// `file://` URI of an absolute path, percent-encoding every byte outside RFC 3986's
+/// unreserved set and '/', so that paths with spaces or '%' arrive intact.
+fn file_uri(path: &Path) -> Result<String, String> {
+    let text = path
+        .to_str()
+        .ok_or_else(|| format!("{} is not UTF-8", path.display()))?;
+    let mut uri = String::from("file://");
+    for byte in text.bytes() {
+        if byte.is_ascii_alphanumeric() || b"/-._~".contains(&byte) {
+            uri.push(byte as char);
+        } else {
+            uri.push_str(&format!("%{byte:02X}"));
+        }
+    }
+    Ok(uri)
+}
+
 /// The README as a preformatted HTML page.
 fn documentation(readme: &str) -> String {
     let escaped = readme
@@ -128,13 +145,7 @@ fn check_by_running(fmu_path: &Path, unpack_dir: &Path) -> Result<(), String> {
     let xml = String::from_utf8(entry("modelDescription.xml")?).map_err(|e| e.to_string())?;
     let description = master::ModelDescription::parse(xml)?;
     let fmu = master::Fmu::load(&library)?;
-    let uri = format!(
-        "file://{}",
-        resources
-            .canonicalize()
-            .map_err(|e| e.to_string())?
-            .display()
-    );
+    let uri = file_uri(&resources.canonicalize().map_err(|e| e.to_string())?)?;
     let names = ["X", "Y", "theta"];
     let started = std::time::Instant::now();
     let samples = master::run(
@@ -161,4 +172,17 @@ fn check_by_running(fmu_path: &Path, unpack_dir: &Path) -> Result<(), String> {
         println!("{name:<10} {mean:>12.4} {rms:>12.4} {max:>12.4}");
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn resource_uris_are_percent_encoded() {
+        assert_eq!(
+            file_uri(Path::new("/tmp/a b/100%/res")).unwrap(),
+            "file:///tmp/a%20b/100%25/res"
+        );
+    }
 }

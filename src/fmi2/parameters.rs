@@ -295,6 +295,9 @@ fn percent_decode(s: &str) -> Option<String> {
     while i < bytes.len() {
         if bytes[i] == b'%' {
             let hex = s.get(i + 1..i + 3)?;
+            if !hex.bytes().all(|b| b.is_ascii_hexdigit()) {
+                return None;
+            }
             out.push(u8::from_str_radix(hex, 16).ok()?);
             i += 3;
         } else {
@@ -339,6 +342,7 @@ mod tests {
             "file:relative/resources",
             "file:///bad%2",
             "file:///bad%zz",
+            "file:///bad%+1",
             "file:///not-utf8%ff",
             "/plain/path",
             "",
