@@ -31,11 +31,7 @@ fn firewall<R>(fallback: R, f: impl FnOnce() -> R) -> R {
 
 /// The text of a panic payload.
 fn panic_text(payload: &(dyn std::any::Any + Send)) -> String {
-    payload
-        .downcast_ref::<&str>()
-        .map(|s| s.to_string())
-        .or_else(|| payload.downcast_ref::<String>().cloned())
-        .unwrap_or_else(|| "unknown panic".into())
+    crate::error::panic_message(payload).unwrap_or_else(|| "unknown panic".into())
 }
 
 /// The body of every function that takes an instance: NULL check, state check, the work,

@@ -148,11 +148,7 @@ pub fn mismatch(found: u64, expected: u64) -> Error {
 /// the configuration (embedded, resources, a file at any path) does not enter, only its
 /// content, so a state moves between processes that unpacked the FMU in different places.
 pub fn fingerprint(config: &Config) -> u64 {
-    const OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
-    const PRIME: u64 = 0x0000_0100_0000_01b3;
-    format!("{config:?}")
-        .bytes()
-        .fold(OFFSET, |h, b| (h ^ u64::from(b)).wrapping_mul(PRIME))
+    crate::error::fnv1a_64(&format!("{config:?}"))
 }
 
 #[cfg(test)]

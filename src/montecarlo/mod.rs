@@ -44,10 +44,7 @@ impl Case {
         let mut config = self.config.clone();
         config.sea.seed = 0;
         let text = format!("{config:?} transient {:?}", self.transient);
-        let hash = text.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
-            (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
-        });
-        format!("{hash:016x}")
+        format!("{:016x}", crate::error::fnv1a_64(&text))
     }
 }
 
@@ -168,11 +165,7 @@ pub fn run_jobs(
 }
 
 fn panic_text(panic: &(dyn std::any::Any + Send)) -> String {
-    let message = panic
-        .downcast_ref::<&str>()
-        .map(|s| s.to_string())
-        .or_else(|| panic.downcast_ref::<String>().cloned())
-        .unwrap_or_default();
+    let message = crate::error::panic_message(panic).unwrap_or_default();
     format!("the run panicked: {message}")
 }
 
