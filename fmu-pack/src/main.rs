@@ -10,6 +10,7 @@ mod unzip;
 mod zip;
 
 use slowdrift::config::default_platform::{write_resources, RESOURCE_CONFIG, RESOURCE_DRIFT};
+use slowdrift::stats::summarize;
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
 
@@ -162,14 +163,13 @@ fn check_by_running(fmu_path: &Path, unpack_dir: &Path) -> Result<(), String> {
         "{:<10} {:>12} {:>12} {:>12}",
         "output", "mean", "rms", "max"
     );
-    let skip = (TRANSIENT / COMMUNICATION_STEP) as usize;
     for (name, values) in names.iter().zip(&samples) {
-        let kept = &values[skip.min(values.len())..];
-        let n = kept.len().max(1) as f64;
-        let mean = kept.iter().sum::<f64>() / n;
-        let rms = (kept.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / n).sqrt();
-        let max = kept.iter().cloned().fold(f64::MIN, f64::max);
-        println!("{name:<10} {mean:>12.4} {rms:>12.4} {max:>12.4}");
+        // Sample m is the output after step m + 1; the same samples as the CLI's statistics.
+        let s = summarize(values, COMMUNICATION_STEP, TRANSIENT).map_err(|e| e.to_string())?;
+        println!(
+            "{name:<10} {:>12.4} {:>12.4} {:>12.4}",
+            s.mean, s.rms, s.max
+        );
     }
     Ok(())
 }
