@@ -20,7 +20,7 @@ libcosimc):
   the wave realisation differ: a different but equally valid sea.)
 - it ignores Enumeration variables ("FMI 2.0 Enumeration variable type not supported,
   variable with name dragModel will be ignored", the same for driftDamping): those two
-  parameters cannot be set from libcosim and keep their start values (combined drag, Aranha
+  parameters cannot be set from libcosim and keep their start values (combined drag, table
   damping). test_libcosim_variables pins this.
 - libcosimpy's time_series_real_samples trims its result by counting zero step numbers in
   the returned array, which also drops a real step 0; samples are therefore read from
