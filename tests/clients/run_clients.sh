@@ -41,6 +41,11 @@ if [[ ! -f "$fmu" ]]; then
     exit 1
 fi
 
+# libcosim unpacks FMUs under $TMPDIR and cannot fall back when it does not exist (fmpy's
+# Python tempfile can): give every master a temporary directory that exists.
+export TMPDIR="$target_dir/client-tmp"
+mkdir -p "$TMPDIR"
+
 export SLOWDRIFT_FMU="$fmu"
 export SLOWDRIFT_REQUIRE_FMU=1
 # exec: pytest's exit status is the script's.

@@ -22,6 +22,10 @@ libcosimc):
   variable with name dragModel will be ignored", the same for driftDamping): those two
   parameters cannot be set from libcosim and keep their start values (combined drag, table
   damping). test_libcosim_variables pins this.
+- it unpacks the FMU under std::filesystem::temp_directory_path(), which is $TMPDIR when that
+  is set, and fails (libcosimpy then crashes on the NULL slave) when $TMPDIR does not exist,
+  where Python's tempfile (fmpy) quietly falls back to /tmp. run_clients.sh therefore gives
+  the masters a TMPDIR of its own under the target directory.
 - libcosimpy's time_series_real_samples trims its result by counting zero step numbers in
   the returned array, which also drops a real step 0; samples are therefore read from
   step 1 (the state after the first step) on.
@@ -48,10 +52,14 @@ def execution(fmu, md):
     from libcosimpy.CosimExecution import CosimExecution
     from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
     from libcosimpy.CosimSlave import CosimLocalSlave
+    from libcosimpy._internal import get_last_error_message
 
     log_output_level(CosimLogLevel.WARNING)
     ex = CosimExecution.from_step_size(step_size=STEP_NS)
     slave = CosimLocalSlave(fmu_path=fmu, instance_name="slowdrift")
+    # libcosimpy passes a NULL slave on to add_local_slave, which then crashes the process:
+    # check it here so that a failed import is a test failure with libcosim's reason.
+    assert slave.ptr(), f"libcosim could not import the FMU: {get_last_error_message()}"
     index = ex.add_local_slave(local_slave=slave)
     assert index >= 0, "libcosim could not load the FMU"
     return ex, slave, index
