@@ -827,3 +827,50 @@ fn misuse_leaves_a_neighbour_untouched() {
     }
     assert_eq!(state_of(&neighbour), Some(MachineState::StepComplete));
 }
+
+/// A status this FMU cannot give answers fmi2Discard, as FMI 2.0.4 section 4.2.3 asks ("If
+/// a status is required which cannot be retrieved by the slave it returns fmi2Discard"),
+/// with a logStatusDiscard line, and leaves the instance where it was: the run goes on.
+#[test]
+fn unanswerable_status_queries_discard_and_change_nothing() {
+    type Query = (&'static str, fn(fmi2Component) -> fmi2Status);
+    let queries: [Query; 5] = [
+        ("fmi2GetStatus", |c| {
+            let mut v = fmi2Status::fmi2OK;
+            unsafe { fmi2GetStatus(c, fmi2StatusKind::fmi2DoStepStatus, &mut v) }
+        }),
+        ("fmi2GetRealStatus", |c| {
+            let mut v = 0.0;
+            unsafe { fmi2GetRealStatus(c, fmi2StatusKind::fmi2Terminated, &mut v) }
+        }),
+        ("fmi2GetIntegerStatus", |c| {
+            let mut v = 0;
+            unsafe { fmi2GetIntegerStatus(c, fmi2StatusKind::fmi2DoStepStatus, &mut v) }
+        }),
+        ("fmi2GetBooleanStatus", |c| {
+            let mut v = 0;
+            unsafe { fmi2GetBooleanStatus(c, fmi2StatusKind::fmi2LastSuccessfulTime, &mut v) }
+        }),
+        ("fmi2GetStringStatus", |c| {
+            let mut v: fmi2String = ptr::null();
+            unsafe { fmi2GetStringStatus(c, fmi2StatusKind::fmi2PendingStatus, &mut v) }
+        }),
+    ];
+    let fmu = in_state(MachineState::StepComplete);
+    for (name, query) in queries {
+        assert_eq!(query(fmu.c), fmi2Status::fmi2Discard, "{name}");
+        let e = fmu.last_message();
+        assert_eq!(
+            (e.status, e.category.as_str()),
+            (fmi2Status::fmi2Discard, "logStatusDiscard"),
+            "{name}"
+        );
+        assert!(e.message.contains(name), "{:?} lacks {name}", e.message);
+        assert_eq!(state_of(&fmu), Some(MachineState::StepComplete), "{name}");
+    }
+    assert_eq!(fmu.step(START, 1.0), fmi2Status::fmi2OK);
+    assert_eq!(
+        fmu.last_successful_time(),
+        (fmi2Status::fmi2OK, START + 1.0)
+    );
+}

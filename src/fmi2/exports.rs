@@ -616,7 +616,7 @@ pub unsafe extern "C" fn fmi2GetStatus(
 ) -> fmi2Status {
     unsafe {
         with_instance(c, Call::GetStatus, |_| {
-            Err(FmuError::Unsupported(NO_PENDING))
+            Err(FmuError::StatusUnavailable(NO_PENDING.into()))
         })
     }
 }
@@ -644,7 +644,9 @@ pub unsafe extern "C" fn fmi2GetIntegerStatus(
 ) -> fmi2Status {
     unsafe {
         with_instance(c, Call::GetIntegerStatus, |_| {
-            Err(FmuError::Unsupported("FMI 2.0 defines no Integer status"))
+            Err(FmuError::StatusUnavailable(
+                "FMI 2.0 defines no Integer status".into(),
+            ))
         })
     }
 }
@@ -672,7 +674,7 @@ pub unsafe extern "C" fn fmi2GetStringStatus(
 ) -> fmi2Status {
     unsafe {
         with_instance(c, Call::GetStringStatus, |_| {
-            Err(FmuError::Unsupported(NO_PENDING))
+            Err(FmuError::StatusUnavailable(NO_PENDING.into()))
         })
     }
 }

@@ -198,6 +198,10 @@ pub enum FmuError {
     Core(Error),
     /// A function this FMU does not implement, and why.
     Unsupported(&'static str),
+    /// A status query this FMU cannot answer (FMI 2.0.4 section 4.2.3: "If a status is
+    /// required which cannot be retrieved by the slave it returns fmi2Discard"); the
+    /// instance's state does not change.
+    StatusUnavailable(String),
     /// The step cannot be completed but the instance stays usable (end of the records).
     Discard(Error),
     /// A panic caught at the boundary.
@@ -208,7 +212,7 @@ impl FmuError {
     /// The status this error returns to the host.
     pub fn status(&self) -> fmi2Status {
         match self {
-            FmuError::Discard(_) => fmi2Status::fmi2Discard,
+            FmuError::Discard(_) | FmuError::StatusUnavailable(_) => fmi2Status::fmi2Discard,
             _ => fmi2Status::fmi2Error,
         }
     }
@@ -231,6 +235,7 @@ impl fmt::Display for FmuError {
             FmuError::Argument(m) => f.write_str(m),
             FmuError::Core(e) => write!(f, "{e}"),
             FmuError::Unsupported(why) => write!(f, "not supported: {why}"),
+            FmuError::StatusUnavailable(why) => write!(f, "status not available: {why}"),
             FmuError::Discard(e) => write!(f, "step discarded: {e}"),
             FmuError::Panic(m) => write!(f, "internal error (panic caught): {m}"),
         }
@@ -405,8 +410,9 @@ impl Instance {
             }
             Err(e) => {
                 let status = e.status();
-                let category = match status {
-                    fmi2Status::fmi2Discard => {
+                let category = match (&e, status) {
+                    (FmuError::StatusUnavailable(_), _) => log_category::LOG_STATUS_DISCARD,
+                    (_, fmi2Status::fmi2Discard) => {
                         self.state = MachineState::StepFailed;
                         log_category::LOG_STATUS_DISCARD
                     }
@@ -547,7 +553,7 @@ impl Instance {
         if last_successful_time {
             Ok(self.last_successful_time)
         } else {
-            Err(FmuError::Argument(
+            Err(FmuError::StatusUnavailable(
                 "fmi2GetRealStatus answers fmi2LastSuccessfulTime only".into(),
             ))
         }
@@ -558,7 +564,7 @@ impl Instance {
         if terminated {
             Ok(self.terminated)
         } else {
-            Err(FmuError::Argument(
+            Err(FmuError::StatusUnavailable(
                 "fmi2GetBooleanStatus answers fmi2Terminated only".into(),
             ))
         }
