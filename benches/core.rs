@@ -448,12 +448,7 @@ fn record_bytes(records: &ForceRecords) -> usize {
         samples += b.iter().flatten().map(|r| r.samples().len()).sum::<usize>();
     }
     for k in &records.kinematics {
-        samples += k.eta.samples().len();
-        samples +=
-            k.ux.iter()
-                .chain(&k.uy)
-                .map(|r| r.samples().len())
-                .sum::<usize>();
+        samples += k.len() * (1 + 2 * k.strips());
     }
     samples * std::mem::size_of::<f64>()
 }

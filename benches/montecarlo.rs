@@ -13,6 +13,9 @@
 //!    RK4 loop in Python) is run in the same process when `target/client-venv` exists
 //!    (created by `tests/clients/run_clients.sh`), and the ratio of the single-core times
 //!    per run is printed; otherwise the summary says it is absent.
+//!
+//! Like the CLI, the benchmark first keeps freed memory in the process
+//! ([`slowdrift::allocator::retain_freed_memory`]).
 
 use criterion::Criterion;
 use slowdrift::config::default_platform::{default_config, DEFAULT_DRIFT_LABEL};
@@ -92,6 +95,9 @@ fn numpy_seconds(case: &Case) -> Result<(f64, String), String> {
 }
 
 fn main() {
+    // As the CLI does: keep freed record memory for the next run (src/allocator.rs).
+    let retained = slowdrift::allocator::retain_freed_memory();
+    println!("allocator keeps freed memory: {retained}");
     let case = fig10_case();
     let mut criterion = Criterion::default()
         .sample_size(10)

@@ -18,6 +18,7 @@
 // Unsafe code lives in `fmi2` only, which allows it explicitly.
 #![deny(unsafe_code)]
 
+pub mod allocator;
 pub mod config;
 pub mod dynamics;
 pub mod error;

@@ -35,6 +35,8 @@ struct Arguments {
 }
 
 fn main() -> ExitCode {
+    // Monte Carlo campaigns build and drop tens of MB of records per run.
+    slowdrift::allocator::retain_freed_memory();
     match run(std::env::args().skip(1).collect()) {
         Ok(()) => ExitCode::SUCCESS,
         Err(message) => {

@@ -116,7 +116,9 @@ pub fn run(args: &[String]) -> Result<(), String> {
         .map_err(|e| e.to_string())?;
     let runs_path = runs_path(&options.out);
     let (done, mut file) = runs_file::open(&runs_path).map_err(|e| e.to_string())?;
-    check_fingerprints(&cases, &done, &runs_path)?;
+    // Computed once per case: a fingerprint formats the whole configuration.
+    let fingerprints: Vec<String> = cases.iter().map(Case::fingerprint).collect();
+    check_fingerprints(&cases, &fingerprints, &done, &runs_path)?;
 
     let seeds = options.first_seed..options.first_seed + options.seeds;
     let jobs: Vec<Job> = (0..cases.len())
@@ -152,8 +154,13 @@ pub fn run(args: &[String]) -> Result<(), String> {
         if let Some(finished) = event {
             let job = jobs[finished.job];
             progress.failed += usize::from(finished.result.is_err());
-            let line =
-                runs_file::format_row(&runs_file::row(&cases[job.case], job.seed, finished.result));
+            let row = runs_file::row(
+                &cases[job.case],
+                &fingerprints[job.case],
+                job.seed,
+                finished.result,
+            );
+            let line = runs_file::format_row(&row);
             if let Err(e) = file.write_all(line.as_bytes()).and_then(|()| file.flush()) {
                 write_error.get_or_insert(format!("{}: {e}", runs_path.display()));
             }
@@ -202,12 +209,16 @@ fn base_row() -> CaseRow {
     }
 }
 
-fn check_fingerprints(cases: &[Case], done: &[RunRow], path: &Path) -> Result<(), String> {
-    for case in cases {
-        let fingerprint = case.fingerprint();
+fn check_fingerprints(
+    cases: &[Case],
+    fingerprints: &[String],
+    done: &[RunRow],
+    path: &Path,
+) -> Result<(), String> {
+    for (case, fingerprint) in cases.iter().zip(fingerprints) {
         if let Some(other) = done
             .iter()
-            .find(|r| r.case == case.name && r.result.is_ok() && r.fingerprint != fingerprint)
+            .find(|r| r.case == case.name && r.result.is_ok() && r.fingerprint != *fingerprint)
         {
             return Err(format!(
                 "{}: case '{}' was run with another configuration or transient (fingerprint \

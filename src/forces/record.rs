@@ -107,6 +107,89 @@ impl Record {
     }
 }
 
+/// Several records on one [`RecordClock`], stored sample-major: row m holds sample m of
+/// every record, so that reading all of them at one time reads one contiguous row (the
+/// drag reads all of a column's strip records at every RK4 stage). Periodic like
+/// [`Record`]; the same 4-point Lagrange interpolation between samples.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RecordBlock {
+    width: usize,
+    samples: Vec<f64>,
+}
+
+impl RecordBlock {
+    /// The block whose row m is `samples[m * width .. (m + 1) * width]`.
+    pub fn from_rows(width: usize, samples: Vec<f64>) -> Self {
+        assert!(
+            width > 0 && samples.len().is_multiple_of(width),
+            "a block holds whole rows"
+        );
+        RecordBlock { width, samples }
+    }
+
+    /// Number of records.
+    pub fn width(&self) -> usize {
+        self.width
+    }
+
+    /// Number of samples of each record.
+    pub fn len(&self) -> usize {
+        self.samples.len().checked_div(self.width).unwrap_or(0)
+    }
+
+    /// Whether the records have no samples.
+    pub fn is_empty(&self) -> bool {
+        self.samples.is_empty()
+    }
+
+    /// Every record at a located time.
+    #[inline]
+    pub fn row_at(&self, p: &SamplePoint) -> RowAt<'_> {
+        let w = self.width;
+        let row = |m: usize| &self.samples[m * w..(m + 1) * w];
+        let n = self.len();
+        let before = if p.index == 0 { n - 1 } else { p.index - 1 };
+        RowAt {
+            rows: [
+                row(before),
+                row(p.index),
+                row(p.index + 1),
+                row((p.index + 2) % n),
+            ],
+            weights: p.weights,
+            on_sample: p.weights[1] == 1.0,
+        }
+    }
+}
+
+/// The values of a [`RecordBlock`]'s records at one located time.
+#[derive(Debug, Clone, Copy)]
+pub struct RowAt<'a> {
+    rows: [&'a [f64]; 4],
+    weights: [f64; 4],
+    on_sample: bool,
+}
+
+impl<'a> RowAt<'a> {
+    /// The row itself when the time falls on a sample (no interpolation needed).
+    #[inline]
+    pub fn on_sample(&self) -> Option<&'a [f64]> {
+        self.on_sample.then_some(self.rows[1])
+    }
+
+    /// Record `j` at this time (exactly the sample on a sample time).
+    #[inline]
+    pub fn value(&self, j: usize) -> f64 {
+        if self.on_sample {
+            return self.rows[1][j];
+        }
+        self.weights[0] * self.rows[0][j]
+            + self.weights[1] * self.rows[1][j]
+            + self.weights[2] * self.rows[2][j]
+            + self.weights[3] * self.rows[3][j]
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -136,6 +219,29 @@ mod tests {
         let record = Record::new(vec![1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0]);
         assert_eq!(record.at(&c.locate(10.0 + 3.0 * 0.5).unwrap()), 4.0);
         assert_eq!(record.at(&c.locate(10.0).unwrap()), 1.0);
+    }
+
+    /// A block holds the same values as separate records, at samples and in between.
+    #[test]
+    fn a_block_equals_its_records() {
+        let c = clock(16);
+        let records: Vec<Vec<f64>> = (0..3)
+            .map(|j| {
+                (0..16)
+                    .map(|m| ((m * 7 + j * 3) % 11) as f64 - 4.5)
+                    .collect()
+            })
+            .collect();
+        let rows = (0..16).flat_map(|m| records.iter().map(move |r| r[m]));
+        let block = RecordBlock::from_rows(3, rows.collect());
+        assert_eq!((block.width(), block.len()), (3, 16));
+        for t in [10.0, 10.5, 10.2, 13.75, 16.9, 16.5] {
+            let p = c.locate(t).unwrap();
+            let row = block.row_at(&p);
+            for (j, r) in records.iter().enumerate() {
+                assert_eq!(row.value(j), Record::new(r.clone()).at(&p), "t {t} j {j}");
+            }
+        }
     }
 
     #[test]

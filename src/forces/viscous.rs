@@ -33,16 +33,24 @@ pub fn drag_force(
     for col in columns {
         let c = &col.column;
         let slow = [u - r * c.y - current[0], v + r * c.x - current[1]];
-        let wetted = (c.draft + col.eta.at(at)).max(0.0);
+        let state = col.at(at);
+        let wetted = (c.draft + state.eta()).max(0.0);
         let dz = wetted / col.strips() as f64;
         let scale = 0.5 * water_density * c.diameter * dz;
-        let mut f = [0.0; 2];
-        for (ux, uy) in col.ux.iter().zip(&col.uy) {
-            let fast = [ux.at(at), uy.at(at)];
-            let strip = strip_force(model, slow, fast);
-            f[0] += strip[0];
-            f[1] += strip[1];
-        }
+        let f = match state.velocities_on_sample() {
+            Some(pairs) => strip_sum(
+                model,
+                slow,
+                col.strips(),
+                pairs.chunks_exact(2).map(|p| [p[0], p[1]]),
+            ),
+            None => strip_sum(
+                model,
+                slow,
+                col.strips(),
+                (0..col.strips()).map(|j| state.velocity(j)),
+            ),
+        };
         total[0] += scale * f[0];
         total[1] += scale * f[1];
         total[2] += scale * (c.x * f[1] - c.y * f[0]);
@@ -50,28 +58,42 @@ pub fn drag_force(
     total
 }
 
-/// C w|w| terms of one strip, before the factor 1/2 rho D dz. The norms are
-/// sqrt(x^2 + y^2), not `hypot`: velocities cannot overflow the squares, and libm's hypot
-/// was a fifth of a drag run's time.
+/// Sum over a column's `strips` strips of the C w|w| terms, before the factor
+/// 1/2 rho D dz. The norms are sqrt(x^2 + y^2), not `hypot`: velocities cannot overflow the
+/// squares, and libm's hypot was a fifth of a drag run's time.
 #[inline]
-fn strip_force(model: DragModel, slow: [f64; 2], fast: [f64; 2]) -> [f64; 2] {
+fn strip_sum(
+    model: DragModel,
+    slow: [f64; 2],
+    strips: usize,
+    fast: impl Iterator<Item = [f64; 2]>,
+) -> [f64; 2] {
+    let norm = |w: [f64; 2]| (w[0] * w[0] + w[1] * w[1]).sqrt();
     match model {
         DragModel::Off => [0.0; 2],
         DragModel::Combined { cd } => {
-            let w = [fast[0] - slow[0], fast[1] - slow[1]];
-            let norm = (w[0] * w[0] + w[1] * w[1]).sqrt();
-            [cd * w[0] * norm, cd * w[1] * norm]
+            let mut f = [0.0; 2];
+            for u in fast {
+                let w = [u[0] - slow[0], u[1] - slow[1]];
+                let n = norm(w);
+                f[0] += w[0] * n;
+                f[1] += w[1] * n;
+            }
+            [cd * f[0], cd * f[1]]
         }
         DragModel::Separate {
             slow: cds,
             fast: cdl,
         } => {
-            let slow_norm = (slow[0] * slow[0] + slow[1] * slow[1]).sqrt();
-            let fast_norm = (fast[0] * fast[0] + fast[1] * fast[1]).sqrt();
-            [
-                -cds * slow[0] * slow_norm + cdl * fast[0] * fast_norm,
-                -cds * slow[1] * slow_norm + cdl * fast[1] * fast_norm,
-            ]
+            let mut f = [0.0; 2];
+            for u in fast {
+                let n = norm(u);
+                f[0] += u[0] * n;
+                f[1] += u[1] * n;
+            }
+            // The slow term is the same on every strip.
+            let s = strips as f64 * cds * norm(slow);
+            [-s * slow[0] + cdl * f[0], -s * slow[1] + cdl * f[1]]
         }
     }
 }

@@ -67,12 +67,18 @@ pub fn format_row(row: &RunRow) -> String {
     fields.join(",") + "\n"
 }
 
-/// A row for `case` and `seed`.
-pub fn row(case: &Case, seed: u64, result: std::result::Result<[DofStats; 3], String>) -> RunRow {
+/// A row for `case` (whose [`Case::fingerprint`] is `fingerprint`: computed once per case,
+/// it formats the whole configuration) and `seed`.
+pub fn row(
+    case: &Case,
+    fingerprint: &str,
+    seed: u64,
+    result: std::result::Result<[DofStats; 3], String>,
+) -> RunRow {
     RunRow {
         case: case.name.clone(),
         seed,
-        fingerprint: case.fingerprint(),
+        fingerprint: fingerprint.into(),
         result,
     }
 }
