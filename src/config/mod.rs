@@ -269,8 +269,8 @@ impl Config {
                 "the drift table has no b_ij columns",
             ));
         }
-        self.validate_qtf()?;
         self.validate_yaw_following()?;
+        self.validate_qtf()?;
         for (i, v) in self.initial.position.iter().enumerate() {
             require_finite(&format!("initial.position[{i}]"), *v)?;
         }
