@@ -395,7 +395,9 @@ fn build_records(config: &Config) -> Result<(ForceRecords, Vec<QtfRank>)> {
             &components.directions,
             damping_table.is_some(),
         )?,
-        Some(_) => vec![DirectionTransfer::none(components.grid.count); components.directions.len()],
+        Some(_) => {
+            vec![DirectionTransfer::none(components.grid.count); components.directions.len()]
+        }
     };
     let drag_columns = match config.model.drag {
         crate::config::DragModel::Off => &[][..],

@@ -354,7 +354,7 @@ impl Config {
         if let Some((min, max)) = yaw.range {
             require_finite("model.yaw_following.range[0]", min)?;
             require_finite("model.yaw_following.range[1]", max)?;
-            if !(min < max) {
+            if min >= max {
                 return Err(Error::invalid(
                     "model.yaw_following.range",
                     format!("[{:.3}, {:.3}] deg", min.to_degrees(), max.to_degrees()),

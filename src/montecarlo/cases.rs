@@ -167,7 +167,9 @@ fn parse_value(column: &str, field: &str) -> std::result::Result<f64, String> {
     if column == "yaw_headings" {
         return match field.parse::<usize>() {
             Ok(n) if n != 1 => Ok(n as f64),
-            _ => Err(format!("'{field}' is not 0 (off) or a whole number of at least 2")),
+            _ => Err(format!(
+                "'{field}' is not 0 (off) or a whole number of at least 2"
+            )),
         };
     }
     if column == "n_directions" {
@@ -281,7 +283,7 @@ impl CaseRow {
             ("duration", _) => config.run.duration = value,
             ("yaw_stiffness", _) => config.platform.stiffness[2][2] = value,
             ("yaw_headings", _) => {
-                config.model.yaw_following = (value != 0.0).then(|| YawFollowing {
+                config.model.yaw_following = (value != 0.0).then_some(YawFollowing {
                     headings: value as usize,
                     range: None,
                 })
