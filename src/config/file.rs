@@ -1271,6 +1271,32 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
     }
 
     #[test]
+    fn yaw_following_reads_headings_and_a_range_in_degrees() {
+        let with =
+            |model: &str| MINIMAL.replace("[drift]", &format!("[model]\n{model}\n\n[drift]"));
+        let circle = parse_text(&with("yaw_following = { headings = 36 }")).expect("valid");
+        assert_eq!(
+            circle.model.yaw_following,
+            Some(YawFollowing {
+                headings: 36,
+                range: None
+            })
+        );
+        let text = with("yaw_following = { headings = 13, range_deg = [-15.0, 15.0] }");
+        let range = parse_text(&text)
+            .expect("valid")
+            .model
+            .yaw_following
+            .unwrap();
+        assert_eq!(range.range, Some((-15f64.to_radians(), 15f64.to_radians())));
+        assert_eq!(parse_text(MINIMAL).unwrap().model.yaw_following, None);
+        let e = parse_text(&with("yaw_following = { headings = 36, range = [1, 2] }"))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("range"), "{e}");
+    }
+
+    #[test]
     fn short_crested_sea_defaults_to_fifteen_directions_and_jonswap_to_dnv_gamma() {
         let text = MINIMAL.replace(
             "spectrum = \"pierson-moskowitz\"",
