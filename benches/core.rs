@@ -129,6 +129,7 @@ fn config(duration: f64, time_step: f64, drag: DragModel) -> Config {
             drift_damping: DriftDamping::Aranha,
             drag,
             strips_per_column: 20,
+            yaw_following: None,
         },
         initial: InitialCondition::default(),
     }

@@ -29,6 +29,13 @@ pub enum Error {
     BeyondRecord { time: f64, record_end: f64 },
     /// The state became NaN or infinite (the step is too large for the system).
     Diverged { time: f64 },
+    /// The body's yaw left the range covered by the yaw-following records (rad); they are
+    /// never extrapolated.
+    YawOutsideRecords {
+        time: f64,
+        yaw: f64,
+        covered: (f64, f64),
+    },
 }
 
 impl Error {
@@ -78,6 +85,14 @@ impl fmt::Display for Error {
             Error::Diverged { time } => write!(
                 f,
                 "the state became non-finite at t = {time} s; reduce run.time_step"
+            ),
+            Error::YawOutsideRecords { time, yaw, covered } => write!(
+                f,
+                "yaw {:.4} deg at t = {time} s is outside the yaw-following records' range \
+                 [{:.4}, {:.4}] deg (never extrapolated); widen model.yaw_following.range_deg",
+                yaw.to_degrees(),
+                covered.0.to_degrees(),
+                covered.1.to_degrees()
             ),
         }
     }

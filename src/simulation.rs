@@ -8,7 +8,10 @@
 use crate::config::{Config, DriftDamping, SecondOrder};
 use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};
 use crate::error::{Error, Result};
-use crate::forces::{transfers_on_grid, ForceRecords, GridQtf, QtfFactorisation, RecordOptions};
+use crate::forces::{
+    transfers_on_grid, DirectionTransfer, ForceRecords, GridQtf, QtfFactorisation, RecordOptions,
+    YawFollowingRecords, YawGrid,
+};
 use crate::hydro::aranha::aranha_damping;
 use crate::hydro::database::SlowDof;
 use crate::hydro::wamit::HEADING_TOLERANCE;
@@ -247,15 +250,19 @@ impl Simulation {
         let (model, records) = (&self.model, &self.records);
         let next = rk4_step(t, &y, h, |time, y| {
             let at = records.clock.locate(time)?;
+            let yaw = records.locate_yaw(time, y[2])?;
             let q = [y[0], y[1], y[2]];
             let qd = [y[3], y[4], y[5]];
-            let total = model.forces(records, &at, &q, &qd).total(&external);
+            let total = model.forces(records, &at, &yaw, &q, &qd).total(&external);
             let qdd = model.acceleration(q[2], &total);
             Ok::<_, Error>([qd[0], qd[1], qd[2], qdd[0], qdd[1], qdd[2]])
         })?;
         if next.iter().any(|v| !v.is_finite()) {
             return Err(Error::Diverged { time: t });
         }
+        // The state a step ends on stays inside the yaw-following records, so `outputs`
+        // can always read them.
+        records.locate_yaw(t + h, next[2])?;
         self.state.position = [next[0], next[1], next[2]];
         self.state.velocity = [next[3], next[4], next[5]];
         Ok(())
@@ -265,9 +272,11 @@ impl Simulation {
     pub fn outputs(&self) -> Result<Outputs> {
         let t = self.time();
         let at = self.records.clock.locate(t)?;
+        let yaw = self.records.locate_yaw(t, self.state.position[2])?;
         let forces = self.model.forces(
             &self.records,
             &at,
+            &yaw,
             &self.state.position,
             &self.state.velocity,
         );
@@ -311,6 +320,8 @@ impl Simulation {
             ));
         }
         self.records.clock.locate(snapshot.time())?;
+        self.records
+            .locate_yaw(snapshot.time(), snapshot.position[2])?;
         self.state = snapshot.clone();
         Ok(())
     }
@@ -365,12 +376,29 @@ fn build_records(config: &Config) -> Result<(ForceRecords, Vec<QtfRank>)> {
         )?),
     };
     let table = damping_table.as_ref().unwrap_or(&config.drift);
-    let transfers = transfers_on_grid(
-        table,
-        &components.grid,
-        &components.directions,
-        damping_table.is_some(),
-    )?;
+    let yaw_following = match &config.model.yaw_following {
+        None => None,
+        Some(options) => Some(YawFollowingRecords::build(
+            &components,
+            YawGrid::new(options),
+            table,
+            damping_table.is_some(),
+            config.model.newman,
+        )?),
+    };
+    // With yaw following the force and damping come from its records alone: the
+    // mean-position build gets no coefficients (it still makes the elevation and kinematics).
+    let transfers = match yaw_following {
+        None => transfers_on_grid(
+            table,
+            &components.grid,
+            &components.directions,
+            damping_table.is_some(),
+        )?,
+        Some(_) => {
+            vec![DirectionTransfer::none(components.grid.count); components.directions.len()]
+        }
+    };
     let drag_columns = match config.model.drag {
         crate::config::DragModel::Off => &[][..],
         _ => &config.platform.columns[..],
@@ -382,7 +410,7 @@ fn build_records(config: &Config) -> Result<(ForceRecords, Vec<QtfRank>)> {
             (Some(qtf), ranks)
         }
     };
-    let records = ForceRecords::build(
+    let mut records = ForceRecords::build(
         &components,
         &transfers,
         &RecordOptions {
@@ -393,6 +421,7 @@ fn build_records(config: &Config) -> Result<(ForceRecords, Vec<QtfRank>)> {
             gravity: config.environment.gravity,
         },
     );
+    records.yaw_following = yaw_following;
     Ok((records, ranks))
 }
 

@@ -56,6 +56,8 @@
 //! drift_damping = "aranha"   # default | "table" (needs the b_ij columns) | "off"
 //! drag = "off"               # default | "separate" (cd_slow, cd_fast) | "combined" (cd)
 //! strips_per_column = 20
+//! yaw_following = { headings = 36 }  # off by default; records at 36 yaws over the circle,
+//!                            # or { headings = 13, range_deg = [-15.0, 15.0] }: an interval
 //!
 //! [initial]                  # optional section, inertial frame, all zero by default
 //! position = [0.0, 0.0]      # X, Y in m
@@ -85,7 +87,7 @@
 
 use super::{
     Column, Config, Current, DragModel, DriftDamping, Environment, InitialCondition, ModelOptions,
-    NewmanForm, Platform, Run, SecondOrder,
+    NewmanForm, Platform, Run, SecondOrder, YawFollowing,
 };
 use crate::error::{Error, Result};
 use crate::hydro::column_drift::isolated_columns_table;
@@ -569,6 +571,16 @@ struct ModelFile {
     /// Fast drag coefficient of the separate model.
     cd_fast: Option<f64>,
     strips_per_column: Option<usize>,
+    yaw_following: Option<YawFollowingFile>,
+}
+
+/// `model.yaw_following`: `{ headings = n }` (the full circle) or
+/// `{ headings = n, range_deg = [min, max] }`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct YawFollowingFile {
+    headings: usize,
+    range_deg: Option<[f64; 2]>,
 }
 
 impl ModelFile {
@@ -631,6 +643,12 @@ impl ModelFile {
             drift_damping,
             drag,
             strips_per_column: self.strips_per_column.unwrap_or(default.strips_per_column),
+            yaw_following: self.yaw_following.map(|y| YawFollowing {
+                headings: y.headings,
+                range: y
+                    .range_deg
+                    .map(|[min, max]| (min.to_radians(), max.to_radians())),
+            }),
         })
     }
 
@@ -1203,6 +1221,7 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
                     fast: 0.9
                 },
                 strips_per_column: 12,
+                yaw_following: None,
             }
         );
         assert_eq!(
@@ -1249,6 +1268,32 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
         assert_eq!(config.platform.quadratic_damping, [[0.0; 3]; 3]);
         assert!(config.platform.columns.is_empty());
         assert!(!config.drift.has_damping());
+    }
+
+    #[test]
+    fn yaw_following_reads_headings_and_a_range_in_degrees() {
+        let with =
+            |model: &str| MINIMAL.replace("[drift]", &format!("[model]\n{model}\n\n[drift]"));
+        let circle = parse_text(&with("yaw_following = { headings = 36 }")).expect("valid");
+        assert_eq!(
+            circle.model.yaw_following,
+            Some(YawFollowing {
+                headings: 36,
+                range: None
+            })
+        );
+        let text = with("yaw_following = { headings = 13, range_deg = [-15.0, 15.0] }");
+        let range = parse_text(&text)
+            .expect("valid")
+            .model
+            .yaw_following
+            .unwrap();
+        assert_eq!(range.range, Some((-15f64.to_radians(), 15f64.to_radians())));
+        assert_eq!(parse_text(MINIMAL).unwrap().model.yaw_following, None);
+        let e = parse_text(&with("yaw_following = { headings = 36, range = [1, 2] }"))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("range"), "{e}");
     }
 
     #[test]

@@ -129,6 +129,19 @@ pub enum DragModel {
     Combined { cd: f64 },
 }
 
+/// Records of the wave force and damping that follow the body's yaw (issue #5 part 3;
+/// physics.md section 4, last bullet): built at `headings` body yaw angles theta_j and
+/// interpolated linearly in the instantaneous yaw at every RK4 stage.
+#[derive(Debug, Clone, PartialEq)]
+pub struct YawFollowing {
+    /// Number of body yaw angles theta_j (at least 2).
+    pub headings: usize,
+    /// The covered yaw range [min, max], rad, with theta_j evenly spaced from min to max
+    /// (both included); a yaw outside it is an error. `None` = the full circle: theta_j
+    /// evenly spaced over [-pi, pi), 360 deg / headings apart, periodic (any yaw is covered).
+    pub range: Option<(f64, f64)>,
+}
+
 /// Default [`ModelOptions::qtf_tolerance`].
 pub const DEFAULT_QTF_TOLERANCE: f64 = 1e-6;
 
@@ -145,6 +158,9 @@ pub struct ModelOptions {
     pub drag: DragModel,
     /// Number of Morison strips per column, from the keel to the instantaneous free surface.
     pub strips_per_column: usize,
+    /// Wave force and damping records that follow the yaw; `None` (the default) = the
+    /// paper's records at the mean position and zero yaw.
+    pub yaw_following: Option<YawFollowing>,
 }
 
 impl Default for ModelOptions {
@@ -156,6 +172,7 @@ impl Default for ModelOptions {
             drift_damping: DriftDamping::Aranha,
             drag: DragModel::Off,
             strips_per_column: 20,
+            yaw_following: None,
         }
     }
 }
@@ -252,6 +269,7 @@ impl Config {
                 "the drift table has no b_ij columns",
             ));
         }
+        self.validate_yaw_following()?;
         self.validate_qtf()?;
         for (i, v) in self.initial.position.iter().enumerate() {
             require_finite(&format!("initial.position[{i}]"), *v)?;
@@ -311,6 +329,52 @@ impl Config {
             ));
         }
         crate::forces::check_covers(&q.omegas, self.sea.band())
+    }
+
+    /// Yaw following: at least two headings, a finite increasing range that holds the
+    /// initial yaw, Newman's approximation (the full QTF is not interpolated in heading).
+    fn validate_yaw_following(&self) -> Result<()> {
+        let Some(yaw) = &self.model.yaw_following else {
+            return Ok(());
+        };
+        if yaw.headings < 2 {
+            return Err(Error::invalid(
+                "model.yaw_following.headings",
+                yaw.headings,
+                "must be at least 2",
+            ));
+        }
+        if self.model.second_order == SecondOrder::FullQtf {
+            return Err(Error::invalid(
+                "model.yaw_following",
+                format!("{} headings", yaw.headings),
+                "needs second_order = \"newman\": the full QTF is not interpolated in heading",
+            ));
+        }
+        if let Some((min, max)) = yaw.range {
+            require_finite("model.yaw_following.range[0]", min)?;
+            require_finite("model.yaw_following.range[1]", max)?;
+            if min >= max {
+                return Err(Error::invalid(
+                    "model.yaw_following.range",
+                    format!("[{:.3}, {:.3}] deg", min.to_degrees(), max.to_degrees()),
+                    "needs min < max",
+                ));
+            }
+            let theta = self.initial.position[2];
+            if !(min..=max).contains(&theta) {
+                return Err(Error::invalid(
+                    "initial.position[2]",
+                    format!("{:.3} deg", theta.to_degrees()),
+                    format!(
+                        "the initial yaw is outside model.yaw_following.range [{:.3}, {:.3}] deg",
+                        min.to_degrees(),
+                        max.to_degrees()
+                    ),
+                ));
+            }
+        }
+        Ok(())
     }
 
     fn validate_platform(&self) -> Result<()> {

@@ -13,7 +13,7 @@
 
 use crate::config::{Config, DragModel};
 use crate::error::{Error, Result};
-use crate::forces::{drag_force, ForceRecords, SamplePoint};
+use crate::forces::{drag_force, ForceRecords, SamplePoint, YawPoint};
 use nalgebra::{Matrix3, Vector3};
 
 /// Forces acting on the body at one instant, inertial frame (N, N, N m).
@@ -84,22 +84,24 @@ impl SlowDriftModel {
         })
     }
 
-    /// The forces at a located instant for state (q, q') (inertial frame).
+    /// The forces at a located instant and yaw (`records.locate_yaw(t, q[2])`) for state
+    /// (q, q') (inertial frame).
     pub fn forces(
         &self,
         records: &ForceRecords,
         at: &SamplePoint,
+        yaw: &YawPoint,
         q: &[f64; 3],
         qd: &[f64; 3],
     ) -> ForceBreakdown {
         let theta = q[2];
         let velocity = to_body(theta, &Vector3::from(*qd));
         let current = to_body(theta, &Vector3::new(self.current[0], self.current[1], 0.0));
-        let wave = Vector3::from_fn(|i, _| records.wave_force[i].at(at));
-        let damping = match &records.damping {
+        let wave = Vector3::from(records.wave_force_at(at, yaw));
+        let damping = match records.damping_at(at, yaw) {
             Some(b) => {
                 let relative = velocity - current;
-                -Matrix3::from_fn(|i, j| b[i][j].at(at)) * relative
+                -Matrix3::from_fn(|i, j| b[i][j]) * relative
             }
             None => Vector3::zeros(),
         };

@@ -9,6 +9,7 @@ mod record;
 mod synthesis;
 mod transfer;
 mod viscous;
+mod yaw_following;
 
 pub use kinematics::ColumnKinematics;
 pub use newman::NewmanBuilder;
@@ -17,6 +18,7 @@ pub use record::{Record, RecordClock, SamplePoint};
 pub use synthesis::Synthesizer;
 pub use transfer::{transfers_on_grid, DirectionTransfer};
 pub use viscous::drag_force;
+pub use yaw_following::{SlowRecords, YawFollowingRecords, YawGrid, YawPoint};
 
 use crate::config::{Column, NewmanForm};
 use crate::sea_state::WaveComponents;
@@ -47,6 +49,9 @@ pub struct ForceRecords {
     pub damping: Option<[[Record; 3]; 3]>,
     /// Fast kinematics of the drag columns (empty without drag).
     pub kinematics: Vec<ColumnKinematics>,
+    /// Force and damping records at a set of body yaw angles (`model.yaw_following`);
+    /// when set, they replace `wave_force` and `damping` (see [`ForceRecords::wave_force_at`]).
+    pub yaw_following: Option<YawFollowingRecords>,
 }
 
 impl ForceRecords {
@@ -134,6 +139,7 @@ impl ForceRecords {
             wave_force: force.map(record_or_zero),
             damping: with_damping.then(|| damping.map(|row| row.map(record_or_zero))),
             kinematics,
+            yaw_following: None,
         }
     }
 }

@@ -14,6 +14,17 @@ pub struct DirectionTransfer {
     pub damping: Option<[[Vec<f64>; 3]; 3]>,
 }
 
+impl DirectionTransfer {
+    /// No coefficients (zero drift, no damping) for `count` components: a direction that
+    /// adds nothing to the force and damping records.
+    pub fn none(count: usize) -> Self {
+        DirectionTransfer {
+            drift: std::array::from_fn(|_| vec![0.0; count]),
+            damping: None,
+        }
+    }
+}
+
 /// Interpolates the table at every component frequency and direction. The records are
 /// computed for the body at zero yaw, so the table heading is the wave direction itself.
 pub fn transfers_on_grid(

@@ -6,7 +6,9 @@
 //! (0 = long-crested, else the exponent of the base's spreading form: cos^N, or s of
 //! cos-2s; a long-crested base becomes cos^N), `n_directions`, `current_speed` (m/s),
 //! `current_direction_deg`, `cd` (combined drag model), `cd_slow` and `cd_fast` (separate
-//! model; one of them alone keeps the other from a separate-model base), `duration` (s).
+//! model; one of them alone keeps the other from a separate-model base), `duration` (s),
+//! `yaw_stiffness` (N m/rad: the mooring's C_66), `yaw_headings` (0 = yaw following off,
+//! n >= 2 = records at n body yaw angles around the full circle, `model.yaw_following`).
 //! Degrees are converted to radians here. Blank lines and lines starting with `#` are
 //! skipped; fields are separated by commas and trimmed (no quoting).
 //!
@@ -16,14 +18,14 @@
 
 use super::Case;
 use crate::config::file::DEFAULT_N_DIRECTIONS;
-use crate::config::DragModel;
+use crate::config::{DragModel, YawFollowing};
 use crate::error::{Error, Result};
 use crate::sea_state::{Spectrum, Spreading};
 use crate::Config;
 use std::path::Path;
 
 /// The columns a case table may have.
-pub const COLUMNS: [&str; 13] = [
+pub const COLUMNS: [&str; 15] = [
     "name",
     "hs",
     "tp",
@@ -37,6 +39,8 @@ pub const COLUMNS: [&str; 13] = [
     "cd_slow",
     "cd_fast",
     "duration",
+    "yaw_stiffness",
+    "yaw_headings",
 ];
 
 /// One row of a case table: its name and the values it sets, by column name.
@@ -160,6 +164,14 @@ pub fn parse_case_table(text: &str, source: &str) -> Result<Vec<CaseRow>> {
 }
 
 fn parse_value(column: &str, field: &str) -> std::result::Result<f64, String> {
+    if column == "yaw_headings" {
+        return match field.parse::<usize>() {
+            Ok(n) if n != 1 => Ok(n as f64),
+            _ => Err(format!(
+                "'{field}' is not 0 (off) or a whole number of at least 2"
+            )),
+        };
+    }
     if column == "n_directions" {
         return match field.parse::<usize>() {
             Ok(n) if n >= 1 => Ok(n as f64),
@@ -269,6 +281,13 @@ impl CaseRow {
                 }
             }
             ("duration", _) => config.run.duration = value,
+            ("yaw_stiffness", _) => config.platform.stiffness[2][2] = value,
+            ("yaw_headings", _) => {
+                config.model.yaw_following = (value != 0.0).then_some(YawFollowing {
+                    headings: value as usize,
+                    range: None,
+                })
+            }
             (other, _) => return Err(format!("'{other}' is not an overridable field")),
         }
         Ok(())
@@ -355,6 +374,22 @@ mod tests {
         );
         let e = cases("cd, cd_fast\n0.5, 0.9\n").unwrap_err().to_string();
         assert!(e.contains("exclude each other"), "{e}");
+    }
+
+    #[test]
+    fn yaw_columns_set_the_spring_and_the_yaw_following() {
+        let c = cases("yaw_stiffness, yaw_headings\n6.0e7, 36\n, 0\n").unwrap();
+        assert_eq!(c[0].config.platform.stiffness[2][2], 6.0e7);
+        assert_eq!(
+            c[0].config.model.yaw_following,
+            Some(YawFollowing {
+                headings: 36,
+                range: None
+            })
+        );
+        assert_eq!(c[1].config, base());
+        let e = cases("yaw_headings\n1\n").unwrap_err().to_string();
+        assert!(e.contains("row 1, column 'yaw_headings'"), "{e}");
     }
 
     #[test]

@@ -113,6 +113,7 @@ pub fn base_config(duration: f64, time_step: f64, seed: u64) -> Config {
             drift_damping: DriftDamping::Off,
             drag: DragModel::Off,
             strips_per_column: 20,
+            yaw_following: None,
         },
         initial: InitialCondition::default(),
     }
