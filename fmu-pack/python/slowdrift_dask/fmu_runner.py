@@ -33,6 +33,9 @@ class FmuRunner:
         self.errors = []
         self.slave = None
         self.used = False
+        # Runs made and instances created by this runner (reported to the tests).
+        self.runs = 0
+        self.instances = 0
         self._instantiate()
 
     def _log(self, _environment, _instance, status, _category, message):
@@ -56,6 +59,7 @@ class FmuRunner:
                                instanceName=self.name)
         self.slave.instantiate(callbacks=callbacks)
         self.used = False
+        self.instances += 1
 
     def _set(self, name, value):
         v = self.variables[name]
@@ -89,6 +93,7 @@ class FmuRunner:
             raise RunFailed(f"the FMU cannot run case '{case.name}': {case.fmu_unavailable}")
         self._fresh()
         self.used = True
+        self.runs += 1
         self.errors.clear()
         h, t0 = case.time_step, case.start_time
         s = self.slave

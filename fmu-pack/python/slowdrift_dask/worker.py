@@ -64,6 +64,11 @@ class CampaignPlugin(WorkerPlugin):
                 runner.close()
             self._runners.clear()
 
+    def runner_counts(self):
+        """[(runs, instances)] of this worker's FMU runners."""
+        with self._lock:
+            return [(r.runs, r.instances) for r in self._runners]
+
     def _path(self, name):
         return os.path.join(self.directory, name)
 
