@@ -20,6 +20,7 @@ separate drag, and a case the model refuses (Hs = -1).
    native reader's message naming file, line, row and column.
 5. A worker process killed (SIGKILL) while it holds runs: the campaign still completes
    with every run, equal to the native tool's.
+6. Number formatting against values printed by rustc; seeds grouped into tasks.
 """
 
 import json
@@ -238,3 +239,27 @@ def test_a_killed_worker_loses_no_run(client, fmu, slowdrift, tmp_path):
             break
         time.sleep(0.2)
     assert pids_before[killed[0]] not in pids_after
+
+
+def test_numbers_are_written_as_rust_writes_them():
+    """Rust's `{}` of f64, as rustc 1.95 printed these values (format!("{}", x))."""
+    from slowdrift_dask.numbers import fmax, fmin, rust_display, total
+
+    expected = {1e-300: "0." + "0" * 299 + "1", 1e21: "1" + "0" * 21, 3.0: "3", -0.0: "-0",
+                0.1 + 0.2: "0.30000000000000004", 100.0: "100", -2.5e10: "-25000000000",
+                1.0 / 3.0: "0.3333333333333333"}
+    for x, text in expected.items():
+        assert rust_display(x) == text, x
+    # Rust: [-0.0, -0.0].iter().sum() is -0.0; f64::max prefers +0.0, f64::min -0.0.
+    assert str(total([-0.0, -0.0])) == "-0.0"
+    assert str(fmax(-0.0, 0.0)) == str(fmax(0.0, -0.0)) == "0.0"
+    assert str(fmin(-0.0, 0.0)) == str(fmin(0.0, -0.0)) == "-0.0"
+
+
+def test_tasks_group_consecutive_missing_seeds():
+    from slowdrift_dask.campaign import tasks
+
+    a, b = object(), object()
+    jobs = [(a, 1), (a, 2), (a, 3), (a, 5), (b, 1), (b, 2)]
+    assert tasks(jobs, 2) == [(a, [1, 2]), (a, [3]), (a, [5]), (b, [1, 2])]
+    assert tasks(jobs, 1) == [(c, [s]) for c, s in jobs]

@@ -71,6 +71,9 @@ def main(argv=None):
                    "(default: the number of cores)")
     p.add_argument("--retries", type=whole(0), default=2,
                    help="retries of a task that raised (default 2)")
+    p.add_argument("--seeds-per-task", type=whole(1), help="consecutive seeds of a case per "
+                   "Dask task (default: 1 with the FMU, 8 with the native tool, whose start-up "
+                   "is paid per task)")
     p.add_argument("--fmu", default=default_fmu(), help="SlowDrift.fmu (default: "
                    "$SLOWDRIFT_FMU or the target directory's fmu/SlowDrift.fmu)")
     p.add_argument("--slowdrift", default=default_slowdrift(), help="the native tool "
@@ -81,7 +84,8 @@ def main(argv=None):
     settings = Settings(seeds=a.seeds, out=a.out, config=a.config, cases=a.cases,
                         first_seed=a.first_seed, duration=a.duration, transient=a.transient,
                         backend=a.backend, fmu=a.fmu, slowdrift=a.slowdrift,
-                        scheduler=a.scheduler, workers=a.workers, retries=a.retries)
+                        scheduler=a.scheduler, workers=a.workers, retries=a.retries,
+                        seeds_per_task=a.seeds_per_task)
     try:
         return run_campaign(settings)
     except CampaignError as e:

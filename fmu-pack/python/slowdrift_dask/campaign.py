@@ -1,14 +1,14 @@
 """A Monte Carlo campaign on a Dask cluster: the client side.
 
 The cases come from the native tool (`plan.read_cases`), the runs already in the per-run
-file are skipped (resume), the others are submitted as one Dask task per (case, seed)
-(`worker.run_task`), and each result is appended to RESULTS.runs.csv and flushed as its
-future completes, in whatever order they finish. At the end the summary RESULTS.csv is
-recomputed from the per-run file, exactly as `slowdrift montecarlo` does. A run whose task
-is lost for good (the scheduler gave up after its workers died `allowed-failures` times, or
-it raised on every retry) is recorded as failed with the reason, so nothing is silently
-missing: the summary's seeds_done / seeds_requested and the exit status say so, and a
-restart runs it again."""
+file are skipped (resume), the others are submitted as Dask tasks of a few consecutive
+seeds of one case (`worker.run_task`; one seed per task with the FMU), and each result is
+appended to RESULTS.runs.csv and flushed as its task completes, in whatever order they
+finish. At the end the summary RESULTS.csv is recomputed from the per-run file, exactly as
+`slowdrift montecarlo` does. A run whose task is lost for good (the scheduler gave up after
+its workers died `allowed-failures` times, or it raised on every retry) is recorded as
+failed with the reason, so nothing is silently missing: the summary's seeds_done /
+seeds_requested and the exit status say so, and a restart runs it again."""
 
 import os
 import sys
@@ -43,6 +43,9 @@ class Settings:
     workers: int = None
     # Retries of a task that raised (a worker that dies is handled by the scheduler).
     retries: int = 2
+    # Consecutive seeds of a case per task; None: 1 with the FMU (its instance is reused,
+    # a run has no start-up cost), 8 with the native tool (whose start-up is paid per task).
+    seeds_per_task: int = None
 
 
 def runs_path(out):
@@ -93,6 +96,17 @@ def _check_backend(settings, cases, seeds):
     if seeds.stop - 1 > FMU_MAX_SEED:
         raise CampaignError(f"seed {seeds.stop - 1}: the FMU's seed is a 32-bit Integer "
                             f"(at most {FMU_MAX_SEED}); use --backend cli")
+
+
+def tasks(jobs, size):
+    """Jobs (case, seed) grouped into (case, [consecutive seeds]) of at most `size`."""
+    out = []
+    for case, seed in jobs:
+        if out and out[-1][0] is case and out[-1][1][-1] == seed - 1 and len(out[-1][1]) < size:
+            out[-1][1].append(seed)
+        else:
+            out.append((case, [seed]))
+    return out
 
 
 def _client(settings):
@@ -182,28 +196,32 @@ def _run_jobs(settings, arguments, jobs, runs, client):
     try:
         client.register_plugin(_plugin(settings, arguments))
         campaign = uuid.uuid4().hex[:12]
-        jobs_by_key, futures = {}, []
-        for i, (case, seed) in enumerate(jobs):
-            future = client.submit(run_task, case, seed, key=f"slowdrift-{campaign}-{i}",
+        size = settings.seeds_per_task or (1 if settings.backend == "fmu" else 8)
+        by_key, futures = {}, []
+        for i, (case, seeds) in enumerate(tasks(jobs, size)):
+            future = client.submit(run_task, case, seeds, key=f"slowdrift-{campaign}-{i}",
                                    retries=settings.retries, pure=False)
-            jobs_by_key[future.key] = (case, seed)
+            by_key[future.key] = (case, seeds)
             futures.append(future)
         progress = Progress(len(jobs))
         for future in as_completed(futures):
-            case, seed = jobs_by_key[future.key]
+            case, seeds = by_key[future.key]
             try:
-                status, value = future.result()
+                results = future.result()
             except Exception as e:  # noqa: BLE001 - every lost task is recorded
-                status, value = "failed", f"the run's task was lost: {type(e).__name__}: {e}"
-            row = RunRow(case.name, seed, case.fingerprint)
-            if status == "ok":
-                row.values = value
-            else:
-                row.error = value
-                progress.failed += 1
-            runs.write(format_row(row).encode("utf-8"))
+                lost = f"the run's task was lost: {type(e).__name__}: {e}"
+                results = [(seed, "failed", lost) for seed in seeds]
+            for seed, status, value in results:
+                row = RunRow(case.name, seed, case.fingerprint)
+                if status == "ok":
+                    row.values = value
+                else:
+                    row.error = value
+                    progress.failed += 1
+                runs.write(format_row(row).encode("utf-8"))
+                progress.done += 1
             runs.flush()
-            progress.done += 1
+            future.release()
             progress.show()
         progress.show(last=True)
     finally:

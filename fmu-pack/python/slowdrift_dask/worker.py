@@ -8,8 +8,8 @@ project. The FMU instance is created at a worker thread's first run and reused f
 following runs (fmi2Reset); with one thread per worker (`dask worker --nthreads 1`, as the
 client's local cluster) that is one instance per worker process.
 
-`run_task(case, seed)` is the task: the 12 statistics, or ("failed", message) when the model
-refused or failed the run. Any other exception propagates, so Dask retries the task; a
+`run_task(case, seeds)` is the task: for each of a few consecutive seeds of one case, the 12
+statistics, or the message when the model refused or failed the run. Any other exception propagates, so Dask retries the task; a
 worker that dies is replaced and its tasks are rescheduled by the scheduler."""
 
 import os
@@ -83,19 +83,24 @@ class CampaignPlugin(WorkerPlugin):
                 self._runners.append(runner)
         return runner
 
-    def run(self, case, seed):
+    def run(self, case, seeds):
+        """[(seed, "ok", statistics) or (seed, "failed", message)] for consecutive seeds."""
         if self.backend == "fmu":
-            return self._fmu_runner().run(case, seed)
+            runner = self._fmu_runner()
+            results = []
+            for seed in seeds:
+                try:
+                    results.append((seed, "ok", runner.run(case, seed)))
+                except RunFailed as e:
+                    results.append((seed, "failed", str(e)))
+            return results
         arguments = list(self.arguments)
         if "--cases" in arguments:
             arguments[arguments.index("--cases") + 1] = self._path("cases.csv")
-        return run_cli(self._path("slowdrift"), arguments, case, seed, self.directory)
+        return run_cli(self._path("slowdrift"), arguments, case, seeds, self.directory)
 
 
-def run_task(case, seed):
-    """One run on this worker: ("ok", 12 statistics) or ("failed", message)."""
-    plugin = get_worker().plugins[PLUGIN_NAME]
-    try:
-        return "ok", plugin.run(case, seed)
-    except RunFailed as e:
-        return "failed", str(e)
+def run_task(case, seeds):
+    """Consecutive seeds of one case on this worker: [(seed, "ok", 12 statistics) or
+    (seed, "failed", message)]."""
+    return get_worker().plugins[PLUGIN_NAME].run(case, seeds)
