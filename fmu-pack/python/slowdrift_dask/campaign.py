@@ -12,6 +12,7 @@ seeds_requested and the exit status say so, and a restart runs it again."""
 
 import os
 import sys
+import tempfile
 import time
 import uuid
 from dataclasses import dataclass
@@ -68,6 +69,19 @@ def check_fingerprints(cases, done, path):
 def _read(path):
     with open(path, "rb") as f:
         return f.read()
+
+
+def _upload_package(client, directory):
+    """Sends this package to every worker (also later ones) as a zip on their sys.path, so
+    the workers need only dask, distributed and fmpy."""
+    import zipfile
+
+    package = Path(__file__).resolve().parent
+    archive = os.path.join(directory, "slowdrift_dask.zip")
+    with zipfile.ZipFile(archive, "w") as z:
+        for source in sorted(package.glob("*.py")):
+            z.write(source, f"{package.name}/{source.name}")
+    client.upload_file(archive)
 
 
 def _plugin(settings, arguments):
@@ -194,6 +208,8 @@ def _run_jobs(settings, arguments, jobs, runs, client):
     if client is None:
         client, owned = _client(settings)
     try:
+        with tempfile.TemporaryDirectory() as directory:
+            _upload_package(client, directory)
         client.register_plugin(_plugin(settings, arguments))
         campaign = uuid.uuid4().hex[:12]
         size = settings.seeds_per_task or (1 if settings.backend == "fmu" else 8)
