@@ -15,7 +15,7 @@ separate drag, and a case the model refuses (Hs = -1).
    and reused it (fmi2Reset) for all its runs.
 2. CLI backend: the same files again.
 3. Resume: a cut-off last line and a fixed table; only the failed case runs again, and the
-   summary equals the native tool's on the fixed table.
+   summary equals the native tool's on the fixed table; the native tool resumes the files.
 4. Malformed table and a case the FMU cannot express: nothing runs, exit status 2, the
    native reader's message naming file, line, row and column.
 5. A worker process killed (SIGKILL) while it holds runs: the campaign still completes
@@ -173,6 +173,12 @@ def test_resume_runs_only_what_is_missing(client, fmu, slowdrift, tmp_path):
     native_status, summary, _ = native(slowdrift, tmp_path, fixed, "fixed")
     assert native_status == 0
     assert out.read_text() == summary
+    # The native tool resumes the Dask files: a fourth seed is all it runs.
+    done = subprocess.run([slowdrift, "montecarlo", "--config", EXAMPLE, "--cases",
+                           str(tmp_path / "r.cases.csv"), "--seeds", "4", "--duration",
+                           repr(DURATION), "--out", str(out)], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert "= 16 runs; 12 already in" in done.stdout, done.stdout
 
 
 def run_module(args, cwd):
