@@ -18,8 +18,9 @@ separate drag, and a case the model refuses (Hs = -1).
    summary equals the native tool's on the fixed table; the native tool resumes the files.
 4. Malformed table and a case the FMU cannot express: nothing runs, exit status 2, the
    native reader's message naming file, line, row and column.
-5. A worker process killed (SIGKILL) while it holds runs: the campaign still completes
-   with every run, equal to the native tool's.
+5. A task that raises is retried, then its runs are recorded as failed with the reason; a
+   worker process killed (SIGKILL) while it holds runs: the campaign still completes with
+   every run, equal to the native tool's.
 6. Number formatting against values printed by rustc; seeds grouped into tasks.
 """
 
@@ -201,6 +202,32 @@ def test_bad_input_stops_before_anything_runs(fmu, slowdrift, tmp_path):
     assert done.returncode == 2, done
     assert "case 'odd': the FMU cannot run it" in done.stderr
     assert "--backend cli" in done.stderr
+
+
+def test_a_task_that_raises_is_retried_then_recorded(client, fmu, slowdrift, tmp_path):
+    """CLI backend with a tool that prints the cases but dies without a result on the
+    workers: the task raises, is retried once (two attempts counted by the tool itself),
+    and its runs are recorded as failed with the reason; the other case is not lost."""
+    calls = tmp_path / "calls.txt"
+    broken = tmp_path / "slowdrift-broken"
+    broken.write_text(f"""#!/bin/sh
+case " $* " in
+  *" --print-cases "*|*" --case good "*) exec {slowdrift} "$@" ;;
+esac
+echo attempt >> {calls}
+echo "simulated crash" >&2
+exit 101
+""")
+    broken.chmod(0o755)
+    table = "name,hs\ngood,3\nlost,3\n"
+    status, out = dask_campaign(client, fmu, str(broken), tmp_path, table, "x", "cli",
+                                retries=1)
+    assert status == 1
+    assert calls.read_text().count("attempt") == 2, "one try and one retry"
+    summary = out.read_text()
+    assert "good,surge,m,3,3,0,complete," in summary, summary
+    assert "lost,surge,m,3,0,3,failed," in summary, summary
+    assert "the run's task was lost: CliRunError" in summary and "simulated crash" in summary
 
 
 def test_a_killed_worker_loses_no_run(client, fmu, slowdrift, tmp_path):
