@@ -36,7 +36,7 @@ import pytest
 
 from mooring_loop import REPO
 from slowdrift_dask import Settings, run_campaign
-from slowdrift_dask.worker import PLUGIN_NAME
+from slowdrift_dask.worker import FMU_EVENTS, plugin_name
 
 EXAMPLE = os.path.join(REPO, "tests", "data", "example.toml")
 DURATION = 1200.0
@@ -96,14 +96,15 @@ def run_lines(out):
     return runs[0], set(runs[1:])
 
 
-def dask_campaign(client, fmu, slowdrift, workdir, table_text, name, backend, **kw):
+def dask_campaign(client, fmu, slowdrift, workdir, table_text, name, backend, campaign=None,
+                  **kw):
     table = workdir / f"{name}.cases.csv"
     table.write_text(table_text)
     out = workdir / f"{name}.csv"
     settings = Settings(seeds=kw.pop("seeds", SEEDS), out=str(out), config=EXAMPLE,
                         cases=str(table), duration=kw.pop("duration", DURATION),
                         backend=backend, fmu=fmu, slowdrift=slowdrift, **kw)
-    status = run_campaign(settings, client=client)
+    status = run_campaign(settings, client=client, campaign=campaign)
     return status, out
 
 
@@ -125,7 +126,9 @@ def check_equal_to_native(out, reference):
 @pytest.mark.parametrize("backend", ["fmu", "cli"])
 def test_campaign_equals_the_native_tool(client, fmu, slowdrift, reference, tmp_path, backend):
     started = time.monotonic()
-    status, out = dask_campaign(client, fmu, slowdrift, tmp_path, TABLE, "d", backend)
+    campaign = f"equal-{backend}"
+    status, out = dask_campaign(client, fmu, slowdrift, tmp_path, TABLE, "d", backend,
+                                campaign=campaign)
     elapsed = time.monotonic() - started
     print(f"\n{backend} backend: 12 runs on 3 workers in {elapsed:.1f} s")
     assert status == 1, "the refused case makes the exit status non-zero"
@@ -147,14 +150,20 @@ def test_campaign_equals_the_native_tool(client, fmu, slowdrift, reference, tmp_
             moved = [float(fields[4 + 4 * d + 1]) > 0.0 for d in range(3)]
             assert moved[0] and (fields[0] != "oblique" or all(moved)), run
     if backend == "fmu":
-        counts = client.run(lambda dask_worker:
-                            dask_worker.plugins[PLUGIN_NAME].runner_counts())
-        runners = [c for per_worker in counts.values() for c in per_worker]
-        assert all(len(per_worker) <= 1 for per_worker in counts.values()), counts
-        assert sum(runs for runs, _ in runners) == 4 * SEEDS, counts
-        # One instance each, reused through fmi2Reset (a refused run needs no new one).
-        assert all(instances == 1 for _, instances in runners), counts
-        assert len(runners) >= 2, f"the runs were spread over the workers: {counts}"
+        # The runners' last reports (a worker's events reach the scheduler before its
+        # results): one instance each, reused through fmi2Reset for all its runs (a refused
+        # run needs no new one), one runner per worker process.
+        last = {}
+        for _, event in client.get_events(FMU_EVENTS):
+            if event["campaign"] == campaign:
+                last[event["runner"]] = (event["runs"], event["instances"])
+        assert sum(runs for runs, _ in last.values()) == 4 * SEEDS, last
+        assert all(instances == 1 for _, instances in last.values()), last
+        pids = [runner.split("-")[0] for runner in last]
+        assert len(set(pids)) == len(pids) >= 2, f"spread over the workers: {last}"
+        # The campaign removed its plugin (and with it the instances) at the end.
+        names = client.run(lambda dask_worker: list(dask_worker.plugins))
+        assert all(plugin_name(campaign) not in n for n in names.values()), names
 
 
 def test_resume_runs_only_what_is_missing(client, fmu, slowdrift, tmp_path):

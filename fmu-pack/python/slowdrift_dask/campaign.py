@@ -84,15 +84,15 @@ def _upload_package(client, directory):
     client.upload_file(archive)
 
 
-def _plugin(settings, arguments):
+def _plugin(campaign, settings, arguments):
     from .worker import CampaignPlugin
 
     if settings.backend == "fmu":
-        return CampaignPlugin("fmu", {"SlowDrift.fmu": _read(settings.fmu)})
+        return CampaignPlugin(campaign, "fmu", {"SlowDrift.fmu": _read(settings.fmu)})
     files = {"slowdrift": _read(settings.slowdrift)}
     if settings.cases is not None:
         files["cases.csv"] = _read(settings.cases)
-    return CampaignPlugin("cli", files, arguments)
+    return CampaignPlugin(campaign, "cli", files, arguments)
 
 
 def _check_backend(settings, cases, seeds):
@@ -154,10 +154,11 @@ class Progress:
               f"{self.done / elapsed:.2f} runs/s, {elapsed:.0f} s elapsed", file=sys.stderr)
 
 
-def run_campaign(settings, client=None):
+def run_campaign(settings, client=None, campaign=None):
     """Runs the campaign and writes both files; returns the exit status: 0 when every
     requested run succeeded, 1 otherwise. CampaignError when it cannot start. `client`: an
-    existing Dask client (else one is made from `settings` and closed at the end)."""
+    existing Dask client (else one is made from `settings` and closed at the end);
+    `campaign`: the id in the task keys, plugin and events (default: random)."""
     if settings.seeds < 1:
         raise CampaignError(f"--seeds {settings.seeds}: must be a whole number of at least 1")
     if settings.first_seed < 0:
@@ -181,7 +182,8 @@ def run_campaign(settings, client=None):
             print(f"  {case.name}: {case.steps} steps of {case.time_step} s, transient "
                   f"{case.transient:.1f} s")
         if jobs:
-            _run_jobs(settings, arguments, jobs, runs, client)
+            _run_jobs(settings, arguments, jobs, runs, client,
+                      campaign or uuid.uuid4().hex[:12])
     finally:
         runs.close()
     with open(path) as f:
@@ -199,10 +201,10 @@ def run_campaign(settings, client=None):
     return 0
 
 
-def _run_jobs(settings, arguments, jobs, runs, client):
+def _run_jobs(settings, arguments, jobs, runs, client, campaign):
     from distributed import as_completed
 
-    from .worker import run_task
+    from .worker import plugin_name, run_task
 
     owned = []
     if client is None:
@@ -210,12 +212,13 @@ def _run_jobs(settings, arguments, jobs, runs, client):
     try:
         with tempfile.TemporaryDirectory() as directory:
             _upload_package(client, directory)
-        client.register_plugin(_plugin(settings, arguments))
-        campaign = uuid.uuid4().hex[:12]
+        plugin = plugin_name(campaign)
+        client.register_plugin(_plugin(campaign, settings, arguments))
         size = settings.seeds_per_task or (1 if settings.backend == "fmu" else 8)
         by_key, futures = {}, []
         for i, (case, seeds) in enumerate(tasks(jobs, size)):
-            future = client.submit(run_task, case, seeds, key=f"slowdrift-{campaign}-{i}",
+            future = client.submit(run_task, plugin, case, seeds,
+                                   key=f"slowdrift-{campaign}-{i}",
                                    retries=settings.retries, pure=False)
             by_key[future.key] = (case, seeds)
             futures.append(future)
@@ -240,6 +243,7 @@ def _run_jobs(settings, arguments, jobs, runs, client):
             future.release()
             progress.show()
         progress.show(last=True)
+        client.unregister_worker_plugin(plugin)
     finally:
         for thing in owned:
             thing.close()

@@ -8,9 +8,15 @@ project. The FMU instance is created at a worker thread's first run and reused f
 following runs (fmi2Reset); with one thread per worker (`dask worker --nthreads 1`, as the
 client's local cluster) that is one instance per worker process.
 
-`run_task(case, seeds)` is the task: for each of a few consecutive seeds of one case, the 12
-statistics, or the message when the model refused or failed the run. Any other exception propagates, so Dask retries the task; a
-worker that dies is replaced and its tasks are rescheduled by the scheduler."""
+Each campaign registers its own plugin (`plugin_name(campaign)`) and removes it at the end,
+which frees the instances and files: campaigns on one cluster do not share them.
+
+`run_task(plugin, case, seeds)` is the task: for each of a few consecutive seeds of one
+case, the 12 statistics, or the message when the model refused or failed the run. Any other
+exception propagates, so Dask retries the task; a worker that dies is replaced and its tasks
+are rescheduled by the scheduler. After its runs an FMU task logs the Dask event
+`FMU_EVENTS` {"campaign", "runner" (pid and thread), "runs", "instances"}: how many runs
+this worker thread's runner made and how many FMU instances it created."""
 
 import os
 import stat
@@ -22,7 +28,12 @@ from .cli_runner import run_cli
 from .errors import RunFailed
 from .fmu_runner import FmuRunner
 
-PLUGIN_NAME = "slowdrift-campaign"
+# Topic of the Dask events of the FMU runners (Client.get_events).
+FMU_EVENTS = "slowdrift-fmu-runner"
+
+
+def plugin_name(campaign):
+    return f"slowdrift-campaign-{campaign}"
 
 
 class CampaignPlugin(WorkerPlugin):
@@ -30,10 +41,11 @@ class CampaignPlugin(WorkerPlugin):
     {"slowdrift": bytes, optionally "cases.csv": bytes}, `arguments` the tool's case options
     (`--cases` is replaced by the worker's copy)."""
 
-    name = PLUGIN_NAME
     idempotent = False
 
-    def __init__(self, backend, files, arguments=()):
+    def __init__(self, campaign, backend, files, arguments=()):
+        self.campaign = campaign
+        self.name = plugin_name(campaign)
         self.backend = backend
         self.files = files
         self.arguments = list(arguments)
@@ -43,10 +55,11 @@ class CampaignPlugin(WorkerPlugin):
         self.directory = None
 
     def __getstate__(self):
-        return {"backend": self.backend, "files": self.files, "arguments": self.arguments}
+        return {"campaign": self.campaign, "backend": self.backend, "files": self.files,
+                "arguments": self.arguments}
 
     def __setstate__(self, state):
-        self.__init__(state["backend"], state["files"], state["arguments"])
+        self.__init__(state["campaign"], state["backend"], state["files"], state["arguments"])
 
     def setup(self, worker):
         self.directory = os.path.join(worker.local_directory, "slowdrift")
@@ -63,11 +76,6 @@ class CampaignPlugin(WorkerPlugin):
             for runner in self._runners:
                 runner.close()
             self._runners.clear()
-
-    def runner_counts(self):
-        """[(runs, instances)] of this worker's FMU runners."""
-        with self._lock:
-            return [(r.runs, r.instances) for r in self._runners]
 
     def _path(self, name):
         return os.path.join(self.directory, name)
@@ -93,6 +101,9 @@ class CampaignPlugin(WorkerPlugin):
                     results.append((seed, "ok", runner.run(case, seed)))
                 except RunFailed as e:
                     results.append((seed, "failed", str(e)))
+            get_worker().log_event(FMU_EVENTS, {
+                "campaign": self.campaign, "runner": f"{os.getpid()}-{threading.get_ident()}",
+                "runs": runner.runs, "instances": runner.instances})
             return results
         arguments = list(self.arguments)
         if "--cases" in arguments:
@@ -100,7 +111,7 @@ class CampaignPlugin(WorkerPlugin):
         return run_cli(self._path("slowdrift"), arguments, case, seeds, self.directory)
 
 
-def run_task(case, seeds):
-    """Consecutive seeds of one case on this worker: [(seed, "ok", 12 statistics) or
-    (seed, "failed", message)]."""
-    return get_worker().plugins[PLUGIN_NAME].run(case, seeds)
+def run_task(plugin, case, seeds):
+    """Consecutive seeds of one case on this worker, with the campaign's plugin:
+    [(seed, "ok", 12 statistics) or (seed, "failed", message)]."""
+    return get_worker().plugins[plugin].run(case, seeds)
