@@ -25,8 +25,11 @@ const USAGE: &str =
     "usage: slowdrift simulate [--config FILE.toml] [--out FILE.csv] [--transient SECONDS]
        slowdrift hydro wamit --root PATH/NAME [--ulen 1] [--rho 1025] [--g 9.80665] --out FILE.json
        slowdrift hydro columns [--config FILE.toml] --out FILE.json
-       slowdrift montecarlo [--config FILE.toml] [--cases CASES.csv] --seeds N [--first-seed 1]
-                            [--duration SECONDS] [--transient SECONDS] [--threads T] --out RESULTS.csv";
+       slowdrift montecarlo [--config FILE.toml] [--cases CASES.csv] [--case NAME] --seeds N
+                            [--first-seed 1] [--duration SECONDS] [--transient SECONDS] [--threads T]
+                            --out RESULTS.csv
+       slowdrift montecarlo [--config FILE.toml] [--cases CASES.csv] [--duration SECONDS]
+                            [--transient SECONDS] --print-cases";
 
 struct Arguments {
     config: Option<PathBuf>,

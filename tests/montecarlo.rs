@@ -297,3 +297,45 @@ fn oscillator_variance_agrees_within_the_reported_standard_error() {
     assert!((v.mean - expected).abs() < 4.0 * v_se);
     assert!((r.mean - expected.sqrt()).abs() < 4.0 * r_se);
 }
+
+/// `--case NAME` runs one case of a table (the Dask package's CLI backend runs each
+/// (case, seed) this way): its per-run line equals that case's line of the whole table;
+/// an unknown name lists the cases.
+#[test]
+fn one_case_of_a_table_equals_its_line_in_the_whole_campaign() {
+    let dir = scratch("one-case");
+    let table = dir.join("cases.csv");
+    std::fs::write(&table, "name, hs, tp\nlow, 2, 8\nhigh, 4, 10\n").unwrap();
+    let table = table.to_str().unwrap();
+    let (all, one) = (dir.join("all.csv"), dir.join("one.csv"));
+    succeeded(&montecarlo(&all, &["--cases", table, "--seeds", "2"]));
+    let args = [
+        "--cases",
+        table,
+        "--case",
+        "high",
+        "--seeds",
+        "1",
+        "--first-seed",
+        "2",
+    ];
+    succeeded(&montecarlo(&one, &args));
+    let high_2 = |out: &Path| {
+        per_run_lines(out)
+            .into_iter()
+            .filter(|(case, seed, _)| case == "high" && *seed == 2)
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(per_run_lines(&one).len(), 1);
+    assert_eq!(high_2(&one), high_2(&all));
+    assert_eq!(high_2(&one).len(), 1);
+
+    let unknown = montecarlo(&one, &["--cases", table, "--case", "mid", "--seeds", "1"]);
+    assert!(!unknown.status.success());
+    let stderr = String::from_utf8_lossy(&unknown.stderr);
+    assert!(
+        stderr.contains("--case mid: no such case; the cases are low, high"),
+        "{stderr}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -12,17 +12,24 @@ use slowdrift::config::default_platform::{default_config, DEFAULT_DRIFT_LABEL};
 use slowdrift::config::file;
 use slowdrift::montecarlo::cases::{read_case_table, CaseRow};
 use slowdrift::montecarlo::runs_file::{self, RunRow};
-use slowdrift::montecarlo::{run_jobs, seed_statistics, Case, Job, DOFS, STATISTICS};
+use slowdrift::montecarlo::{plan, run_jobs, seed_statistics, Case, Job, DOFS, STATISTICS};
+use slowdrift::Config;
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-pub const USAGE: &str = "slowdrift montecarlo [--config FILE.toml] [--cases CASES.csv] --seeds N \
-     [--first-seed 1] [--duration SECONDS] [--transient SECONDS] [--threads T] --out RESULTS.csv";
+pub const USAGE: &str =
+    "slowdrift montecarlo [--config FILE.toml] [--cases CASES.csv] [--case NAME] \
+     --seeds N [--first-seed 1] [--duration SECONDS] [--transient SECONDS] [--threads T] \
+     --out RESULTS.csv
+       slowdrift montecarlo [--config FILE.toml] [--cases CASES.csv] [--duration SECONDS] \
+     [--transient SECONDS] --print-cases";
 
 struct Options {
     config: Option<PathBuf>,
     cases: Option<PathBuf>,
+    /// Run only the case of this name.
+    only: Option<String>,
     seeds: u64,
     first_seed: u64,
     duration: Option<f64>,
@@ -31,12 +38,24 @@ struct Options {
     out: PathBuf,
 }
 
-fn parse(args: &[String]) -> Result<Options, String> {
+/// What the command does.
+enum Command {
+    Run(Options),
+    /// `--print-cases`: the cases as JSON ([`plan`]) on stdout, nothing run.
+    PrintCases(Options),
+}
+
+fn parse(args: &[String]) -> Result<Command, String> {
     let usage = |message: String| format!("{message}\nusage: {USAGE}");
     let (mut config, mut cases, mut seeds, mut first_seed) = (None, None, None, 1);
     let (mut duration, mut transient, mut threads, mut out) = (None, None, None, None);
+    let (mut only, mut print_cases) = (None, false);
     let mut rest = args.iter();
     while let Some(flag) = rest.next() {
+        if flag == "--print-cases" {
+            print_cases = true;
+            continue;
+        }
         let value = rest
             .next()
             .ok_or_else(|| usage(format!("{flag} needs a value")))?;
@@ -56,6 +75,7 @@ fn parse(args: &[String]) -> Result<Options, String> {
         match flag.as_str() {
             "--config" => config = Some(PathBuf::from(value)),
             "--cases" => cases = Some(PathBuf::from(value)),
+            "--case" => only = Some(value.clone()),
             "--seeds" => seeds = Some(whole(1)?),
             "--first-seed" => first_seed = whole(0)?,
             "--duration" => duration = Some(seconds(true)?),
@@ -65,13 +85,27 @@ fn parse(args: &[String]) -> Result<Options, String> {
             other => return Err(usage(format!("unknown option '{other}'"))),
         }
     }
+    if print_cases {
+        return Ok(Command::PrintCases(Options {
+            config,
+            cases,
+            only,
+            seeds: 0,
+            first_seed,
+            duration,
+            transient,
+            threads: 1,
+            out: PathBuf::new(),
+        }));
+    }
     let seeds = seeds.ok_or_else(|| usage("--seeds is required".into()))?;
     first_seed
         .checked_add(seeds - 1)
         .ok_or_else(|| format!("--first-seed {first_seed} + --seeds {seeds} overflows"))?;
-    Ok(Options {
+    Ok(Command::Run(Options {
         config,
         cases,
+        only,
         seeds,
         first_seed,
         duration,
@@ -80,7 +114,7 @@ fn parse(args: &[String]) -> Result<Options, String> {
             std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)
         }),
         out: out.ok_or_else(|| usage("--out is required".into()))?,
-    })
+    }))
 }
 
 /// The per-run file next to the summary: `RESULTS.csv` -> `RESULTS.runs.csv`.
@@ -91,14 +125,25 @@ pub fn runs_path(out: &Path) -> PathBuf {
 
 /// Runs `slowdrift montecarlo` with the arguments after `montecarlo`.
 pub fn run(args: &[String]) -> Result<(), String> {
-    let options = parse(args)?;
+    match parse(args)? {
+        Command::Run(options) => run_campaign(options),
+        Command::PrintCases(options) => print_cases(&options),
+    }
+}
+
+/// The base configuration (the file, else the embedded default with `--duration` applied)
+/// and the cases on top of it (all, or the one `--case` names).
+fn load_cases(options: &Options, announce: bool) -> Result<(Config, Vec<Case>), String> {
     let mut base = match &options.config {
         Some(path) => file::load(path).map_err(|e| e.to_string())?,
         None => {
-            println!("embedded default platform; drift: {DEFAULT_DRIFT_LABEL}");
+            if announce {
+                println!("embedded default platform; drift: {DEFAULT_DRIFT_LABEL}");
+            }
             default_config().map_err(|e| e.to_string())?
         }
     };
+    let file_base = base.clone();
     if let Some(duration) = options.duration {
         base.run.duration = duration;
     }
@@ -109,11 +154,42 @@ pub fn run(args: &[String]) -> Result<(), String> {
         ),
         None => (vec![base_row()], String::new()),
     };
-    let cases = rows
+    let mut cases = rows
         .iter()
         .map(|row| row.case(&base, options.transient, &source))
         .collect::<Result<Vec<Case>, _>>()
         .map_err(|e| e.to_string())?;
+    if let Some(name) = &options.only {
+        if !cases.iter().any(|c| &c.name == name) {
+            let names: Vec<&str> = cases.iter().map(|c| c.name.as_str()).collect();
+            return Err(format!(
+                "--case {name}: no such case; the cases are {}",
+                names.join(", ")
+            ));
+        }
+        cases.retain(|c| &c.name == name);
+    }
+    Ok((file_base, cases))
+}
+
+/// `--print-cases`: the cases as JSON on stdout, with the FMU's `hydroDatabase` = the
+/// absolute path of `--config` (empty: the FMU's packed default platform).
+fn print_cases(options: &Options) -> Result<(), String> {
+    let (base, cases) = load_cases(options, false)?;
+    let hydro_database = match &options.config {
+        Some(path) => std::fs::canonicalize(path)
+            .map_err(|e| format!("{}: {e}", path.display()))?
+            .to_str()
+            .ok_or_else(|| format!("{}: the path is not UTF-8", path.display()))?
+            .to_string(),
+        None => String::new(),
+    };
+    println!("{}", plan::cases_json(&cases, &base, &hydro_database));
+    Ok(())
+}
+
+fn run_campaign(options: Options) -> Result<(), String> {
+    let (_, cases) = load_cases(&options, true)?;
     let runs_path = runs_path(&options.out);
     let (done, mut file) = runs_file::open(&runs_path).map_err(|e| e.to_string())?;
     // Computed once per case: a fingerprint formats the whole configuration.

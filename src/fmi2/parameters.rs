@@ -128,7 +128,15 @@ impl Parameters {
     /// The configuration these parameters describe for `experiment`, validated. The error
     /// names the FMU parameter, or the core's field, and the value.
     pub fn to_config(&self, resources: Option<&Path>, experiment: &Experiment) -> Result<Config> {
-        let mut c = self.base_config(resources)?;
+        let c = self.apply(self.base_config(resources)?, experiment)?;
+        c.validate()?;
+        Ok(c)
+    }
+
+    /// `base` with these parameters and `experiment` applied, not yet validated (see the
+    /// module documentation for what the parameters override). Errors only for an
+    /// Integer or Enumeration parameter outside its range.
+    pub fn apply(&self, mut c: Config, experiment: &Experiment) -> Result<Config> {
         c.sea.spectrum = Spectrum::Jonswap {
             hs: self.hs,
             tp: self.tp,
@@ -188,8 +196,93 @@ impl Parameters {
         c.run.time_step = self.step_size;
         c.run.start_time = experiment.start_time;
         c.run.duration = experiment.duration();
-        c.validate()?;
         Ok(c)
+    }
+
+    /// The parameters and experiment that make an instance whose base configuration is
+    /// `base` (the file named by `hydro_database`, or the packed default platform when it
+    /// is empty) run `config` exactly, seed aside (left at 0: a master sets it per run).
+    /// `Err` says why `config` cannot be expressed through the FMU's parameters: a
+    /// spectrum other than JONSWAP, cos-2s spreading, or any difference from `base`
+    /// outside the overridden fields (checked by applying the result to `base`).
+    pub fn for_config(
+        config: &Config,
+        base: &Config,
+        hydro_database: &str,
+    ) -> std::result::Result<(Parameters, Experiment), String> {
+        let Spectrum::Jonswap { hs, tp, gamma } = config.sea.spectrum else {
+            return Err(
+                "the FMU's sea is a JONSWAP spectrum (Hs, Tp, gamma); this one is not".into(),
+            );
+        };
+        let spreading_exponent = match config.sea.spreading {
+            Spreading::LongCrested => 0.0,
+            Spreading::CosN { n } => n,
+            Spreading::Cos2s { .. } => {
+                return Err("the FMU's spreading is cos^N; this sea is spread cos-2s".into())
+            }
+        };
+        let n_directions = i32::try_from(config.sea.n_directions).map_err(|_| {
+            format!(
+                "n_directions = {} exceeds the FMU's Integer",
+                config.sea.n_directions
+            )
+        })?;
+        let (mut cd_slow, mut cd_fast, mut cd) = (start::CD_SLOW, start::CD_FAST, start::CD);
+        let drag_model = match config.model.drag {
+            DragModel::Off => 0,
+            DragModel::Separate { slow, fast } => {
+                (cd_slow, cd_fast) = (slow, fast);
+                1
+            }
+            DragModel::Combined { cd: c } => {
+                cd = c;
+                2
+            }
+        };
+        let drift_damping = match config.model.drift_damping {
+            DriftDamping::Off => 0,
+            DriftDamping::Table => 1,
+            DriftDamping::Aranha => 2,
+        };
+        let k = &config.platform.stiffness;
+        let parameters = Parameters {
+            hs,
+            tp,
+            gamma: gamma.unwrap_or(0.0),
+            wave_direction: config.sea.mean_direction,
+            spreading_exponent,
+            current_speed: config.current.speed,
+            current_direction: config.current.direction,
+            cd_slow,
+            cd_fast,
+            cd,
+            stiffness_surge: k[0][0],
+            stiffness_sway: k[1][1],
+            stiffness_yaw: k[2][2],
+            step_size: config.run.time_step,
+            n_directions,
+            seed: 0,
+            drag_model,
+            drift_damping,
+            hydro_database: hydro_database.to_string(),
+        };
+        let start = config.run.start_time;
+        let experiment =
+            Experiment::new(start, Some(start + config.run.duration)).map_err(|e| e.to_string())?;
+        let mut expected = config.clone();
+        expected.sea.seed = 0;
+        let applied = parameters
+            .apply(base.clone(), &experiment)
+            .map_err(|e| e.to_string())?;
+        if applied != expected {
+            return Err(
+                "the configuration differs from the FMU's base in a field the FMU's parameters \
+                 do not set (or its start time and duration do not survive stopTime - startTime)"
+                    .into(),
+            );
+        }
+        Ok((parameters, experiment))
     }
 
     fn base_config(&self, resources: Option<&Path>) -> Result<Config> {

@@ -12,6 +12,7 @@
 //! [`runs_file`] writes and reads the per-run CSV that makes a campaign resumable.
 
 pub mod cases;
+pub mod plan;
 pub mod runs_file;
 
 use crate::error::{Error, Result};

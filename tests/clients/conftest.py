@@ -6,6 +6,9 @@ import sys
 import pytest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+# The Dask package (fmu-pack/python/slowdrift_dask).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                "fmu-pack", "python"))
 
 import mooring_stiffness  # noqa: E402
 import mooring_loop  # noqa: E402

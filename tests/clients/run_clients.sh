@@ -12,7 +12,8 @@ repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 cd "$repo"
 
 venv="$repo/target/client-venv"
-packages=(fmpy==0.3.32 fmu-manipulation-toolbox==2.0 libcosimpy==0.0.6 moordyn==2.7.2 numpy pytest)
+packages=(fmpy==0.3.32 fmu-manipulation-toolbox==2.0 libcosimpy==0.0.6 moordyn==2.7.2
+          dask==2026.8.0 distributed==2026.8.0 numpy pytest)
 stamp="$venv/.installed"
 
 if [[ ! -x "$venv/bin/python" ]]; then
