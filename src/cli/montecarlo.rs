@@ -115,61 +115,13 @@ pub fn run(args: &[String]) -> Result<(), String> {
         .collect::<Result<Vec<Case>, _>>()
         .map_err(|e| e.to_string())?;
     let runs_path = runs_path(&options.out);
-    let (done, mut file) = runs_file::open(&runs_path).map_err(|e| e.to_string())?;
-    check_fingerprints(&cases, &done, &runs_path)?;
-
     let seeds = options.first_seed..options.first_seed + options.seeds;
-    let jobs: Vec<Job> = (0..cases.len())
+    let wanted: Vec<Job> = (0..cases.len())
         .flat_map(|case| seeds.clone().map(move |seed| Job { case, seed }))
-        .filter(|job| {
-            !done
-                .iter()
-                .any(|r| r.case == cases[job.case].name && r.seed == job.seed && r.result.is_ok())
-        })
         .collect();
-    let total = cases.len() * options.seeds as usize;
-    println!(
-        "{} case(s) x {} seeds ({}..={}) = {total} runs; {} already in {}; {} to run on {} thread(s)",
-        cases.len(),
-        options.seeds,
-        seeds.start,
-        seeds.end - 1,
-        total - jobs.len(),
-        runs_path.display(),
-        jobs.len(),
-        options.threads
-    );
-    for case in &cases {
-        println!(
-            "  {}: {} s at {} s, transient {:.1} s",
-            case.name, case.config.run.duration, case.config.run.time_step, case.transient
-        );
-    }
-
-    let mut progress = Progress::new(jobs.len());
-    let mut write_error = None;
-    run_jobs(&cases, &jobs, options.threads, |event| {
-        if let Some(finished) = event {
-            let job = jobs[finished.job];
-            progress.failed += usize::from(finished.result.is_err());
-            let line =
-                runs_file::format_row(&runs_file::row(&cases[job.case], job.seed, finished.result));
-            if let Err(e) = file.write_all(line.as_bytes()).and_then(|()| file.flush()) {
-                write_error.get_or_insert(format!("{}: {e}", runs_path.display()));
-            }
-            progress.done += 1;
-        }
-        progress.show(false);
-    });
-    progress.show(true);
-    if let Some(e) = write_error {
-        return Err(e);
-    }
-
-    let text =
-        std::fs::read_to_string(&runs_path).map_err(|e| format!("{}: {e}", runs_path.display()))?;
-    let runs =
-        runs_file::parse(&text, &runs_path.display().to_string()).map_err(|e| e.to_string())?;
+    println!("seeds {}..={} of every case", seeds.start, seeds.end - 1);
+    let runs = run_campaign(&cases, &wanted, options.threads, &runs_path)?;
+    let total = wanted.len();
     let summaries: Vec<CaseSummary> = cases
         .iter()
         .map(|case| CaseSummary::new(case, &runs, &seeds))
@@ -190,6 +142,66 @@ pub fn run(args: &[String]) -> Result<(), String> {
         ));
     }
     Ok(())
+}
+
+/// Runs the `wanted` jobs of `cases` that the per-run file `runs_path` does not already
+/// hold as successful (resume; a case run before with another configuration is refused),
+/// appending each result to the file as it finishes, with a progress line on stderr;
+/// returns every run the file then holds.
+pub fn run_campaign(
+    cases: &[Case],
+    wanted: &[Job],
+    threads: usize,
+    runs_path: &Path,
+) -> Result<Vec<RunRow>, String> {
+    let (done, mut file) = runs_file::open(runs_path).map_err(|e| e.to_string())?;
+    check_fingerprints(cases, &done, runs_path)?;
+    let jobs: Vec<Job> = wanted
+        .iter()
+        .copied()
+        .filter(|job| {
+            !done
+                .iter()
+                .any(|r| r.case == cases[job.case].name && r.seed == job.seed && r.result.is_ok())
+        })
+        .collect();
+    println!(
+        "{} case(s) = {} runs; {} already in {}; {} to run on {threads} thread(s)",
+        cases.len(),
+        wanted.len(),
+        wanted.len() - jobs.len(),
+        runs_path.display(),
+        jobs.len(),
+    );
+    for case in cases {
+        println!(
+            "  {}: {} s at {} s, transient {:.1} s",
+            case.name, case.config.run.duration, case.config.run.time_step, case.transient
+        );
+    }
+
+    let mut progress = Progress::new(jobs.len());
+    let mut write_error = None;
+    run_jobs(cases, &jobs, threads, |event| {
+        if let Some(finished) = event {
+            let job = jobs[finished.job];
+            progress.failed += usize::from(finished.result.is_err());
+            let line =
+                runs_file::format_row(&runs_file::row(&cases[job.case], job.seed, finished.result));
+            if let Err(e) = file.write_all(line.as_bytes()).and_then(|()| file.flush()) {
+                write_error.get_or_insert(format!("{}: {e}", runs_path.display()));
+            }
+            progress.done += 1;
+        }
+        progress.show(false);
+    });
+    progress.show(true);
+    if let Some(e) = write_error {
+        return Err(e);
+    }
+    let text =
+        std::fs::read_to_string(runs_path).map_err(|e| format!("{}: {e}", runs_path.display()))?;
+    runs_file::parse(&text, &runs_path.display().to_string()).map_err(|e| e.to_string())
 }
 
 /// The single case of a campaign without a case table.
