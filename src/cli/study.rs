@@ -28,7 +28,8 @@ use std::path::{Path, PathBuf};
 pub const USAGE: &str = "slowdrift study waves [--config FILE.toml] [--exponents 11..17] --out DIR
        slowdrift study boxplots [--config FILE.toml] [--exponents 11..17] [--samples N,N,...]
                                 [--transient SECONDS] [--threads T] --out DIR
-       slowdrift study transient [--config FILE.toml] [--runs 200] [--blocks 8] [--offsets 0,15]
+       slowdrift study transient [--config FILE.toml] [--runs 200] [--blocks 8] [--block-cycles 10]
+                                 [--offsets 0,15]
                                  [--threads T] --out DIR
        slowdrift study sensitivity [--config FILE.toml] --cases CASES.csv --x COLUMN [--seeds 100]
                                    [--threads T] --out DIR";
@@ -60,6 +61,7 @@ pub fn run(args: &[String]) -> Result<(), String> {
             "--config",
             "--runs",
             "--blocks",
+            "--block-cycles",
             "--offsets",
             "--threads",
             "--out",
@@ -653,13 +655,23 @@ fn boxplots(base: &Config, options: &Options, out: &Path) -> Result<(), String> 
     Ok(())
 }
 
-/// Fig. 11: surge mean and rms per block of ten slow-drift cycles from the start, averaged
-/// over runs, for initial surge offsets (released at rest).
+/// Fig. 11: surge mean and rms per block of `--block-cycles` (default ten) undamped surge
+/// periods from the start, averaged over runs (seeds 1..=runs, the same seeds for every
+/// initial condition), for initial surge offsets added to the configuration's initial
+/// position (released at rest).
 fn transient(base: &Config, options: &Options, out: &Path) -> Result<(), String> {
     let runs = options.whole("--runs", 200, 2)?;
     let blocks = options.whole("--blocks", 8, 2)?;
     let offsets = parse_numbers("--offsets", options.get("--offsets").unwrap_or("0,15"))?;
-    let block = ten_cycles(base)?;
+    let cycles = match options.get("--block-cycles") {
+        Some(v) => parse_numbers("--block-cycles", v)?
+            .first()
+            .copied()
+            .filter(|c| *c > 0.0)
+            .ok_or_else(|| format!("--block-cycles {v}: must be a positive number"))?,
+        None => TRANSIENT_CYCLES,
+    };
+    let block = ten_cycles(base)? / TRANSIENT_CYCLES * cycles;
     let dt = base.run.time_step;
     let jobs = offsets.len() * runs;
     println!(
@@ -706,7 +718,10 @@ fn transient(base: &Config, options: &Options, out: &Path) -> Result<(), String>
                 r.mean
             )
             .ok();
-            let x = (b as f64 + 0.5) * TRANSIENT_CYCLES;
+            // Series side by side (dodged by 2 % of the axis) so that equal values stay visible.
+            let dodge =
+                (o as f64 - 0.5 * (offsets.len() - 1) as f64) * 0.02 * blocks as f64 * cycles;
+            let x = (b as f64 + 0.5) * cycles + dodge;
             means.push((x, m.mean, mse));
             rmss.push((x, r.mean, rse));
         }
@@ -728,7 +743,7 @@ fn transient(base: &Config, options: &Options, out: &Path) -> Result<(), String>
         mean_series.push(series(&means));
         rms_series.push(series(&rmss));
     }
-    let x_range = (0.0, blocks as f64 * TRANSIENT_CYCLES);
+    let x_range = (0.0, blocks as f64 * cycles);
     let panel = |title: &str, y_label: &str, series: Vec<Series>, legend: LegendAt| {
         let y_range = padded_range(
             series.iter().flat_map(|s| {
@@ -752,7 +767,7 @@ fn transient(base: &Config, options: &Options, out: &Path) -> Result<(), String>
         }
     };
     let figure = Figure {
-        title: format!("Start-up transient (E&S Fig. 11): surge per block of 10 cycles ({block:.0} s), mean of {runs} runs ± 1 standard error; {}", sea_text(base).split(", seed").next().unwrap_or_default()),
+        title: format!("Start-up transient (E&S Fig. 11): surge per block of {cycles} cycles ({block:.0} s), mean of {runs} runs ± 1 standard error; {}", sea_text(base).split(", seed").next().unwrap_or_default()),
         panels: vec![
             panel("surge rms per block", "surge rms about the block mean [m]", rms_series, LegendAt::UpperRight),
             panel("surge mean per block", "surge mean [m]", mean_series, LegendAt::LowerRight),
@@ -890,7 +905,7 @@ fn sensitivity(base: &Config, options: &Options, out: &Path) -> Result<(), Strin
         columns: 2,
         size: (1400, 560),
     };
-    let csv_path = out.join(format!("{stem}.csv"));
+    let csv_path = out.join(format!("{stem}.summary.csv"));
     write_text(&csv_path, &csv)?;
     let mut written = vec![csv_path];
     written.extend(write_figure(&figure, &out.join(&stem))?);
