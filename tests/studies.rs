@@ -148,6 +148,7 @@ fn scatter_over_seeds_shrinks_like_one_over_root_length() {
     let slope_bound = 4.0 / (2.0 * (seeds as f64 - 1.0)).sqrt() / (2f64.ln() * 5f64.sqrt());
     for (name, stds) in [("mean", std_of(|s| s.mean)), ("rms", std_of(|s| s.rms))] {
         let slope = log_log_slope(&lengths, &stds).unwrap();
+        println!("surge {name}: scatter {stds:?} m, log-log slope {slope:.3}");
         assert!(
             (slope + 0.5).abs() < slope_bound,
             "surge {name}: scatter {stds:?} m, slope {slope} (bound {slope_bound})"

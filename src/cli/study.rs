@@ -775,10 +775,13 @@ fn transient(base: &Config, options: &Options, out: &Path) -> Result<(), String>
         columns: 2,
         size: (1500, 600),
     };
-    let csv_path = out.join("fig11_blocks.csv");
+    let csv_path = out.join(format!("fig11_blocks_{cycles}cycles.csv"));
     write_text(&csv_path, &csv)?;
     let mut written = vec![csv_path];
-    written.extend(write_figure(&figure, &out.join("fig11_transient"))?);
+    written.extend(write_figure(
+        &figure,
+        &out.join(format!("fig11_transient_{cycles}cycles")),
+    )?);
     print!("{csv}");
     report(&written);
     Ok(())
@@ -873,13 +876,16 @@ fn sensitivity(base: &Config, options: &Options, out: &Path) -> Result<(), Strin
             1,
         )
         .with_errors(points.iter().map(|p| p.2).collect());
-        let y_range = padded_range(
+        // From zero when every value is positive, so that the panel shows proportions.
+        let (lo, hi) = padded_range(
             points
                 .iter()
                 .flat_map(|p| [p.1 - p.2, p.1 + p.2])
                 .chain([0.0]),
             0.1,
         );
+        let positive = points.iter().all(|p| p.1 - p.2 >= 0.0);
+        let y_range = (if positive { 0.0 } else { lo }, hi);
         Panel {
             title: title.into(),
             x_label: column_label(column),
