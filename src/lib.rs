@@ -31,6 +31,7 @@ pub mod sea_state;
 pub mod simulation;
 pub mod special;
 pub mod stats;
+pub mod studies;
 
 pub use config::Config;
 pub use error::{Error, Result};

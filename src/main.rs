@@ -10,8 +10,12 @@
 //!
 //! `slowdrift montecarlo ... --seeds N --out RESULTS.csv` runs many seeds of one case or a
 //! table of cases on all cores, resumably ([`cli::montecarlo`]).
+//!
+//! `slowdrift study <waves|boxplots|transient|sensitivity> ... --out DIR` makes the paper's
+//! studies as CSV and figures (PNG and SVG) ([`cli::study`], drawing in [`plot`]).
 
 mod cli;
+mod plot;
 
 use slowdrift::config::default_platform::{default_config, DEFAULT_DRIFT_LABEL};
 use slowdrift::config::file;
@@ -29,7 +33,8 @@ const USAGE: &str =
                             [--first-seed 1] [--duration SECONDS] [--transient SECONDS] [--threads T]
                             --out RESULTS.csv
        slowdrift montecarlo [--config FILE.toml] [--cases CASES.csv] [--duration SECONDS]
-                            [--transient SECONDS] --print-cases";
+                            [--transient SECONDS] --print-cases
+       slowdrift study waves|boxplots|transient|sensitivity ... --out DIR (slowdrift study for the options)";
 
 struct Arguments {
     config: Option<PathBuf>,
@@ -54,6 +59,7 @@ fn run(args: Vec<String>) -> Result<(), String> {
         Some("simulate") => simulate(parse_arguments(&args[1..])?),
         Some("hydro") => cli::hydro::run(&args[1..]),
         Some("montecarlo") => cli::montecarlo::run(&args[1..]),
+        Some("study") => cli::study::run(&args[1..]),
         Some("--help") | Some("-h") | None => {
             println!("{USAGE}");
             Ok(())

@@ -2,3 +2,4 @@
 
 pub mod hydro;
 pub mod montecarlo;
+pub mod study;

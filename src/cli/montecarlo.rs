@@ -126,7 +126,7 @@ pub fn runs_path(out: &Path) -> PathBuf {
 /// Runs `slowdrift montecarlo` with the arguments after `montecarlo`.
 pub fn run(args: &[String]) -> Result<(), String> {
     match parse(args)? {
-        Command::Run(options) => run_campaign(options),
+        Command::Run(options) => run_and_summarise(options),
         Command::PrintCases(options) => print_cases(&options),
     }
 }
@@ -188,36 +188,70 @@ fn print_cases(options: &Options) -> Result<(), String> {
     Ok(())
 }
 
-fn run_campaign(options: Options) -> Result<(), String> {
+fn run_and_summarise(options: Options) -> Result<(), String> {
     let (_, cases) = load_cases(&options, true)?;
     let runs_path = runs_path(&options.out);
-    let (done, mut file) = runs_file::open(&runs_path).map_err(|e| e.to_string())?;
+    let seeds = options.first_seed..options.first_seed + options.seeds;
+    let wanted: Vec<Job> = (0..cases.len())
+        .flat_map(|case| seeds.clone().map(move |seed| Job { case, seed }))
+        .collect();
+    println!("seeds {}..={} of every case", seeds.start, seeds.end - 1);
+    let runs = run_campaign(&cases, &wanted, options.threads, &runs_path)?;
+    let total = wanted.len();
+    let summaries: Vec<CaseSummary> = cases
+        .iter()
+        .map(|case| CaseSummary::new(case, &runs, &seeds))
+        .collect();
+    write_summary(&options.out, &summaries, options.seeds)
+        .map_err(|e| format!("{}: {e}", options.out.display()))?;
+    print_summary(&summaries, options.seeds);
+    println!(
+        "summary written to {}, runs to {}",
+        options.out.display(),
+        runs_path.display()
+    );
+    let failed: usize = summaries.iter().map(|s| s.failed).sum();
+    if failed > 0 {
+        return Err(format!(
+            "{failed} of {total} runs failed (their errors are in {} and the summary)",
+            runs_path.display()
+        ));
+    }
+    Ok(())
+}
+
+/// Runs the `wanted` jobs of `cases` that the per-run file `runs_path` does not already
+/// hold as successful (resume; a case run before with another configuration is refused),
+/// appending each result to the file as it finishes, with a progress line on stderr;
+/// returns every run the file then holds.
+pub fn run_campaign(
+    cases: &[Case],
+    wanted: &[Job],
+    threads: usize,
+    runs_path: &Path,
+) -> Result<Vec<RunRow>, String> {
+    let (done, mut file) = runs_file::open(runs_path).map_err(|e| e.to_string())?;
     // Computed once per case: a fingerprint formats the whole configuration.
     let fingerprints: Vec<String> = cases.iter().map(Case::fingerprint).collect();
-    check_fingerprints(&cases, &fingerprints, &done, &runs_path)?;
-
-    let seeds = options.first_seed..options.first_seed + options.seeds;
-    let jobs: Vec<Job> = (0..cases.len())
-        .flat_map(|case| seeds.clone().map(move |seed| Job { case, seed }))
+    check_fingerprints(cases, &fingerprints, &done, runs_path)?;
+    let jobs: Vec<Job> = wanted
+        .iter()
+        .copied()
         .filter(|job| {
             !done
                 .iter()
                 .any(|r| r.case == cases[job.case].name && r.seed == job.seed && r.result.is_ok())
         })
         .collect();
-    let total = cases.len() * options.seeds as usize;
     println!(
-        "{} case(s) x {} seeds ({}..={}) = {total} runs; {} already in {}; {} to run on {} thread(s)",
+        "{} case(s) = {} runs; {} already in {}; {} to run on {threads} thread(s)",
         cases.len(),
-        options.seeds,
-        seeds.start,
-        seeds.end - 1,
-        total - jobs.len(),
+        wanted.len(),
+        wanted.len() - jobs.len(),
         runs_path.display(),
         jobs.len(),
-        options.threads
     );
-    for case in &cases {
+    for case in cases {
         println!(
             "  {}: {} s at {} s, transient {:.1} s",
             case.name, case.config.run.duration, case.config.run.time_step, case.transient
@@ -226,7 +260,7 @@ fn run_campaign(options: Options) -> Result<(), String> {
 
     let mut progress = Progress::new(jobs.len());
     let mut write_error = None;
-    run_jobs(&cases, &jobs, options.threads, |event| {
+    run_jobs(cases, &jobs, threads, |event| {
         if let Some(finished) = event {
             let job = jobs[finished.job];
             progress.failed += usize::from(finished.result.is_err());
@@ -248,31 +282,9 @@ fn run_campaign(options: Options) -> Result<(), String> {
     if let Some(e) = write_error {
         return Err(e);
     }
-
     let text =
-        std::fs::read_to_string(&runs_path).map_err(|e| format!("{}: {e}", runs_path.display()))?;
-    let runs =
-        runs_file::parse(&text, &runs_path.display().to_string()).map_err(|e| e.to_string())?;
-    let summaries: Vec<CaseSummary> = cases
-        .iter()
-        .map(|case| CaseSummary::new(case, &runs, &seeds))
-        .collect();
-    write_summary(&options.out, &summaries, options.seeds)
-        .map_err(|e| format!("{}: {e}", options.out.display()))?;
-    print_summary(&summaries, options.seeds);
-    println!(
-        "summary written to {}, runs to {}",
-        options.out.display(),
-        runs_path.display()
-    );
-    let failed: usize = summaries.iter().map(|s| s.failed).sum();
-    if failed > 0 {
-        return Err(format!(
-            "{failed} of {total} runs failed (their errors are in {} and the summary)",
-            runs_path.display()
-        ));
-    }
-    Ok(())
+        std::fs::read_to_string(runs_path).map_err(|e| format!("{}: {e}", runs_path.display()))?;
+    runs_file::parse(&text, &runs_path.display().to_string()).map_err(|e| e.to_string())
 }
 
 /// The single case of a campaign without a case table.

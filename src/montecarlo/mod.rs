@@ -74,16 +74,8 @@ pub const STATISTICS: [&str; 4] = ["mean", "rms", "max", "min"];
 pub fn run_seed(case: &Case, seed: u64) -> Result<[DofStats; 3]> {
     let mut config = case.config.clone();
     config.sea.seed = seed;
-    let (duration, dt) = (config.run.duration, config.run.time_step);
-    let mut sim = Simulation::new(config)?;
-    let steps = (duration / dt).round() as usize;
-    let mut records: [Vec<f64>; 3] = std::array::from_fn(|_| Vec::with_capacity(steps + 1));
-    let mut push = |q: [f64; 3]| records.iter_mut().zip(q).for_each(|(r, v)| r.push(v));
-    push(sim.position());
-    for _ in 0..steps {
-        sim.step([0.0; 3])?;
-        push(sim.position());
-    }
+    let dt = config.run.time_step;
+    let records = simulate_positions(config)?;
     let mut out = [DofStats {
         mean: 0.0,
         rms: 0.0,
@@ -105,6 +97,23 @@ pub fn run_seed(case: &Case, seed: u64) -> Result<[DofStats; 3]> {
         };
     }
     Ok(out)
+}
+
+/// Simulates `config` from its initial condition for its duration with no external force
+/// and returns the records of X (m), Y (m) and theta (rad), sampled every time step from
+/// t = start_time (the initial state) to the end.
+pub fn simulate_positions(config: Config) -> Result<[Vec<f64>; 3]> {
+    let (duration, dt) = (config.run.duration, config.run.time_step);
+    let mut sim = Simulation::new(config)?;
+    let steps = (duration / dt).round() as usize;
+    let mut records: [Vec<f64>; 3] = std::array::from_fn(|_| Vec::with_capacity(steps + 1));
+    let mut push = |q: [f64; 3]| records.iter_mut().zip(q).for_each(|(r, v)| r.push(v));
+    push(sim.position());
+    for _ in 0..steps {
+        sim.step([0.0; 3])?;
+        push(sim.position());
+    }
+    Ok(records)
 }
 
 /// One run of a campaign: the index of its case and its seed.
