@@ -8,7 +8,10 @@
 use crate::config::{Config, DriftDamping, SecondOrder};
 use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};
 use crate::error::{Error, Result};
-use crate::forces::{transfers_on_grid, ForceRecords, GridQtf, QtfFactorisation, RecordOptions};
+use crate::forces::{
+    add_cross_terms, direction_pairs, transfers_on_grid, ForceRecords, GridQtf, QtfFactorisation,
+    RecordOptions,
+};
 use crate::hydro::aranha::aranha_damping;
 use crate::hydro::database::SlowDof;
 use crate::hydro::wamit::HEADING_TOLERANCE;
@@ -382,7 +385,8 @@ fn build_records(config: &Config) -> Result<(ForceRecords, Vec<QtfRank>)> {
             (Some(qtf), ranks)
         }
     };
-    let records = ForceRecords::build(
+    let pairs = direction_pairs(config, &components)?;
+    let mut records = ForceRecords::build(
         &components,
         &transfers,
         &RecordOptions {
@@ -393,6 +397,9 @@ fn build_records(config: &Config) -> Result<(ForceRecords, Vec<QtfRank>)> {
             gravity: config.environment.gravity,
         },
     );
+    if let Some(pairs) = &pairs {
+        add_cross_terms(&mut records, &components, pairs);
+    }
     Ok((records, ranks))
 }
 

@@ -84,10 +84,11 @@
 //! with `#` are skipped.
 
 use super::{
-    Column, Config, Current, DragModel, DriftDamping, Environment, InitialCondition, ModelOptions,
-    NewmanForm, Platform, Run, SecondOrder,
+    Column, Config, Current, DragModel, DriftDamping, Environment, InitialCondition, Interaction,
+    ModelOptions, NewmanForm, Platform, Run, SecondOrder,
 };
 use crate::error::{Error, Result};
+use crate::hydro::bidirectional::BidirectionalSource;
 use crate::hydro::column_drift::isolated_columns_table;
 use crate::hydro::columns::ColumnArray;
 use crate::hydro::database::{HydroDatabase, QtfData};
@@ -229,7 +230,7 @@ impl ConfigFile {
         let environment = self.environment.into_core();
         let platform = self.platform.into_core();
         let drift_span = self.drift.span();
-        let (drift, qtf) = self.drift.into_inner().into_table(
+        let (drift, qtf, bidirectional) = self.drift.into_inner().into_table(
             source,
             drift_span,
             base_dir,
@@ -244,6 +245,7 @@ impl ConfigFile {
             platform,
             drift,
             qtf,
+            bidirectional,
             model,
             initial: self.initial.into_core(),
         })
@@ -527,6 +529,15 @@ enum NewmanFile {
     Arithmetic,
 }
 
+/// `model.interaction`.
+#[derive(Deserialize, Clone, Copy)]
+#[serde(rename_all = "kebab-case")]
+enum InteractionFile {
+    None,
+    MeanDirection,
+    Bidirectional,
+}
+
 /// `model.drift_damping`.
 #[derive(Deserialize, Clone, Copy)]
 #[serde(rename_all = "kebab-case")]
@@ -560,6 +571,7 @@ struct ModelFile {
     second_order: Option<SecondOrderFile>,
     qtf_tolerance: Option<f64>,
     newman: Option<NewmanFile>,
+    interaction: Option<InteractionFile>,
     drift_damping: Option<DriftDampingFile>,
     drag: Option<DragKind>,
     /// Drag coefficient of the combined model.
@@ -592,6 +604,12 @@ impl ModelFile {
             None => default.newman,
             Some(NewmanFile::Geometric) => NewmanForm::Geometric,
             Some(NewmanFile::Arithmetic) => NewmanForm::Arithmetic,
+        };
+        let interaction = match self.interaction {
+            None => default.interaction,
+            Some(InteractionFile::None) => Interaction::None,
+            Some(InteractionFile::MeanDirection) => Interaction::MeanDirection,
+            Some(InteractionFile::Bidirectional) => Interaction::Bidirectional,
         };
         let drift_damping = match self.drift_damping {
             None => default.drift_damping,
@@ -628,6 +646,7 @@ impl ModelFile {
             second_order,
             qtf_tolerance,
             newman,
+            interaction,
             drift_damping,
             drag,
             strips_per_column: self.strips_per_column.unwrap_or(default.strips_per_column),
@@ -771,8 +790,9 @@ fn columns_grid(
 }
 
 impl DriftFile {
-    /// Builds the drift table, and takes the QTF when the source has one (a database);
-    /// `span` locates the `[drift]` section for error messages.
+    /// Builds the drift table, and takes the QTF when the source has one (a database) and
+    /// the bi-directional drift when it has it (the column-array solver, a database with a
+    /// table); `span` locates the `[drift]` section for error messages.
     fn into_table(
         self,
         source: &Source,
@@ -780,7 +800,7 @@ impl DriftFile {
         base_dir: &Path,
         platform: &Platform,
         environment: &Environment,
-    ) -> Result<(DriftTable, Option<QtfData>)> {
+    ) -> Result<DriftData> {
         if let DriftFile::Database { file } = self {
             return database_drift(source, span, &base_dir.join(file), environment);
         }
@@ -812,11 +832,10 @@ impl DriftFile {
                 let (omegas, headings) =
                     columns_grid(omega_min, omega_max, n_omega, heading_step_deg)
                         .map_err(|m| source.error_at(span.clone(), format!("[drift] {m}")))?;
-                ColumnArray::new(platform.columns.clone(), depth)?.drift_table(
-                    environment,
-                    &omegas,
-                    &headings,
-                )
+                let array = ColumnArray::new(platform.columns.clone(), depth)?;
+                let table = array.drift_table(environment, &omegas, &headings)?;
+                let bidirectional = BidirectionalSource::ColumnArray { array, omegas };
+                return Ok((table, None, Some(bidirectional)));
             }
             DriftFile::Table { columns, rows } => {
                 let at =
@@ -837,9 +856,12 @@ impl DriftFile {
             DriftFile::Csv { file } => read_csv(&base_dir.join(file)),
             DriftFile::Database { .. } => unreachable!("handled above"),
         }?;
-        Ok((table, None))
+        Ok((table, None, None))
     }
 }
+
+/// The drift table, the QTF and the bi-directional drift of a `[drift]` source.
+type DriftData = (DriftTable, Option<QtfData>, Option<BidirectionalSource>);
 
 /// The drift table and the QTF (if any) of a native hydro database made with
 /// `environment`'s density and gravity.
@@ -848,7 +870,7 @@ fn database_drift(
     span: Range<usize>,
     path: &Path,
     environment: &Environment,
-) -> Result<(DriftTable, Option<QtfData>)> {
+) -> Result<DriftData> {
     let database = HydroDatabase::load(path)?;
     let made_with = (database.water_density, database.gravity);
     if made_with != (environment.water_density, environment.gravity) {
@@ -866,7 +888,11 @@ fn database_drift(
             ),
         ));
     }
-    Ok((database.to_drift_table()?, database.qtf))
+    Ok((
+        database.to_drift_table()?,
+        database.qtf,
+        database.bidirectional_drift.map(BidirectionalSource::Table),
+    ))
 }
 
 /// Where each quantity sits in a row of the drift table.
@@ -1053,6 +1079,7 @@ draft = 15.0
 
 [model]
 newman = "arithmetic"
+interaction = "mean-direction"
 drift_damping = "table"
 drag = "separate"
 cd_slow = 0.6
@@ -1197,6 +1224,7 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
                 second_order: SecondOrder::Newman,
                 qtf_tolerance: crate::config::DEFAULT_QTF_TOLERANCE,
                 newman: NewmanForm::Arithmetic,
+                interaction: Interaction::MeanDirection,
                 drift_damping: DriftDamping::Table,
                 drag: DragModel::Separate {
                     slow: 0.6,
@@ -1507,6 +1535,7 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
             stiffness: None,
             drift: vec![point(0.3, 100.0), point(2.0, 900.0)],
             qtf: None,
+            bidirectional_drift: None,
         }
     }
 
