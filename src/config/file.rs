@@ -53,6 +53,8 @@
 //! second_order = "newman"    # default | "full-qtf" (the database's QTF, factorised)
 //! qtf_tolerance = 1e-6       # full-qtf only: discarded share of the QTF's eigenvalues
 //! newman = "geometric"       # default | "arithmetic" (force under newman; damping always)
+//! interaction = "auto"       # default | "bidirectional" | "mean-direction" | "none":
+//!                            # cross-direction terms of a short-crested sea
 //! drift_damping = "aranha"   # default | "table" (needs the b_ij columns) | "off"
 //! drag = "off"               # default | "separate" (cd_slow, cd_fast) | "combined" (cd)
 //! strips_per_column = 20
@@ -533,6 +535,7 @@ enum NewmanFile {
 #[derive(Deserialize, Clone, Copy)]
 #[serde(rename_all = "kebab-case")]
 enum InteractionFile {
+    Auto,
     None,
     MeanDirection,
     Bidirectional,
@@ -607,6 +610,7 @@ impl ModelFile {
         };
         let interaction = match self.interaction {
             None => default.interaction,
+            Some(InteractionFile::Auto) => Interaction::Auto,
             Some(InteractionFile::None) => Interaction::None,
             Some(InteractionFile::MeanDirection) => Interaction::MeanDirection,
             Some(InteractionFile::Bidirectional) => Interaction::Bidirectional,

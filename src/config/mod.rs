@@ -112,7 +112,13 @@ pub enum SecondOrder {
 /// slowly varying force (physics.md section 4; `forces::directional`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Interaction {
-    /// Each direction's own double sum only (cross-direction terms dropped).
+    /// The default: [`Interaction::Bidirectional`] when the drift source has bi-directional
+    /// drift, else [`Interaction::MeanDirection`]. Without cross terms the slow-drift
+    /// variance falls roughly like 1/N_beta as a spread sea is split into more directions
+    /// (README "Spread seas"), so some interaction is always on unless asked otherwise.
+    Auto,
+    /// Each direction's own double sum only (cross-direction terms dropped; the behaviour
+    /// before issue #5 part 2).
     None,
     /// Cross terms from T(omega; (beta_k + beta_l)/2) of the uni-directional drift table.
     MeanDirection,
@@ -169,7 +175,7 @@ impl Default for ModelOptions {
             second_order: SecondOrder::Newman,
             qtf_tolerance: DEFAULT_QTF_TOLERANCE,
             newman: NewmanForm::Geometric,
-            interaction: Interaction::None,
+            interaction: Interaction::Auto,
             drift_damping: DriftDamping::Aranha,
             drag: DragModel::Off,
             strips_per_column: 20,
@@ -347,6 +353,15 @@ impl Config {
             ));
         }
         Ok(())
+    }
+
+    /// The interaction actually used ([`Interaction::Auto`] resolved against the data).
+    pub fn interaction(&self) -> Interaction {
+        match (self.model.interaction, &self.bidirectional) {
+            (Interaction::Auto, Some(_)) => Interaction::Bidirectional,
+            (Interaction::Auto, None) => Interaction::MeanDirection,
+            (chosen, _) => chosen,
+        }
     }
 
     fn validate_platform(&self) -> Result<()> {

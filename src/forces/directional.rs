@@ -40,7 +40,8 @@
 //!
 //! # Data ([`Interaction`])
 //!
-//! `Bidirectional`: the configuration's [`BidirectionalSource`] (column solver at the exact
+//! `Auto` (default): `Bidirectional` when the configuration has the data, else
+//! `MeanDirection`. `Bidirectional`: the configuration's [`BidirectionalSource`] (column solver at the exact
 //! directions, or a database table); `MeanDirection`: T(omega; (beta_k + beta_l)/2) from the
 //! uni-directional drift table (`hydro::bidirectional::mean_direction_pairs`). The
 //! wave-drift damping records keep no cross terms (no bi-directional damping data exists).
@@ -65,12 +66,12 @@ pub fn direction_pairs(
     }
     let grid = &components.grid;
     let band = (grid.omega(0), grid.omega(grid.count - 1));
-    match config.model.interaction {
+    match config.interaction() {
         Interaction::None => Ok(None),
         Interaction::MeanDirection => {
             mean_direction_pairs(&config.drift, band, &headings).map(Some)
         }
-        Interaction::Bidirectional => {
+        Interaction::Bidirectional | Interaction::Auto => {
             let source = config.bidirectional.as_ref().ok_or_else(|| {
                 Error::invalid(
                     "model.interaction",

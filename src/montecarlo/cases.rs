@@ -7,7 +7,7 @@
 //! cos-2s; a long-crested base becomes cos^N), `n_directions`, `current_speed` (m/s),
 //! `current_direction_deg`, `cd` (combined drag model), `cd_slow` and `cd_fast` (separate
 //! model; one of them alone keeps the other from a separate-model base), `duration` (s),
-//! `interaction` (text: `none`, `mean-direction` or `bidirectional`, as `[model]
+//! `interaction` (text: `auto`, `none`, `mean-direction` or `bidirectional`, as `[model]
 //! interaction` of the configuration file).
 //! Degrees are converted to radians here. Blank lines and lines starting with `#` are
 //! skipped; fields are separated by commas and trimmed (no quoting).
@@ -131,6 +131,7 @@ pub fn parse_case_table(text: &str, source: &str) -> Result<Vec<CaseRow>> {
             }
             if column == "interaction" {
                 interaction = Some(match field {
+                    "auto" => Interaction::Auto,
                     "none" => Interaction::None,
                     "mean-direction" => Interaction::MeanDirection,
                     "bidirectional" => Interaction::Bidirectional,
@@ -139,7 +140,7 @@ pub fn parse_case_table(text: &str, source: &str) -> Result<Vec<CaseRow>> {
                             line,
                             format!(
                                 "row {row}, column 'interaction': '{field}' is not one of \
-                                 none, mean-direction, bidirectional"
+                                 auto, none, mean-direction, bidirectional"
                             ),
                         ))
                     }
