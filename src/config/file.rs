@@ -710,8 +710,14 @@ enum DriftFile {
     /// A CSV file, relative to the configuration file's directory.
     Csv { file: PathBuf },
     /// The drift table of a native hydro database (JSON, `hydro::database`), relative to
-    /// the configuration file's directory.
-    Database { file: PathBuf },
+    /// the configuration file's directory. `bidirectional = "column-array"` takes the
+    /// bi-directional drift from the deep-water column solver on `[[platform.columns]]` at
+    /// the database's drift frequencies (what the FMU's packed default platform uses, since
+    /// a bi-directional table would be large); otherwise the database's own table, if any.
+    Database {
+        file: PathBuf,
+        bidirectional: Option<BidirectionalFile>,
+    },
     /// The closed-form drift of the platform's columns, each treated as an isolated,
     /// infinitely deep column (no interaction; see `hydro::column_drift`), on `n_omega`
     /// frequencies from `omega_min` to `omega_max` (rad/s) and headings every
@@ -741,6 +747,13 @@ enum DriftFile {
         heading_step_deg: f64,
         depth: Option<f64>,
     },
+}
+
+/// `[drift] bidirectional` of a database source.
+#[derive(Deserialize, Clone, Copy)]
+#[serde(rename_all = "kebab-case")]
+enum BidirectionalFile {
+    ColumnArray,
 }
 
 /// Default frequency range and resolution of `source = "columns"`.
@@ -805,8 +818,31 @@ impl DriftFile {
         platform: &Platform,
         environment: &Environment,
     ) -> Result<DriftData> {
-        if let DriftFile::Database { file } = self {
-            return database_drift(source, span, &base_dir.join(file), environment);
+        if let DriftFile::Database {
+            file,
+            bidirectional,
+        } = self
+        {
+            let (table, qtf, own) =
+                database_drift(source, span.clone(), &base_dir.join(file), environment)?;
+            let bidirectional = match bidirectional {
+                None => own,
+                Some(BidirectionalFile::ColumnArray) => {
+                    if own.is_some() {
+                        return Err(source.error_at(
+                            span,
+                            "[drift] bidirectional = \"column-array\" but the database has its \
+                             own bidirectional_drift table: use one of them"
+                                .to_string(),
+                        ));
+                    }
+                    Some(BidirectionalSource::ColumnArray {
+                        array: ColumnArray::new(platform.columns.clone(), None)?,
+                        omegas: table.omegas().to_vec(),
+                    })
+                }
+            };
+            return Ok((table, qtf, bidirectional));
         }
         let table = match self {
             DriftFile::Columns {
