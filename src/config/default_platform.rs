@@ -71,6 +71,11 @@ mod tests {
         let config = default_config().unwrap();
         config.validate().unwrap();
         assert_eq!(config.platform.columns.len(), 4);
+        // The column-array source brings the bi-directional drift, so `auto` uses it.
+        assert_eq!(
+            config.interaction(),
+            crate::config::Interaction::Bidirectional
+        );
     }
 
     /// The documented natural periods follow from the numbers in the file.

@@ -1579,6 +1579,47 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
         }
     }
 
+    /// A database's bi-directional table reaches the configuration; `bidirectional =
+    /// "column-array"` takes the solver instead, and refuses to shadow a table.
+    #[test]
+    fn database_bidirectional_drift_sources() {
+        use crate::hydro::bidirectional::BidirectionalTable;
+        let json = temp_file("db-bidirectional.json", "");
+        let dir = json.parent().expect("temp dir");
+        let name = json.file_name().expect("file name").to_string_lossy();
+        let head = MINIMAL.split("[drift]").next().expect("drift section");
+        let text = format!("{head}[drift]\nsource = \"database\"\nfile = \"{name}\"\n");
+        let with_columns = format!(
+            "{head}[[platform.columns]]\nx = 20.0\ny = 0.0\ndiameter = 8.0\ndraft = 10.0\n\
+             [drift]\nsource = \"database\"\nfile = \"{name}\"\nbidirectional = \"column-array\"\n"
+        );
+        let mut database = database_with_minimal_drift(1025.0);
+        database.save(&json).expect("writable");
+        let solver = parse(&with_columns, "test.toml", dir).expect("valid");
+        let table = BidirectionalTable {
+            omegas: vec![0.3, 2.0],
+            headings: vec![0.0],
+            re: vec![vec![vec![[1.0, 0.0, 0.0]]]; 2],
+            im: vec![vec![vec![[0.0; 3]]]; 2],
+        };
+        database.bidirectional_drift = Some(table.clone());
+        database.save(&json).expect("writable");
+        let own = parse(&text, "test.toml", dir).expect("valid");
+        let clash = parse(&with_columns, "test.toml", dir).expect_err("two sources");
+        std::fs::remove_file(&json).expect("remove temporary file");
+        assert!(matches!(
+            solver.bidirectional,
+            Some(BidirectionalSource::ColumnArray { ref omegas, .. }) if omegas == &[0.3, 2.0]
+        ));
+        assert_eq!(own.bidirectional, Some(BidirectionalSource::Table(table)));
+        let message = clash.to_string();
+        assert!(
+            message.contains("bidirectional = \"column-array\"")
+                && message.contains("own bidirectional_drift"),
+            "{message}"
+        );
+    }
+
     #[test]
     fn database_drift_is_read_relative_to_the_base_directory() {
         let json = temp_file("db.json", "");
