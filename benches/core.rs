@@ -42,8 +42,8 @@ use criterion::Criterion;
 use rustfft::num_complex::Complex64;
 use rustfft::FftPlanner;
 use slowdrift::config::{
-    Current, DragModel, DriftDamping, Environment, InitialCondition, ModelOptions, NewmanForm,
-    Platform, Run, SecondOrder, DEFAULT_QTF_TOLERANCE,
+    Current, DragModel, DriftDamping, Environment, InitialCondition, Interaction, ModelOptions,
+    NewmanForm, Platform, Run, SecondOrder, DEFAULT_QTF_TOLERANCE,
 };
 use slowdrift::forces::{
     transfers_on_grid, ForceRecords, QtfFactorisation, RecordOptions, Synthesizer,
@@ -122,10 +122,12 @@ fn config(duration: f64, time_step: f64, drag: DragModel) -> Config {
         platform: platform(),
         drift,
         qtf: None,
+        bidirectional: None,
         model: ModelOptions {
             second_order: SecondOrder::Newman,
             qtf_tolerance: DEFAULT_QTF_TOLERANCE,
             newman: NewmanForm::Geometric,
+            interaction: Interaction::None,
             drift_damping: DriftDamping::Aranha,
             drag,
             strips_per_column: 20,

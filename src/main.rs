@@ -110,6 +110,13 @@ fn simulate(args: Arguments) -> Result<(), String> {
         }
     };
     let transient = args.transient.unwrap_or_else(|| config.default_transient());
+    let directions = config.sea.directions().len();
+    if directions > 1 {
+        println!(
+            "short-crested: {directions} directions, interaction between them: {:?}",
+            config.interaction()
+        );
+    }
     let started = std::time::Instant::now();
     let mut sim = Simulation::new(config).map_err(|e| e.to_string())?;
     for r in sim.qtf_ranks() {

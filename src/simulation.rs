@@ -9,8 +9,8 @@ use crate::config::{Config, DriftDamping, SecondOrder};
 use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};
 use crate::error::{Error, Result};
 use crate::forces::{
-    transfers_on_grid, DirectionTransfer, ForceRecords, GridQtf, QtfFactorisation, RecordOptions,
-    YawFollowingRecords, YawGrid,
+    add_cross_terms, direction_pairs, transfers_on_grid, DirectionTransfer, ForceRecords, GridQtf,
+    QtfFactorisation, RecordOptions, YawFollowingRecords, YawGrid,
 };
 use crate::hydro::aranha::aranha_damping;
 use crate::hydro::database::SlowDof;
@@ -376,6 +376,21 @@ fn build_records(config: &Config) -> Result<(ForceRecords, Vec<QtfRank>)> {
         )?),
     };
     let table = damping_table.as_ref().unwrap_or(&config.drift);
+    // Cross-direction terms of a spread sea (None: long-crested or interaction "none").
+    let pairs = direction_pairs(config, &components)?;
+    if let (Some(options), Some(_)) = (&config.model.yaw_following, &pairs) {
+        return Err(Error::invalid(
+            "model.yaw_following",
+            format!("{} headings", options.headings),
+            format!(
+                "the yaw-following records do not carry the cross-direction terms of a spread \
+                 sea ({} directions, model.interaction {:?}): use a long-crested sea or \
+                 model.interaction = \"none\"",
+                components.directions.len(),
+                config.interaction()
+            ),
+        ));
+    }
     let yaw_following = match &config.model.yaw_following {
         None => None,
         Some(options) => Some(YawFollowingRecords::build(
@@ -421,6 +436,9 @@ fn build_records(config: &Config) -> Result<(ForceRecords, Vec<QtfRank>)> {
             gravity: config.environment.gravity,
         },
     );
+    if let Some(pairs) = &pairs {
+        add_cross_terms(&mut records, &components, pairs);
+    }
     records.yaw_following = yaw_following;
     Ok((records, ranks))
 }

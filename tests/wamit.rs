@@ -719,6 +719,7 @@ fn small_database() -> HydroDatabase {
                 im: vec![vec![0.0, -1.0 / 7.0], vec![1.0 / 7.0, 0.0]],
             }],
         }),
+        bidirectional_drift: None,
     }
 }
 

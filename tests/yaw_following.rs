@@ -5,7 +5,7 @@
 mod common;
 
 use slowdrift::config::default_platform::default_config;
-use slowdrift::config::{DragModel, SecondOrder, YawFollowing};
+use slowdrift::config::{DragModel, Interaction, SecondOrder, YawFollowing};
 use slowdrift::forces::{ForceRecords, YawPoint};
 use slowdrift::hydro::{DriftRow, DriftTable};
 use slowdrift::sea_state::Spreading;
@@ -19,7 +19,8 @@ fn default() -> Config {
 }
 
 /// The default platform for `duration` s in a sea towards `direction_deg`, optionally
-/// spread cos^2 over 5 directions, with the given yaw following.
+/// spread cos^2 over 5 directions (each direction's own terms only: yaw following does not
+/// carry the cross-direction terms), with the given yaw following.
 fn config(duration: f64, direction_deg: f64, spread: bool, yaw: Option<YawFollowing>) -> Config {
     let mut c = default();
     c.run.duration = duration;
@@ -27,6 +28,7 @@ fn config(duration: f64, direction_deg: f64, spread: bool, yaw: Option<YawFollow
     if spread {
         c.sea.spreading = Spreading::CosN { n: 2.0 };
         c.sea.n_directions = 5;
+        c.model.interaction = Interaction::None;
     }
     c.model.yaw_following = yaw;
     c
@@ -372,4 +374,23 @@ fn record_means_are_the_drift_at_the_relative_heading() {
         means[0][1] * means[2][1] < 0.0,
         "sway changes sign with the yaw"
     );
+}
+
+/// In a spread sea with cross-direction terms, yaw following is refused naming the option
+/// (its records carry each direction's own terms only); with interaction "none" it runs.
+#[test]
+fn yaw_following_in_a_spread_sea_with_interaction_is_refused() {
+    let circle = Some(YawFollowing {
+        headings: 12,
+        range: None,
+    });
+    let mut c = config(600.0, 30.0, true, circle);
+    assert!(Simulation::new(c.clone()).is_ok());
+    c.model.interaction = Interaction::Auto;
+    let e = Simulation::new(c).unwrap_err();
+    assert!(
+        matches!(&e, Error::InvalidValue { field, .. } if field == "model.yaw_following"),
+        "{e}"
+    );
+    assert!(e.to_string().contains("cross-direction terms"), "{e}");
 }

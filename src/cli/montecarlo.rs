@@ -294,6 +294,7 @@ fn base_row() -> CaseRow {
         line: 1,
         name: "base".into(),
         values: Vec::new(),
+        interaction: None,
     }
 }
 

@@ -27,7 +27,10 @@ pub fn default_config() -> Result<Config> {
 /// Writes the default platform for an FMU's `resources/` folder: its drift table (the
 /// column solver's, computed here once) as the hydro database [`RESOURCE_DRIFT`], and the
 /// default configuration as [`RESOURCE_CONFIG`] with its `[drift]` section pointing at that
-/// database, so that an instance loads the hydrodynamics instead of recomputing them.
+/// database, so that an instance loads the hydrodynamics instead of recomputing them. The
+/// bi-directional drift of spread seas still comes from the column solver (`bidirectional =
+/// "column-array"`), at the sea's exact directions when the instance initialises, as in
+/// the native default.
 pub fn write_resources(dir: &Path) -> Result<()> {
     let config = default_config()?;
     let database = HydroDatabase::from_drift_table(
@@ -46,7 +49,9 @@ pub fn write_resources(dir: &Path) -> Result<()> {
         .expect("default.toml ends with its [drift] section");
     let text = format!(
         "{}\n[drift]\n# precomputed by fmu-pack from the default's column-array source\n\
-         source = \"database\"\nfile = \"{RESOURCE_DRIFT}\"\n",
+         source = \"database\"\nfile = \"{RESOURCE_DRIFT}\"\n\
+         # spread seas: bi-directional drift from the column solver at the sea's directions\n\
+         bidirectional = \"column-array\"\n",
         &DEFAULT_CONFIG_TOML[..drift_section]
     );
     let path = dir.join(RESOURCE_CONFIG);
@@ -66,6 +71,11 @@ mod tests {
         let config = default_config().unwrap();
         config.validate().unwrap();
         assert_eq!(config.platform.columns.len(), 4);
+        // The column-array source brings the bi-directional drift, so `auto` uses it.
+        assert_eq!(
+            config.interaction(),
+            crate::config::Interaction::Bidirectional
+        );
     }
 
     /// The documented natural periods follow from the numbers in the file.

@@ -53,6 +53,8 @@
 //! second_order = "newman"    # default | "full-qtf" (the database's QTF, factorised)
 //! qtf_tolerance = 1e-6       # full-qtf only: discarded share of the QTF's eigenvalues
 //! newman = "geometric"       # default | "arithmetic" (force under newman; damping always)
+//! interaction = "auto"       # default | "bidirectional" | "mean-direction" | "none":
+//!                            # cross-direction terms of a short-crested sea
 //! drift_damping = "aranha"   # default | "table" (needs the b_ij columns) | "off"
 //! drag = "off"               # default | "separate" (cd_slow, cd_fast) | "combined" (cd)
 //! strips_per_column = 20
@@ -86,10 +88,11 @@
 //! with `#` are skipped.
 
 use super::{
-    Column, Config, Current, DragModel, DriftDamping, Environment, InitialCondition, ModelOptions,
-    NewmanForm, Platform, Run, SecondOrder, YawFollowing,
+    Column, Config, Current, DragModel, DriftDamping, Environment, InitialCondition, Interaction,
+    ModelOptions, NewmanForm, Platform, Run, SecondOrder, YawFollowing,
 };
 use crate::error::{Error, Result};
+use crate::hydro::bidirectional::BidirectionalSource;
 use crate::hydro::column_drift::isolated_columns_table;
 use crate::hydro::columns::ColumnArray;
 use crate::hydro::database::{HydroDatabase, QtfData};
@@ -231,7 +234,7 @@ impl ConfigFile {
         let environment = self.environment.into_core();
         let platform = self.platform.into_core();
         let drift_span = self.drift.span();
-        let (drift, qtf) = self.drift.into_inner().into_table(
+        let (drift, qtf, bidirectional) = self.drift.into_inner().into_table(
             source,
             drift_span,
             base_dir,
@@ -246,6 +249,7 @@ impl ConfigFile {
             platform,
             drift,
             qtf,
+            bidirectional,
             model,
             initial: self.initial.into_core(),
         })
@@ -529,6 +533,16 @@ enum NewmanFile {
     Arithmetic,
 }
 
+/// `model.interaction`.
+#[derive(Deserialize, Clone, Copy)]
+#[serde(rename_all = "kebab-case")]
+enum InteractionFile {
+    Auto,
+    None,
+    MeanDirection,
+    Bidirectional,
+}
+
 /// `model.drift_damping`.
 #[derive(Deserialize, Clone, Copy)]
 #[serde(rename_all = "kebab-case")]
@@ -562,6 +576,7 @@ struct ModelFile {
     second_order: Option<SecondOrderFile>,
     qtf_tolerance: Option<f64>,
     newman: Option<NewmanFile>,
+    interaction: Option<InteractionFile>,
     drift_damping: Option<DriftDampingFile>,
     drag: Option<DragKind>,
     /// Drag coefficient of the combined model.
@@ -605,6 +620,13 @@ impl ModelFile {
             Some(NewmanFile::Geometric) => NewmanForm::Geometric,
             Some(NewmanFile::Arithmetic) => NewmanForm::Arithmetic,
         };
+        let interaction = match self.interaction {
+            None => default.interaction,
+            Some(InteractionFile::Auto) => Interaction::Auto,
+            Some(InteractionFile::None) => Interaction::None,
+            Some(InteractionFile::MeanDirection) => Interaction::MeanDirection,
+            Some(InteractionFile::Bidirectional) => Interaction::Bidirectional,
+        };
         let drift_damping = match self.drift_damping {
             None => default.drift_damping,
             Some(DriftDampingFile::Aranha) => DriftDamping::Aranha,
@@ -640,6 +662,7 @@ impl ModelFile {
             second_order,
             qtf_tolerance,
             newman,
+            interaction,
             drift_damping,
             drag,
             strips_per_column: self.strips_per_column.unwrap_or(default.strips_per_column),
@@ -705,8 +728,14 @@ enum DriftFile {
     /// A CSV file, relative to the configuration file's directory.
     Csv { file: PathBuf },
     /// The drift table of a native hydro database (JSON, `hydro::database`), relative to
-    /// the configuration file's directory.
-    Database { file: PathBuf },
+    /// the configuration file's directory. `bidirectional = "column-array"` takes the
+    /// bi-directional drift from the deep-water column solver on `[[platform.columns]]` at
+    /// the database's drift frequencies (what the FMU's packed default platform uses, since
+    /// a bi-directional table would be large); otherwise the database's own table, if any.
+    Database {
+        file: PathBuf,
+        bidirectional: Option<BidirectionalFile>,
+    },
     /// The closed-form drift of the platform's columns, each treated as an isolated,
     /// infinitely deep column (no interaction; see `hydro::column_drift`), on `n_omega`
     /// frequencies from `omega_min` to `omega_max` (rad/s) and headings every
@@ -736,6 +765,13 @@ enum DriftFile {
         heading_step_deg: f64,
         depth: Option<f64>,
     },
+}
+
+/// `[drift] bidirectional` of a database source.
+#[derive(Deserialize, Clone, Copy)]
+#[serde(rename_all = "kebab-case")]
+enum BidirectionalFile {
+    ColumnArray,
 }
 
 /// Default frequency range and resolution of `source = "columns"`.
@@ -789,8 +825,9 @@ fn columns_grid(
 }
 
 impl DriftFile {
-    /// Builds the drift table, and takes the QTF when the source has one (a database);
-    /// `span` locates the `[drift]` section for error messages.
+    /// Builds the drift table, and takes the QTF when the source has one (a database) and
+    /// the bi-directional drift when it has it (the column-array solver, a database with a
+    /// table); `span` locates the `[drift]` section for error messages.
     fn into_table(
         self,
         source: &Source,
@@ -798,9 +835,32 @@ impl DriftFile {
         base_dir: &Path,
         platform: &Platform,
         environment: &Environment,
-    ) -> Result<(DriftTable, Option<QtfData>)> {
-        if let DriftFile::Database { file } = self {
-            return database_drift(source, span, &base_dir.join(file), environment);
+    ) -> Result<DriftData> {
+        if let DriftFile::Database {
+            file,
+            bidirectional,
+        } = self
+        {
+            let (table, qtf, own) =
+                database_drift(source, span.clone(), &base_dir.join(file), environment)?;
+            let bidirectional = match bidirectional {
+                None => own,
+                Some(BidirectionalFile::ColumnArray) => {
+                    if own.is_some() {
+                        return Err(source.error_at(
+                            span,
+                            "[drift] bidirectional = \"column-array\" but the database has its \
+                             own bidirectional_drift table: use one of them"
+                                .to_string(),
+                        ));
+                    }
+                    Some(BidirectionalSource::ColumnArray {
+                        array: ColumnArray::new(platform.columns.clone(), None)?,
+                        omegas: table.omegas().to_vec(),
+                    })
+                }
+            };
+            return Ok((table, qtf, bidirectional));
         }
         let table = match self {
             DriftFile::Columns {
@@ -830,11 +890,10 @@ impl DriftFile {
                 let (omegas, headings) =
                     columns_grid(omega_min, omega_max, n_omega, heading_step_deg)
                         .map_err(|m| source.error_at(span.clone(), format!("[drift] {m}")))?;
-                ColumnArray::new(platform.columns.clone(), depth)?.drift_table(
-                    environment,
-                    &omegas,
-                    &headings,
-                )
+                let array = ColumnArray::new(platform.columns.clone(), depth)?;
+                let table = array.drift_table(environment, &omegas, &headings)?;
+                let bidirectional = BidirectionalSource::ColumnArray { array, omegas };
+                return Ok((table, None, Some(bidirectional)));
             }
             DriftFile::Table { columns, rows } => {
                 let at =
@@ -855,9 +914,12 @@ impl DriftFile {
             DriftFile::Csv { file } => read_csv(&base_dir.join(file)),
             DriftFile::Database { .. } => unreachable!("handled above"),
         }?;
-        Ok((table, None))
+        Ok((table, None, None))
     }
 }
+
+/// The drift table, the QTF and the bi-directional drift of a `[drift]` source.
+type DriftData = (DriftTable, Option<QtfData>, Option<BidirectionalSource>);
 
 /// The drift table and the QTF (if any) of a native hydro database made with
 /// `environment`'s density and gravity.
@@ -866,7 +928,7 @@ fn database_drift(
     span: Range<usize>,
     path: &Path,
     environment: &Environment,
-) -> Result<(DriftTable, Option<QtfData>)> {
+) -> Result<DriftData> {
     let database = HydroDatabase::load(path)?;
     let made_with = (database.water_density, database.gravity);
     if made_with != (environment.water_density, environment.gravity) {
@@ -884,7 +946,11 @@ fn database_drift(
             ),
         ));
     }
-    Ok((database.to_drift_table()?, database.qtf))
+    Ok((
+        database.to_drift_table()?,
+        database.qtf,
+        database.bidirectional_drift.map(BidirectionalSource::Table),
+    ))
 }
 
 /// Where each quantity sits in a row of the drift table.
@@ -1071,6 +1137,7 @@ draft = 15.0
 
 [model]
 newman = "arithmetic"
+interaction = "mean-direction"
 drift_damping = "table"
 drag = "separate"
 cd_slow = 0.6
@@ -1215,6 +1282,7 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
                 second_order: SecondOrder::Newman,
                 qtf_tolerance: crate::config::DEFAULT_QTF_TOLERANCE,
                 newman: NewmanForm::Arithmetic,
+                interaction: Interaction::MeanDirection,
                 drift_damping: DriftDamping::Table,
                 drag: DragModel::Separate {
                     slow: 0.6,
@@ -1552,7 +1620,49 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
             stiffness: None,
             drift: vec![point(0.3, 100.0), point(2.0, 900.0)],
             qtf: None,
+            bidirectional_drift: None,
         }
+    }
+
+    /// A database's bi-directional table reaches the configuration; `bidirectional =
+    /// "column-array"` takes the solver instead, and refuses to shadow a table.
+    #[test]
+    fn database_bidirectional_drift_sources() {
+        use crate::hydro::bidirectional::BidirectionalTable;
+        let json = temp_file("db-bidirectional.json", "");
+        let dir = json.parent().expect("temp dir");
+        let name = json.file_name().expect("file name").to_string_lossy();
+        let head = MINIMAL.split("[drift]").next().expect("drift section");
+        let text = format!("{head}[drift]\nsource = \"database\"\nfile = \"{name}\"\n");
+        let with_columns = format!(
+            "{head}[[platform.columns]]\nx = 20.0\ny = 0.0\ndiameter = 8.0\ndraft = 10.0\n\
+             [drift]\nsource = \"database\"\nfile = \"{name}\"\nbidirectional = \"column-array\"\n"
+        );
+        let mut database = database_with_minimal_drift(1025.0);
+        database.save(&json).expect("writable");
+        let solver = parse(&with_columns, "test.toml", dir).expect("valid");
+        let table = BidirectionalTable {
+            omegas: vec![0.3, 2.0],
+            headings: vec![0.0],
+            re: vec![vec![vec![[1.0, 0.0, 0.0]]]; 2],
+            im: vec![vec![vec![[0.0; 3]]]; 2],
+        };
+        database.bidirectional_drift = Some(table.clone());
+        database.save(&json).expect("writable");
+        let own = parse(&text, "test.toml", dir).expect("valid");
+        let clash = parse(&with_columns, "test.toml", dir).expect_err("two sources");
+        std::fs::remove_file(&json).expect("remove temporary file");
+        assert!(matches!(
+            solver.bidirectional,
+            Some(BidirectionalSource::ColumnArray { ref omegas, .. }) if omegas == &[0.3, 2.0]
+        ));
+        assert_eq!(own.bidirectional, Some(BidirectionalSource::Table(table)));
+        let message = clash.to_string();
+        assert!(
+            message.contains("bidirectional = \"column-array\"")
+                && message.contains("own bidirectional_drift"),
+            "{message}"
+        );
     }
 
     #[test]

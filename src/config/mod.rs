@@ -10,6 +10,7 @@ pub mod file;
 use crate::error::{
     require_finite, require_finite_matrix, require_non_negative, require_positive, Error, Result,
 };
+use crate::hydro::bidirectional::BidirectionalSource;
 use crate::hydro::database::{QtfData, SlowDof};
 use crate::hydro::wamit::HEADING_TOLERANCE;
 use crate::hydro::DriftTable;
@@ -107,6 +108,24 @@ pub enum SecondOrder {
     FullQtf,
 }
 
+/// Whether the components of different directions of a short-crested sea interact in the
+/// slowly varying force (physics.md section 4; `forces::directional`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Interaction {
+    /// The default: [`Interaction::Bidirectional`] when the drift source has bi-directional
+    /// drift, else [`Interaction::MeanDirection`]. Without cross terms the slow-drift
+    /// variance falls roughly like 1/N_beta as a spread sea is split into more directions
+    /// (README "Spread seas"), so some interaction is always on unless asked otherwise.
+    Auto,
+    /// Each direction's own double sum only (cross-direction terms dropped; the behaviour
+    /// before issue #5 part 2).
+    None,
+    /// Cross terms from T(omega; (beta_k + beta_l)/2) of the uni-directional drift table.
+    MeanDirection,
+    /// Cross terms from the bi-directional drift of [`Config::bidirectional`].
+    Bidirectional,
+}
+
 /// Where the wave-drift damping coefficients b_ij(omega, beta) come from (physics.md 5).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum DriftDamping {
@@ -154,6 +173,9 @@ pub struct ModelOptions {
     /// The form of Newman's approximation: the wave force under [`SecondOrder::Newman`],
     /// and the wave-drift damping records always.
     pub newman: NewmanForm,
+    /// Interaction between the directions of a short-crested sea (arithmetic Newman form
+    /// across directions, whatever `newman` is; `forces::directional`).
+    pub interaction: Interaction,
     pub drift_damping: DriftDamping,
     pub drag: DragModel,
     /// Number of Morison strips per column, from the keel to the instantaneous free surface.
@@ -169,6 +191,7 @@ impl Default for ModelOptions {
             second_order: SecondOrder::Newman,
             qtf_tolerance: DEFAULT_QTF_TOLERANCE,
             newman: NewmanForm::Geometric,
+            interaction: Interaction::Auto,
             drift_damping: DriftDamping::Aranha,
             drag: DragModel::Off,
             strips_per_column: 20,
@@ -196,6 +219,9 @@ pub struct Config {
     /// The full difference-frequency QTF (uni-directional headings), when the drift source
     /// has one; used by [`SecondOrder::FullQtf`].
     pub qtf: Option<QtfData>,
+    /// The bi-directional drift, when the drift source has it (the column-array solver, a
+    /// database with a `bidirectional_drift` table); used by [`Interaction::Bidirectional`].
+    pub bidirectional: Option<BidirectionalSource>,
     pub model: ModelOptions,
     pub initial: InitialCondition,
 }
@@ -271,6 +297,7 @@ impl Config {
         }
         self.validate_yaw_following()?;
         self.validate_qtf()?;
+        self.validate_interaction()?;
         for (i, v) in self.initial.position.iter().enumerate() {
             require_finite(&format!("initial.position[{i}]"), *v)?;
         }
@@ -375,6 +402,30 @@ impl Config {
             }
         }
         Ok(())
+    }
+
+    /// Bi-directional interaction needs bi-directional data; a table must be sound.
+    fn validate_interaction(&self) -> Result<()> {
+        if let Some(BidirectionalSource::Table(table)) = &self.bidirectional {
+            table.validate()?;
+        }
+        if self.model.interaction == Interaction::Bidirectional && self.bidirectional.is_none() {
+            return Err(Error::invalid(
+                "model.interaction",
+                "bidirectional",
+                "the drift source has no bi-directional drift (it comes from [drift] source =                  \"column-array\" or a database with a bidirectional_drift table); use                  interaction = \"mean-direction\" to approximate it from the drift table, or                  \"none\"",
+            ));
+        }
+        Ok(())
+    }
+
+    /// The interaction actually used ([`Interaction::Auto`] resolved against the data).
+    pub fn interaction(&self) -> Interaction {
+        match (self.model.interaction, &self.bidirectional) {
+            (Interaction::Auto, Some(_)) => Interaction::Bidirectional,
+            (Interaction::Auto, None) => Interaction::MeanDirection,
+            (chosen, _) => chosen,
+        }
     }
 
     fn validate_platform(&self) -> Result<()> {

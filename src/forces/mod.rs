@@ -2,6 +2,7 @@
 //! its mean position and zero yaw (E&S section 2): the wave elevation, the slowly varying
 //! wave force D(t), the wave-drift damping B(t), and the columns' fast kinematics.
 
+mod directional;
 mod kinematics;
 mod newman;
 mod qtf;
@@ -11,6 +12,7 @@ mod transfer;
 mod viscous;
 mod yaw_following;
 
+pub use directional::{add_cross_terms, cross_direction_force, direction_pairs};
 pub use kinematics::ColumnKinematics;
 pub use newman::NewmanBuilder;
 pub use qtf::{check_covers, check_tolerance, GridQtf, QtfFactorisation, MIN_QTF_TOLERANCE};

@@ -10,8 +10,9 @@
 //!   and eta_c = sum a_i e^{i omega_i t}.
 //!
 //! Both have the mean sum |a_i|^2 T_i -> 2 integral S T d omega. The same construction gives
-//! the time-varying damping B_ij(t) from b_ij(omega). Directions of a spread sea are summed
-//! without interaction between directions (each direction's double sum only).
+//! the time-varying damping B_ij(t) from b_ij(omega). For a spread sea this module builds
+//! each direction's own double sum; the cross terms between directions are added by
+//! `forces::directional`.
 
 use super::synthesis::Synthesizer;
 use crate::config::NewmanForm;

@@ -18,7 +18,9 @@
 //!              "damping": null | 3x3 b_ij}, ...],
 //!   "qtf": null | {"omegas": [rad/s, increasing],
 //!                  "blocks": [{"dof": "surge" | "sway" | "yaw", "heading": rad,
-//!                              "re": n x n, "im": n x n}, ...]}
+//!                              "re": n x n, "im": n x n}, ...]},
+//!   "bidirectional_drift": (optional) {"omegas": [rad/s], "headings": [rad],
+//!                  "re": n_omega x n_heading x n_heading x [surge, sway, yaw], "im": same}
 //! }
 //! ```
 //!
@@ -26,6 +28,7 @@
 //! amplitude squared with F(t) = Re sum a_i a_j* T_ij e^{i (w_i - w_j) t} (physics.md
 //! section 4). Numbers are written so that they read back bit for bit.
 
+use super::bidirectional::BidirectionalTable;
 use super::wamit::{
     read_added_mass_damping, read_difference_qtf, read_hydrostatics, read_mean_drift,
     DifferenceQtf, WamitOptions,
@@ -69,6 +72,10 @@ pub struct HydroDatabase {
     pub drift: Vec<DriftPoint>,
     /// The full difference-frequency QTF, uni-directional headings.
     pub qtf: Option<QtfData>,
+    /// The bi-directional mean drift T(omega; beta_p, beta_q) for short-crested seas
+    /// (optional; absent from older files and not written when `None`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bidirectional_drift: Option<BidirectionalTable>,
 }
 
 /// Rigid-body mass properties.
@@ -236,6 +243,9 @@ impl HydroDatabase {
         if let Some(q) = &self.qtf {
             q.validate()?;
         }
+        if let Some(t) = &self.bidirectional_drift {
+            t.validate()?;
+        }
         Ok(())
     }
 
@@ -272,6 +282,7 @@ impl HydroDatabase {
             stiffness: None,
             drift,
             qtf: None,
+            bidirectional_drift: None,
         }
     }
 
@@ -451,6 +462,7 @@ impl HydroDatabase {
             stiffness,
             drift,
             qtf,
+            bidirectional_drift: None,
         };
         database.validate()?;
         Ok(WamitImport { database, files })

@@ -3,6 +3,7 @@
 //! WAMIT readers and the native database.
 
 pub mod aranha;
+pub mod bidirectional;
 pub mod column_drift;
 pub mod columns;
 pub mod database;

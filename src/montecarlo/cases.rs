@@ -8,7 +8,9 @@
 //! `current_direction_deg`, `cd` (combined drag model), `cd_slow` and `cd_fast` (separate
 //! model; one of them alone keeps the other from a separate-model base), `duration` (s),
 //! `yaw_stiffness` (N m/rad: the mooring's C_66), `yaw_headings` (0 = yaw following off,
-//! n >= 2 = records at n body yaw angles around the full circle, `model.yaw_following`).
+//! n >= 2 = records at n body yaw angles around the full circle, `model.yaw_following`),
+//! `interaction` (text: `auto`, `none`, `mean-direction` or `bidirectional`, as `[model]
+//! interaction` of the configuration file).
 //! Degrees are converted to radians here. Blank lines and lines starting with `#` are
 //! skipped; fields are separated by commas and trimmed (no quoting).
 //!
@@ -18,14 +20,14 @@
 
 use super::Case;
 use crate::config::file::DEFAULT_N_DIRECTIONS;
-use crate::config::{DragModel, YawFollowing};
+use crate::config::{DragModel, Interaction, YawFollowing};
 use crate::error::{Error, Result};
 use crate::sea_state::{Spectrum, Spreading};
 use crate::Config;
 use std::path::Path;
 
 /// The columns a case table may have.
-pub const COLUMNS: [&str; 15] = [
+pub const COLUMNS: [&str; 16] = [
     "name",
     "hs",
     "tp",
@@ -41,6 +43,7 @@ pub const COLUMNS: [&str; 15] = [
     "duration",
     "yaw_stiffness",
     "yaw_headings",
+    "interaction",
 ];
 
 /// One row of a case table: its name and the values it sets, by column name.
@@ -53,6 +56,8 @@ pub struct CaseRow {
     pub name: String,
     /// (column, value) for every non-empty numeric cell, in header order.
     pub values: Vec<(&'static str, f64)>,
+    /// The `interaction` cell, when given.
+    pub interaction: Option<Interaction>,
 }
 
 /// Reads a case table file.
@@ -123,8 +128,27 @@ pub fn parse_case_table(text: &str, source: &str) -> Result<Vec<CaseRow>> {
         }
         let mut name = format!("case{row}");
         let mut values = Vec::new();
+        let mut interaction = None;
         for (&column, &field) in columns.iter().zip(&fields) {
             if field.is_empty() {
+                continue;
+            }
+            if column == "interaction" {
+                interaction = Some(match field {
+                    "auto" => Interaction::Auto,
+                    "none" => Interaction::None,
+                    "mean-direction" => Interaction::MeanDirection,
+                    "bidirectional" => Interaction::Bidirectional,
+                    _ => {
+                        return Err(error(
+                            line,
+                            format!(
+                                "row {row}, column 'interaction': '{field}' is not one of \
+                                 auto, none, mean-direction, bidirectional"
+                            ),
+                        ))
+                    }
+                });
                 continue;
             }
             if column == "name" {
@@ -155,6 +179,7 @@ pub fn parse_case_table(text: &str, source: &str) -> Result<Vec<CaseRow>> {
             line,
             name,
             values,
+            interaction,
         });
     }
     if rows.is_empty() {
@@ -190,6 +215,9 @@ impl CaseRow {
     /// for a tabulated spectrum, say) is an error naming the row and column.
     pub fn case(&self, base: &Config, transient: Option<f64>, source: &str) -> Result<Case> {
         let mut config = base.clone();
+        if let Some(interaction) = self.interaction {
+            config.model.interaction = interaction;
+        }
         for &(column, value) in &self.values {
             self.set(&mut config, column, value)
                 .map_err(|why| Error::Parse {
@@ -320,6 +348,22 @@ mod tests {
             .iter()
             .map(|row| row.case(&base(), None, "cases.csv"))
             .collect()
+    }
+
+    #[test]
+    fn interaction_column_sets_the_model_and_names_bad_values() {
+        let parsed = cases("name, interaction\na, mean-direction\nb, none\nc,\n").unwrap();
+        assert_eq!(
+            parsed[0].config.model.interaction,
+            Interaction::MeanDirection
+        );
+        assert_eq!(parsed[1].config.model.interaction, Interaction::None);
+        assert_eq!(parsed[2].config.model.interaction, base().model.interaction);
+        let e = cases("interaction\nboth\n").unwrap_err().to_string();
+        assert!(
+            e.contains("row 1, column 'interaction': 'both' is not one of"),
+            "{e}"
+        );
     }
 
     #[test]

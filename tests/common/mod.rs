@@ -3,8 +3,8 @@
 #![allow(dead_code)] // each test binary uses a different subset
 
 use slowdrift::config::{
-    Column, Current, DragModel, DriftDamping, Environment, InitialCondition, ModelOptions,
-    NewmanForm, Platform, Run, SecondOrder, DEFAULT_QTF_TOLERANCE,
+    Column, Current, DragModel, DriftDamping, Environment, InitialCondition, Interaction,
+    ModelOptions, NewmanForm, Platform, Run, SecondOrder, DEFAULT_QTF_TOLERANCE,
 };
 use slowdrift::hydro::{DriftRow, DriftTable};
 use slowdrift::sea_state::{SeaState, Spectrum, Spreading};
@@ -106,10 +106,12 @@ pub fn base_config(duration: f64, time_step: f64, seed: u64) -> Config {
         platform: oscillator_platform(1.0e7, 1.0e10, [60.0, 60.0, 40.0], 0.2),
         drift: drift_table(smooth_drift),
         qtf: None,
+        bidirectional: None,
         model: ModelOptions {
             second_order: SecondOrder::Newman,
             qtf_tolerance: DEFAULT_QTF_TOLERANCE,
             newman: NewmanForm::Geometric,
+            interaction: Interaction::None,
             drift_damping: DriftDamping::Off,
             drag: DragModel::Off,
             strips_per_column: 20,

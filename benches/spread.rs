@@ -1,0 +1,92 @@
+//! Initialisation cost of short-crested seas: `cargo bench --bench spread`.
+//!
+//! `Simulation::new` (wave components, records at h/2 for 3 hours, the drag kinematics of
+//! 4 columns x 20 strips, and for spread seas the cross-direction terms) on the default
+//! platform, whose drift table and column array are built once outside the timing:
+//! - `long_crested`: N_beta = 1 (the reference cost);
+//! - `spread15_none`, `spread15_mean_direction`, `spread15_bidirectional`: cos^2 over
+//!   N_beta = 15 directions; `bidirectional` includes solving the column array for
+//!   T(omega; beta_k, beta_l) at the 15 exact directions on every data frequency of the band.
+//!
+//! Target (issue #5): N_beta = 15 costs at most N_beta^2 = 225 times the long-crested
+//! initialisation. The ratios are printed at the end (medians of interleaved runs timed with
+//! `Instant`, since criterion does not compute ratios).
+
+use criterion::Criterion;
+use slowdrift::config::default_platform::default_config;
+use slowdrift::config::Interaction;
+use slowdrift::sea_state::Spreading;
+use slowdrift::{Config, Simulation};
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+const N_BETA: usize = 15;
+
+fn spread(base: &Config, interaction: Interaction) -> Config {
+    let mut config = base.clone();
+    config.sea.spreading = Spreading::CosN { n: 2.0 };
+    config.sea.n_directions = N_BETA;
+    config.model.interaction = interaction;
+    config
+}
+
+fn median_seconds(reps: usize, mut f: impl FnMut()) -> f64 {
+    let mut times: Vec<f64> = (0..reps)
+        .map(|_| {
+            let start = Instant::now();
+            f();
+            start.elapsed().as_secs_f64()
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    times[reps / 2]
+}
+
+fn main() {
+    let base = default_config().expect("the default platform");
+    let cases = [
+        ("long_crested", base.clone()),
+        ("spread15_none", spread(&base, Interaction::None)),
+        (
+            "spread15_mean_direction",
+            spread(&base, Interaction::MeanDirection),
+        ),
+        (
+            "spread15_bidirectional",
+            spread(&base, Interaction::Bidirectional),
+        ),
+    ];
+    let mut c = Criterion::default().configure_from_args();
+    let mut group = c.benchmark_group("spread_init");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(5));
+    for (name, config) in &cases {
+        group.bench_function(*name, |b| {
+            b.iter(|| black_box(Simulation::new(config.clone()).expect("valid")))
+        });
+    }
+    group.finish();
+
+    let times: Vec<f64> = cases
+        .iter()
+        .map(|(_, config)| {
+            median_seconds(7, || {
+                black_box(Simulation::new(config.clone()).expect("valid"));
+            })
+        })
+        .collect();
+    println!("\n=== Short-crested initialisation (Simulation::new, default platform, 3 h at h = 1 s) ===");
+    for ((name, _), t) in cases.iter().zip(&times) {
+        println!(
+            "{name:<26} {:8.1} ms  = {:6.1} x long-crested",
+            1e3 * t,
+            t / times[0]
+        );
+    }
+    println!(
+        "target: N_beta = {N_BETA} at most N_beta^2 = {} x long-crested",
+        N_BETA * N_BETA
+    );
+}

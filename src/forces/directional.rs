@@ -1,0 +1,168 @@
+//! Interaction between the directions of a short-crested sea: the cross-direction terms of
+//! the slowly varying force, by a Newman-type approximation at FFT cost (E&S 3, 4;
+//! physics.md section 4).
+//!
+//! # The double sum
+//!
+//! With components a_{ik} (frequency omega_i, direction beta_k; `sea_state::WaveComponents`)
+//! the low-frequency force runs over pairs of (frequency, direction):
+//!   F(t) = Re sum_{i,k} sum_{j,l} a_{ik} a_{jl}* T(omega_i, omega_j; beta_k, beta_l) e^{i (omega_i - omega_j) t}.
+//! The terms k = l are each direction's own double sum (`forces::newman`, or the full QTF);
+//! this module adds the terms k != l, which [`Interaction::None`] drops.
+//!
+//! # Newman-type form for k != l (arithmetic mean)
+//!
+//! Only the bi-directional *mean* drift T_kl(omega) = T(omega; beta_k, beta_l) is known
+//! (Hermitian: T_lk = conj T_kl). Off the frequency diagonal take the arithmetic mean
+//!   T(omega_i, omega_j; beta_k, beta_l) ~ (T_kl(omega_i) + T_kl(omega_j)) / 2,
+//! which keeps the Hermitian symmetry of the full QTF. Then, with
+//!   Q_kl(t) = sum_i a_{ik} T_kl(omega_i) e^{i omega_i t},  eta_l(t) = sum_j a_{jl} e^{i omega_j t},
+//! the first half of the sum is sum_{kl} Q_kl eta_l*, and the second,
+//! sum_{kl} eta_k conj(sum_j a_{jl} conj T_kl(omega_j) e^{i omega_j t}) = sum_{kl} eta_k Q_lk*
+//! (by T_kl* = T_lk) = conj(sum_{kl} Q_kl eta_l*) after swapping k and l. So
+//!   F_cross(t) = Re sum_l P_l(t) eta_l(t)*,  P_l(t) = sum_{k != l} Q_kl(t)
+//!             = sum_i (sum_{k != l} a_{ik} T_kl(omega_i)) e^{i omega_i t}:
+//! the coefficients of P_l are formed directly (O(N_omega N_beta) per l), so the cost is
+//! **one FFT per direction and DOF for P_l plus one per direction for eta_l**: linear in
+//! N_beta, not the N_beta^2 single-sum products of the paper's E&S 4 route. The pairing with
+//! the within-direction terms:
+//! - `newman = "arithmetic"`: F = Re sum_{k,l} Q_kl eta_l* in full, the same rule for every
+//!   pair;
+//! - `newman = "geometric"` (default): E&S 4's sign-split geometric mean within each
+//!   direction, the arithmetic mean across directions. A geometric mean needs a sign and
+//!   T_kl (k != l) is complex; the matrix analogue (principal square roots of the positive
+//!   and negative parts of the N_beta x N_beta matrix T(omega)) would cost an eigen-
+//!   decomposition per grid frequency, O(N_omega N_beta^3), and is not built.
+//!
+//! T_kl(omega) is interpolated linearly in omega from the data frequencies
+//! ([`DirectionPairs`]) onto the grid. The mean of F_cross is zero (independent amplitudes),
+//! so the mean force stays 2 double-integral S D T(omega; beta, beta).
+//!
+//! # Data ([`Interaction`])
+//!
+//! `Auto` (default): `Bidirectional` when the configuration has the data, else
+//! `MeanDirection`. `Bidirectional`: the configuration's [`BidirectionalSource`] (column solver at the exact
+//! directions, or a database table); `MeanDirection`: T(omega; (beta_k + beta_l)/2) from the
+//! uni-directional drift table (`hydro::bidirectional::mean_direction_pairs`). The
+//! wave-drift damping records keep no cross terms (no bi-directional damping data exists).
+
+use super::synthesis::Synthesizer;
+use super::{ForceRecords, Record};
+use crate::config::{Config, Interaction};
+use crate::error::{Error, Result};
+use crate::hydro::bidirectional::{mean_direction_pairs, DirectionPairs};
+use crate::sea_state::WaveComponents;
+use rustfft::num_complex::Complex64;
+
+/// The bi-directional drift at the sea's directions that `config` asks for, or `None`
+/// when there is nothing to add (interaction off, or one direction).
+pub fn direction_pairs(
+    config: &Config,
+    components: &WaveComponents,
+) -> Result<Option<DirectionPairs>> {
+    let headings: Vec<f64> = components.directions.iter().map(|d| d.heading).collect();
+    if headings.len() < 2 {
+        return Ok(None);
+    }
+    let grid = &components.grid;
+    let band = (grid.omega(0), grid.omega(grid.count - 1));
+    match config.interaction() {
+        Interaction::None => Ok(None),
+        Interaction::MeanDirection => {
+            mean_direction_pairs(&config.drift, band, &headings).map(Some)
+        }
+        Interaction::Bidirectional | Interaction::Auto => {
+            let source = config.bidirectional.as_ref().ok_or_else(|| {
+                Error::invalid(
+                    "model.interaction",
+                    "bidirectional",
+                    "the drift source has no bi-directional drift",
+                )
+            })?;
+            source.pairs(&config.environment, band, &headings).map(Some)
+        }
+    }
+}
+
+/// The cross-direction force F_cross (surge, sway, yaw; module doc), one vector of record
+/// samples per DOF (empty where every T_kl, k != l, of that DOF is zero).
+pub fn cross_direction_force(components: &WaveComponents, pairs: &DirectionPairs) -> [Vec<f64>; 3] {
+    let grid = &components.grid;
+    let nd = components.directions.len();
+    debug_assert_eq!(pairs.directions, nd);
+    let mut synth = Synthesizer::new(grid);
+    let brackets = frequency_brackets(pairs, components);
+    let active: [bool; 3] = std::array::from_fn(|dof| {
+        pairs.values.chunks(nd * nd).any(|block| {
+            (0..nd)
+                .any(|k| (0..nd).any(|l| k != l && block[k * nd + l][dof] != Complex64::default()))
+        })
+    });
+    let mut force: [Vec<f64>; 3] = Default::default();
+    let mut eta = vec![Complex64::default(); grid.len];
+    let mut series = vec![Complex64::default(); grid.len];
+    let mut coefficients = vec![Complex64::default(); grid.count];
+    for l in 0..nd {
+        synth.complex_series(components.of_direction(l), &mut eta);
+        for (dof, out) in force.iter_mut().enumerate() {
+            if !active[dof] {
+                continue;
+            }
+            for (i, (c, &(n, n_hi, f))) in coefficients.iter_mut().zip(&brackets).enumerate() {
+                let mut sum = Complex64::default();
+                for k in (0..nd).filter(|&k| k != l) {
+                    let lo = pairs.get(n, k, l)[dof];
+                    let hi = pairs.get(n_hi, k, l)[dof];
+                    sum += components.of_direction(k)[i] * (lo + (hi - lo) * f);
+                }
+                *c = sum;
+            }
+            synth.complex_series(&coefficients, &mut series);
+            out.resize(grid.len, 0.0);
+            for ((o, p), e) in out.iter_mut().zip(&series).zip(&eta) {
+                *o += (p * e.conj()).re;
+            }
+        }
+    }
+    force
+}
+
+/// Adds the cross-direction force to the records' wave force.
+pub fn add_cross_terms(
+    records: &mut ForceRecords,
+    components: &WaveComponents,
+    pairs: &DirectionPairs,
+) {
+    let cross = cross_direction_force(components, pairs);
+    for (record, extra) in records.wave_force.iter_mut().zip(cross) {
+        if extra.is_empty() {
+            continue;
+        }
+        let mut samples = extra;
+        for (s, v) in samples.iter_mut().zip(record.samples()) {
+            *s += v;
+        }
+        *record = Record::new(samples);
+    }
+}
+
+/// For every grid component, the data nodes (lo, hi) around it and the weight of hi
+/// (linear interpolation; the data cover the band, see `DirectionPairs`).
+fn frequency_brackets(
+    pairs: &DirectionPairs,
+    components: &WaveComponents,
+) -> Vec<(usize, usize, f64)> {
+    let w = &pairs.omegas;
+    let last = w.len() - 1;
+    let grid = &components.grid;
+    (0..grid.count)
+        .map(|i| {
+            let omega = grid.omega(i).clamp(w[0], w[last]);
+            if last == 0 {
+                return (0, 0, 0.0);
+            }
+            let n = w.partition_point(|&v| v <= omega).clamp(1, last) - 1;
+            (n, n + 1, (omega - w[n]) / (w[n + 1] - w[n]))
+        })
+        .collect()
+}
