@@ -18,6 +18,7 @@
 //!   so Hermitian; exact for k = l).
 
 use super::columns::ColumnArray;
+use super::heading_grid::{heading_bracket, Bracket};
 use super::DriftTable;
 use crate::config::Environment;
 use crate::error::{require_finite, require_positive, Error, Result};
@@ -165,14 +166,6 @@ fn covering_range(omegas: &[f64], band: (f64, f64), field: &str) -> Result<std::
     Ok(end.saturating_sub(2).min(start)..end)
 }
 
-/// A bracket on one axis: nodes lo, hi and the weight of hi.
-#[derive(Debug, Clone, Copy)]
-struct Bracket {
-    lo: usize,
-    hi: usize,
-    frac: f64,
-}
-
 impl BidirectionalTable {
     /// Checks the shapes, grids, finiteness and the Hermitian symmetry in the heading pair;
     /// errors name the field (`database.bidirectional_drift...`).
@@ -272,60 +265,20 @@ impl BidirectionalTable {
         std::array::from_fn(|i| Complex64::new(re[i], im[i]))
     }
 
-    /// Whether the headings wrap around: they cover the circle up to one regular step.
-    fn is_periodic(&self) -> bool {
-        let h = &self.headings;
-        let n = h.len();
-        if n < 2 {
-            return false;
-        }
-        let widest = h.windows(2).map(|w| w[1] - w[0]).fold(0.0, f64::max);
-        2.0 * PI - (h[n - 1] - h[0]) <= widest * (1.0 + 1e-6)
-    }
-
     /// Heading bracket of `heading`; an error when the table does not reach it.
     fn heading_bracket(&self, heading: f64) -> Result<Bracket> {
-        let h = &self.headings;
-        let first = h[0];
-        let mut rel = (heading - first).rem_euclid(2.0 * PI);
-        if 2.0 * PI - rel < GRID_TOLERANCE {
-            rel = 0.0;
-        }
-        let at = first + rel;
-        let last = h[h.len() - 1];
-        if at <= last + GRID_TOLERANCE {
-            if h.len() == 1 {
-                return Ok(Bracket {
-                    lo: 0,
-                    hi: 0,
-                    frac: 0.0,
-                });
-            }
-            let at = at.min(last);
-            let i = h.partition_point(|&v| v <= at).clamp(1, h.len() - 1);
-            return Ok(Bracket {
-                lo: i - 1,
-                hi: i,
-                frac: (at - h[i - 1]) / (h[i] - h[i - 1]),
-            });
-        }
-        if self.is_periodic() {
-            return Ok(Bracket {
-                lo: h.len() - 1,
-                hi: 0,
-                frac: (at - last) / (first + 2.0 * PI - last),
-            });
-        }
-        Err(Error::invalid(
-            "database.bidirectional_drift.headings",
-            format!("{:.3} deg", heading.to_degrees()),
-            format!(
-                "a wave direction outside the bi-directional table's headings [{:.3}, {:.3}] deg \
-                 (nothing is extrapolated)",
-                first.to_degrees(),
-                last.to_degrees()
-            ),
-        ))
+        heading_bracket(&self.headings, heading).ok_or_else(|| {
+            Error::invalid(
+                "database.bidirectional_drift.headings",
+                format!("{:.3} deg", heading.to_degrees()),
+                format!(
+                    "a wave direction outside the bi-directional table's headings [{:.3}, {:.3}] \
+                     deg (nothing is extrapolated)",
+                    self.headings[0].to_degrees(),
+                    self.headings[self.headings.len() - 1].to_degrees()
+                ),
+            )
+        })
     }
 
     /// Bilinear interpolation in the heading pair at the table's frequencies covering `band`.

@@ -6,6 +6,7 @@
 //! Nothing is extrapolated: a frequency or heading outside the table is an error that
 //! names the gap.
 
+use super::heading_grid::{heading_bracket, is_periodic, Bracket};
 use crate::error::{require_finite, Error, Result};
 use std::f64::consts::PI;
 
@@ -37,14 +38,6 @@ pub struct DriftTable {
     /// Heading-major: index `ih * omegas.len() + iw`.
     drift: Vec<[f64; 3]>,
     damping: Option<Vec<[[f64; 3]; 3]>>,
-}
-
-/// A point located in the table: the two bracketing nodes in each direction and weights.
-#[derive(Debug, Clone, Copy)]
-struct Bracket {
-    lo: usize,
-    hi: usize,
-    frac: f64,
 }
 
 impl DriftTable {
@@ -211,17 +204,7 @@ impl DriftTable {
     /// Whether the headings wrap around: the table covers the full circle up to at most one
     /// regular heading step.
     pub fn is_periodic_in_heading(&self) -> bool {
-        let n = self.headings.len();
-        if n < 2 {
-            return false;
-        }
-        let span = self.headings[n - 1] - self.headings[0];
-        let widest = self
-            .headings
-            .windows(2)
-            .map(|w| w[1] - w[0])
-            .fold(0.0, f64::max);
-        2.0 * PI - span <= widest * (1.0 + 1e-6)
+        is_periodic(&self.headings)
     }
 
     /// Checks that [omega_min, omega_max] and every heading in `headings` can be
@@ -374,48 +357,17 @@ impl DriftTable {
     }
 
     fn heading_bracket(&self, heading: f64) -> Result<Bracket> {
-        let h = &self.headings;
-        let first = h[0];
-        // Bring the heading into [first, first + 2 pi).
-        let mut rel = (heading - first).rem_euclid(2.0 * PI);
-        if 2.0 * PI - rel < GRID_TOLERANCE {
-            rel = 0.0;
-        }
-        let at = first + rel;
-        let last = h[h.len() - 1];
-        if at <= last + GRID_TOLERANCE {
-            if h.len() == 1 {
-                return Ok(Bracket {
-                    lo: 0,
-                    hi: 0,
-                    frac: 0.0,
-                });
-            }
-            let at = at.min(last);
-            let i = h.partition_point(|&v| v <= at).clamp(1, h.len() - 1);
-            return Ok(Bracket {
-                lo: i - 1,
-                hi: i,
-                frac: (at - h[i - 1]) / (h[i] - h[i - 1]),
-            });
-        }
-        if self.is_periodic_in_heading() {
-            let gap = first + 2.0 * PI - last;
-            return Ok(Bracket {
-                lo: h.len() - 1,
-                hi: 0,
-                frac: (at - last) / gap,
-            });
-        }
-        Err(Error::invalid(
-            "drift.heading",
-            format!("{:.3} deg", heading.to_degrees()),
-            format!(
-                "the drift table's headings cover [{:.3}, {:.3}] deg only",
-                first.to_degrees(),
-                last.to_degrees()
-            ),
-        ))
+        heading_bracket(&self.headings, heading).ok_or_else(|| {
+            Error::invalid(
+                "drift.heading",
+                format!("{:.3} deg", heading.to_degrees()),
+                format!(
+                    "the drift table's headings cover [{:.3}, {:.3}] deg only",
+                    self.headings[0].to_degrees(),
+                    self.headings[self.headings.len() - 1].to_degrees()
+                ),
+            )
+        })
     }
 }
 

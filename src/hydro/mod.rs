@@ -8,6 +8,7 @@ pub mod column_drift;
 pub mod columns;
 pub mod database;
 mod drift_table;
+mod heading_grid;
 pub mod wamit;
 
 pub use drift_table::{DriftRow, DriftTable};
