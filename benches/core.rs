@@ -38,6 +38,8 @@
 mod common;
 
 use common::{four_columns, oscillator_platform};
+mod timing;
+
 use criterion::Criterion;
 use rustfft::num_complex::Complex64;
 use rustfft::FftPlanner;
@@ -57,7 +59,8 @@ use slowdrift::hydro::{DriftRow, DriftTable};
 use slowdrift::sea_state::{FrequencyGrid, SeaState, Spectrum, Spreading, WaveComponents};
 use slowdrift::{Config, Simulation};
 use std::hint::black_box;
-use std::time::{Duration, Instant};
+use std::time::Duration;
+use timing::median_time;
 
 const THREE_HOURS: f64 = 3.0 * 3600.0;
 
@@ -242,20 +245,6 @@ impl OneFft {
             .process_with_scratch(&mut self.buffer, &mut self.scratch);
         black_box(&self.buffer);
     }
-}
-
-/// Median of `reps` timings of `f` after one warm-up call.
-fn median_time(reps: usize, mut f: impl FnMut()) -> Duration {
-    f();
-    let mut times: Vec<Duration> = (0..reps)
-        .map(|_| {
-            let start = Instant::now();
-            f();
-            start.elapsed()
-        })
-        .collect();
-    times.sort();
-    times[reps / 2]
 }
 
 fn bench_records(c: &mut Criterion, report: &mut Vec<String>) {

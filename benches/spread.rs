@@ -12,13 +12,16 @@
 //! initialisation. The ratios are printed at the end (medians of interleaved runs timed with
 //! `Instant`, since criterion does not compute ratios).
 
+mod timing;
+
 use criterion::Criterion;
 use slowdrift::config::default_platform::default_config;
 use slowdrift::config::Interaction;
 use slowdrift::sea_state::Spreading;
 use slowdrift::{Config, Simulation};
 use std::hint::black_box;
-use std::time::{Duration, Instant};
+use std::time::Duration;
+use timing::median_time;
 
 const N_BETA: usize = 15;
 
@@ -28,18 +31,6 @@ fn spread(base: &Config, interaction: Interaction) -> Config {
     config.sea.n_directions = N_BETA;
     config.model.interaction = interaction;
     config
-}
-
-fn median_seconds(reps: usize, mut f: impl FnMut()) -> f64 {
-    let mut times: Vec<f64> = (0..reps)
-        .map(|_| {
-            let start = Instant::now();
-            f();
-            start.elapsed().as_secs_f64()
-        })
-        .collect();
-    times.sort_by(f64::total_cmp);
-    times[reps / 2]
 }
 
 fn main() {
@@ -72,9 +63,10 @@ fn main() {
     let times: Vec<f64> = cases
         .iter()
         .map(|(_, config)| {
-            median_seconds(7, || {
+            median_time(7, || {
                 black_box(Simulation::new(config.clone()).expect("valid"));
             })
+            .as_secs_f64()
         })
         .collect();
     println!("\n=== Short-crested initialisation (Simulation::new, default platform, 3 h at h = 1 s) ===");

@@ -11,12 +11,15 @@
 //!
 //! A summary with `Instant` medians, the ratios and the records' memory is printed at the end.
 
+mod timing;
+
 use criterion::Criterion;
 use slowdrift::config::default_platform::default_config;
 use slowdrift::config::{DragModel, YawFollowing};
 use slowdrift::{Config, Simulation};
 use std::hint::black_box;
-use std::time::{Duration, Instant};
+use std::time::Duration;
+use timing::median_time;
 
 const THREE_HOURS: f64 = 3.0 * 3600.0;
 
@@ -33,18 +36,6 @@ fn config(base: &Config, yaw: bool, drag: bool) -> Config {
         range: None,
     });
     c
-}
-
-fn median_time(reps: usize, mut f: impl FnMut()) -> Duration {
-    let mut times: Vec<Duration> = (0..reps)
-        .map(|_| {
-            let start = Instant::now();
-            f();
-            start.elapsed()
-        })
-        .collect();
-    times.sort();
-    times[reps / 2]
 }
 
 fn main() {
