@@ -42,8 +42,9 @@ if [[ ! -f "$fmu" ]]; then
     exit 1
 fi
 
-# libcosim unpacks FMUs under $TMPDIR and cannot fall back when it does not exist (fmpy's
-# Python tempfile can): give every master a temporary directory that exists.
+# libcosim unpacks FMUs under the first of $TMPDIR, $TMP, $TEMP, $TEMPDIR that is set and
+# cannot fall back when it does not exist (fmpy's Python tempfile can): give every master a
+# temporary directory that exists.
 export TMPDIR="$target_dir/client-tmp"
 mkdir -p "$TMPDIR"
 

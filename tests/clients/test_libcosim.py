@@ -22,10 +22,10 @@ libcosimc):
   variable with name dragModel will be ignored", the same for driftDamping): those two
   parameters cannot be set from libcosim and keep their start values (combined drag, table
   damping). test_libcosim_variables pins this.
-- it unpacks the FMU under std::filesystem::temp_directory_path(), which is $TMPDIR when that
-  is set, and fails (libcosimpy then crashes on the NULL slave) when $TMPDIR does not exist,
-  where Python's tempfile (fmpy) quietly falls back to /tmp. run_clients.sh therefore gives
-  the masters a TMPDIR of its own under the target directory.
+- it unpacks the FMU under its temporary directory (the first of $TMPDIR, $TMP, $TEMP,
+  $TEMPDIR that is set) and fails (libcosimpy then crashes on the NULL slave) when that
+  directory does not exist, where Python's tempfile (fmpy) quietly falls back to /tmp.
+  run_clients.sh therefore gives the masters a TMPDIR of its own under the target directory.
 - libcosimpy's time_series_real_samples trims its result by counting zero step numbers in
   the returned array, which also drops a real step 0; samples are therefore read from
   step 1 (the state after the first step) on.
