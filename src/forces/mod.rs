@@ -108,19 +108,23 @@ impl ForceRecords {
                         );
                     }
                 }
-                None => {
-                    for (out, t) in force.iter_mut().zip(&transfer.drift) {
-                        builder.accumulate(&mut synth, options.newman, amplitudes, &eta_c, t, out);
-                    }
-                }
+                None => builder.accumulate_force(
+                    &mut synth,
+                    options.newman,
+                    amplitudes,
+                    &eta_c,
+                    transfer,
+                    &mut force,
+                ),
             }
-            if let Some(b) = &transfer.damping {
-                for (out_row, b_row) in damping.iter_mut().zip(b) {
-                    for (out, t) in out_row.iter_mut().zip(b_row) {
-                        builder.accumulate(&mut synth, options.newman, amplitudes, &eta_c, t, out);
-                    }
-                }
-            }
+            builder.accumulate_damping(
+                &mut synth,
+                options.newman,
+                amplitudes,
+                &eta_c,
+                transfer,
+                &mut damping,
+            );
         }
         let elevation = builder.real_series(&mut synth, &elevation_coefficients);
         let with_damping = transfers.iter().any(|t| t.damping.is_some());

@@ -15,6 +15,7 @@
 //! `forces::directional`.
 
 use super::synthesis::Synthesizer;
+use super::transfer::DirectionTransfer;
 use crate::config::NewmanForm;
 use rustfft::num_complex::Complex64;
 
@@ -71,6 +72,42 @@ impl NewmanBuilder {
                 for ((o, q), e) in out.iter_mut().zip(&self.series).zip(eta_c) {
                     *o += (q * e.conj()).re;
                 }
+            }
+        }
+    }
+
+    /// Adds one direction's force records D_i (surge, sway, yaw) for its transfer's T_i.
+    pub fn accumulate_force(
+        &mut self,
+        synth: &mut Synthesizer,
+        form: NewmanForm,
+        amplitudes: &[Complex64],
+        eta_c: &[Complex64],
+        transfer: &DirectionTransfer,
+        force: &mut [Vec<f64>; 3],
+    ) {
+        for (out, t) in force.iter_mut().zip(&transfer.drift) {
+            self.accumulate(synth, form, amplitudes, eta_c, t, out);
+        }
+    }
+
+    /// Adds one direction's damping records B_ij for its transfer's b_ij (nothing when the
+    /// transfer has no damping).
+    pub fn accumulate_damping(
+        &mut self,
+        synth: &mut Synthesizer,
+        form: NewmanForm,
+        amplitudes: &[Complex64],
+        eta_c: &[Complex64],
+        transfer: &DirectionTransfer,
+        damping: &mut [[Vec<f64>; 3]; 3],
+    ) {
+        let Some(b) = &transfer.damping else {
+            return;
+        };
+        for (out_row, b_row) in damping.iter_mut().zip(b) {
+            for (out, t) in out_row.iter_mut().zip(b_row) {
+                self.accumulate(synth, form, amplitudes, eta_c, t, out);
             }
         }
     }

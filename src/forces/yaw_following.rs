@@ -206,16 +206,9 @@ impl YawFollowingRecords {
             let mut damping: [[Vec<f64>; 3]; 3] = Default::default();
             for (k, transfer) in transfers.iter().enumerate() {
                 let amplitudes = components.of_direction(k);
-                for (out, t) in force.iter_mut().zip(&transfer.drift) {
-                    builder.accumulate(&mut synth, form, amplitudes, &eta_c[k], t, out);
-                }
-                if let Some(b) = &transfer.damping {
-                    for (out_row, b_row) in damping.iter_mut().zip(b) {
-                        for (out, t) in out_row.iter_mut().zip(b_row) {
-                            builder.accumulate(&mut synth, form, amplitudes, &eta_c[k], t, out);
-                        }
-                    }
-                }
+                let (s, e) = (&mut synth, &eta_c[k]);
+                builder.accumulate_force(s, form, amplitudes, e, transfer, &mut force);
+                builder.accumulate_damping(s, form, amplitudes, e, transfer, &mut damping);
             }
             sets.push(SlowRecords {
                 wave_force: force.map(record_or_zero),
