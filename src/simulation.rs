@@ -253,8 +253,7 @@ impl Simulation {
             let yaw = records.locate_yaw(time, y[2])?;
             let q = [y[0], y[1], y[2]];
             let qd = [y[3], y[4], y[5]];
-            let total = model.forces(records, &at, &yaw, &q, &qd).total(&external);
-            let qdd = model.acceleration(q[2], &total);
+            let qdd = model.acceleration(records, &at, &yaw, &q, &qd, &external);
             Ok::<_, Error>([qd[0], qd[1], qd[2], qdd[0], qdd[1], qdd[2]])
         })?;
         if next.iter().any(|v| !v.is_finite()) {

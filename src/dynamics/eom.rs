@@ -48,15 +48,31 @@ fn matrix(m: &[[f64; 3]; 3]) -> Matrix3<f64> {
     Matrix3::from_fn(|i, j| m[i][j])
 }
 
-/// Body-to-inertial rotation of a (surge, sway, yaw) vector by theta.
-fn to_inertial(theta: f64, v: &Vector3<f64>) -> Vector3<f64> {
-    let (s, c) = theta.sin_cos();
-    Vector3::new(c * v[0] - s * v[1], s * v[0] + c * v[1], v[2])
+/// The rotation S(theta) of E&S 1 between the body and the inertial frame, for
+/// (surge, sway, yaw) vectors; sin and cos taken once per instant.
+#[derive(Debug, Clone, Copy)]
+struct Rotation {
+    sin: f64,
+    cos: f64,
 }
 
-/// Inertial-to-body rotation of a (surge, sway, yaw) vector by theta.
-fn to_body(theta: f64, v: &Vector3<f64>) -> Vector3<f64> {
-    to_inertial(-theta, v)
+impl Rotation {
+    fn new(theta: f64) -> Self {
+        let (sin, cos) = theta.sin_cos();
+        Rotation { sin, cos }
+    }
+
+    /// Body to inertial: S v.
+    fn to_inertial(self, v: &Vector3<f64>) -> Vector3<f64> {
+        let (s, c) = (self.sin, self.cos);
+        Vector3::new(c * v[0] - s * v[1], s * v[0] + c * v[1], v[2])
+    }
+
+    /// Inertial to body: S^T v.
+    fn to_body(self, v: &Vector3<f64>) -> Vector3<f64> {
+        let (s, c) = (self.sin, self.cos);
+        Vector3::new(c * v[0] + s * v[1], -s * v[0] + c * v[1], v[2])
+    }
 }
 
 impl SlowDriftModel {
@@ -94,9 +110,41 @@ impl SlowDriftModel {
         q: &[f64; 3],
         qd: &[f64; 3],
     ) -> ForceBreakdown {
-        let theta = q[2];
-        let velocity = to_body(theta, &Vector3::from(*qd));
-        let current = to_body(theta, &Vector3::new(self.current[0], self.current[1], 0.0));
+        self.forces_rotated(&Rotation::new(q[2]), records, at, yaw, q, qd)
+    }
+
+    /// The acceleration q'' at a located instant and yaw for state (q, q') and the external
+    /// force `external` (inertial frame): E&S 1 solved for q'', with the forces of
+    /// [`SlowDriftModel::forces`].
+    pub fn acceleration(
+        &self,
+        records: &ForceRecords,
+        at: &SamplePoint,
+        yaw: &YawPoint,
+        q: &[f64; 3],
+        qd: &[f64; 3],
+        external: &[f64; 3],
+    ) -> [f64; 3] {
+        let rotation = Rotation::new(q[2]);
+        let total = self
+            .forces_rotated(&rotation, records, at, yaw, q, qd)
+            .total(external);
+        let body = rotation.to_body(&Vector3::from(total));
+        rotation.to_inertial(&(self.inverse_mass * body)).into()
+    }
+
+    /// [`SlowDriftModel::forces`] with S(theta) already taken.
+    fn forces_rotated(
+        &self,
+        rotation: &Rotation,
+        records: &ForceRecords,
+        at: &SamplePoint,
+        yaw: &YawPoint,
+        q: &[f64; 3],
+        qd: &[f64; 3],
+    ) -> ForceBreakdown {
+        let velocity = rotation.to_body(&Vector3::from(*qd));
+        let current = rotation.to_body(&Vector3::new(self.current[0], self.current[1], 0.0));
         let wave = Vector3::from(records.wave_force_at(at, yaw));
         let damping = match records.damping_at(at, yaw) {
             Some(b) => {
@@ -117,18 +165,12 @@ impl SlowDriftModel {
         let extra = -(self.linear_damping * velocity) - self.quadratic_damping * quadratic;
         let stiffness = -(self.stiffness * Vector3::from(*q));
         ForceBreakdown {
-            wave: to_inertial(theta, &wave).into(),
-            damping: to_inertial(theta, &damping).into(),
-            drag: to_inertial(theta, &drag).into(),
-            extra_damping: to_inertial(theta, &extra).into(),
+            wave: rotation.to_inertial(&wave).into(),
+            damping: rotation.to_inertial(&damping).into(),
+            drag: rotation.to_inertial(&drag).into(),
+            extra_damping: rotation.to_inertial(&extra).into(),
             stiffness: stiffness.into(),
         }
-    }
-
-    /// The acceleration q'' for the total inertial force (forces plus F_ext).
-    pub fn acceleration(&self, theta: f64, total_force: &[f64; 3]) -> [f64; 3] {
-        let body = to_body(theta, &Vector3::from(*total_force));
-        to_inertial(theta, &(self.inverse_mass * body)).into()
     }
 }
 

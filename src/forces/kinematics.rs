@@ -12,70 +12,97 @@
 //! z'_j = -d + (j + 1/2) d / n, so its velocity record is computed exactly once, and the
 //! velocity at the surface is the linear-theory value at z = 0.
 
-use super::record::{RecordBlock, RowAt, SamplePoint};
+use super::record::SamplePoint;
 use super::synthesis::Synthesizer;
 use crate::config::Column;
 use crate::sea_state::WaveComponents;
 use rustfft::num_complex::Complex64;
+use std::sync::Arc;
 
-/// Records of one column, in one [`RecordBlock`] (the drag reads them all at every stage):
-/// record 0 is the free-surface elevation at the column centre (m), records 1 + 2j and
-/// 2 + 2j the horizontal velocity (body x, y; m/s) at strip j's stretched level.
+/// Records of one column, sample-major: row m holds sample m of every series, so that the
+/// drag reads one contiguous row per column and stage. Series 0 is the free-surface
+/// elevation at the column centre (m, the real part), series 1 + j the horizontal velocity
+/// at strip j's stretched level as u_x + i u_y (body frame, m/s).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ColumnKinematics {
     pub column: Column,
-    records: RecordBlock,
+    /// Series per row: 1 + strips.
+    width: usize,
+    /// Samples per series.
+    len: usize,
+    /// Shared by the columns whose records are the same ([`KinematicsKey`]).
+    rows: Arc<Vec<Complex64>>,
 }
 
 /// A column's kinematics at one located time.
 #[derive(Debug, Clone, Copy)]
 pub struct ColumnState<'a> {
-    row: RowAt<'a>,
+    kinematics: &'a ColumnKinematics,
+    at: SamplePoint,
 }
 
 impl ColumnKinematics {
     /// Number of strips.
     pub fn strips(&self) -> usize {
-        (self.records.width() - 1) / 2
+        self.width - 1
     }
 
     /// The records at a located time.
     #[inline]
     pub fn at(&self, p: &SamplePoint) -> ColumnState<'_> {
         ColumnState {
-            row: self.records.row_at(p),
+            kinematics: self,
+            at: *p,
         }
     }
 
     /// Number of samples of each record.
     pub fn len(&self) -> usize {
-        self.records.len()
+        self.len
     }
 
     /// Whether the records have no samples.
     pub fn is_empty(&self) -> bool {
-        self.records.is_empty()
+        self.len == 0
+    }
+
+    /// Series s at a located time.
+    #[inline]
+    fn value(&self, s: usize, at: &SamplePoint) -> Complex64 {
+        at.interpolate_with(self.len, |m| self.rows[m * self.width + s])
     }
 }
 
-impl<'a> ColumnState<'a> {
-    /// The strips' velocities (u_x, u_y pairs in strip order) when the time falls on a
-    /// sample: one contiguous slice.
-    #[inline]
-    pub fn velocities_on_sample(&self) -> Option<&'a [f64]> {
-        self.row.on_sample().map(|row| &row[1..])
-    }
-
+impl ColumnState<'_> {
     /// Free-surface elevation at the column centre, m.
     #[inline]
     pub fn eta(&self) -> f64 {
-        self.row.value(0)
+        self.kinematics.value(0, &self.at).re
     }
 
     /// Horizontal velocity (body x, y) at strip j, m/s.
     #[inline]
     pub fn velocity(&self, j: usize) -> [f64; 2] {
-        [self.row.value(1 + 2 * j), self.row.value(2 + 2 * j)]
+        let u = self.kinematics.value(1 + j, &self.at);
+        [u.re, u.im]
+    }
+
+    /// The velocities of strips first, first + 1, ... into `ux` and `uy` (as many as they
+    /// hold), m/s.
+    #[inline]
+    pub fn velocities(&self, first: usize, ux: &mut [f64], uy: &mut [f64]) {
+        let strips = ux.iter_mut().zip(uy.iter_mut());
+        if self.at.on_sample() {
+            let k = self.kinematics;
+            let start = self.at.index() * k.width + 1 + first;
+            for ((x, y), u) in strips.zip(&k.rows[start..]) {
+                [*x, *y] = [u.re, u.im];
+            }
+        } else {
+            for (j, (x, y)) in strips.enumerate() {
+                [*x, *y] = self.velocity(first + j);
+            }
+        }
     }
 }
 
@@ -84,7 +111,9 @@ impl<'a> ColumnState<'a> {
 /// The depth profile omega e^{k z} is real and the same for every direction, so each
 /// column's direction sums are taken once (A_x, A_y for the velocity, A for the elevation)
 /// and strip j's coefficients are omega_n e^{k_n z_j} (A_x, A_y)_n: one transform per strip
-/// gives u_x + i u_y ([`Synthesizer::two_real_series`]).
+/// gives u_x + i u_y ([`Synthesizer::two_real_series`]). The levels are equally spaced, so
+/// e^{k z_j} = e^{k z_0} (e^{k dz})^j: two exponentials per frequency and column, not one
+/// per strip.
 pub fn column_kinematics(
     components: &WaveComponents,
     columns: &[Column],
@@ -97,45 +126,104 @@ pub fn column_kinematics(
         return Vec::new();
     }
     let grid = &components.grid;
-    let omegas: Vec<f64> = (0..grid.count).map(|j| grid.omega(j)).collect();
+    let n = grid.len;
+    let wavenumbers: Vec<f64> = (0..grid.count)
+        .map(|j| grid.omega(j).powi(2) / gravity)
+        .collect();
     let zero = vec![Complex64::default(); grid.count];
-    let mut eta = vec![Complex64::default(); grid.len];
-    let mut velocities = vec![vec![Complex64::default(); grid.len]; strips];
     let (mut cx, mut cy) = (zero.clone(), zero.clone());
-    columns
-        .iter()
-        .map(|column| {
-            let [ax, ay, a] = direction_sums(components, column, gravity);
-            synth.two_real_series(&a, &zero, &mut eta);
-            for (j, series) in velocities.iter_mut().enumerate() {
-                let level = -column.draft + (j as f64 + 0.5) * column.draft / strips as f64;
-                for (n, &w) in omegas.iter().enumerate() {
-                    let profile = w * (w * w / gravity * level).exp();
-                    cx[n] = ax[n] * profile;
-                    cy[n] = ay[n] * profile;
+    let mut profile = vec![0.0; grid.count];
+    let mut growth = vec![0.0; grid.count];
+    let mut built: Vec<(KinematicsKey, Arc<Vec<Complex64>>)> = Vec::new();
+    // The transforms' outputs, series after series, before the transpose into rows.
+    let mut series = Vec::with_capacity((1 + strips) * n);
+    let mut kinematics = Vec::with_capacity(columns.len());
+    for column in columns {
+        let key = KinematicsKey::of(components, column);
+        let rows = match built.iter().find(|(k, _)| *k == key) {
+            Some((_, rows)) => Arc::clone(rows),
+            None => {
+                let [ax, ay, a] = direction_sums(components, column, gravity);
+                series.clear();
+                synth.append_two_real_series(&a, &zero, &mut series);
+                let dz = column.draft / strips as f64;
+                for (j, k) in wavenumbers.iter().enumerate() {
+                    profile[j] = grid.omega(j) * (k * (-column.draft + 0.5 * dz)).exp();
+                    growth[j] = (k * dz).exp();
                 }
-                synth.two_real_series(&cx, &cy, series);
+                for _ in 0..strips {
+                    for n in 0..grid.count {
+                        cx[n] = ax[n] * profile[n];
+                        cy[n] = ay[n] * profile[n];
+                        profile[n] *= growth[n];
+                    }
+                    synth.append_two_real_series(&cx, &cy, &mut series);
+                }
+                let rows = Arc::new(transpose(&series, 1 + strips, n));
+                built.push((key, Arc::clone(&rows)));
+                rows
             }
-            ColumnKinematics {
-                column: column.clone(),
-                records: interleave(&eta, &velocities),
-            }
-        })
-        .collect()
+        };
+        kinematics.push(ColumnKinematics {
+            column: column.clone(),
+            width: 1 + strips,
+            len: n,
+            rows,
+        });
+    }
+    kinematics
 }
 
-/// The block with rows [eta, u_x0, u_y0, u_x1, u_y1, ...], written row by row (reading the
-/// strip series in parallel keeps every write sequential).
-fn interleave(eta: &[Complex64], velocities: &[Vec<Complex64>]) -> RecordBlock {
-    let width = 1 + 2 * velocities.len();
-    let mut samples = Vec::with_capacity(width * eta.len());
-    for (m, e) in eta.iter().enumerate() {
-        samples.push(e.re);
-        for series in velocities {
-            samples.extend([series[m].re, series[m].im]);
+/// Samples per tile of [`transpose`]: a tile's rows (21 series x 16 B x 64 = 21 kB for 20
+/// strips) and its stretch of every series stay in the first-level cache.
+const TILE: usize = 64;
+
+/// `width` series of `len` samples each, one after the other, as rows of `width` samples:
+/// done tile by tile in a small buffer so that reads and writes stay in cache, and the
+/// result is written once, in order.
+fn transpose(series: &[Complex64], width: usize, len: usize) -> Vec<Complex64> {
+    let mut rows = Vec::with_capacity(width * len);
+    let mut tile = vec![Complex64::default(); width * TILE];
+    for first in (0..len).step_by(TILE) {
+        let span = first..(first + TILE).min(len);
+        let tile = &mut tile[..width * span.len()];
+        for (s, samples) in series.chunks_exact(len).enumerate() {
+            for (row, u) in tile.chunks_exact_mut(width).zip(&samples[span.clone()]) {
+                row[s] = *u;
+            }
+        }
+        rows.extend_from_slice(tile);
+    }
+    rows
+}
+
+/// What a column's kinematics depend on besides the sea: its draft and, for every wave
+/// direction, the distance of its centre along that direction. Two columns with equal keys
+/// (say the two front columns of a square platform in head seas) have the same records,
+/// bit for bit, and share one copy.
+#[derive(Debug, PartialEq)]
+struct KinematicsKey {
+    draft: f64,
+    along: Vec<f64>,
+}
+
+impl KinematicsKey {
+    fn of(components: &WaveComponents, column: &Column) -> Self {
+        KinematicsKey {
+            draft: column.draft,
+            along: components
+                .directions
+                .iter()
+                .map(|dir| along(column, dir.heading))
+                .collect(),
         }
     }
-    RecordBlock::from_rows(width, samples)
+}
+
+/// Distance of the column centre along a wave heading, m.
+fn along(column: &Column, heading: f64) -> f64 {
+    let (sin, cos) = heading.sin_cos();
+    column.x * cos + column.y * sin
 }
 
 /// sum over directions of the amplitudes with the phase of the column centre, times
@@ -150,7 +238,7 @@ fn direction_sums(
         std::array::from_fn(|_| vec![Complex64::default(); grid.count]);
     for (k, dir) in components.directions.iter().enumerate() {
         let (sin, cos) = dir.heading.sin_cos();
-        let along = column.x * cos + column.y * sin;
+        let along = along(column, dir.heading);
         for (j, a) in components.of_direction(k).iter().enumerate() {
             let wavenumber = grid.omega(j).powi(2) / gravity;
             let phased = a * Complex64::from_polar(1.0, -wavenumber * along);
@@ -160,4 +248,153 @@ fn direction_sums(
         }
     }
     sums
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sea_state::{FrequencyGrid, SeaState, Spectrum, Spreading};
+    use std::f64::consts::PI;
+
+    const GRAVITY: f64 = 9.80665;
+
+    fn square(draft: f64) -> Vec<Column> {
+        [(35.0, 35.0), (-35.0, 35.0), (-35.0, -35.0), (35.0, -35.0)]
+            .map(|(x, y)| Column {
+                x,
+                y,
+                diameter: 20.0,
+                draft,
+            })
+            .to_vec()
+    }
+
+    fn components(mean_direction: f64, spreading: Spreading) -> WaveComponents {
+        let sea = SeaState {
+            spectrum: Spectrum::Jonswap {
+                hs: 6.0,
+                tp: 10.0,
+                gamma: Some(3.3),
+            },
+            spreading,
+            mean_direction,
+            n_directions: 5,
+            seed: 7,
+            band: None,
+        };
+        let grid = FrequencyGrid::new(0.0, 600.0, 0.5, sea.band()).unwrap();
+        WaveComponents::generate(&sea, grid)
+    }
+
+    /// Direct sums of linear theory (the module's formulas, term by term, with no FFT and
+    /// no shared factors): elevation at the centre and velocity at stretched level z.
+    fn direct(c: &WaveComponents, column: &Column, z: f64, t: f64) -> [f64; 3] {
+        let mut out = [0.0; 3];
+        for (k, dir) in c.directions.iter().enumerate() {
+            for (j, a) in c.of_direction(k).iter().enumerate() {
+                let w = c.grid.omega(j);
+                let wavenumber = w * w / GRAVITY;
+                let phase = w * t
+                    - wavenumber * (column.x * dir.heading.cos() + column.y * dir.heading.sin());
+                let e = (a * Complex64::from_polar(1.0, phase)).re;
+                let speed = w * (wavenumber * z).exp() * e;
+                out[0] += e;
+                out[1] += speed * dir.heading.cos();
+                out[2] += speed * dir.heading.sin();
+            }
+        }
+        out
+    }
+
+    /// The direct sums at t, or between samples their cubic Lagrange interpolation from
+    /// the four samples around t (what the records promise: record.rs).
+    fn expected(c: &WaveComponents, column: &Column, z: f64, t: f64) -> [f64; 3] {
+        let s = t / c.grid.dt - (t / c.grid.dt).floor();
+        if s == 0.0 {
+            return direct(c, column, z, t);
+        }
+        let t0 = t - s * c.grid.dt;
+        let nodes = [-1.0f64, 0.0, 1.0, 2.0];
+        let mut out = [0.0; 3];
+        for (i, &xi) in nodes.iter().enumerate() {
+            let weight: f64 = nodes
+                .iter()
+                .enumerate()
+                .filter(|&(k, _)| k != i)
+                .map(|(_, &xk)| (s - xk) / (xi - xk))
+                .product();
+            let v = direct(c, column, z, t0 + xi * c.grid.dt);
+            for (o, v) in out.iter_mut().zip(v) {
+                *o += weight * v;
+            }
+        }
+        out
+    }
+
+    /// Every column's records (shared or not) equal the direct sums at samples and their
+    /// cubic interpolation between samples, for head seas and a spread sea.
+    #[test]
+    fn records_equal_the_direct_sums_of_linear_theory() {
+        let strips = 5;
+        for c in [
+            components(0.0, Spreading::LongCrested),
+            components(PI / 6.0, Spreading::CosN { n: 2.0 }),
+        ] {
+            let columns = square(30.0);
+            let mut synth = Synthesizer::new(&c.grid);
+            let records = column_kinematics(&c, &columns, strips, GRAVITY, &mut synth);
+            let clock = crate::forces::RecordClock {
+                start_time: c.grid.start_time,
+                dt: c.grid.dt,
+                len: c.grid.len,
+            };
+            for (record, column) in records.iter().zip(&columns) {
+                assert_eq!(record.strips(), strips);
+                for t in [0.0, 137.5, 401.0, 250.3, 0.2] {
+                    let state = record.at(&clock.locate(t).unwrap());
+                    let eta = expected(&c, column, 0.0, t)[0];
+                    assert!((state.eta() - eta).abs() < 1e-10, "t {t}: {}", state.eta());
+                    let (mut ux, mut uy) = (vec![0.0; strips], vec![0.0; strips]);
+                    state.velocities(0, &mut ux, &mut uy);
+                    for j in 0..strips {
+                        let z = -30.0 + (j as f64 + 0.5) * 30.0 / strips as f64;
+                        let [_, x, y] = expected(&c, column, z, t);
+                        assert_eq!(state.velocity(j), [ux[j], uy[j]]);
+                        assert!(
+                            (ux[j] - x).abs() < 1e-10 && (uy[j] - y).abs() < 1e-10,
+                            "t {t} column ({}, {}) strip {j}: ({}, {}) vs ({x}, {y})",
+                            column.x,
+                            column.y,
+                            ux[j],
+                            uy[j]
+                        );
+                    }
+                }
+            }
+        }
+    }
+
+    /// Columns on one line across the waves share their records; any other pair does not.
+    #[test]
+    fn only_columns_with_the_same_phases_share_records() {
+        let head = components(0.0, Spreading::LongCrested);
+        let mut synth = Synthesizer::new(&head.grid);
+        let r = column_kinematics(&head, &square(30.0), 3, GRAVITY, &mut synth);
+        assert!(Arc::ptr_eq(&r[0].rows, &r[3].rows) && Arc::ptr_eq(&r[1].rows, &r[2].rows));
+        assert!(!Arc::ptr_eq(&r[0].rows, &r[1].rows));
+        // A different draft is a different profile.
+        let mut columns = square(30.0);
+        columns[3].draft = 20.0;
+        let r = column_kinematics(&head, &columns, 3, GRAVITY, &mut synth);
+        assert!(!Arc::ptr_eq(&r[0].rows, &r[3].rows));
+        // Oblique spread seas: every column sees its own phases.
+        let spread = components(PI / 6.0, Spreading::CosN { n: 2.0 });
+        let mut synth = Synthesizer::new(&spread.grid);
+        let r = column_kinematics(&spread, &square(30.0), 3, GRAVITY, &mut synth);
+        for i in 0..4 {
+            for j in i + 1..4 {
+                assert!(!Arc::ptr_eq(&r[i].rows, &r[j].rows), "{i} {j}");
+            }
+        }
+    }
 }

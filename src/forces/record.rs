@@ -6,6 +6,7 @@
 //! sampling dt = h/2 every RK4 stage lands on a sample and the records are used exactly.
 
 use crate::error::{Error, Result};
+use std::ops::{Add, Mul};
 
 /// Where a time falls in the records: the sample index below it and the 4 stencil weights
 /// for samples index-1 .. index+2. Computed once per RK4 stage, used by every record.
@@ -48,6 +49,46 @@ impl RecordClock {
             index,
             weights: lagrange_weights(s),
         })
+    }
+}
+
+impl SamplePoint {
+    /// Whether the time falls on a sample (the records are then read, not interpolated).
+    #[inline]
+    pub fn on_sample(&self) -> bool {
+        self.weights[1] == 1.0
+    }
+
+    /// The sample at or below this time.
+    #[inline]
+    pub fn index(&self) -> usize {
+        self.index
+    }
+
+    /// The value at this time of a periodic record of any real or complex samples on the
+    /// clock: the sample itself, or the 4-point Lagrange interpolation, wrapping at sample 0.
+    #[inline]
+    pub fn interpolate<T>(&self, samples: &[T]) -> T
+    where
+        T: Copy + Mul<f64, Output = T> + Add<Output = T>,
+    {
+        self.interpolate_with(samples.len(), |m| samples[m])
+    }
+
+    /// [`SamplePoint::interpolate`] for a record of `len` samples read by `sample(m)`.
+    #[inline]
+    pub fn interpolate_with<T>(&self, len: usize, sample: impl Fn(usize) -> T) -> T
+    where
+        T: Copy + Mul<f64, Output = T> + Add<Output = T>,
+    {
+        let m = self.index;
+        if self.on_sample() {
+            return sample(m);
+        }
+        let before = if m == 0 { len - 1 } else { m - 1 };
+        let after = if m + 2 == len { 0 } else { m + 2 };
+        let w = &self.weights;
+        sample(before) * w[0] + sample(m) * w[1] + sample(m + 1) * w[2] + sample(after) * w[3]
     }
 }
 
@@ -95,98 +136,7 @@ impl Record {
         if self.samples.is_empty() {
             return 0.0;
         }
-        if p.weights[1] == 1.0 {
-            return self.samples[p.index];
-        }
-        let n = self.samples.len();
-        let before = if p.index == 0 { n - 1 } else { p.index - 1 };
-        p.weights[0] * self.samples[before]
-            + p.weights[1] * self.samples[p.index]
-            + p.weights[2] * self.samples[p.index + 1]
-            + p.weights[3] * self.samples[(p.index + 2) % n]
-    }
-}
-
-/// Several records on one [`RecordClock`], stored sample-major: row m holds sample m of
-/// every record, so that reading all of them at one time reads one contiguous row (the
-/// drag reads all of a column's strip records at every RK4 stage). Periodic like
-/// [`Record`]; the same 4-point Lagrange interpolation between samples.
-#[derive(Debug, Clone, PartialEq)]
-pub struct RecordBlock {
-    width: usize,
-    samples: Vec<f64>,
-}
-
-impl RecordBlock {
-    /// The block whose row m is `samples[m * width .. (m + 1) * width]`.
-    pub fn from_rows(width: usize, samples: Vec<f64>) -> Self {
-        assert!(
-            width > 0 && samples.len().is_multiple_of(width),
-            "a block holds whole rows"
-        );
-        RecordBlock { width, samples }
-    }
-
-    /// Number of records.
-    pub fn width(&self) -> usize {
-        self.width
-    }
-
-    /// Number of samples of each record.
-    pub fn len(&self) -> usize {
-        self.samples.len().checked_div(self.width).unwrap_or(0)
-    }
-
-    /// Whether the records have no samples.
-    pub fn is_empty(&self) -> bool {
-        self.samples.is_empty()
-    }
-
-    /// Every record at a located time.
-    #[inline]
-    pub fn row_at(&self, p: &SamplePoint) -> RowAt<'_> {
-        let w = self.width;
-        let row = |m: usize| &self.samples[m * w..(m + 1) * w];
-        let n = self.len();
-        let before = if p.index == 0 { n - 1 } else { p.index - 1 };
-        RowAt {
-            rows: [
-                row(before),
-                row(p.index),
-                row(p.index + 1),
-                row((p.index + 2) % n),
-            ],
-            weights: p.weights,
-            on_sample: p.weights[1] == 1.0,
-        }
-    }
-}
-
-/// The values of a [`RecordBlock`]'s records at one located time.
-#[derive(Debug, Clone, Copy)]
-pub struct RowAt<'a> {
-    rows: [&'a [f64]; 4],
-    weights: [f64; 4],
-    on_sample: bool,
-}
-
-impl<'a> RowAt<'a> {
-    /// The row itself when the time falls on a sample (no interpolation needed).
-    #[inline]
-    pub fn on_sample(&self) -> Option<&'a [f64]> {
-        self.on_sample.then_some(self.rows[1])
-    }
-
-    /// Record `j` at this time (exactly the sample on a sample time).
-    #[inline]
-    pub fn value(&self, j: usize) -> f64 {
-        if self.on_sample {
-            return self.rows[1][j];
-        }
-        self.weights[0] * self.rows[0][j]
-            + self.weights[1] * self.rows[1][j]
-            + self.weights[2] * self.rows[2][j]
-            + self.weights[3] * self.rows[3][j]
+        p.interpolate(&self.samples)
     }
 }
 
@@ -219,29 +169,6 @@ mod tests {
         let record = Record::new(vec![1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0]);
         assert_eq!(record.at(&c.locate(10.0 + 3.0 * 0.5).unwrap()), 4.0);
         assert_eq!(record.at(&c.locate(10.0).unwrap()), 1.0);
-    }
-
-    /// A block holds the same values as separate records, at samples and in between.
-    #[test]
-    fn a_block_equals_its_records() {
-        let c = clock(16);
-        let records: Vec<Vec<f64>> = (0..3)
-            .map(|j| {
-                (0..16)
-                    .map(|m| ((m * 7 + j * 3) % 11) as f64 - 4.5)
-                    .collect()
-            })
-            .collect();
-        let rows = (0..16).flat_map(|m| records.iter().map(move |r| r[m]));
-        let block = RecordBlock::from_rows(3, rows.collect());
-        assert_eq!((block.width(), block.len()), (3, 16));
-        for t in [10.0, 10.5, 10.2, 13.75, 16.9, 16.5] {
-            let p = c.locate(t).unwrap();
-            let row = block.row_at(&p);
-            for (j, r) in records.iter().enumerate() {
-                assert_eq!(row.value(j), Record::new(r.clone()).at(&p), "t {t} j {j}");
-            }
-        }
     }
 
     #[test]

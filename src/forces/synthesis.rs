@@ -43,8 +43,26 @@ impl Synthesizer {
     /// Uses the Hermitian pairs n and N - n, so the band must lie below the Nyquist index
     /// (guaranteed by [`FrequencyGrid::new`]).
     pub fn two_real_series(&mut self, cx: &[Complex64], cy: &[Complex64], out: &mut [Complex64]) {
-        let n = out.len();
         out.fill(Complex64::default());
+        self.place_and_transform(cx, cy, out);
+    }
+
+    /// [`Synthesizer::two_real_series`] appended to `out` as N more samples (the zeros
+    /// outside the band are written once, by the append).
+    pub fn append_two_real_series(
+        &mut self,
+        cx: &[Complex64],
+        cy: &[Complex64],
+        out: &mut Vec<Complex64>,
+    ) {
+        let start = out.len();
+        out.resize(start + self.fft.len(), Complex64::default());
+        self.place_and_transform(cx, cy, &mut out[start..]);
+    }
+
+    /// The transform of a zeroed `out` with the band's Hermitian pairs placed in it.
+    fn place_and_transform(&mut self, cx: &[Complex64], cy: &[Complex64], out: &mut [Complex64]) {
+        let n = out.len();
         let i = Complex64::new(0.0, 1.0);
         for j in 0..self.count {
             let k = self.first + j;
