@@ -12,6 +12,7 @@
 use super::kinematics::{ColumnKinematics, ColumnState};
 use super::record::SamplePoint;
 use crate::config::DragModel;
+use rustfft::num_complex::Complex64;
 
 /// Drag on the body, body frame: (Fx, Fy, Mz).
 ///
@@ -63,39 +64,52 @@ pub fn drag_force(
     total
 }
 
-/// Strips handled at a time: their velocities and norms sit in buffers of this length on
-/// the stack.
+/// Strips handled at a time by [`add_w_abs_w`]: their norms (and, between samples, their
+/// interpolated velocities) sit in buffers of this length on the stack.
 const CHUNK: usize = 32;
 
 /// sum_j w_j |w_j| over the column's strips, w_j = u_j - offset: the strip sum of E&S 8, 9
 /// before the coefficient and the factor 1/2 rho D dz, in strip order.
 #[inline]
 fn strip_sum(state: &ColumnState, strips: usize, offset: [f64; 2]) -> [f64; 2] {
-    let (mut ux, mut uy) = ([0.0; CHUNK], [0.0; CHUNK]);
     let mut sum = [0.0; 2];
-    for first in (0..strips).step_by(CHUNK) {
-        let len = CHUNK.min(strips - first);
-        state.velocities(first, &mut ux[..len], &mut uy[..len]);
-        add_w_abs_w(&ux[..len], &uy[..len], offset, &mut sum);
+    match state.velocities_on_sample() {
+        Some(velocities) => {
+            for chunk in velocities.chunks(CHUNK) {
+                add_w_abs_w(chunk, offset, &mut sum);
+            }
+        }
+        None => {
+            let mut buffer = [Complex64::default(); CHUNK];
+            for first in (0..strips).step_by(CHUNK) {
+                let chunk = &mut buffer[..CHUNK.min(strips - first)];
+                for (j, u) in chunk.iter_mut().enumerate() {
+                    let [x, y] = state.velocity(first + j);
+                    *u = Complex64::new(x, y);
+                }
+                add_w_abs_w(chunk, offset, &mut sum);
+            }
+        }
     }
     sum
 }
 
-/// Adds sum_j w_j |w_j| (w_j = (ux_j, uy_j) - offset) to `sum`, in order. The norms are
-/// taken first, in a loop of their own that the compiler packs (sqrtpd: the square roots
-/// are most of the drag's time). The norm is sqrt(x^2 + y^2), not `hypot`: velocities
-/// cannot overflow the squares, and libm's hypot is several times slower.
+/// Adds sum_j w_j |w_j| (w_j = (Re u_j, Im u_j) - offset) over at most [`CHUNK`] strips to
+/// `sum`, in order. The norms are taken first, in a loop of their own that the compiler
+/// packs (sqrtpd: the square roots are much of the drag's time). The norm is
+/// sqrt(x^2 + y^2), not `hypot`: velocities cannot overflow the squares, and libm's hypot
+/// is several times slower.
 #[inline]
-fn add_w_abs_w(ux: &[f64], uy: &[f64], offset: [f64; 2], sum: &mut [f64; 2]) {
+fn add_w_abs_w(velocities: &[Complex64], offset: [f64; 2], sum: &mut [f64; 2]) {
     let mut norms = [0.0; CHUNK];
-    let norms = &mut norms[..ux.len()];
-    for ((n, x), y) in norms.iter_mut().zip(ux).zip(uy) {
-        let (wx, wy) = (x - offset[0], y - offset[1]);
+    let norms = &mut norms[..velocities.len()];
+    for (n, u) in norms.iter_mut().zip(velocities) {
+        let (wx, wy) = (u.re - offset[0], u.im - offset[1]);
         *n = (wx * wx + wy * wy).sqrt();
     }
-    for ((n, x), y) in norms.iter().zip(ux).zip(uy) {
-        sum[0] += (x - offset[0]) * n;
-        sum[1] += (y - offset[1]) * n;
+    for (n, u) in norms.iter().zip(velocities) {
+        sum[0] += (u.re - offset[0]) * n;
+        sum[1] += (u.im - offset[1]) * n;
     }
 }
 
