@@ -33,42 +33,39 @@ impl Synthesizer {
     /// `out` (length N) for every sample m.
     pub fn complex_series(&mut self, coefficients: &[Complex64], out: &mut [Complex64]) {
         debug_assert_eq!(coefficients.len(), self.count);
-        out.fill(Complex64::default());
-        out[self.first..self.first + self.count].copy_from_slice(coefficients);
+        let (below, rest) = out.split_at_mut(self.first);
+        let (band, above) = rest.split_at_mut(self.count);
+        below.fill(Complex64::default());
+        band.copy_from_slice(coefficients);
+        above.fill(Complex64::default());
         self.fft.process_with_scratch(out, &mut self.scratch);
     }
 
-    /// Two real series in one transform: out[m] = x_m + i y_m with
-    /// x_m = Re sum_j cx_j e^{i omega_j t_m} and y_m = Re sum_j cy_j e^{i omega_j t_m}.
-    /// Uses the Hermitian pairs n and N - n, so the band must lie below the Nyquist index
-    /// (guaranteed by [`FrequencyGrid::new`]).
-    pub fn two_real_series(&mut self, cx: &[Complex64], cy: &[Complex64], out: &mut [Complex64]) {
-        out.fill(Complex64::default());
-        self.place_and_transform(cx, cy, out);
-    }
-
-    /// [`Synthesizer::two_real_series`] appended to `out` as N more samples (the zeros
-    /// outside the band are written once, by the append).
+    /// Two real series in one transform, appended to `out` as N more samples:
+    /// x_m + i y_m with x_m = Re sum_j cx_j e^{i omega_j t_m} and
+    /// y_m = Re sum_j cy_j e^{i omega_j t_m}. Uses the Hermitian pairs n and N - n, so the
+    /// band must lie below the Nyquist index (guaranteed by [`FrequencyGrid::new`]). Every
+    /// input sample is written once: the band's pairs and the zeros around them.
     pub fn append_two_real_series(
         &mut self,
         cx: &[Complex64],
         cy: &[Complex64],
         out: &mut Vec<Complex64>,
     ) {
-        let start = out.len();
-        out.resize(start + self.fft.len(), Complex64::default());
-        self.place_and_transform(cx, cy, &mut out[start..]);
-    }
-
-    /// The transform of a zeroed `out` with the band's Hermitian pairs placed in it.
-    fn place_and_transform(&mut self, cx: &[Complex64], cy: &[Complex64], out: &mut [Complex64]) {
-        let n = out.len();
+        debug_assert_eq!((cx.len(), cy.len()), (self.count, self.count));
+        let (n, start) = (self.fft.len(), out.len());
+        let zeros = |count: usize| std::iter::repeat_n(Complex64::default(), count);
         let i = Complex64::new(0.0, 1.0);
-        for j in 0..self.count {
-            let k = self.first + j;
-            out[k] += 0.5 * (cx[j] + i * cy[j]);
-            out[n - k] += 0.5 * (cx[j].conj() + i * cy[j].conj());
-        }
-        self.fft.process_with_scratch(out, &mut self.scratch);
+        let pairs = cx.iter().zip(cy);
+        // Index k = first + j holds (cx_j + i cy_j) / 2, index N - k the conjugates' pair;
+        // the second run goes up in index, so down in j.
+        out.extend(zeros(self.first));
+        out.extend(pairs.clone().map(|(x, y)| 0.5 * (x + i * y)));
+        out.extend(zeros(n + 1 - 2 * (self.first + self.count)));
+        out.extend(pairs.rev().map(|(x, y)| 0.5 * (x.conj() + i * y.conj())));
+        out.extend(zeros(self.first - 1));
+        debug_assert_eq!(out.len(), start + n);
+        self.fft
+            .process_with_scratch(&mut out[start..], &mut self.scratch);
     }
 }

@@ -12,7 +12,7 @@
 use super::kinematics::{ColumnKinematics, ColumnState};
 use super::record::SamplePoint;
 use crate::config::DragModel;
-use rustfft::num_complex::Complex64;
+use rustfft::num_complex::{Complex32, Complex64};
 
 /// Drag on the body, body frame: (Fx, Fy, Mz).
 ///
@@ -100,16 +100,38 @@ fn strip_sum(state: &ColumnState, strips: usize, offset: [f64; 2]) -> [f64; 2] {
 /// sqrt(x^2 + y^2), not `hypot`: velocities cannot overflow the squares, and libm's hypot
 /// is several times slower.
 #[inline]
-fn add_w_abs_w(velocities: &[Complex64], offset: [f64; 2], sum: &mut [f64; 2]) {
+fn add_w_abs_w<T: Velocity>(velocities: &[T], offset: [f64; 2], sum: &mut [f64; 2]) {
     let mut norms = [0.0; CHUNK];
     let norms = &mut norms[..velocities.len()];
     for (n, u) in norms.iter_mut().zip(velocities) {
-        let (wx, wy) = (u.re - offset[0], u.im - offset[1]);
+        let [x, y] = u.xy();
+        let (wx, wy) = (x - offset[0], y - offset[1]);
         *n = (wx * wx + wy * wy).sqrt();
     }
     for (n, u) in norms.iter().zip(velocities) {
-        sum[0] += (u.re - offset[0]) * n;
-        sum[1] += (u.im - offset[1]) * n;
+        let [x, y] = u.xy();
+        sum[0] += (x - offset[0]) * n;
+        sum[1] += (y - offset[1]) * n;
+    }
+}
+
+/// A horizontal velocity u_x + i u_y as stored (single precision, on a sample) or
+/// interpolated (double precision), read in double precision.
+trait Velocity: Copy {
+    fn xy(&self) -> [f64; 2];
+}
+
+impl Velocity for Complex32 {
+    #[inline]
+    fn xy(&self) -> [f64; 2] {
+        [self.re.into(), self.im.into()]
+    }
+}
+
+impl Velocity for Complex64 {
+    #[inline]
+    fn xy(&self) -> [f64; 2] {
+        [self.re, self.im]
     }
 }
 
