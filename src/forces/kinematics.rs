@@ -134,7 +134,9 @@ pub fn column_kinematics(
     let mut profile = vec![0.0; grid.count];
     let mut growth = vec![0.0; grid.count];
     let mut built: Vec<(KinematicsKey, Arc<Vec<Complex32>>)> = Vec::new();
-    // The transforms' outputs, series after series, before the transpose into rows.
+    // One transform's output (reused: it stays in cache), and the series rounded to single
+    // precision one after the other, before the transpose into rows.
+    let mut output = Vec::with_capacity(n);
     let mut series = Vec::with_capacity((1 + strips) * n);
     let mut kinematics = Vec::with_capacity(columns.len());
     for column in columns {
@@ -144,7 +146,12 @@ pub fn column_kinematics(
             None => {
                 let [ax, ay, a] = direction_sums(components, column, gravity);
                 series.clear();
-                synth.append_two_real_series(&a, &zero, &mut series);
+                let mut synthesize = |cx: &[Complex64], cy: &[Complex64]| {
+                    output.clear();
+                    synth.append_two_real_series(cx, cy, &mut output);
+                    series.extend(output.iter().map(|u| narrow(*u)));
+                };
+                synthesize(&a, &zero);
                 let dz = column.draft / strips as f64;
                 for (j, k) in wavenumbers.iter().enumerate() {
                     profile[j] = grid.omega(j) * (k * (-column.draft + 0.5 * dz)).exp();
@@ -156,7 +163,7 @@ pub fn column_kinematics(
                         cy[n] = ay[n] * profile[n];
                         profile[n] *= growth[n];
                     }
-                    synth.append_two_real_series(&cx, &cy, &mut series);
+                    synthesize(&cx, &cy);
                 }
                 let rows = Arc::new(transpose(&series, 1 + strips, n));
                 built.push((key, Arc::clone(&rows)));
@@ -177,10 +184,10 @@ pub fn column_kinematics(
 /// strips) and its stretch of every series stay in the first-level cache.
 const TILE: usize = 64;
 
-/// `width` series of `len` samples each, one after the other, as rows of `width` samples
-/// rounded to single precision: done tile by tile in a small buffer so that reads and
-/// writes stay in cache, and the result is written once, in order.
-fn transpose(series: &[Complex64], width: usize, len: usize) -> Vec<Complex32> {
+/// `width` series of `len` samples each, one after the other, as rows of `width` samples:
+/// done tile by tile in a small buffer so that reads and writes stay in cache, and the
+/// result is written once, in order.
+fn transpose(series: &[Complex32], width: usize, len: usize) -> Vec<Complex32> {
     let mut rows = Vec::with_capacity(width * len);
     let mut tile = vec![Complex32::default(); width * TILE];
     for first in (0..len).step_by(TILE) {
@@ -188,12 +195,18 @@ fn transpose(series: &[Complex64], width: usize, len: usize) -> Vec<Complex32> {
         let tile = &mut tile[..width * span.len()];
         for (s, samples) in series.chunks_exact(len).enumerate() {
             for (row, u) in tile.chunks_exact_mut(width).zip(&samples[span.clone()]) {
-                row[s] = Complex32::new(u.re as f32, u.im as f32);
+                row[s] = *u;
             }
         }
         rows.extend_from_slice(tile);
     }
     rows
+}
+
+/// A sample rounded to single precision for storage (to nearest).
+#[inline]
+fn narrow(v: Complex64) -> Complex32 {
+    Complex32::new(v.re as f32, v.im as f32)
 }
 
 /// A stored sample in double precision (exact).

@@ -35,8 +35,8 @@ impl NewmanBuilder {
     }
 
     /// Adds one direction's slowly varying record for the diagonal `transfer` (T_i at every
-    /// component) to `out`, which is allocated (zeros, record length) when first needed and
-    /// left empty if the transfer is zero. `amplitudes` are the direction's a_i and `eta_c`
+    /// component) to `out`, which takes the first contribution's samples as they are and
+    /// stays empty if the transfer is zero. `amplitudes` are the direction's a_i and `eta_c`
     /// its complex elevation series sum a_i e^{i omega_i t_m} (used by the arithmetic form).
     pub fn accumulate(
         &mut self,
@@ -47,16 +47,12 @@ impl NewmanBuilder {
         transfer: &[f64],
         out: &mut Vec<f64>,
     ) {
-        let len = self.series.len();
         match form {
             NewmanForm::Geometric => {
                 for sign in [1.0, -1.0] {
                     if self.fill_signed(amplitudes, transfer, sign) {
                         synth.complex_series(&self.coefficients, &mut self.series);
-                        out.resize(len, 0.0);
-                        for (o, p) in out.iter_mut().zip(&self.series) {
-                            *o += sign * p.norm_sqr();
-                        }
+                        add_to(out, self.series.iter().map(|p| sign * p.norm_sqr()));
                     }
                 }
             }
@@ -68,10 +64,12 @@ impl NewmanBuilder {
                     *c = a * t;
                 }
                 synth.complex_series(&self.coefficients, &mut self.series);
-                out.resize(len, 0.0);
-                for ((o, q), e) in out.iter_mut().zip(&self.series).zip(eta_c) {
-                    *o += (q * e.conj()).re;
-                }
+                let products = self
+                    .series
+                    .iter()
+                    .zip(eta_c)
+                    .map(|(q, e)| (q * e.conj()).re);
+                add_to(out, products);
             }
         }
     }
@@ -131,5 +129,17 @@ impl NewmanBuilder {
             };
         }
         any
+    }
+}
+
+/// Adds a record's samples to `out`; an empty `out` (no contribution yet) takes them as
+/// they are, without first being filled with zeros.
+fn add_to(out: &mut Vec<f64>, samples: impl Iterator<Item = f64>) {
+    if out.is_empty() {
+        out.extend(samples);
+    } else {
+        for (o, v) in out.iter_mut().zip(samples) {
+            *o += v;
+        }
     }
 }
