@@ -191,6 +191,7 @@ impl RecordInputs {
                 drag_columns: &[],
                 strips_per_column: 20,
                 gravity: self.gravity,
+                fft: None,
             },
         )
     }
@@ -461,10 +462,13 @@ fn record_bytes(records: &ForceRecords) -> usize {
     if let Some(b) = &records.damping {
         samples += b.iter().flatten().map(|r| r.samples().len()).sum::<usize>();
     }
+    let mut bytes = samples * std::mem::size_of::<f64>();
+    // Drag kinematics: rows of 1 + strips single-precision complex samples (8 bytes), each
+    // shared copy counted once per column (an upper bound).
     for k in &records.kinematics {
-        samples += k.len() * (1 + 2 * k.strips());
+        bytes += k.len() * (1 + k.strips()) * 8;
     }
-    samples * std::mem::size_of::<f64>()
+    bytes
 }
 
 fn memory(report: &mut Vec<String>) {

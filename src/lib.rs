@@ -27,6 +27,7 @@ pub mod forces;
 pub mod hydro;
 pub mod model_description;
 pub mod montecarlo;
+pub mod record_plan;
 pub mod sea_state;
 pub mod simulation;
 pub mod special;
@@ -35,4 +36,5 @@ pub mod studies;
 
 pub use config::Config;
 pub use error::{Error, Result};
+pub use record_plan::RecordPlan;
 pub use simulation::{Outputs, QtfRank, Simulation, Snapshot};

@@ -5,17 +5,12 @@
 //! advances one RK4 step h, `advance` any interval in equal substeps no longer than h.
 //! Time is always origin + count * step from an integer count, never an accumulated sum.
 
-use crate::config::{Config, DriftDamping, SecondOrder};
+use crate::config::Config;
 use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};
 use crate::error::{Error, Result};
-use crate::forces::{
-    add_cross_terms, direction_pairs, transfers_on_grid, DirectionTransfer, ForceRecords, GridQtf,
-    QtfFactorisation, RecordOptions, YawFollowingRecords, YawGrid,
-};
-use crate::hydro::aranha::aranha_damping;
+use crate::forces::ForceRecords;
 use crate::hydro::database::SlowDof;
-use crate::hydro::wamit::HEADING_TOLERANCE;
-use crate::sea_state::{FrequencyGrid, WaveComponents};
+use crate::record_plan::RecordPlan;
 
 /// Relative tolerance for deciding that an interval is a whole number of steps.
 const WHOLE_STEPS_TOLERANCE: f64 = 1e-9;
@@ -137,9 +132,23 @@ pub struct QtfRank {
 impl Simulation {
     /// Validates the configuration and precomputes the records.
     pub fn new(config: Config) -> Result<Self> {
-        config.validate()?;
+        let plan = RecordPlan::new(&config)?;
+        Self::with_plan(config, &plan)
+    }
+
+    /// A simulation of `config` whose seed-independent record work comes from `plan`, made
+    /// from a configuration equal to `config` but for `sea.seed` (else an error naming
+    /// the plan). The same records, bit for bit, as [`Simulation::new`].
+    pub fn with_plan(config: Config, plan: &RecordPlan) -> Result<Self> {
+        if !plan.serves(&config) {
+            return Err(Error::invalid(
+                "plan",
+                "RecordPlan",
+                "was made for a configuration that differs from this one in more than the seed",
+            ));
+        }
         let model = SlowDriftModel::new(&config)?;
-        let (records, qtf_ranks) = build_records(&config)?;
+        let (records, qtf_ranks) = plan.build_records(&config)?;
         let state = initial_state(&config);
         Ok(Simulation {
             config,
@@ -352,130 +361,6 @@ fn initial_state(config: &Config) -> Snapshot {
         velocity: config.initial.velocity,
         external_force: [0.0; 3],
     }
-}
-
-/// Records sampled at h/2, so that every RK4 stage of a regular step is a sample; with the
-/// ranks of the full QTF's blocks.
-fn build_records(config: &Config) -> Result<(ForceRecords, Vec<QtfRank>)> {
-    let sea = &config.sea;
-    let grid = FrequencyGrid::new(
-        config.run.start_time,
-        config.run.duration,
-        0.5 * config.run.time_step,
-        sea.band(),
-    )?;
-    let components = WaveComponents::generate(sea, grid);
-    let damping_table = match config.model.drift_damping {
-        DriftDamping::Off => None,
-        DriftDamping::Table => Some(config.drift.clone()),
-        DriftDamping::Aranha => Some(aranha_damping(
-            &config.drift,
-            config.environment.gravity,
-            &config.platform.columns,
-        )?),
-    };
-    let table = damping_table.as_ref().unwrap_or(&config.drift);
-    // Cross-direction terms of a spread sea (None: long-crested or interaction "none").
-    let pairs = direction_pairs(config, &components)?;
-    if let (Some(options), Some(_)) = (&config.model.yaw_following, &pairs) {
-        return Err(Error::invalid(
-            "model.yaw_following",
-            format!("{} headings", options.headings),
-            format!(
-                "the yaw-following records do not carry the cross-direction terms of a spread \
-                 sea ({} directions, model.interaction {:?}): use a long-crested sea or \
-                 model.interaction = \"none\"",
-                components.directions.len(),
-                config.interaction()
-            ),
-        ));
-    }
-    let yaw_following = match &config.model.yaw_following {
-        None => None,
-        Some(options) => Some(YawFollowingRecords::build(
-            &components,
-            YawGrid::new(options),
-            table,
-            damping_table.is_some(),
-            config.model.newman,
-        )?),
-    };
-    // With yaw following the force and damping come from its records alone: the
-    // mean-position build gets no coefficients (it still makes the elevation and kinematics).
-    let transfers = match yaw_following {
-        None => transfers_on_grid(
-            table,
-            &components.grid,
-            &components.directions,
-            damping_table.is_some(),
-        )?,
-        Some(_) => {
-            vec![DirectionTransfer::none(components.grid.count); components.directions.len()]
-        }
-    };
-    let drag_columns = match config.model.drag {
-        crate::config::DragModel::Off => &[][..],
-        _ => &config.platform.columns[..],
-    };
-    let (full_qtf, ranks) = match config.model.second_order {
-        SecondOrder::Newman => (None, Vec::new()),
-        SecondOrder::FullQtf => {
-            let (qtf, ranks) = full_qtf_on_grid(config, &components)?;
-            (Some(qtf), ranks)
-        }
-    };
-    let mut records = ForceRecords::build(
-        &components,
-        &transfers,
-        &RecordOptions {
-            newman: config.model.newman,
-            full_qtf: full_qtf.as_deref(),
-            drag_columns,
-            strips_per_column: config.model.strips_per_column,
-            gravity: config.environment.gravity,
-        },
-    );
-    if let Some(pairs) = &pairs {
-        add_cross_terms(&mut records, &components, pairs);
-    }
-    records.yaw_following = yaw_following;
-    Ok((records, ranks))
-}
-
-/// The QTF of every direction and DOF, factorised and interpolated onto the grid.
-type DirectionQtfs = Vec<[GridQtf; 3]>;
-
-fn full_qtf_on_grid(
-    config: &Config,
-    components: &WaveComponents,
-) -> Result<(DirectionQtfs, Vec<QtfRank>)> {
-    let qtf = config
-        .qtf
-        .as_ref()
-        .expect("Config::validate requires the QTF for full-qtf");
-    let mut ranks = Vec::new();
-    let mut on_grid = Vec::with_capacity(components.directions.len());
-    for (k, direction) in components.directions.iter().enumerate() {
-        let mut blocks = Vec::with_capacity(3);
-        for dof in SlowDof::ALL {
-            let block = qtf
-                .block(dof, direction.heading, HEADING_TOLERANCE)
-                .expect("Config::validate requires every direction's QTF");
-            let factors =
-                QtfFactorisation::new(&qtf.omegas, &block.values(), config.model.qtf_tolerance)?;
-            ranks.push(QtfRank {
-                direction: k,
-                heading: direction.heading,
-                dof,
-                rank: factors.rank(),
-                size: factors.size(),
-                discarded: factors.discarded(),
-            });
-            blocks.push(factors.on_grid(&components.grid)?);
-        }
-        on_grid.push(blocks.try_into().expect("three DOFs"));
-    }
-    Ok((on_grid, ranks))
 }
 
 #[cfg(test)]

@@ -246,10 +246,13 @@ fn none_and_one_direction_leave_the_records_unchanged() {
             drag_columns: &[],
             strips_per_column: 20,
             gravity: GRAVITY,
+            fft: None,
         },
     );
     assert_eq!(sim.records(), &plain);
-    assert!(direction_pairs(&config, &comps).unwrap().is_none());
+    assert!(direction_pairs(&config, &comps.grid, &comps.directions)
+        .unwrap()
+        .is_none());
 
     let with = Simulation::new(spread_config(Interaction::MeanDirection)).unwrap();
     assert_ne!(with.records().wave_force, plain.wave_force);

@@ -212,6 +212,7 @@ fn records(
             drag_columns: &[],
             strips_per_column: 1,
             gravity: GRAVITY,
+            fft: None,
         },
     )
 }

@@ -339,3 +339,39 @@ fn one_case_of_a_table_equals_its_line_in_the_whole_campaign() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Jobs that share their case's plan (made once in `run_jobs`, dropped after the case's
+/// last job) give what a run with its own plan gives, bit for bit, and a case whose plan
+/// cannot be made fails its jobs with the configuration's error while the other case runs.
+#[test]
+fn shared_plans_give_the_runs_of_fresh_ones() {
+    use slowdrift::montecarlo::run_seed;
+    let mut good = base_config(400.0, 1.0, 0);
+    good.platform.columns = common::four_columns();
+    good.model.drag = slowdrift::config::DragModel::Combined { cd: 0.6 };
+    let mut bad = good.clone();
+    bad.run.time_step = -1.0;
+    let cases: Vec<Case> = [good, bad]
+        .into_iter()
+        .enumerate()
+        .map(|(i, config)| Case {
+            name: format!("c{i}"),
+            config,
+            transient: 50.0,
+        })
+        .collect();
+    let jobs: Vec<Job> = [(0, 4), (1, 4), (0, 9), (0, 2), (1, 5)]
+        .map(|(case, seed)| Job { case, seed })
+        .to_vec();
+    let mut results = vec![None; jobs.len()];
+    run_jobs(&cases, &jobs, 2, |event| {
+        if let Some(f) = event {
+            results[f.job] = Some(f.result);
+        }
+    });
+    for (job, result) in jobs.iter().zip(results) {
+        let expected = run_seed(&cases[job.case], job.seed).map_err(|e| e.to_string());
+        assert_eq!(result.expect("every job reports"), expected, "{job:?}");
+        assert_eq!(expected.is_err(), job.case == 1);
+    }
+}

@@ -112,6 +112,7 @@ fn build(
             drag_columns: &[],
             strips_per_column: 1,
             gravity: GRAVITY,
+            fft: None,
         },
     );
     (components, transfers, records)
@@ -211,6 +212,7 @@ fn mean_force_is_twice_the_integral_of_spectrum_times_drift() {
                 drag_columns: &[],
                 strips_per_column: 1,
                 gravity: GRAVITY,
+                fft: None,
             },
         );
         let f = records.wave_force[0].samples();

@@ -27,6 +27,7 @@ fn elevation(sea: &SeaState, duration: f64, dt: f64) -> (Vec<f64>, FrequencyGrid
         drag_columns: &[],
         strips_per_column: 1,
         gravity: GRAVITY,
+        fft: None,
     };
     let records = ForceRecords::build(&components, &transfers, &options);
     (records.elevation.samples().to_vec(), grid)

@@ -140,3 +140,37 @@ fn advance_lands_exactly_on_the_requested_time() {
     assert_eq!(sim.time(), t + 0.37);
     assert_eq!(sim.outputs().unwrap().time, sim.time());
 }
+
+/// A plan made once serves every seed of its configuration with the records, and so the
+/// trajectories, of `Simulation::new`, bit for bit; in a spread sea with drag and Aranha
+/// damping too (the plan then also holds the damping table and the cross-direction data).
+#[test]
+fn a_plan_gives_the_records_of_new_for_every_seed() {
+    let mut spread = config(1);
+    spread.sea.spreading = slowdrift::sea_state::Spreading::CosN { n: 2.0 };
+    spread.sea.n_directions = 5;
+    spread.platform.columns = four_columns();
+    spread.model.drag = slowdrift::config::DragModel::Combined { cd: 0.6 };
+    spread.model.drift_damping = slowdrift::config::DriftDamping::Aranha;
+    for base in [config(1), spread] {
+        let plan = slowdrift::RecordPlan::new(&base).unwrap();
+        for seed in [3, 11] {
+            let mut c = base.clone();
+            c.sea.seed = seed;
+            let mut planned = Simulation::with_plan(c.clone(), &plan).unwrap();
+            let mut fresh = Simulation::new(c).unwrap();
+            assert!(planned.records() == fresh.records(), "seed {seed}");
+            assert!(trajectory(&mut planned, 300) == trajectory(&mut fresh, 300));
+        }
+    }
+}
+
+/// A plan refuses a configuration that differs in more than the seed, naming itself.
+#[test]
+fn a_plan_refuses_another_configuration() {
+    let plan = slowdrift::RecordPlan::new(&config(1)).unwrap();
+    let mut other = config(1);
+    other.sea.mean_direction += 0.1;
+    let err = Simulation::with_plan(other, &plan).unwrap_err().to_string();
+    assert!(err.contains("plan"), "{err}");
+}

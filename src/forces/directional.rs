@@ -51,20 +51,20 @@ use super::{ForceRecords, Record};
 use crate::config::{Config, Interaction};
 use crate::error::{Error, Result};
 use crate::hydro::bidirectional::{mean_direction_pairs, DirectionPairs};
-use crate::sea_state::WaveComponents;
+use crate::sea_state::{Direction, FrequencyGrid, WaveComponents};
 use rustfft::num_complex::Complex64;
 
 /// The bi-directional drift at the sea's directions that `config` asks for, or `None`
 /// when there is nothing to add (interaction off, or one direction).
 pub fn direction_pairs(
     config: &Config,
-    components: &WaveComponents,
+    grid: &FrequencyGrid,
+    directions: &[Direction],
 ) -> Result<Option<DirectionPairs>> {
-    let headings: Vec<f64> = components.directions.iter().map(|d| d.heading).collect();
+    let headings: Vec<f64> = directions.iter().map(|d| d.heading).collect();
     if headings.len() < 2 {
         return Ok(None);
     }
-    let grid = &components.grid;
     let band = (grid.omega(0), grid.omega(grid.count - 1));
     match config.interaction() {
         Interaction::None => Ok(None),

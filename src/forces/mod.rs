@@ -17,7 +17,7 @@ pub use kinematics::ColumnKinematics;
 pub use newman::NewmanBuilder;
 pub use qtf::{check_covers, check_tolerance, GridQtf, QtfFactorisation, MIN_QTF_TOLERANCE};
 pub use record::{Record, RecordClock, SamplePoint};
-pub use synthesis::Synthesizer;
+pub use synthesis::{plan_inverse_fft, InverseFft, Synthesizer};
 pub use transfer::{transfers_on_grid, DirectionTransfer};
 pub use viscous::drag_force;
 pub use yaw_following::{SlowRecords, YawFollowingRecords, YawGrid, YawPoint};
@@ -37,6 +37,8 @@ pub struct RecordOptions<'a> {
     pub drag_columns: &'a [Column],
     pub strips_per_column: usize,
     pub gravity: f64,
+    /// The inverse FFT of the grid's record length when already planned (`None`: plan it).
+    pub fft: Option<&'a InverseFft>,
 }
 
 /// The precomputed records on one clock.
@@ -69,7 +71,10 @@ impl ForceRecords {
     ) -> Self {
         let grid = &components.grid;
         let n = grid.len;
-        let mut synth = Synthesizer::new(grid);
+        let mut synth = match options.fft {
+            Some(fft) => Synthesizer::with_fft(grid, fft.clone()),
+            None => Synthesizer::new(grid),
+        };
         let mut builder = NewmanBuilder::new(grid.count, n);
         // The arithmetic form needs each direction's complex elevation series.
         let mut eta_c = match options.newman {

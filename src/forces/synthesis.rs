@@ -8,9 +8,18 @@ use rustfft::num_complex::Complex64;
 use rustfft::{Fft, FftPlanner};
 use std::sync::Arc;
 
-/// An inverse FFT planned once for the record length, with its scratch space.
+/// A planned inverse FFT (its twiddle factors cost about three transforms to compute),
+/// shareable between threads and reusable by every build on the same grid.
+pub type InverseFft = Arc<dyn Fft<f64>>;
+
+/// Plans the inverse FFT of the grid's record length.
+pub fn plan_inverse_fft(grid: &FrequencyGrid) -> InverseFft {
+    FftPlanner::new().plan_fft_inverse(grid.len)
+}
+
+/// An inverse FFT for the record length, with its scratch space.
 pub struct Synthesizer {
-    fft: Arc<dyn Fft<f64>>,
+    fft: InverseFft,
     scratch: Vec<Complex64>,
     first: usize,
     count: usize,
@@ -19,7 +28,12 @@ pub struct Synthesizer {
 impl Synthesizer {
     /// Plans the transform for the grid's record length.
     pub fn new(grid: &FrequencyGrid) -> Self {
-        let fft = FftPlanner::new().plan_fft_inverse(grid.len);
+        Self::with_fft(grid, plan_inverse_fft(grid))
+    }
+
+    /// Uses a transform already planned for the grid's record length.
+    pub fn with_fft(grid: &FrequencyGrid, fft: InverseFft) -> Self {
+        debug_assert_eq!(fft.len(), grid.len);
         let scratch = vec![Complex64::default(); fft.get_inplace_scratch_len()];
         Synthesizer {
             fft,

@@ -17,10 +17,11 @@ pub mod runs_file;
 
 use crate::error::{Error, Result};
 use crate::stats::summarize;
-use crate::{Config, Simulation};
+use crate::{Config, RecordPlan, Simulation};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc;
+use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
 /// The degrees of freedom summarised, in order, with the unit of their statistics.
@@ -72,10 +73,15 @@ pub const STATISTICS: [&str; 4] = ["mean", "rms", "max", "min"];
 /// Simulates `case` with `seed` from its start for its duration (no external force) and
 /// summarises (X, Y, theta) after the transient; yaw is reported in degrees.
 pub fn run_seed(case: &Case, seed: u64) -> Result<[DofStats; 3]> {
+    run_seed_with(case, &RecordPlan::new(&case.config)?, seed)
+}
+
+/// [`run_seed`] with the case's [`RecordPlan`] made beforehand (once for all its seeds).
+pub fn run_seed_with(case: &Case, plan: &RecordPlan, seed: u64) -> Result<[DofStats; 3]> {
     let mut config = case.config.clone();
     config.sea.seed = seed;
     let dt = config.run.time_step;
-    let records = simulate_positions(config)?;
+    let records = positions(Simulation::with_plan(config, plan)?)?;
     let mut out = [DofStats {
         mean: 0.0,
         rms: 0.0,
@@ -103,8 +109,13 @@ pub fn run_seed(case: &Case, seed: u64) -> Result<[DofStats; 3]> {
 /// and returns the records of X (m), Y (m) and theta (rad), sampled every time step from
 /// t = start_time (the initial state) to the end.
 pub fn simulate_positions(config: Config) -> Result<[Vec<f64>; 3]> {
-    let (duration, dt) = (config.run.duration, config.run.time_step);
-    let mut sim = Simulation::new(config)?;
+    positions(Simulation::new(config)?)
+}
+
+/// The positions of [`simulate_positions`] for a simulation at its start.
+fn positions(mut sim: Simulation) -> Result<[Vec<f64>; 3]> {
+    let run = &sim.config().run;
+    let (duration, dt) = (run.duration, run.time_step);
     let steps = (duration / dt).round() as usize;
     let mut records: [Vec<f64>; 3] = std::array::from_fn(|_| Vec::with_capacity(steps + 1));
     let mut push = |q: [f64; 3]| records.iter_mut().zip(q).for_each(|(r, v)| r.push(v));
@@ -144,20 +155,24 @@ pub fn run_jobs(
     mut on_event: impl FnMut(Option<Finished>),
 ) {
     let next = AtomicUsize::new(0);
+    let plans = CasePlans::new(cases, jobs);
     let (sender, receiver) = mpsc::channel();
     std::thread::scope(|scope| {
         for _ in 0..threads.max(1).min(jobs.len().max(1)) {
             let sender = sender.clone();
-            let next = &next;
+            let (next, plans) = (&next, &plans);
             scope.spawn(move || loop {
                 let index = next.fetch_add(1, Ordering::Relaxed);
                 let Some(job) = jobs.get(index) else { break };
-                let result =
-                    catch_unwind(AssertUnwindSafe(|| run_seed(&cases[job.case], job.seed)))
-                        .unwrap_or_else(|panic| {
-                            Err(Error::invalid("run", "panic", panic_text(&*panic)))
-                        })
-                        .map_err(|e| e.to_string());
+                let run = || {
+                    let plan = plans.get(job.case)?;
+                    let plan = plan.as_ref().as_ref().map_err(Clone::clone)?;
+                    run_seed_with(&cases[job.case], plan, job.seed).map_err(|e| e.to_string())
+                };
+                let result = catch_unwind(AssertUnwindSafe(run)).unwrap_or_else(|panic| {
+                    Err(Error::invalid("run", "panic", panic_text(&*panic)).to_string())
+                });
+                plans.done(job.case);
                 if sender.send(Finished { job: index, result }).is_err() {
                     break;
                 }
@@ -172,6 +187,52 @@ pub fn run_jobs(
             }
         }
     });
+}
+
+/// Each case's [`RecordPlan`] (or why it could not be made), made by the first of its
+/// jobs to start and dropped when its last job is done, so that a campaign of many cases
+/// holds only the plans of the cases in progress.
+struct CasePlans<'a> {
+    cases: &'a [Case],
+    slots: Vec<Mutex<Option<SharedPlan>>>,
+    /// Jobs of each case not yet done.
+    remaining: Vec<AtomicUsize>,
+}
+
+type SharedPlan = Arc<std::result::Result<RecordPlan, String>>;
+
+impl<'a> CasePlans<'a> {
+    fn new(cases: &'a [Case], jobs: &[Job]) -> Self {
+        let remaining: Vec<AtomicUsize> = (0..cases.len()).map(|_| AtomicUsize::new(0)).collect();
+        for job in jobs {
+            remaining[job.case].fetch_add(1, Ordering::Relaxed);
+        }
+        CasePlans {
+            cases,
+            slots: (0..cases.len()).map(|_| Mutex::new(None)).collect(),
+            remaining,
+        }
+    }
+
+    /// The plan of case `case`, made now if no job of the case has made it yet.
+    fn get(&self, case: usize) -> std::result::Result<SharedPlan, String> {
+        let mut slot = self.slots[case]
+            .lock()
+            .map_err(|_| "a run panicked while making this case's plan".to_string())?;
+        let plan = slot.get_or_insert_with(|| {
+            Arc::new(RecordPlan::new(&self.cases[case].config).map_err(|e| e.to_string()))
+        });
+        Ok(Arc::clone(plan))
+    }
+
+    /// One job of case `case` is done; the last one drops the plan.
+    fn done(&self, case: usize) {
+        if self.remaining[case].fetch_sub(1, Ordering::AcqRel) == 1 {
+            if let Ok(mut slot) = self.slots[case].lock() {
+                slot.take();
+            }
+        }
+    }
 }
 
 fn panic_text(panic: &(dyn std::any::Any + Send)) -> String {

@@ -1,0 +1,199 @@
+//! What a simulation's records need besides the seed, computed once (E&S section 2: the
+//! records are built at the mean position): the frequency grid and its planned inverse FFT,
+//! the wave-drift damping table, the drift and damping coefficients on the grid, the
+//! bi-directional drift of a spread sea, and the factorised full QTF.
+//!
+//! [`crate::Simulation::new`] makes a plan for itself. A Monte Carlo campaign makes one per
+//! case and every seed of the case reuses it ([`crate::Simulation::with_plan`]): the
+//! records of a seed then cost only what depends on the seed's wave amplitudes (the
+//! transforms, the kinematics, the yaw-following records).
+
+use crate::config::{Config, DriftDamping, SecondOrder};
+use crate::error::{Error, Result};
+use crate::forces::{
+    add_cross_terms, direction_pairs, plan_inverse_fft, transfers_on_grid, DirectionTransfer,
+    ForceRecords, GridQtf, InverseFft, QtfFactorisation, RecordOptions, YawFollowingRecords,
+    YawGrid,
+};
+use crate::hydro::aranha::aranha_damping;
+use crate::hydro::bidirectional::DirectionPairs;
+use crate::hydro::database::SlowDof;
+use crate::hydro::wamit::HEADING_TOLERANCE;
+use crate::hydro::DriftTable;
+use crate::sea_state::{Direction, FrequencyGrid, WaveComponents};
+use crate::simulation::QtfRank;
+
+/// The seed-independent part of a configuration's records. It serves every configuration
+/// equal to the one it was made from except for `sea.seed`.
+pub struct RecordPlan {
+    /// The configuration it was made from, with seed 0.
+    seedless: Config,
+    /// Records sampled at h/2, so that every RK4 stage of a regular step is a sample.
+    grid: FrequencyGrid,
+    directions: Vec<Direction>,
+    fft: InverseFft,
+    /// The wave-drift damping coefficients (`None` when the damping is off).
+    damping_table: Option<DriftTable>,
+    /// Per direction: the coefficients of the mean-position records (none with yaw
+    /// following, whose records carry the force and damping).
+    transfers: Vec<DirectionTransfer>,
+    /// Cross-direction terms of a spread sea (`None`: long-crested or interaction "none").
+    pairs: Option<DirectionPairs>,
+    /// The full QTF of every direction and DOF on the grid (second_order = "full-qtf").
+    full_qtf: Option<DirectionQtfs>,
+    ranks: Vec<QtfRank>,
+}
+
+/// The QTF of every direction and DOF, factorised and interpolated onto the grid.
+type DirectionQtfs = Vec<[GridQtf; 3]>;
+
+impl RecordPlan {
+    /// Validates `config` and computes everything of its records that the seed does not
+    /// change.
+    pub fn new(config: &Config) -> Result<Self> {
+        config.validate()?;
+        let sea = &config.sea;
+        let grid = FrequencyGrid::new(
+            config.run.start_time,
+            config.run.duration,
+            0.5 * config.run.time_step,
+            sea.band(),
+        )?;
+        let directions = sea.directions();
+        let damping_table = match config.model.drift_damping {
+            DriftDamping::Off => None,
+            DriftDamping::Table => Some(config.drift.clone()),
+            DriftDamping::Aranha => Some(aranha_damping(
+                &config.drift,
+                config.environment.gravity,
+                &config.platform.columns,
+            )?),
+        };
+        let pairs = direction_pairs(config, &grid, &directions)?;
+        if let (Some(options), Some(_)) = (&config.model.yaw_following, &pairs) {
+            return Err(Error::invalid(
+                "model.yaw_following",
+                format!("{} headings", options.headings),
+                format!(
+                    "the yaw-following records do not carry the cross-direction terms of a \
+                     spread sea ({} directions, model.interaction {:?}): use a long-crested \
+                     sea or model.interaction = \"none\"",
+                    directions.len(),
+                    config.interaction()
+                ),
+            ));
+        }
+        // With yaw following the force and damping come from its records alone: the
+        // mean-position build gets no coefficients (it still makes the elevation and
+        // kinematics).
+        let transfers = match config.model.yaw_following {
+            None => transfers_on_grid(
+                damping_table.as_ref().unwrap_or(&config.drift),
+                &grid,
+                &directions,
+                damping_table.is_some(),
+            )?,
+            Some(_) => vec![DirectionTransfer::none(grid.count); directions.len()],
+        };
+        let (full_qtf, ranks) = match config.model.second_order {
+            SecondOrder::Newman => (None, Vec::new()),
+            SecondOrder::FullQtf => {
+                let (qtf, ranks) = full_qtf_on_grid(config, &grid, &directions)?;
+                (Some(qtf), ranks)
+            }
+        };
+        let mut seedless = config.clone();
+        seedless.sea.seed = 0;
+        Ok(RecordPlan {
+            seedless,
+            fft: plan_inverse_fft(&grid),
+            grid,
+            directions,
+            damping_table,
+            transfers,
+            pairs,
+            full_qtf,
+            ranks,
+        })
+    }
+
+    /// Whether this plan serves `config`: equal to the plan's configuration but for the
+    /// seed.
+    pub fn serves(&self, config: &Config) -> bool {
+        let mut other = self.seedless.clone();
+        other.sea.seed = config.sea.seed;
+        other == *config
+    }
+
+    /// The records of `config` (which the plan serves), with the ranks of the full QTF's
+    /// blocks.
+    pub(crate) fn build_records(&self, config: &Config) -> Result<(ForceRecords, Vec<QtfRank>)> {
+        let components = WaveComponents::generate(&config.sea, self.grid.clone());
+        debug_assert_eq!(components.directions, self.directions);
+        let yaw_following = match &config.model.yaw_following {
+            None => None,
+            Some(options) => Some(YawFollowingRecords::build(
+                &components,
+                YawGrid::new(options),
+                self.damping_table.as_ref().unwrap_or(&config.drift),
+                self.damping_table.is_some(),
+                config.model.newman,
+            )?),
+        };
+        let drag_columns = match config.model.drag {
+            crate::config::DragModel::Off => &[][..],
+            _ => &config.platform.columns[..],
+        };
+        let mut records = ForceRecords::build(
+            &components,
+            &self.transfers,
+            &RecordOptions {
+                newman: config.model.newman,
+                full_qtf: self.full_qtf.as_deref(),
+                drag_columns,
+                strips_per_column: config.model.strips_per_column,
+                gravity: config.environment.gravity,
+                fft: Some(&self.fft),
+            },
+        );
+        if let Some(pairs) = &self.pairs {
+            add_cross_terms(&mut records, &components, pairs);
+        }
+        records.yaw_following = yaw_following;
+        Ok((records, self.ranks.clone()))
+    }
+}
+
+fn full_qtf_on_grid(
+    config: &Config,
+    grid: &FrequencyGrid,
+    directions: &[Direction],
+) -> Result<(DirectionQtfs, Vec<QtfRank>)> {
+    let qtf = config
+        .qtf
+        .as_ref()
+        .expect("Config::validate requires the QTF for full-qtf");
+    let mut ranks = Vec::new();
+    let mut on_grid = Vec::with_capacity(directions.len());
+    for (k, direction) in directions.iter().enumerate() {
+        let mut blocks = Vec::with_capacity(3);
+        for dof in SlowDof::ALL {
+            let block = qtf
+                .block(dof, direction.heading, HEADING_TOLERANCE)
+                .expect("Config::validate requires every direction's QTF");
+            let factors =
+                QtfFactorisation::new(&qtf.omegas, &block.values(), config.model.qtf_tolerance)?;
+            ranks.push(QtfRank {
+                direction: k,
+                heading: direction.heading,
+                dof,
+                rank: factors.rank(),
+                size: factors.size(),
+                discarded: factors.discarded(),
+            });
+            blocks.push(factors.on_grid(grid)?);
+        }
+        on_grid.push(blocks.try_into().expect("three DOFs"));
+    }
+    Ok((on_grid, ranks))
+}
