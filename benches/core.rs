@@ -48,8 +48,8 @@ use slowdrift::config::{
     NewmanForm, Platform, Run, SecondOrder, DEFAULT_QTF_TOLERANCE,
 };
 use slowdrift::forces::{
-    transfers_on_grid, ForceRecords, QtfFactorisation, RecordOptions, Synthesizer,
-    MIN_QTF_TOLERANCE,
+    plan_inverse_fft, transfers_on_grid, DirectionTransfer, ForceRecords, InverseFft,
+    QtfFactorisation, RecordOptions, Synthesizer, MIN_QTF_TOLERANCE,
 };
 use slowdrift::hydro::aranha::aranha_damping;
 use slowdrift::hydro::column_drift::isolated_columns_table;
@@ -173,25 +173,40 @@ impl RecordInputs {
         }
     }
 
-    /// transfers_on_grid + ForceRecords::build, as `Simulation::new` does (no drag).
-    fn build(&self) -> ForceRecords {
-        let transfers = transfers_on_grid(
+    /// The coefficients on the grid (`transfers_on_grid`).
+    fn transfers(&self) -> Vec<DirectionTransfer> {
+        transfers_on_grid(
             &self.damping_table,
             &self.components.grid,
             &self.components.directions,
             true,
         )
-        .unwrap();
+        .unwrap()
+    }
+
+    /// transfers_on_grid + ForceRecords::build planning its FFT, as `Simulation::new` does
+    /// (no drag).
+    fn build(&self) -> ForceRecords {
+        self.build_with(&self.transfers(), None)
+    }
+
+    /// ForceRecords::build from coefficients on the grid and, when given, a planned FFT:
+    /// the work of a seed whose `RecordPlan` exists.
+    fn build_with(
+        &self,
+        transfers: &[DirectionTransfer],
+        fft: Option<&InverseFft>,
+    ) -> ForceRecords {
         ForceRecords::build(
             &self.components,
-            &transfers,
+            transfers,
             &RecordOptions {
                 newman: NewmanForm::Geometric,
                 full_qtf: None,
                 drag_columns: &[],
                 strips_per_column: 20,
                 gravity: self.gravity,
-                fft: None,
+                fft,
             },
         )
     }
@@ -325,6 +340,22 @@ fn bench_records(c: &mut Criterion, report: &mut Vec<String>) {
         "  of which planning the FFT (Synthesizer::new) {:.2} ms ({:.1} FFTs)",
         planning.as_secs_f64() * 1e3,
         planning.as_secs_f64() / one_fft.as_secs_f64(),
+    ));
+    // The records of a seed from its RecordPlan: the FFT planned and the coefficients on the
+    // grid beforehand, as the reference FFT is planned beforehand.
+    let (transfers, fft) = (
+        inputs.transfers(),
+        plan_inverse_fft(&inputs.components.grid),
+    );
+    let seed = median_time(15, || {
+        black_box(inputs.build_with(&transfers, Some(&fft)));
+    });
+    let ratio = seed.as_secs_f64() / one_fft.as_secs_f64();
+    report.push(format!(
+        "records_3h from a RecordPlan (cold, FFT planned and coefficients on the grid \
+         beforehand, like the reference FFT): {:.2} ms = {ratio:.1} x one FFT; target <= 30x: {}",
+        seed.as_secs_f64() * 1e3,
+        if ratio <= 30.0 { "met" } else { "NOT met" }
     ));
 }
 
