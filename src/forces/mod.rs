@@ -62,8 +62,9 @@ impl ForceRecords {
     /// Builds every record from the wave components and the per-direction coefficients
     /// (from [`transfers_on_grid`]). Cost: one FFT per direction for the elevation, one or
     /// two per non-zero coefficient record and direction (with the full QTF: one per
-    /// retained term, DOF and direction instead, for the force), one per strip and column.
-    /// `options.full_qtf`, when given, holds one entry per direction of `components`.
+    /// retained term, DOF and direction instead, for the force), one per strip and column
+    /// (columns with the same phases share theirs). `options.full_qtf`, when given, holds one
+    /// entry per direction of `components`.
     pub fn build(
         components: &WaveComponents,
         transfers: &[DirectionTransfer],
