@@ -527,8 +527,20 @@ fn bad_values_are_refused() {
         assert_error(&fmu, status, &[expected]);
     }
     type Case = (fn(&Fmu) -> fmi2Status, &'static [&'static str]);
-    let cases: [Case; 6] = [
+    let cases: [Case; 9] = [
         (|f| f.set_real(vr::HS, -1.0), &["sea.spectrum.hs = -1"]),
+        (|f| f.set_int(vr::INTERACTION, 5), &["interaction = 5"]),
+        (
+            |f| f.set_int(vr::YAW_FOLLOWING_HEADINGS, 1),
+            &["yawFollowingHeadings = 1"],
+        ),
+        (
+            |f| {
+                f.set_int(vr::YAW_FOLLOWING_HEADINGS, 4);
+                f.set_real(vr::YAW_FOLLOWING_RANGE, -0.2)
+            },
+            &["model.yaw_following"],
+        ),
         (|f| f.set_real(vr::STEP_SIZE, 0.0), &["run.time_step = 0"]),
         (|f| f.set_int(vr::N_DIRECTIONS, 0), &["nDirections = 0"]),
         (|f| f.set_int(vr::SEED, -1), &["seed = -1"]),

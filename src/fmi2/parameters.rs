@@ -10,11 +10,14 @@
 //! The FMU parameters then always override the base: the sea (JONSWAP `Hs`, `Tp`, `gamma`,
 //! `waveDirection`, cos^N spreading, `nDirections`, `seed`), the current, the drag model and
 //! coefficients, the drift-damping source, the diagonal of the mooring stiffness and the RK4
-//! step. Everything else (mass, added mass, columns, drift table, off-diagonal stiffness,
+//! step. `interaction` and `yawFollowingHeadings` override it unless they are 0 ("the
+//! configuration's"), their start value. Everything else (mass, added mass, columns, drift table, off-diagonal stiffness,
 //! Newman form, strips, initial condition) comes from the base. The run's start time and
 //! duration come from `fmi2SetupExperiment`.
 
-use crate::config::{default_platform, file, Config, DragModel, DriftDamping};
+use crate::config::{
+    default_platform, file, Config, DragModel, DriftDamping, Interaction, YawFollowing,
+};
 use crate::error::{Error, Result};
 use crate::model_description::{start, vr};
 use crate::sea_state::{Spectrum, Spreading};
@@ -54,6 +57,12 @@ pub struct Parameters {
     pub drag_model: i32,
     /// 0 off, 1 table, 2 Aranha.
     pub drift_damping: i32,
+    /// 0 = the configuration's, 1 auto, 2 bidirectional, 3 mean-direction, 4 none.
+    pub interaction: i32,
+    /// 0 = the configuration's, -1 off, n >= 2 records at n body yaw angles.
+    pub yaw_following_headings: i32,
+    /// Half-width of the covered yaw range about zero, rad; 0 = the full circle.
+    pub yaw_following_range: f64,
     /// Path or `file:` URI of a configuration file; empty = resources or embedded default.
     pub hydro_database: String,
 }
@@ -79,6 +88,9 @@ impl Default for Parameters {
             seed: start::SEED,
             drag_model: start::DRAG_MODEL,
             drift_damping: start::DRIFT_DAMPING,
+            interaction: start::INTERACTION,
+            yaw_following_headings: start::YAW_FOLLOWING_HEADINGS,
+            yaw_following_range: start::YAW_FOLLOWING_RANGE,
             hydro_database: start::HYDRO_DATABASE.to_string(),
         }
     }
@@ -102,6 +114,7 @@ impl Parameters {
             vr::STIFFNESS_SWAY => &mut self.stiffness_sway,
             vr::STIFFNESS_YAW => &mut self.stiffness_yaw,
             vr::STEP_SIZE => &mut self.step_size,
+            vr::YAW_FOLLOWING_RANGE => &mut self.yaw_following_range,
             _ => return None,
         })
     }
@@ -113,6 +126,8 @@ impl Parameters {
             vr::SEED => &mut self.seed,
             vr::DRAG_MODEL => &mut self.drag_model,
             vr::DRIFT_DAMPING => &mut self.drift_damping,
+            vr::INTERACTION => &mut self.interaction,
+            vr::YAW_FOLLOWING_HEADINGS => &mut self.yaw_following_headings,
             _ => return None,
         })
     }
@@ -185,6 +200,39 @@ impl Parameters {
                 ))
             }
         };
+        match self.interaction {
+            0 => {}
+            1 => c.model.interaction = Interaction::Auto,
+            2 => c.model.interaction = Interaction::Bidirectional,
+            3 => c.model.interaction = Interaction::MeanDirection,
+            4 => c.model.interaction = Interaction::None,
+            other => {
+                return Err(Error::invalid(
+                    "interaction",
+                    other,
+                    "must be 0 (the configuration's), 1 (auto), 2 (bidirectional), \
+                     3 (mean-direction) or 4 (none)",
+                ))
+            }
+        }
+        match self.yaw_following_headings {
+            0 => {}
+            -1 => c.model.yaw_following = None,
+            n if n >= 2 => {
+                let half = self.yaw_following_range;
+                c.model.yaw_following = Some(YawFollowing {
+                    headings: n as usize,
+                    range: (half != 0.0).then_some((-half, half)),
+                })
+            }
+            other => {
+                return Err(Error::invalid(
+                    "yawFollowingHeadings",
+                    other,
+                    "must be 0 (the configuration's), -1 (off) or at least 2",
+                ))
+            }
+        }
         let diagonal = [
             self.stiffness_surge,
             self.stiffness_sway,
@@ -245,6 +293,43 @@ impl Parameters {
             DriftDamping::Table => 1,
             DriftDamping::Aranha => 2,
         };
+        let interaction = if config.model.interaction == base.model.interaction {
+            0
+        } else {
+            match config.model.interaction {
+                Interaction::Auto => 1,
+                Interaction::Bidirectional => 2,
+                Interaction::MeanDirection => 3,
+                Interaction::None => 4,
+            }
+        };
+        let (yaw_following_headings, yaw_following_range) =
+            if config.model.yaw_following == base.model.yaw_following {
+                (0, start::YAW_FOLLOWING_RANGE)
+            } else {
+                match &config.model.yaw_following {
+                    None => (-1, start::YAW_FOLLOWING_RANGE),
+                    Some(y) => {
+                        let headings = i32::try_from(y.headings).map_err(|_| {
+                            format!(
+                                "{} yaw-following headings exceed the FMU's Integer",
+                                y.headings
+                            )
+                        })?;
+                        let half = match y.range {
+                            None => 0.0,
+                            Some((lo, hi)) if lo == -hi && hi > 0.0 => hi,
+                            Some((lo, hi)) => {
+                                return Err(format!(
+                                    "the FMU's yaw-following range is symmetric about zero; \
+                                     this one is [{lo}, {hi}] rad"
+                                ))
+                            }
+                        };
+                        (headings, half)
+                    }
+                }
+            };
         let k = &config.platform.stiffness;
         let parameters = Parameters {
             hs,
@@ -265,6 +350,9 @@ impl Parameters {
             seed: 0,
             drag_model,
             drift_damping,
+            interaction,
+            yaw_following_headings,
+            yaw_following_range,
             hydro_database: hydro_database.to_string(),
         };
         let start = config.run.start_time;
@@ -541,6 +629,20 @@ mod tests {
             ),
             (
                 Parameters {
+                    interaction: 5,
+                    ..Parameters::default()
+                },
+                "interaction",
+            ),
+            (
+                Parameters {
+                    yaw_following_headings: 1,
+                    ..Parameters::default()
+                },
+                "yawFollowingHeadings",
+            ),
+            (
+                Parameters {
                     hydro_database: "/no/such/file.toml".into(),
                     ..Parameters::default()
                 },
@@ -558,6 +660,69 @@ mod tests {
             let message = p.to_config(None, &experiment).unwrap_err().to_string();
             assert!(message.contains(field), "{message} should name {field}");
         }
+    }
+
+    /// `interaction` and `yawFollowingHeadings` keep the configuration's choice at 0 (their
+    /// start value) and override it otherwise; `for_config` finds the parameters back.
+    #[test]
+    fn interaction_and_yaw_following() {
+        let experiment = Experiment::new(0.0, Some(3600.0)).unwrap();
+        let base = Parameters::default().to_config(None, &experiment).unwrap();
+        assert_eq!(base.model.interaction, Interaction::Auto);
+        assert_eq!(base.model.yaw_following, None);
+        let mut from_file = base.clone();
+        from_file.model.interaction = Interaction::None;
+        from_file.model.yaw_following = Some(YawFollowing {
+            headings: 12,
+            range: None,
+        });
+        let kept = Parameters::default()
+            .apply(from_file.clone(), &experiment)
+            .unwrap();
+        assert_eq!(kept.model, from_file.model);
+        let p = Parameters {
+            interaction: 3,
+            yaw_following_headings: 5,
+            yaw_following_range: 0.4,
+            ..Parameters::default()
+        };
+        let c = p.apply(from_file.clone(), &experiment).unwrap();
+        assert_eq!(c.model.interaction, Interaction::MeanDirection);
+        assert_eq!(
+            c.model.yaw_following,
+            Some(YawFollowing {
+                headings: 5,
+                range: Some((-0.4, 0.4))
+            })
+        );
+        let off = Parameters {
+            yaw_following_headings: -1,
+            ..Parameters::default()
+        };
+        assert_eq!(
+            off.apply(from_file, &experiment)
+                .unwrap()
+                .model
+                .yaw_following,
+            None
+        );
+        // for_config: the parameters that make the default platform run `c`.
+        let (found, _) = Parameters::for_config(&c, &base, "").unwrap();
+        assert_eq!(
+            (
+                found.interaction,
+                found.yaw_following_headings,
+                found.yaw_following_range
+            ),
+            (3, 5, 0.4)
+        );
+        let mut lopsided = c.clone();
+        lopsided.model.yaw_following = Some(YawFollowing {
+            headings: 5,
+            range: Some((-0.2, 0.4)),
+        });
+        let why = Parameters::for_config(&lopsided, &base, "").unwrap_err();
+        assert!(why.contains("symmetric"), "{why}");
     }
 
     #[test]
