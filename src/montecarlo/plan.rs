@@ -103,11 +103,11 @@ mod tests {
         cases_json(&cases, base, "/abs/example.toml")
     }
 
-    const TABLE: &str =
-        "name, hs, tp, direction_deg, spreading_exponent, cd_slow, cd_fast, duration\n\
-                         a, 4, 11, 90, 2, 0.5, 0.9, 600\n\
-                         b, , , , , , , \n\
-                         c, -1, , , , , , 300\n";
+    const TABLE: &str = "name, hs, tp, direction_deg, spreading_exponent, cd_slow, cd_fast, \
+                         duration, interaction, yaw_headings\n\
+                         a, 4, 11, 90, 2, 0.5, 0.9, 600, none, 12\n\
+                         b, , , , , , , , , \n\
+                         c, -1, , , , , , 300, mean-direction, \n";
 
     /// The FMU parameters, set on a fresh `Parameters` by name as a master would and
     /// applied to the base, rebuild each case's configuration (seed aside).
