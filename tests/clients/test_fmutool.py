@@ -41,7 +41,7 @@ def test_fmutool_check(fmu):
     assert "This FMU seems to be compliant with FMI-2.0." in text
     assert "No semantic error against the FMI-2 standard." in text
     # The summary read the FMU: the ports of modelDescription.xml.
-    assert "parameter : 19" in text and "input : 3" in text and "output : 16" in text
+    assert "parameter : 22" in text and "input : 3" in text and "output : 16" in text
     assert set(levels) <= {"INFO"}, set(levels)
 
 

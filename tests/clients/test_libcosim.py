@@ -66,13 +66,13 @@ def execution(fmu, md):
 
 
 def test_libcosim_variables(fmu, md):
-    """libcosim lists every variable except the two Enumeration parameters (a libcosim
+    """libcosim lists every variable except the three Enumeration parameters (a libcosim
     limitation: it skips FMI 2.0 Enumeration variables)."""
     ex, _slave, index = execution(fmu, md)
     seen = {v.name.decode() for v in ex.slave_variables(index)}
     declared = {v.name for v in md.modelVariables}
     enumerations = {v.name for v in md.modelVariables if v.type == "Enumeration"}
-    assert enumerations == {"dragModel", "driftDamping"}
+    assert enumerations == {"dragModel", "driftDamping", "interaction"}
     assert seen == declared - enumerations
 
 
