@@ -138,6 +138,7 @@ impl RecordPlan {
                 self.damping_table.as_ref().unwrap_or(&config.drift),
                 self.damping_table.is_some(),
                 config.model.newman,
+                &self.fft,
             )?),
         };
         let drag_columns = match config.model.drag {
@@ -157,7 +158,7 @@ impl RecordPlan {
             },
         );
         if let Some(pairs) = &self.pairs {
-            add_cross_terms(&mut records, &components, pairs);
+            add_cross_terms(&mut records, &components, pairs, &self.fft);
         }
         records.yaw_following = yaw_following;
         Ok((records, self.ranks.clone()))

@@ -8,7 +8,8 @@ use common::*;
 use rustfft::num_complex::Complex64;
 use slowdrift::config::{Interaction, NewmanForm};
 use slowdrift::forces::{
-    cross_direction_force, direction_pairs, transfers_on_grid, ForceRecords, RecordOptions,
+    cross_direction_force, direction_pairs, plan_inverse_fft, transfers_on_grid, ForceRecords,
+    RecordOptions,
 };
 use slowdrift::hydro::bidirectional::{BidirectionalSource, BidirectionalTable, DirectionPairs};
 use slowdrift::hydro::columns::ColumnArray;
@@ -72,7 +73,7 @@ fn cross_terms_by_fft_equal_the_direct_double_sum() {
     let n = 3;
     let comps = components(5, n, 150.0);
     let grid = &comps.grid;
-    let force = cross_direction_force(&comps, &linear_pairs(n));
+    let force = cross_direction_force(&comps, &linear_pairs(n), &plan_inverse_fft(&comps.grid));
     for (dof, record) in force.iter().enumerate() {
         assert_eq!(record.len(), grid.len);
         let scale = record.iter().fold(0.0f64, |m, v| m.max(v.abs()));
@@ -162,7 +163,7 @@ fn mean_force_is_the_diagonal_integral() {
         let band = (grid.omega(0), grid.omega(grid.count - 1));
         let heads: Vec<f64> = comps.directions.iter().map(|d| d.heading).collect();
         let pairs = source.pairs(&env, band, &heads).unwrap();
-        let f = &cross_direction_force(&comps, &pairs)[0];
+        let f = &cross_direction_force(&comps, &pairs, &plan_inverse_fft(&comps.grid))[0];
         let mean_cross = f.iter().sum::<f64>() / f.len() as f64;
         let var = f.iter().map(|v| (v - mean_cross).powi(2)).sum::<f64>() / f.len() as f64;
         cross_std = cross_std.max(var.sqrt());

@@ -46,7 +46,7 @@
 //! uni-directional drift table (`hydro::bidirectional::mean_direction_pairs`). The
 //! wave-drift damping records keep no cross terms (no bi-directional damping data exists).
 
-use super::synthesis::Synthesizer;
+use super::synthesis::{InverseFft, Synthesizer};
 use super::{ForceRecords, Record};
 use crate::config::{Config, Interaction};
 use crate::error::{Error, Result};
@@ -86,11 +86,16 @@ pub fn direction_pairs(
 
 /// The cross-direction force F_cross (surge, sway, yaw; module doc), one vector of record
 /// samples per DOF (empty where every T_kl, k != l, of that DOF is zero).
-pub fn cross_direction_force(components: &WaveComponents, pairs: &DirectionPairs) -> [Vec<f64>; 3] {
+/// `fft` is the grid's planned inverse transform.
+pub fn cross_direction_force(
+    components: &WaveComponents,
+    pairs: &DirectionPairs,
+    fft: &InverseFft,
+) -> [Vec<f64>; 3] {
     let grid = &components.grid;
     let nd = components.directions.len();
     debug_assert_eq!(pairs.directions, nd);
-    let mut synth = Synthesizer::new(grid);
+    let mut synth = Synthesizer::with_fft(grid, fft.clone());
     let brackets = frequency_brackets(pairs, components);
     let active: [bool; 3] = std::array::from_fn(|dof| {
         pairs.values.chunks(nd * nd).any(|block| {
@@ -132,8 +137,9 @@ pub fn add_cross_terms(
     records: &mut ForceRecords,
     components: &WaveComponents,
     pairs: &DirectionPairs,
+    fft: &InverseFft,
 ) {
-    let cross = cross_direction_force(components, pairs);
+    let cross = cross_direction_force(components, pairs, fft);
     for (record, extra) in records.wave_force.iter_mut().zip(cross) {
         if extra.is_empty() {
             continue;

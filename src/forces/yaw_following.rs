@@ -26,7 +26,7 @@
 //! The elevation and the drag columns' kinematics stay at the mean position and zero yaw.
 
 use super::newman::NewmanBuilder;
-use super::synthesis::Synthesizer;
+use super::synthesis::{InverseFft, Synthesizer};
 use super::transfer::transfers_on_grid;
 use super::{record_or_zero, ForceRecords, Record, SamplePoint};
 use crate::config::{NewmanForm, YawFollowing};
@@ -174,10 +174,11 @@ impl YawFollowingRecords {
         table: &DriftTable,
         with_damping: bool,
         form: NewmanForm,
+        fft: &InverseFft,
     ) -> Result<Self> {
         check_relative_headings(table, &components.directions, &grid)?;
         let freq = &components.grid;
-        let mut synth = Synthesizer::new(freq);
+        let mut synth = Synthesizer::with_fft(freq, fft.clone());
         let mut builder = NewmanBuilder::new(freq.count, freq.len);
         // The arithmetic form's complex elevation series: per direction, independent of yaw.
         let eta_c: Vec<Vec<Complex64>> = match form {
