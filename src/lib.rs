@@ -36,5 +36,5 @@ pub mod studies;
 
 pub use config::Config;
 pub use error::{Error, Result};
-pub use record_plan::RecordPlan;
-pub use simulation::{Outputs, QtfRank, Simulation, Snapshot};
+pub use record_plan::{QtfRank, RecordPlan};
+pub use simulation::{Outputs, Simulation, Snapshot};

@@ -21,7 +21,6 @@ use crate::hydro::database::SlowDof;
 use crate::hydro::wamit::HEADING_TOLERANCE;
 use crate::hydro::DriftTable;
 use crate::sea_state::{Direction, FrequencyGrid, WaveComponents};
-use crate::simulation::QtfRank;
 
 /// The seed-independent part of a configuration's records. It serves every configuration
 /// equal to the one it was made from except for `sea.seed`.
@@ -30,7 +29,6 @@ pub struct RecordPlan {
     seedless: Config,
     /// Records sampled at h/2, so that every RK4 stage of a regular step is a sample.
     grid: FrequencyGrid,
-    directions: Vec<Direction>,
     fft: InverseFft,
     /// The wave-drift damping coefficients (`None` when the damping is off).
     damping_table: Option<DriftTable>,
@@ -42,6 +40,21 @@ pub struct RecordPlan {
     /// The full QTF of every direction and DOF on the grid (second_order = "full-qtf").
     full_qtf: Option<DirectionQtfs>,
     ranks: Vec<QtfRank>,
+}
+
+/// The truncation of one full-QTF block (one DOF of one wave direction).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct QtfRank {
+    /// Index of the wave direction.
+    pub direction: usize,
+    /// Wave heading of that direction, rad.
+    pub heading: f64,
+    pub dof: SlowDof,
+    /// Retained rank R and the QTF's full rank n.
+    pub rank: usize,
+    pub size: usize,
+    /// Trace-norm share of the discarded eigenvalues (<= `model.qtf_tolerance`).
+    pub discarded: f64,
 }
 
 /// The QTF of every direction and DOF, factorised and interpolated onto the grid.
@@ -108,7 +121,6 @@ impl RecordPlan {
             seedless,
             fft: plan_inverse_fft(&grid),
             grid,
-            directions,
             damping_table,
             transfers,
             pairs,
@@ -129,7 +141,6 @@ impl RecordPlan {
     /// blocks.
     pub(crate) fn build_records(&self, config: &Config) -> Result<(ForceRecords, Vec<QtfRank>)> {
         let components = WaveComponents::generate(&config.sea, self.grid.clone());
-        debug_assert_eq!(components.directions, self.directions);
         let yaw_following = match &config.model.yaw_following {
             None => None,
             Some(options) => Some(YawFollowingRecords::build(

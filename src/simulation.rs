@@ -9,8 +9,7 @@ use crate::config::Config;
 use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};
 use crate::error::{Error, Result};
 use crate::forces::ForceRecords;
-use crate::hydro::database::SlowDof;
-use crate::record_plan::RecordPlan;
+use crate::record_plan::{QtfRank, RecordPlan};
 
 /// Relative tolerance for deciding that an interval is a whole number of steps.
 const WHOLE_STEPS_TOLERANCE: f64 = 1e-9;
@@ -112,21 +111,6 @@ pub struct Simulation {
     records: ForceRecords,
     qtf_ranks: Vec<QtfRank>,
     state: Snapshot,
-}
-
-/// The truncation of one full-QTF block (one DOF of one wave direction).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct QtfRank {
-    /// Index of the wave direction.
-    pub direction: usize,
-    /// Wave heading of that direction, rad.
-    pub heading: f64,
-    pub dof: SlowDof,
-    /// Retained rank R and the QTF's full rank n.
-    pub rank: usize,
-    pub size: usize,
-    /// Trace-norm share of the discarded eigenvalues (<= `model.qtf_tolerance`).
-    pub discarded: f64,
 }
 
 impl Simulation {
