@@ -34,7 +34,7 @@
 //! clear_page). Records that stay zero are never allocated, and the geometric form needs no
 //! per-direction complex elevation buffer.
 
-#[path = "../tests/common/mod.rs"]
+#[path = "../tests/all/common.rs"]
 mod common;
 
 use common::{four_columns, oscillator_platform};

@@ -1,9 +1,7 @@
 //! The synthesised elevation against the input sea state (physics.md sections 2, 3, 8):
 //! variance vs Hs^2/16, Gaussian distribution, periodogram vs the spectrum.
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use slowdrift::config::NewmanForm;
 use slowdrift::forces::{ForceRecords, RecordOptions};
 use slowdrift::sea_state::{FrequencyGrid, SeaState, Spectrum, Spreading, WaveComponents};

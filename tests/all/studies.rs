@@ -3,9 +3,7 @@
 //! hand-computed quartiles, exact power laws and block statistics, and the 1/sqrt(length)
 //! law of the scatter over seeds.
 
-mod common;
-
-use common::{base_config, simpson};
+use crate::common::{base_config, simpson};
 use slowdrift::montecarlo::{run_seed, Case};
 use slowdrift::studies::blocks::block_summaries;
 use slowdrift::studies::distribution::{

@@ -1,9 +1,7 @@
 //! Newman's approximation by FFT against the O(N^2) double sum (physics.md section 4), and
 //! the mean force against 2 * integral S T d omega.
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use rustfft::num_complex::Complex64;
 use slowdrift::config::NewmanForm;
 use slowdrift::forces::{transfers_on_grid, ForceRecords, RecordOptions};

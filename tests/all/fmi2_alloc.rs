@@ -3,9 +3,7 @@
 //! counts this thread's allocations around the loop. (Debug logging is off: with `logAll`
 //! on, every call formats a log line.)
 
-mod fmu;
-
-use fmu::*;
+use crate::fmu::*;
 use slowdrift::fmi2::types::fmi2Status;
 use slowdrift::model_description::vr;
 use std::alloc::{GlobalAlloc, Layout, System};

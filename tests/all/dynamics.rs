@@ -4,9 +4,7 @@
 //! `Simulation`, the rotation of the body-frame wave force by S(theta), and `advance` with
 //! interpolated stages against `step`.
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use slowdrift::dynamics::rk4_step;
 use slowdrift::Simulation;
 use std::convert::Infallible;

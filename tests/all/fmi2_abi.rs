@@ -2,9 +2,7 @@
 //! native `Simulation` bit for bit, variable communication steps, reset, FMU states and
 //! their bytes, the end of the records, and instances in parallel threads.
 
-mod fmu;
-
-use fmu::*;
+use crate::fmu::*;
 use slowdrift::fmi2::exports::*;
 use slowdrift::fmi2::instance::MachineState;
 use slowdrift::fmi2::parameters::MAX_DURATION_WITHOUT_STOP_TIME;

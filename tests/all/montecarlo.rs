@@ -5,9 +5,7 @@
 //! The CLI runs use the cheap example configuration (inline drift table, four columns with
 //! combined drag) for 2048 s at 1 s steps.
 
-mod common;
-
-use common::{base_config, oscillator_surge_variance};
+use crate::common::{base_config, oscillator_surge_variance};
 use slowdrift::montecarlo::{run_jobs, seed_statistics, Case, Job};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -347,7 +345,7 @@ fn one_case_of_a_table_equals_its_line_in_the_whole_campaign() {
 fn shared_plans_give_the_runs_of_fresh_ones() {
     use slowdrift::montecarlo::run_seed;
     let mut good = base_config(400.0, 1.0, 0);
-    good.platform.columns = common::four_columns();
+    good.platform.columns = crate::common::four_columns();
     good.model.drag = slowdrift::config::DragModel::Combined { cd: 0.6 };
     let mut bad = good.clone();
     bad.run.time_step = -1.0;

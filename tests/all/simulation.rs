@@ -1,9 +1,7 @@
 //! The `Simulation` API: bit-for-bit reproducibility from the seed, snapshot / restore /
 //! reset, and exact time keeping (time = start + n h from an integer count).
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use slowdrift::{Config, Simulation};
 
 fn config(seed: u64) -> Config {

@@ -4,9 +4,7 @@
 //! 2 integral S T(w, w) dw and the force spectrum 8 integral S(w) S(w + mu) |T|^2 dw; and
 //! full QTF against Newman on the OC4 semisubmersible.
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use rustfft::num_complex::Complex64;
 use slowdrift::config::{DriftDamping, NewmanForm, SecondOrder};
 use slowdrift::forces::{

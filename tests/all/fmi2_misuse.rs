@@ -3,9 +3,7 @@
 //! value references, bad instantiation arguments, bad parameters, inputs and step
 //! arguments, unreadable configuration files; and none of it disturbs another instance.
 
-mod fmu;
-
-use fmu::*;
+use crate::fmu::*;
 use slowdrift::config::file;
 use slowdrift::fmi2::exports::*;
 use slowdrift::fmi2::instance::{Call, MachineState};
@@ -612,7 +610,7 @@ fn file_uri(path: &Path) -> String {
     format!("file://{}", path.display().to_string().replace(' ', "%20"))
 }
 
-const DEFAULT_TOML: &str = include_str!("../src/config/default.toml");
+const DEFAULT_TOML: &str = include_str!("../../src/config/default.toml");
 
 /// Outputs after 50 steps of an instance that is set up by `prepare`.
 fn fifty_steps(fmu: &Fmu, prepare: impl Fn(&Fmu)) -> (fmi2Status, Vec<f64>) {

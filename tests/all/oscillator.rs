@@ -7,9 +7,7 @@
 //! 2. One realisation: after the start-up transient, the RK4 trajectory equals the exact
 //!    periodic steady state of the same force record, computed by FFT as X = F H.
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use rustfft::num_complex::Complex64;
 use rustfft::FftPlanner;
 use slowdrift::Simulation;

@@ -2,8 +2,6 @@
 //! Aranha damping), each against an independent route: the mean-position records of the
 //! sea rotated by -theta (the existing path with the wave direction minus theta).
 
-mod common;
-
 use slowdrift::config::default_platform::default_config;
 use slowdrift::config::{DragModel, Interaction, SecondOrder, YawFollowing};
 use slowdrift::forces::{ForceRecords, YawPoint};
@@ -281,7 +279,7 @@ fn a_table_that_misses_relative_headings_is_refused_naming_the_gap() {
             })
         })
         .collect();
-    let mut c = common::base_config(600.0, 1.0, 1);
+    let mut c = crate::common::base_config(600.0, 1.0, 1);
     c.drift = DriftTable::from_rows(&rows).unwrap();
     c.model.yaw_following = range(5, -10.0, 10.0);
     let text = Simulation::new(c.clone()).unwrap_err().to_string();
@@ -298,7 +296,7 @@ fn a_table_that_misses_relative_headings_is_refused_naming_the_gap() {
 
 #[test]
 fn invalid_yaw_following_options_are_refused_naming_the_field() {
-    let mut c = common::base_config(600.0, 1.0, 1);
+    let mut c = crate::common::base_config(600.0, 1.0, 1);
     c.model.yaw_following = Some(YawFollowing {
         headings: 1,
         range: None,

@@ -1,9 +1,7 @@
 //! Drag, current and wave-drift damping against closed forms (E&S 8, 9, section 3;
 //! physics.md sections 5, 6).
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use slowdrift::config::{DragModel, DriftDamping};
 use slowdrift::hydro::{DriftRow, DriftTable};
 use slowdrift::Simulation;

@@ -1,9 +1,7 @@
 //! Every invalid input is refused with a typed `slowdrift::Error` that names the field and
 //! the value, never a panic; a running simulation refuses bad inputs and keeps its state.
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use slowdrift::hydro::{DriftRow, DriftTable};
 use slowdrift::sea_state::{Spectrum, Spreading};
 use slowdrift::{Config, Error, Simulation};

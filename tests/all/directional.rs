@@ -2,9 +2,7 @@
 //! form against the O(N^2 N_beta^2) double sum, the mean force, the mean-direction rule
 //! against a long-crested sea of the summed amplitudes, and "none" = no change at all.
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use rustfft::num_complex::Complex64;
 use slowdrift::config::{Interaction, NewmanForm};
 use slowdrift::forces::{

@@ -6,8 +6,6 @@
 //! Synthetic files cover what the real data do not: header lines, both triangles, DOFs and
 //! headings in any order, bi-directional pairs, malformed lines, missing DOFs and headings.
 
-mod common;
-
 use rustfft::num_complex::Complex64;
 use slowdrift::hydro::database::{HydroDatabase, MassProperties, SlowDof, FORMAT_VERSION};
 use slowdrift::hydro::wamit::{
@@ -67,7 +65,7 @@ fn close(a: f64, b: f64, rel: f64) -> bool {
 
 #[test]
 fn oc4_qtf_grid_layout_and_triangle_from_the_raw_text() {
-    let Some(root) = common::oc4_root_or_skip() else {
+    let Some(root) = crate::common::oc4_root_or_skip() else {
         return;
     };
     let path = with_ext(&root, "12d");
@@ -119,7 +117,7 @@ fn oc4_qtf_grid_layout_and_triangle_from_the_raw_text() {
 
 #[test]
 fn oc4_qtf_values_are_the_scaled_raw_lines_and_hermitian_exactly() {
-    let Some(root) = common::oc4_root_or_skip() else {
+    let Some(root) = crate::common::oc4_root_or_skip() else {
         return;
     };
     let path = with_ext(&root, "12d");
@@ -164,7 +162,7 @@ fn oc4_qtf_values_are_the_scaled_raw_lines_and_hermitian_exactly() {
 
 #[test]
 fn oc4_qtf_diagonal_is_real_and_is_the_mean_drift() {
-    let Some(root) = common::oc4_root_or_skip() else {
+    let Some(root) = crate::common::oc4_root_or_skip() else {
         return;
     };
     let path = with_ext(&root, "12d");
@@ -239,7 +237,7 @@ fn oc4_qtf_diagonal_is_real_and_is_the_mean_drift() {
 
 #[test]
 fn oc4_added_mass_and_damping_from_the_raw_text() {
-    let Some(root) = common::oc4_root_or_skip() else {
+    let Some(root) = crate::common::oc4_root_or_skip() else {
         return;
     };
     let path = with_ext(&root, "1");
@@ -295,7 +293,7 @@ fn oc4_added_mass_and_damping_from_the_raw_text() {
 
 #[test]
 fn oc4_hydrostatics_heave_positive_and_symmetric() {
-    let Some(root) = common::oc4_root_or_skip() else {
+    let Some(root) = crate::common::oc4_root_or_skip() else {
         return;
     };
     let path = with_ext(&root, "hst");
@@ -322,7 +320,7 @@ fn oc4_hydrostatics_heave_positive_and_symmetric() {
 
 #[test]
 fn oc4_database_from_wamit_saves_loads_and_gives_the_qtf_diagonal() {
-    let Some(root) = common::oc4_root_or_skip() else {
+    let Some(root) = crate::common::oc4_root_or_skip() else {
         return;
     };
     let options = WamitOptions::default();
@@ -827,7 +825,7 @@ fn database_from_synthetic_wamit_files_prefers_the_momentum_drift() {
 
 #[test]
 fn cli_hydro_wamit_writes_the_database_and_summarises() {
-    let Some(root) = common::oc4_root_or_skip() else {
+    let Some(root) = crate::common::oc4_root_or_skip() else {
         return;
     };
     let out = temp_dir("cli").join("oc4.json");

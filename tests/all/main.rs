@@ -1,0 +1,24 @@
+//! The integration tests, one binary: each module is one former test file (the shared
+//! builders in `common` and the in-process FMI master in `fmu`).
+
+mod common;
+mod fmu;
+
+mod bad_input;
+mod cli;
+mod directional;
+mod drag_current;
+mod dynamics;
+mod fmi2_abi;
+mod fmi2_alloc;
+mod fmi2_misuse;
+mod fmi2_symbols;
+mod full_qtf;
+mod montecarlo;
+mod newman;
+mod oscillator;
+mod sea_state;
+mod simulation;
+mod studies;
+mod wamit;
+mod yaw_following;
