@@ -43,10 +43,7 @@ mod timing;
 use criterion::Criterion;
 use rustfft::num_complex::Complex64;
 use rustfft::FftPlanner;
-use slowdrift::config::{
-    Current, DragModel, DriftDamping, Environment, InitialCondition, Interaction, ModelOptions,
-    NewmanForm, Platform, Run, SecondOrder, DEFAULT_QTF_TOLERANCE,
-};
+use slowdrift::config::{Current, InitialCondition, ModelOptions, Platform, Run};
 use slowdrift::forces::{
     plan_inverse_fft, transfers_on_grid, DirectionTransfer, ForceRecords, InverseFft,
     QtfFactorisation, RecordOptions, Synthesizer, MIN_QTF_TOLERANCE,
@@ -56,6 +53,10 @@ use slowdrift::hydro::column_drift::isolated_columns_table;
 use slowdrift::hydro::columns::ColumnArray;
 use slowdrift::hydro::wamit::{read_difference_qtf, WamitOptions};
 use slowdrift::hydro::{DriftRow, DriftTable};
+use slowdrift::model::{
+    DragModel, DriftDamping, Environment, Interaction, NewmanForm, SecondOrder,
+    DEFAULT_QTF_TOLERANCE,
+};
 use slowdrift::sea_state::{FrequencyGrid, SeaState, Spectrum, Spreading, WaveComponents};
 use slowdrift::{Config, Simulation};
 use std::hint::black_box;

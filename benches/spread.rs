@@ -16,7 +16,7 @@ mod timing;
 
 use criterion::Criterion;
 use slowdrift::config::default_platform::default_config;
-use slowdrift::config::Interaction;
+use slowdrift::model::Interaction;
 use slowdrift::sea_state::Spreading;
 use slowdrift::{Config, Simulation};
 use std::hint::black_box;

@@ -15,7 +15,7 @@ mod timing;
 
 use criterion::Criterion;
 use slowdrift::config::default_platform::default_config;
-use slowdrift::config::{DragModel, YawFollowing};
+use slowdrift::model::{DragModel, YawFollowing};
 use slowdrift::{Config, Simulation};
 use std::hint::black_box;
 use std::time::Duration;

@@ -15,7 +15,7 @@
 //! sway, yaw; wave direction beta = direction of propagation from +X, counter-clockwise;
 //! a wave component is Re[a e^{i omega t}].
 
-// Unsafe code lives in `fmi2` only, which allows it explicitly.
+// Unsafe code: only `fmi2::exports` (the C ABI) and the logger callback in `fmi2::logger`.
 #![deny(unsafe_code)]
 
 pub mod allocator;
@@ -25,6 +25,7 @@ pub mod error;
 pub mod fmi2;
 pub mod forces;
 pub mod hydro;
+pub mod model;
 pub mod model_description;
 pub mod montecarlo;
 pub mod record_plan;

@@ -8,7 +8,7 @@
 //! records of a seed then cost only what depends on the seed's wave amplitudes (the
 //! transforms, the kinematics, the yaw-following records).
 
-use crate::config::{Config, DriftDamping, SecondOrder};
+use crate::config::Config;
 use crate::error::{Error, Result};
 use crate::forces::{
     add_cross_terms, direction_pairs, plan_inverse_fft, transfers_on_grid, DirectionTransfer,
@@ -17,9 +17,10 @@ use crate::forces::{
 };
 use crate::hydro::aranha::aranha_damping;
 use crate::hydro::bidirectional::DirectionPairs;
-use crate::hydro::database::SlowDof;
-use crate::hydro::wamit::HEADING_TOLERANCE;
 use crate::hydro::DriftTable;
+use crate::model::Dof;
+use crate::model::HEADING_MATCH_TOLERANCE;
+use crate::model::{DriftDamping, SecondOrder};
 use crate::sea_state::{Direction, FrequencyGrid, WaveComponents};
 
 /// The seed-independent part of a configuration's records. It serves every configuration
@@ -49,7 +50,7 @@ pub struct QtfRank {
     pub direction: usize,
     /// Wave heading of that direction, rad.
     pub heading: f64,
-    pub dof: SlowDof,
+    pub dof: Dof,
     /// Retained rank R and the QTF's full rank n.
     pub rank: usize,
     pub size: usize,
@@ -153,7 +154,7 @@ impl RecordPlan {
             )?),
         };
         let drag_columns = match config.model.drag {
-            crate::config::DragModel::Off => &[][..],
+            crate::model::DragModel::Off => &[][..],
             _ => &config.platform.columns[..],
         };
         let mut records = ForceRecords::build(
@@ -189,9 +190,9 @@ fn full_qtf_on_grid(
     let mut on_grid = Vec::with_capacity(directions.len());
     for (k, direction) in directions.iter().enumerate() {
         let mut blocks = Vec::with_capacity(3);
-        for dof in SlowDof::ALL {
+        for dof in Dof::ALL {
             let block = qtf
-                .block(dof, direction.heading, HEADING_TOLERANCE)
+                .block(dof, direction.heading, HEADING_MATCH_TOLERANCE)
                 .expect("Config::validate requires every direction's QTF");
             let factors =
                 QtfFactorisation::new(&qtf.omegas, &block.values(), config.model.qtf_tolerance)?;

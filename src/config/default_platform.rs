@@ -74,7 +74,7 @@ mod tests {
         // The column-array source brings the bi-directional drift, so `auto` uses it.
         assert_eq!(
             config.interaction(),
-            crate::config::Interaction::Bidirectional
+            crate::model::Interaction::Bidirectional
         );
     }
 
@@ -91,7 +91,7 @@ mod tests {
     /// The FMU's start values (modelDescription.xml) describe the same default as this file.
     #[test]
     fn model_description_start_values_match_the_default() {
-        use crate::config::{DragModel, DriftDamping};
+        use crate::model::{DragModel, DriftDamping};
         use crate::model_description::start;
         use crate::sea_state::{Spectrum, Spreading};
         let c = default_config().unwrap();

@@ -87,16 +87,17 @@
 //! header of column names, then one numeric row per line; blank lines and lines starting
 //! with `#` are skipped.
 
-use super::{
-    Column, Config, Current, DragModel, DriftDamping, Environment, InitialCondition, Interaction,
-    ModelOptions, NewmanForm, Platform, Run, SecondOrder, YawFollowing,
-};
+use super::{Config, Current, InitialCondition, ModelOptions, Platform, Run};
 use crate::error::{Error, Result};
 use crate::hydro::bidirectional::BidirectionalSource;
 use crate::hydro::column_drift::isolated_columns_table;
 use crate::hydro::columns::ColumnArray;
 use crate::hydro::database::{HydroDatabase, QtfData};
 use crate::hydro::{DriftRow, DriftTable};
+use crate::model::{
+    Cylinder, DragModel, DriftDamping, Environment, Interaction, NewmanForm, SecondOrder,
+    YawFollowing,
+};
 use crate::sea_state::{SeaState, Spectrum, Spreading};
 use serde::Deserialize;
 use std::ops::Range;
@@ -514,7 +515,7 @@ impl PlatformFile {
             columns: self
                 .columns
                 .into_iter()
-                .map(|c| Column {
+                .map(|c| Cylinder {
                     x: c.x,
                     y: c.y,
                     diameter: c.diameter,
@@ -1268,7 +1269,7 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
                 stiffness: diagonal(1.0e5, 2.0e5, 3.0e8),
                 linear_damping: diagonal(1.0e4, 1.0e4, 1.0e7),
                 quadratic_damping: diagonal(1.0e3, 1.0e3, 1.0e6),
-                columns: vec![Column {
+                columns: vec![Cylinder {
                     x: 20.0,
                     y: -20.0,
                     diameter: 8.0,
@@ -1280,7 +1281,7 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
             config.model,
             ModelOptions {
                 second_order: SecondOrder::Newman,
-                qtf_tolerance: crate::config::DEFAULT_QTF_TOLERANCE,
+                qtf_tolerance: crate::model::DEFAULT_QTF_TOLERANCE,
                 newman: NewmanForm::Arithmetic,
                 interaction: Interaction::MeanDirection,
                 drift_damping: DriftDamping::Table,
@@ -1701,12 +1702,13 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
         heading_deg: f64,
         model: &str,
     ) -> Result<Config> {
-        use crate::hydro::database::{QtfData, QtfMatrix, SlowDof};
+        use crate::hydro::database::{QtfData, QtfMatrix};
+        use crate::model::Dof;
         let n = omegas.len();
         let mut database = database_with_minimal_drift(1025.0);
         database.qtf = Some(QtfData {
             omegas: omegas.to_vec(),
-            blocks: SlowDof::ALL
+            blocks: Dof::ALL
                 .into_iter()
                 .map(|dof| QtfMatrix {
                     dof,

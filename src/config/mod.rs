@@ -11,28 +11,15 @@ use crate::error::{
     require_finite, require_finite_matrix, require_non_negative, require_positive, Error, Result,
 };
 use crate::hydro::bidirectional::BidirectionalSource;
-use crate::hydro::database::{QtfData, SlowDof};
-use crate::hydro::wamit::HEADING_TOLERANCE;
+use crate::hydro::database::QtfData;
 use crate::hydro::DriftTable;
+use crate::model::Dof;
+use crate::model::HEADING_MATCH_TOLERANCE;
+use crate::model::{
+    Cylinder, DragModel, DriftDamping, Environment, Interaction, NewmanForm, SecondOrder,
+    YawFollowing, DEFAULT_QTF_TOLERANCE,
+};
 use crate::sea_state::SeaState;
-
-/// Physical constants of the water (physics.md section 1).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Environment {
-    /// Acceleration of gravity, m/s^2.
-    pub gravity: f64,
-    /// Water density, kg/m^3.
-    pub water_density: f64,
-}
-
-impl Default for Environment {
-    fn default() -> Self {
-        Environment {
-            gravity: 9.80665,
-            water_density: 1025.0,
-        }
-    }
-}
 
 /// Steady, depth-uniform current (E&S section 3).
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -54,19 +41,6 @@ pub struct Run {
     pub start_time: f64,
 }
 
-/// A vertical circular column, for Morison drag (E&S 8, 9). Body frame, m.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Column {
-    /// Centre, body frame x (forward), m.
-    pub x: f64,
-    /// Centre, body frame y (port), m.
-    pub y: f64,
-    /// Diameter, m.
-    pub diameter: f64,
-    /// Draft: the keel is at z = -draft, m.
-    pub draft: f64,
-}
-
 /// Rigid-body and mooring data of the platform in the 3 slow-drift DOFs (surge, sway, yaw).
 ///
 /// Matrices are indexed (surge, sway, yaw). Mass, added mass and damping act in the body
@@ -86,83 +60,8 @@ pub struct Platform {
     /// Extra quadratic damping: force_i = sum_j Bq_ij v_j |v_j| on the body-frame velocity.
     pub quadratic_damping: [[f64; 3]; 3],
     /// Columns for viscous drag (empty = no drag elements).
-    pub columns: Vec<Column>,
+    pub columns: Vec<Cylinder>,
 }
-
-/// Which form of Newman's approximation builds the slowly varying records (physics.md 4).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum NewmanForm {
-    /// The paper's form (E&S 4): T_ij = sign * sqrt(T_ii T_jj) where the signs agree, 0 otherwise.
-    Geometric,
-    /// T_ij = (T_ii + T_jj) / 2.
-    Arithmetic,
-}
-
-/// How the slowly varying wave force is computed from second-order theory (physics.md 4).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum SecondOrder {
-    /// Newman's approximation from the drift table's diagonal, in the form `newman`.
-    Newman,
-    /// The full difference-frequency QTF of [`Config::qtf`], factorised at FFT cost
-    /// (`forces::QtfFactorisation`), truncated at `qtf_tolerance`.
-    FullQtf,
-}
-
-/// Whether the components of different directions of a short-crested sea interact in the
-/// slowly varying force (physics.md section 4; `forces::directional`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Interaction {
-    /// The default: [`Interaction::Bidirectional`] when the drift source has bi-directional
-    /// drift, else [`Interaction::MeanDirection`]. Without cross terms the slow-drift
-    /// variance falls roughly like 1/N_beta as a spread sea is split into more directions
-    /// (README "Spread seas"), so some interaction is always on unless asked otherwise.
-    Auto,
-    /// Each direction's own double sum only (cross-direction terms dropped; the behaviour
-    /// before issue #5 part 2).
-    None,
-    /// Cross terms from T(omega; (beta_k + beta_l)/2) of the uni-directional drift table.
-    MeanDirection,
-    /// Cross terms from the bi-directional drift of [`Config::bidirectional`].
-    Bidirectional,
-}
-
-/// Where the wave-drift damping coefficients b_ij(omega, beta) come from (physics.md 5).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum DriftDamping {
-    /// No wave-drift damping.
-    Off,
-    /// The b_ij columns of the drift table.
-    Table,
-    /// Aranha's formula from the drift table and its derivatives.
-    Aranha,
-}
-
-/// Morison drag models of the paper (E&S 8, 9).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum DragModel {
-    /// No viscous drag.
-    Off,
-    /// Separate slow and fast parts: C_DS U|U| + C_DL u|u| (E&S 8).
-    Separate { slow: f64, fast: f64 },
-    /// One coefficient on the total relative velocity: C_D (U + u)|U + u| (E&S 9).
-    Combined { cd: f64 },
-}
-
-/// Records of the wave force and damping that follow the body's yaw (issue #5 part 3;
-/// physics.md section 4, last bullet): built at `headings` body yaw angles theta_j and
-/// interpolated linearly in the instantaneous yaw at every RK4 stage.
-#[derive(Debug, Clone, PartialEq)]
-pub struct YawFollowing {
-    /// Number of body yaw angles theta_j (at least 2).
-    pub headings: usize,
-    /// The covered yaw range [min, max], rad, with theta_j evenly spaced from min to max
-    /// (both included); a yaw outside it is an error. `None` = the full circle: theta_j
-    /// evenly spaced over [-pi, pi), 360 deg / headings apart, periodic (any yaw is covered).
-    pub range: Option<(f64, f64)>,
-}
-
-/// Default [`ModelOptions::qtf_tolerance`].
-pub const DEFAULT_QTF_TOLERANCE: f64 = 1e-6;
 
 /// Modelling choices.
 #[derive(Debug, Clone, PartialEq)]
@@ -330,9 +229,9 @@ impl Config {
             .directions()
             .iter()
             .filter(|d| {
-                SlowDof::ALL
+                Dof::ALL
                     .iter()
-                    .any(|&dof| q.block(dof, d.heading, HEADING_TOLERANCE).is_none())
+                    .any(|&dof| q.block(dof, d.heading, HEADING_MATCH_TOLERANCE).is_none())
             })
             .map(|d| format!("{:.3}", d.heading.to_degrees()))
             .collect();

@@ -11,9 +11,10 @@
 //! frame. Second-order terms in the slow velocities are neglected, as in the paper. Since
 //! S is orthogonal, q'' = S (M + A)^{-1} S^T (right-hand side).
 
-use crate::config::{Config, DragModel};
+use crate::config::Config;
 use crate::error::{Error, Result};
 use crate::forces::{drag_force, ForceRecords, SamplePoint, YawPoint};
+use crate::model::DragModel;
 use nalgebra::{Matrix3, Vector3};
 
 /// Forces acting on the body at one instant, inertial frame (N, N, N m).

@@ -12,10 +12,15 @@
 //! `fmi2Instantiate` returned and that is not yet freed, arrays of at least the given
 //! length, NUL-terminated strings, states from `fmi2GetFMUstate`/`fmi2DeSerializeFMUstate`
 //! of this library. NULL pointers are detected and refused; dangling ones cannot be.
+
+#![allow(unsafe_code)]
 #![allow(non_snake_case)]
 #![allow(clippy::missing_safety_doc)] // the module documentation above states the contract
 
-use super::instance::{Call, FmuError, Instance, Logger, MachineState};
+use super::fmu_error::FmuError;
+use super::instance::Instance;
+use super::logger::Logger;
+use super::machine::{Call, MachineState};
 use super::parameters::file_uri_to_path;
 use super::state::FmuState;
 use super::types::*;

@@ -15,10 +15,9 @@
 //! Newman form, strips, initial condition) comes from the base. The run's start time and
 //! duration come from `fmi2SetupExperiment`.
 
-use crate::config::{
-    default_platform, file, Config, DragModel, DriftDamping, Interaction, YawFollowing,
-};
+use crate::config::{default_platform, file, Config};
 use crate::error::{Error, Result};
+use crate::model::{DragModel, DriftDamping, Interaction, YawFollowing};
 use crate::model_description::{start, vr};
 use crate::sea_state::{Spectrum, Spreading};
 use std::path::{Path, PathBuf};

@@ -18,7 +18,7 @@
 //! restoring instance rebuilds from its own parameters. The fingerprint makes sure these are
 //! the same: a state from a differently configured instance is refused.
 
-use super::instance::MachineState;
+use super::machine::MachineState;
 use crate::config::Config;
 use crate::error::{Error, Result};
 use crate::simulation::Snapshot;

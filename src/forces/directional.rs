@@ -48,9 +48,10 @@
 
 use super::synthesis::{InverseFft, Synthesizer};
 use super::{ForceRecords, Record};
-use crate::config::{Config, Interaction};
+use crate::config::Config;
 use crate::error::{Error, Result};
 use crate::hydro::bidirectional::{mean_direction_pairs, DirectionPairs};
+use crate::model::Interaction;
 use crate::sea_state::{Direction, FrequencyGrid, WaveComponents};
 use rustfft::num_complex::Complex64;
 

@@ -14,7 +14,7 @@
 
 use super::record::SamplePoint;
 use super::synthesis::Synthesizer;
-use crate::config::Column;
+use crate::model::Cylinder;
 use crate::sea_state::WaveComponents;
 use rustfft::num_complex::{Complex32, Complex64};
 use std::sync::Arc;
@@ -31,7 +31,7 @@ use std::sync::Arc;
 /// double-precision sums.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ColumnKinematics {
-    pub column: Column,
+    pub column: Cylinder,
     /// Series per row: 1 + strips.
     width: usize,
     /// Samples per series.
@@ -115,7 +115,7 @@ impl ColumnState<'_> {
 /// per strip.
 pub fn column_kinematics(
     components: &WaveComponents,
-    columns: &[Column],
+    columns: &[Cylinder],
     strips: usize,
     gravity: f64,
     synth: &mut Synthesizer,
@@ -226,7 +226,7 @@ struct KinematicsKey {
 }
 
 impl KinematicsKey {
-    fn of(components: &WaveComponents, column: &Column) -> Self {
+    fn of(components: &WaveComponents, column: &Cylinder) -> Self {
         KinematicsKey {
             draft: column.draft,
             along: components
@@ -239,7 +239,7 @@ impl KinematicsKey {
 }
 
 /// Distance of the column centre along a wave heading, m.
-fn along(column: &Column, heading: f64) -> f64 {
+fn along(column: &Cylinder, heading: f64) -> f64 {
     let (sin, cos) = heading.sin_cos();
     column.x * cos + column.y * sin
 }
@@ -248,7 +248,7 @@ fn along(column: &Column, heading: f64) -> f64 {
 /// (cos b, sin b, 1).
 fn direction_sums(
     components: &WaveComponents,
-    column: &Column,
+    column: &Cylinder,
     gravity: f64,
 ) -> [Vec<Complex64>; 3] {
     let grid = &components.grid;
@@ -276,9 +276,9 @@ mod tests {
 
     const GRAVITY: f64 = 9.80665;
 
-    fn square(draft: f64) -> Vec<Column> {
+    fn square(draft: f64) -> Vec<Cylinder> {
         [(35.0, 35.0), (-35.0, 35.0), (-35.0, -35.0), (35.0, -35.0)]
-            .map(|(x, y)| Column {
+            .map(|(x, y)| Cylinder {
                 x,
                 y,
                 diameter: 20.0,
@@ -306,7 +306,7 @@ mod tests {
 
     /// Direct sums of linear theory (the module's formulas, term by term, with no FFT and
     /// no shared factors): elevation at the centre and velocity at stretched level z.
-    fn direct(c: &WaveComponents, column: &Column, z: f64, t: f64) -> [f64; 3] {
+    fn direct(c: &WaveComponents, column: &Cylinder, z: f64, t: f64) -> [f64; 3] {
         let mut out = [0.0; 3];
         for (k, dir) in c.directions.iter().enumerate() {
             for (j, a) in c.of_direction(k).iter().enumerate() {
@@ -326,7 +326,7 @@ mod tests {
 
     /// The direct sums at t, or between samples their cubic Lagrange interpolation from
     /// the four samples around t (what the records promise: record.rs).
-    fn expected(c: &WaveComponents, column: &Column, z: f64, t: f64) -> [f64; 3] {
+    fn expected(c: &WaveComponents, column: &Cylinder, z: f64, t: f64) -> [f64; 3] {
         let s = t / c.grid.dt - (t / c.grid.dt).floor();
         if s == 0.0 {
             return direct(c, column, z, t);

@@ -22,7 +22,7 @@ pub use transfer::{transfers_on_grid, DirectionTransfer};
 pub use viscous::drag_force;
 pub use yaw_following::{SlowRecords, YawFollowingRecords, YawGrid, YawPoint};
 
-use crate::config::{Column, NewmanForm};
+use crate::model::{Cylinder, NewmanForm};
 use crate::sea_state::WaveComponents;
 use rustfft::num_complex::Complex64;
 
@@ -34,7 +34,7 @@ pub struct RecordOptions<'a> {
     /// records stay Newman's, from the transfers' b_ij).
     pub full_qtf: Option<&'a [[GridQtf; 3]]>,
     /// Columns (and strips per column) whose kinematics the drag needs; empty = no drag.
-    pub drag_columns: &'a [Column],
+    pub drag_columns: &'a [Cylinder],
     pub strips_per_column: usize,
     pub gravity: f64,
     /// The inverse FFT of the grid's record length when already planned (`None`: plan it).

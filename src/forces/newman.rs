@@ -16,7 +16,7 @@
 
 use super::synthesis::Synthesizer;
 use super::transfer::DirectionTransfer;
-use crate::config::NewmanForm;
+use crate::model::NewmanForm;
 use rustfft::num_complex::Complex64;
 
 /// Scratch buffers for building slowly varying records, reused for every record.

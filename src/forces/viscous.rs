@@ -11,7 +11,7 @@
 
 use super::kinematics::{ColumnKinematics, ColumnState};
 use super::record::SamplePoint;
-use crate::config::DragModel;
+use crate::model::DragModel;
 use rustfft::num_complex::{Complex32, Complex64};
 
 /// Drag on the body, body frame: (Fx, Fy, Mz).
@@ -138,9 +138,9 @@ impl Velocity for Complex64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::config::Column;
     use crate::forces::kinematics::column_kinematics;
     use crate::forces::{RecordClock, Synthesizer};
+    use crate::model::Cylinder;
     use crate::sea_state::{FrequencyGrid, SeaState, Spectrum, Spreading, WaveComponents};
 
     /// E&S 8 and 9 strip by strip, written out with `hypot` on each strip's velocities as
@@ -212,7 +212,7 @@ mod tests {
             dt: grid.dt,
             len: grid.len,
         };
-        let columns = [(30.0, 10.0, 25.0), (-20.0, 15.0, 18.0)].map(|(x, y, draft)| Column {
+        let columns = [(30.0, 10.0, 25.0), (-20.0, 15.0, 18.0)].map(|(x, y, draft)| Cylinder {
             x,
             y,
             diameter: 12.0,

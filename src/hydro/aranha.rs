@@ -22,12 +22,16 @@
 //! circle. The formula needs dF/dbeta, so a table with a single heading is refused.
 
 use super::DriftTable;
-use crate::config::Column;
 use crate::error::{Error, Result};
+use crate::model::Cylinder;
 use std::f64::consts::PI;
 
 /// Damping table b_ij on the drift table's own nodes.
-pub fn aranha_damping(table: &DriftTable, gravity: f64, columns: &[Column]) -> Result<DriftTable> {
+pub fn aranha_damping(
+    table: &DriftTable,
+    gravity: f64,
+    columns: &[Cylinder],
+) -> Result<DriftTable> {
     let omegas = table.omegas();
     let headings = table.headings();
     if headings.len() < 2 {
@@ -90,9 +94,9 @@ pub(crate) struct ColumnLayout {
 }
 
 impl ColumnLayout {
-    pub(crate) fn of(columns: &[Column]) -> Self {
+    pub(crate) fn of(columns: &[Cylinder]) -> Self {
         let n = columns.len().max(1) as f64;
-        let sum = |f: &dyn Fn(&Column) -> f64| columns.iter().map(f).sum::<f64>() / n;
+        let sum = |f: &dyn Fn(&Cylinder) -> f64| columns.iter().map(f).sum::<f64>() / n;
         ColumnLayout {
             mean_x: sum(&|c| c.x),
             mean_y: sum(&|c| c.y),
@@ -219,9 +223,9 @@ mod tests {
     #[test]
     fn yaw_rate_column_from_a_square_of_columns() {
         let g = 9.80665;
-        let columns: Vec<Column> = [(35.0, 35.0), (-35.0, 35.0), (-35.0, -35.0), (35.0, -35.0)]
+        let columns: Vec<Cylinder> = [(35.0, 35.0), (-35.0, 35.0), (-35.0, -35.0), (35.0, -35.0)]
             .iter()
-            .map(|&(x, y)| Column {
+            .map(|&(x, y)| Cylinder {
                 x,
                 y,
                 diameter: 20.0,

@@ -20,8 +20,8 @@
 use super::columns::ColumnArray;
 use super::heading_grid::{heading_bracket, Bracket};
 use super::DriftTable;
-use crate::config::Environment;
 use crate::error::{require_finite, require_positive, Error, Result};
+use crate::model::Environment;
 use rustfft::num_complex::Complex64;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -345,10 +345,10 @@ impl BidirectionalTable {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::config::Column;
+    use crate::model::Cylinder;
 
     fn two_columns() -> ColumnArray {
-        let column = |x: f64, y: f64| Column {
+        let column = |x: f64, y: f64| Cylinder {
             x,
             y,
             diameter: 16.0,

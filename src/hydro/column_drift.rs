@@ -19,9 +19,9 @@
 //! truncated column carries roughly a fraction 1 - e^{-k draft} of it); the column drafts
 //! are not used.
 
-use crate::config::{Column, Environment};
 use crate::error::{require_finite, require_positive, Error, Result};
 use crate::hydro::{DriftRow, DriftTable};
+use crate::model::{Cylinder, Environment};
 use crate::special::bessel::hankel_derivatives;
 use rustfft::num_complex::Complex64;
 use std::f64::consts::PI;
@@ -127,7 +127,7 @@ fn adaptive_series(ka: f64, term: impl Fn(&[Complex64], usize) -> f64) -> f64 {
 /// Rows carry no damping. Frequencies must be positive and strictly increasing, headings
 /// finite and distinct, and k a_c must not exceed [`MAX_KA`].
 pub fn isolated_columns_table(
-    columns: &[Column],
+    columns: &[Cylinder],
     environment: &Environment,
     omegas: &[f64],
     headings: &[f64],
@@ -155,7 +155,7 @@ pub fn isolated_columns_table(
 }
 
 /// Drift force per unit amplitude squared on one isolated column, N/m^2.
-fn column_force(column: &Column, k: f64, rho: f64, g: f64) -> Result<f64> {
+fn column_force(column: &Cylinder, k: f64, rho: f64, g: f64) -> Result<f64> {
     let radius = 0.5 * column.diameter;
     let ka = k * radius;
     if ka > MAX_KA {
@@ -172,7 +172,7 @@ fn column_force(column: &Column, k: f64, rho: f64, g: f64) -> Result<f64> {
 }
 
 /// (surge, sway, yaw) of forces `forces[c]` along heading beta applied at the column centres.
-fn array_drift(columns: &[Column], forces: &[f64], heading: f64) -> [f64; 3] {
+fn array_drift(columns: &[Cylinder], forces: &[f64], heading: f64) -> [f64; 3] {
     let (sin, cos) = heading.sin_cos();
     columns.iter().zip(forces).fold([0.0; 3], |acc, (c, &f)| {
         [
@@ -184,7 +184,7 @@ fn array_drift(columns: &[Column], forces: &[f64], heading: f64) -> [f64; 3] {
 }
 
 fn validate_inputs(
-    columns: &[Column],
+    columns: &[Cylinder],
     environment: &Environment,
     omegas: &[f64],
     headings: &[f64],
@@ -205,7 +205,7 @@ fn validate_inputs(
 }
 
 /// Environment, frequencies and headings of a drift request (shared with
-/// [`crate::hydro::columns`]).
+/// `hydro/columns/`).
 pub(crate) fn validate_grid(
     environment: &Environment,
     omegas: &[f64],
@@ -238,10 +238,10 @@ mod tests {
     /// over t in (-pi/2, pi/2): (1/2)(4/3) = 2/3.
     const SHORT_WAVE_LIMIT: f64 = 2.0 / 3.0;
 
-    fn square_array(half_side: f64, diameter: f64) -> Vec<Column> {
+    fn square_array(half_side: f64, diameter: f64) -> Vec<Cylinder> {
         [(1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0), (1.0, -1.0)]
             .iter()
-            .map(|&(sx, sy)| Column {
+            .map(|&(sx, sy)| Cylinder {
                 x: sx * half_side,
                 y: sy * half_side,
                 diameter,
@@ -375,7 +375,7 @@ mod tests {
     #[test]
     fn off_centre_column_moment() {
         let env = Environment::default();
-        let column = Column {
+        let column = Cylinder {
             x: 30.0,
             y: -40.0,
             diameter: 10.0,
@@ -402,7 +402,7 @@ mod tests {
         let env = Environment::default();
         let radius = 5.0;
         let omega = (env.gravity / radius).sqrt();
-        let column = Column {
+        let column = Cylinder {
             x: 0.0,
             y: 0.0,
             diameter: 2.0 * radius,
@@ -431,7 +431,7 @@ mod tests {
         let good = square_array(20.0, 8.0);
         let w = [0.4, 0.6];
         let b = [0.0];
-        let call = |c: &[Column], e: &Environment, w: &[f64], b: &[f64]| {
+        let call = |c: &[Cylinder], e: &Environment, w: &[f64], b: &[f64]| {
             field_of(isolated_columns_table(c, e, w, b).expect_err("must be refused"))
         };
         assert_eq!(call(&[], &env, &w, &b), "platform.columns");

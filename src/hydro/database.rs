@@ -34,8 +34,8 @@ use super::wamit::{
     DifferenceQtf, WamitOptions,
 };
 use super::{DriftRow, DriftTable};
-use crate::config::Environment;
 use crate::error::{require_finite, require_finite_matrix, require_positive, Error, Result};
+use crate::model::{Dof, Environment};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 use std::ffi::OsString;
@@ -106,20 +106,6 @@ pub struct DriftPoint {
     pub damping: Option<[[f64; 3]; 3]>,
 }
 
-/// A slow-drift DOF as the database names it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum SlowDof {
-    Surge,
-    Sway,
-    Yaw,
-}
-
-impl SlowDof {
-    /// Surge, sway, yaw: the order of the crate's force arrays.
-    pub const ALL: [SlowDof; 3] = [SlowDof::Surge, SlowDof::Sway, SlowDof::Yaw];
-}
-
 /// The difference-frequency QTF on its frequency grid.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -134,7 +120,7 @@ pub struct QtfData {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct QtfMatrix {
-    pub dof: SlowDof,
+    pub dof: Dof,
     /// Heading, rad.
     pub heading: f64,
     pub re: Vec<Vec<f64>>,
@@ -471,7 +457,7 @@ impl HydroDatabase {
 
 impl QtfData {
     /// The block of `dof` at `heading` (rad, within `tolerance`, modulo 2 pi), if any.
-    pub fn block(&self, dof: SlowDof, heading: f64, tolerance: f64) -> Option<&QtfMatrix> {
+    pub fn block(&self, dof: Dof, heading: f64, tolerance: f64) -> Option<&QtfMatrix> {
         let apart = |a: f64, b: f64| (a - b + PI).rem_euclid(2.0 * PI) - PI;
         self.blocks
             .iter()
@@ -564,7 +550,7 @@ fn qtf_data(qtf: &DifferenceQtf) -> Result<QtfData> {
     let n = qtf.omegas().len();
     let mut blocks = Vec::new();
     for heading in qtf.headings() {
-        for (dof, wamit_dof) in SlowDof::ALL.into_iter().zip(SLOW_DOFS) {
+        for (dof, wamit_dof) in Dof::ALL.into_iter().zip(SLOW_DOFS) {
             let m = qtf.matrix(wamit_dof, heading)?;
             let part = |f: fn(&rustfft::num_complex::Complex64) -> f64| -> Vec<Vec<f64>> {
                 m.chunks(n).map(|row| row.iter().map(f).collect()).collect()

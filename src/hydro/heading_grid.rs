@@ -6,7 +6,7 @@
 use std::f64::consts::PI;
 
 /// Two headings this close (rad) are the same node.
-pub(crate) const HEADING_TOLERANCE: f64 = 1e-9;
+pub(crate) const SAME_NODE: f64 = 1e-9;
 
 /// A point between two nodes: lo, hi and the weight of hi.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -35,12 +35,12 @@ pub(crate) fn heading_bracket(headings: &[f64], heading: f64) -> Option<Bracket>
     let first = h[0];
     // Bring the heading into [first, first + 2 pi).
     let mut rel = (heading - first).rem_euclid(2.0 * PI);
-    if 2.0 * PI - rel < HEADING_TOLERANCE {
+    if 2.0 * PI - rel < SAME_NODE {
         rel = 0.0;
     }
     let at = first + rel;
     let last = h[h.len() - 1];
-    if at <= last + HEADING_TOLERANCE {
+    if at <= last + SAME_NODE {
         if h.len() == 1 {
             return Some(Bracket {
                 lo: 0,

@@ -20,8 +20,8 @@
 
 use super::Case;
 use crate::config::file::DEFAULT_N_DIRECTIONS;
-use crate::config::{DragModel, Interaction, YawFollowing};
 use crate::error::{Error, Result};
+use crate::model::{DragModel, Interaction, YawFollowing};
 use crate::sea_state::{Spectrum, Spreading};
 use crate::Config;
 use std::path::Path;

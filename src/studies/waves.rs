@@ -1,8 +1,9 @@
 //! The wave elevation record of a configuration, for the elevation statistics of E&S
 //! Figs 7 and 8 (pdf against the Gaussian, spectrum against the input).
 
-use crate::config::{Config, DragModel};
+use crate::config::Config;
 use crate::error::{require_positive, Result};
+use crate::model::DragModel;
 use crate::Simulation;
 
 /// A sampled elevation record at the body origin.

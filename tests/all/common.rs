@@ -2,11 +2,12 @@
 //! expected answers the tests derive independently.
 #![allow(dead_code)] // each test binary uses a different subset
 
-use slowdrift::config::{
-    Column, Current, DragModel, DriftDamping, Environment, InitialCondition, Interaction,
-    ModelOptions, NewmanForm, Platform, Run, SecondOrder, DEFAULT_QTF_TOLERANCE,
-};
+use slowdrift::config::{Current, InitialCondition, ModelOptions, Platform, Run};
 use slowdrift::hydro::{DriftRow, DriftTable};
+use slowdrift::model::{
+    Cylinder, DragModel, DriftDamping, Environment, Interaction, NewmanForm, SecondOrder,
+    DEFAULT_QTF_TOLERANCE,
+};
 use slowdrift::sea_state::{SeaState, Spectrum, Spreading};
 use slowdrift::Config;
 use std::f64::consts::PI;
@@ -33,10 +34,10 @@ pub fn drift_table(drift: impl Fn(f64, f64) -> [f64; 3]) -> DriftTable {
 }
 
 /// The paper's four columns: radius 10 m at (+-35, +-35) m, draft 30 m.
-pub fn four_columns() -> Vec<Column> {
+pub fn four_columns() -> Vec<Cylinder> {
     [(35.0, 35.0), (-35.0, 35.0), (-35.0, -35.0), (35.0, -35.0)]
         .iter()
-        .map(|&(x, y)| Column {
+        .map(|&(x, y)| Cylinder {
             x,
             y,
             diameter: 20.0,

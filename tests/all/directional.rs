@@ -4,13 +4,13 @@
 
 use crate::common::*;
 use rustfft::num_complex::Complex64;
-use slowdrift::config::{Interaction, NewmanForm};
 use slowdrift::forces::{
     cross_direction_force, direction_pairs, plan_inverse_fft, transfers_on_grid, ForceRecords,
     RecordOptions,
 };
 use slowdrift::hydro::bidirectional::{BidirectionalSource, BidirectionalTable, DirectionPairs};
 use slowdrift::hydro::columns::ColumnArray;
+use slowdrift::model::{Interaction, NewmanForm};
 use slowdrift::sea_state::{FrequencyGrid, SeaState, Spreading, WaveComponents};
 use slowdrift::{Config, Simulation};
 
@@ -147,7 +147,7 @@ fn heading_independent_mean_direction_is_the_long_crested_force_of_summed_amplit
 #[test]
 fn mean_force_is_the_diagonal_integral() {
     let array = ColumnArray::new(four_columns(), None).unwrap();
-    let env = slowdrift::config::Environment::default();
+    let env = slowdrift::model::Environment::default();
     let omegas: Vec<f64> = (0..13).map(|i| 0.25 + 0.1 * i as f64).collect();
     let headings: Vec<f64> = (0..72).map(|i| (i as f64 * 5.0).to_radians()).collect();
     let table = BidirectionalTable::from_column_array(&array, &env, &omegas, &headings).unwrap();
@@ -278,7 +278,7 @@ fn missing_bidirectional_data_is_named() {
         "{e}"
     );
     let array = ColumnArray::new(four_columns(), None).unwrap();
-    let env = slowdrift::config::Environment::default();
+    let env = slowdrift::model::Environment::default();
     let narrow: Vec<f64> = vec![0.0, 0.3, 0.6];
     let table =
         BidirectionalTable::from_column_array(&array, &env, &[0.3, 0.8, 1.5], &narrow).unwrap();

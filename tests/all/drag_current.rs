@@ -2,8 +2,8 @@
 //! physics.md sections 5, 6).
 
 use crate::common::*;
-use slowdrift::config::{DragModel, DriftDamping};
 use slowdrift::hydro::{DriftRow, DriftTable};
+use slowdrift::model::{DragModel, DriftDamping};
 use slowdrift::Simulation;
 
 /// Runs to the end and returns the mean position over the second half.

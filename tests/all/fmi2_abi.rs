@@ -4,7 +4,7 @@
 
 use crate::fmu::*;
 use slowdrift::fmi2::exports::*;
-use slowdrift::fmi2::instance::MachineState;
+use slowdrift::fmi2::machine::MachineState;
 use slowdrift::fmi2::parameters::MAX_DURATION_WITHOUT_STOP_TIME;
 use slowdrift::fmi2::types::*;
 use slowdrift::model_description::vr;

@@ -6,7 +6,7 @@
 use crate::fmu::*;
 use slowdrift::config::file;
 use slowdrift::fmi2::exports::*;
-use slowdrift::fmi2::instance::{Call, MachineState};
+use slowdrift::fmi2::machine::{Call, MachineState};
 use slowdrift::fmi2::types::*;
 use slowdrift::model_description::{vr, GUID, MODEL_IDENTIFIER};
 use slowdrift::Simulation;

@@ -6,12 +6,13 @@
 
 use crate::common::*;
 use rustfft::num_complex::Complex64;
-use slowdrift::config::{DriftDamping, NewmanForm, SecondOrder};
 use slowdrift::forces::{
     DirectionTransfer, ForceRecords, GridQtf, QtfFactorisation, RecordOptions, MIN_QTF_TOLERANCE,
 };
-use slowdrift::hydro::database::{HydroDatabase, QtfData, QtfMatrix, SlowDof};
+use slowdrift::hydro::database::{HydroDatabase, QtfData, QtfMatrix};
 use slowdrift::hydro::wamit::WamitOptions;
+use slowdrift::model::Dof;
+use slowdrift::model::{DriftDamping, NewmanForm, SecondOrder};
 use slowdrift::sea_state::{FrequencyGrid, SeaState, Spectrum, Spreading, WaveComponents};
 use slowdrift::stats::{summarize, welch_spectrum};
 use slowdrift::{Config, Simulation};
@@ -46,7 +47,7 @@ fn matrix(omegas: &[f64], f: impl Fn(f64, f64) -> Complex64) -> Vec<Complex64> {
 fn qtf_data(omegas: &[f64], headings: &[f64]) -> QtfData {
     let mut blocks = Vec::new();
     for &heading in headings {
-        for (d, dof) in SlowDof::ALL.into_iter().enumerate() {
+        for (d, dof) in Dof::ALL.into_iter().enumerate() {
             let m = matrix(omegas, |a, b| dof_qtf(d, heading, a, b));
             let n = omegas.len();
             let rows = |f: fn(&Complex64) -> f64| -> Vec<Vec<f64>> {
@@ -445,7 +446,7 @@ fn oc4_full_qtf_against_newman() {
         .unwrap()
         .database;
     let q = database.qtf.as_ref().unwrap();
-    let surge = q.block(SlowDof::Surge, 0.0, 1e-6).unwrap().values();
+    let surge = q.block(Dof::Surge, 0.0, 1e-6).unwrap().values();
     for tolerance in [1e-2, 1e-4, 1e-6, 1e-8] {
         let f = QtfFactorisation::new(&q.omegas, &surge, tolerance).unwrap();
         println!(

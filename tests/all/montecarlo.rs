@@ -346,7 +346,7 @@ fn shared_plans_give_the_runs_of_fresh_ones() {
     use slowdrift::montecarlo::run_seed;
     let mut good = base_config(400.0, 1.0, 0);
     good.platform.columns = crate::common::four_columns();
-    good.model.drag = slowdrift::config::DragModel::Combined { cd: 0.6 };
+    good.model.drag = slowdrift::model::DragModel::Combined { cd: 0.6 };
     let mut bad = good.clone();
     bad.run.time_step = -1.0;
     let cases: Vec<Case> = [good, bad]

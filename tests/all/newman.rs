@@ -3,9 +3,9 @@
 
 use crate::common::*;
 use rustfft::num_complex::Complex64;
-use slowdrift::config::NewmanForm;
 use slowdrift::forces::{transfers_on_grid, ForceRecords, RecordOptions};
 use slowdrift::hydro::{DriftRow, DriftTable};
+use slowdrift::model::NewmanForm;
 use slowdrift::sea_state::{FrequencyGrid, SeaState, Spreading, WaveComponents};
 
 /// Drift that changes sign with frequency and heading, and a yaw moment.

@@ -2,8 +2,8 @@
 //! variance vs Hs^2/16, Gaussian distribution, periodogram vs the spectrum.
 
 use crate::common::*;
-use slowdrift::config::NewmanForm;
 use slowdrift::forces::{ForceRecords, RecordOptions};
+use slowdrift::model::NewmanForm;
 use slowdrift::sea_state::{FrequencyGrid, SeaState, Spectrum, Spreading, WaveComponents};
 use slowdrift::stats::{summarize, welch_spectrum};
 use std::f64::consts::PI;

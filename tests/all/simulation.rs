@@ -148,8 +148,8 @@ fn a_plan_gives_the_records_of_new_for_every_seed() {
     spread.sea.spreading = slowdrift::sea_state::Spreading::CosN { n: 2.0 };
     spread.sea.n_directions = 5;
     spread.platform.columns = four_columns();
-    spread.model.drag = slowdrift::config::DragModel::Combined { cd: 0.6 };
-    spread.model.drift_damping = slowdrift::config::DriftDamping::Aranha;
+    spread.model.drag = slowdrift::model::DragModel::Combined { cd: 0.6 };
+    spread.model.drift_damping = slowdrift::model::DriftDamping::Aranha;
     for base in [config(1), spread] {
         let plan = slowdrift::RecordPlan::new(&base).unwrap();
         for seed in [3, 11] {

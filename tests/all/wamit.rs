@@ -7,10 +7,11 @@
 //! headings in any order, bi-directional pairs, malformed lines, missing DOFs and headings.
 
 use rustfft::num_complex::Complex64;
-use slowdrift::hydro::database::{HydroDatabase, MassProperties, SlowDof, FORMAT_VERSION};
+use slowdrift::hydro::database::{HydroDatabase, MassProperties, FORMAT_VERSION};
 use slowdrift::hydro::wamit::{
     read_added_mass_damping, read_difference_qtf, read_hydrostatics, read_mean_drift, WamitOptions,
 };
+use slowdrift::model::Dof;
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -366,7 +367,7 @@ fn oc4_database_from_wamit_saves_loads_and_gives_the_qtf_diagonal() {
     }
     assert_eq!(
         stored.blocks.iter().map(|b| b.dof).collect::<Vec<_>>(),
-        [SlowDof::Surge, SlowDof::Sway, SlowDof::Yaw]
+        [Dof::Surge, Dof::Sway, Dof::Yaw]
     );
 
     let dir = temp_dir("oc4-db");
@@ -711,7 +712,7 @@ fn small_database() -> HydroDatabase {
         qtf: Some(QtfData {
             omegas: vec![0.3, 0.7],
             blocks: vec![QtfMatrix {
-                dof: SlowDof::Yaw,
+                dof: Dof::Yaw,
                 heading: 0.1,
                 re: vec![vec![1.0, PI], vec![PI, 2.0]],
                 im: vec![vec![0.0, -1.0 / 7.0], vec![1.0 / 7.0, 0.0]],

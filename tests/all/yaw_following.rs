@@ -3,9 +3,9 @@
 //! sea rotated by -theta (the existing path with the wave direction minus theta).
 
 use slowdrift::config::default_platform::default_config;
-use slowdrift::config::{DragModel, Interaction, SecondOrder, YawFollowing};
 use slowdrift::forces::{ForceRecords, YawPoint};
 use slowdrift::hydro::{DriftRow, DriftTable};
+use slowdrift::model::{DragModel, Interaction, SecondOrder, YawFollowing};
 use slowdrift::sea_state::Spreading;
 use slowdrift::{Config, Error, Simulation};
 use std::sync::OnceLock;

@@ -59,7 +59,7 @@
 //! integrates them exactly; H and H' on the nodes come from one inverse FFT per column and
 //! quantity.
 
-use super::scattering::Cylinder;
+use super::scattering::Circle;
 use rustfft::num_complex::Complex64;
 use rustfft::{Fft, FftPlanner};
 use std::f64::consts::PI;
@@ -69,7 +69,7 @@ use std::sync::Arc;
 /// all columns (module doc), Linton & Evans convention (F = sum A_p conj(A_q) T_pq).
 /// `rho_g` = rho g, `s` = 2kh/sinh 2kh.
 pub(super) fn near_field_form(
-    cylinders: &[Cylinder],
+    cylinders: &[Circle],
     modes: usize,
     k: f64,
     rho_g: f64,
@@ -113,7 +113,7 @@ pub(super) struct FarField {
     modes: usize,
     nodes: usize,
     fft: Arc<dyn Fft<f64>>,
-    cylinders: Vec<Cylinder>,
+    cylinders: Vec<Circle>,
     /// e^{-i k (x_j cos t_l + y_j sin t_l)} at index j * nodes + l.
     phase: Vec<Complex64>,
     /// d/dt of the phase's exponent: -i k (-x_j sin t_l + y_j cos t_l).
@@ -123,12 +123,7 @@ pub(super) struct FarField {
 }
 
 impl FarField {
-    pub fn new(
-        cylinders: &[Cylinder],
-        k: f64,
-        modes: usize,
-        planner: &mut FftPlanner<f64>,
-    ) -> Self {
+    pub fn new(cylinders: &[Circle], k: f64, modes: usize, planner: &mut FftPlanner<f64>) -> Self {
         let reach = cylinders
             .iter()
             .map(|c| k * c.x.hypot(c.y))

@@ -61,16 +61,16 @@
 mod drift;
 mod scattering;
 
-use crate::config::{Column, Environment};
 use crate::error::{require_finite, require_positive, Error, Result};
 use crate::hydro::aranha::{aranha_coefficients, ColumnLayout};
 use crate::hydro::column_drift::{validate_grid, MAX_KA};
 use crate::hydro::{DriftRow, DriftTable};
+use crate::model::{Cylinder, Environment};
 use drift::{near_field_form, real_parts, FarField};
 use nalgebra::DMatrix;
 use rustfft::num_complex::Complex64;
 use rustfft::FftPlanner;
-use scattering::{column_force, depth_terms, wavenumber, Cylinder, FrequencySystem};
+use scattering::{column_force, depth_terms, wavenumber, Circle, FrequencySystem};
 
 /// Least number of modes kept beyond k a_max on every column (module doc).
 pub const EXTRA_MODES: usize = 10;
@@ -91,8 +91,8 @@ const FREQUENCY_STEP: f64 = 1e-4;
 /// An array of fixed vertical circular columns (module doc).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ColumnArray {
-    columns: Vec<Column>,
-    cylinders: Vec<Cylinder>,
+    columns: Vec<Cylinder>,
+    cylinders: Vec<Circle>,
     depth: Option<f64>,
     /// max(EXTRA_MODES, geometric modes) (module doc).
     extra_modes: usize,
@@ -143,7 +143,7 @@ impl ColumnArray {
     /// An array of `columns` (the drafts are not used) in deep water (`depth` None) or
     /// bottom-mounted in water of depth `depth`. Refuses an empty list, non-finite centres,
     /// non-positive diameters, overlapping or touching columns, and a non-positive depth.
-    pub fn new(columns: Vec<Column>, depth: Option<f64>) -> Result<Self> {
+    pub fn new(columns: Vec<Cylinder>, depth: Option<f64>) -> Result<Self> {
         if columns.is_empty() {
             return Err(Error::invalid(
                 "platform.columns",
@@ -175,9 +175,9 @@ impl ColumnArray {
         if let Some(h) = depth {
             require_positive("environment.depth", h)?;
         }
-        let cylinders: Vec<Cylinder> = columns
+        let cylinders: Vec<Circle> = columns
             .iter()
-            .map(|c| Cylinder {
+            .map(|c| Circle {
                 x: c.x,
                 y: c.y,
                 radius: 0.5 * c.diameter,
@@ -207,7 +207,7 @@ impl ColumnArray {
     }
 
     /// The columns as given.
-    pub fn columns(&self) -> &[Column] {
+    pub fn columns(&self) -> &[Cylinder] {
         &self.columns
     }
 
@@ -579,7 +579,7 @@ impl BidirectionalDrift {
 
 /// ceil(ln(MODE_TOLERANCE) / (2 ln q)), q = max (a_i + a_j)/R_ij, at most
 /// MAX_GEOMETRIC_MODES; 0 for a single column.
-fn geometric_modes(cylinders: &[Cylinder]) -> usize {
+fn geometric_modes(cylinders: &[Circle]) -> usize {
     let mut q: f64 = 0.0;
     for (j, cj) in cylinders.iter().enumerate() {
         for ci in &cylinders[..j] {

@@ -29,9 +29,9 @@ use nalgebra::{DMatrix, Dyn, LU};
 use rustfft::num_complex::Complex64;
 use std::f64::consts::PI;
 
-/// A vertical circular column: centre and radius, m.
+/// A column in plan view: the circle of its centre and radius, m.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(super) struct Cylinder {
+pub(super) struct Circle {
     pub x: f64,
     pub y: f64,
     pub radius: f64,
@@ -160,7 +160,7 @@ pub(super) struct Solution {
 impl FrequencySystem {
     /// Builds and factors the system; `None` if an entry is not finite (Hankel functions out
     /// of range) or the matrix is singular.
-    pub fn new(cylinders: &[Cylinder], k: f64, modes: usize) -> Option<Self> {
+    pub fn new(cylinders: &[Circle], k: f64, modes: usize) -> Option<Self> {
         let width = 2 * modes + 1;
         let n = cylinders.len() * width;
         let mut dh = Vec::with_capacity(n);
@@ -235,7 +235,7 @@ impl FrequencySystem {
 
     /// Regular-wave coefficients inc_(c, m) = I_c e^{i m (pi/2 - b)} of the incident wave of
     /// unit amplitude and heading `beta` at every column, written to `out`.
-    pub fn incident(&self, cylinders: &[Cylinder], beta: f64, out: &mut [Complex64]) {
+    pub fn incident(&self, cylinders: &[Circle], beta: f64, out: &mut [Complex64]) {
         let width = 2 * self.modes + 1;
         let (sin, cos) = beta.sin_cos();
         for (c, cyl) in cylinders.iter().enumerate() {
@@ -248,7 +248,7 @@ impl FrequencySystem {
     }
 
     /// d/dbeta of [`Self::incident`]: inc_(c, m) (i k (-x_c sin b + y_c cos b) - i m).
-    pub fn incident_derivative(&self, cylinders: &[Cylinder], beta: f64, out: &mut [Complex64]) {
+    pub fn incident_derivative(&self, cylinders: &[Circle], beta: f64, out: &mut [Complex64]) {
         let width = 2 * self.modes + 1;
         self.incident(cylinders, beta, out);
         let (sin, cos) = beta.sin_cos();

@@ -3,8 +3,8 @@ use crate::hydro::column_drift::{far_field_drift_coefficient, havelock_drift_coe
 use crate::special::bessel::{bessel_j_y, hankel_derivatives};
 use std::f64::consts::PI;
 
-fn column(x: f64, y: f64, radius: f64) -> Column {
-    Column {
+fn column(x: f64, y: f64, radius: f64) -> Cylinder {
+    Cylinder {
         x,
         y,
         diameter: 2.0 * radius,
@@ -13,7 +13,7 @@ fn column(x: f64, y: f64, radius: f64) -> Column {
 }
 
 /// The paper's platform: radius 10 m at (+-35, +-35) m.
-fn square(half_side: f64, radius: f64) -> Vec<Column> {
+fn square(half_side: f64, radius: f64) -> Vec<Cylinder> {
     [(1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0), (1.0, -1.0)]
         .iter()
         .map(|&(sx, sy)| column(sx * half_side, sy * half_side, radius))
@@ -21,7 +21,7 @@ fn square(half_side: f64, radius: f64) -> Vec<Column> {
 }
 
 /// Four unequal columns without symmetry.
-fn irregular() -> Vec<Column> {
+fn irregular() -> Vec<Cylinder> {
     vec![
         column(3.0, -2.0, 8.0),
         column(41.0, 12.0, 10.0),
@@ -180,7 +180,7 @@ fn hankel_and_derivative(n_max: usize, x: f64) -> (Vec<Complex64>, Vec<Complex64
 /// psi and grad psi at (x, y), summed directly from the scattering coefficients (no
 /// addition theorem).
 fn field(
-    cylinders: &[Cylinder],
+    cylinders: &[Circle],
     k: f64,
     modes: usize,
     beta: f64,
@@ -218,9 +218,9 @@ fn field(
 fn boundary_condition_holds_on_every_column() {
     for ka_max in [0.05f64, 0.8, 3.0] {
         let columns = irregular();
-        let cylinders: Vec<Cylinder> = columns
+        let cylinders: Vec<Circle> = columns
             .iter()
-            .map(|c| Cylinder {
+            .map(|c| Circle {
                 x: c.x,
                 y: c.y,
                 radius: 0.5 * c.diameter,
@@ -563,7 +563,7 @@ fn field_of(err: Error) -> String {
 #[test]
 fn input_errors_name_the_field() {
     let env = Environment::default();
-    let refuse = |columns: Vec<Column>, depth: Option<f64>| {
+    let refuse = |columns: Vec<Cylinder>, depth: Option<f64>| {
         field_of(ColumnArray::new(columns, depth).expect_err("must be refused"))
     };
     assert_eq!(refuse(vec![], None), "platform.columns");

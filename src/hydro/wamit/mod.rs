@@ -39,6 +39,7 @@ pub use mean_drift::{read_mean_drift, DriftBlock, MeanDrift};
 pub use qtf::{read_difference_qtf, DifferenceQtf, QtfBlock};
 
 use crate::error::{require_positive, Error, Result};
+use crate::model::HEADING_MATCH_TOLERANCE;
 use std::f64::consts::PI;
 use std::path::Path;
 
@@ -49,9 +50,6 @@ pub const DEFAULT_RHO: f64 = 1025.0;
 /// Default acceleration of gravity, m/s^2 (physics.md section 1).
 pub const DEFAULT_GRAVITY: f64 = 9.80665;
 
-/// Headings closer than this are the same heading, rad (0.01 deg: files print headings in
-/// degrees with five significant digits).
-pub const HEADING_TOLERANCE: f64 = 0.01 * PI / 180.0;
 /// Frequencies within this relative distance are the same frequency (files print periods
 /// with five or more significant digits, the same text for the same period).
 pub const FREQUENCY_TOLERANCE: f64 = 1e-6;
@@ -116,7 +114,7 @@ fn same_frequency(a: f64, b: f64) -> bool {
 }
 
 fn same_heading(a: f64, b: f64) -> bool {
-    (a - b).abs() <= HEADING_TOLERANCE
+    (a - b).abs() <= HEADING_MATCH_TOLERANCE
 }
 
 /// Sorted values with near-duplicates (by `same`) merged.

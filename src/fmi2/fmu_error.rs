@@ -1,0 +1,61 @@
+//! Why an FMI call failed, and the one place that picks its `fmi2Status`.
+
+use super::machine::{Call, MachineState};
+use super::types::fmi2Status;
+use crate::error::Error;
+use std::fmt;
+
+/// Why a call failed; [`FmuError::status`] is the one place that picks the `fmi2Status`.
+#[derive(Debug, Clone, PartialEq)]
+pub enum FmuError {
+    /// The call is not allowed in the instance's current state.
+    IllegalCall { call: Call, state: MachineState },
+    /// A bad argument: NULL pointer, unknown value reference, wrong type, non-finite value.
+    Argument(String),
+    /// The core refused (invalid configuration, unreadable file, ...).
+    Core(Error),
+    /// A function this FMU does not implement, and why.
+    Unsupported(&'static str),
+    /// A status query this FMU cannot answer (FMI 2.0.4 section 4.2.3: "If a status is
+    /// required which cannot be retrieved by the slave it returns fmi2Discard"); the
+    /// instance's state does not change.
+    StatusUnavailable(String),
+    /// The step cannot be completed but the instance stays usable (end of the records).
+    Discard(Error),
+    /// A panic caught at the boundary.
+    Panic(String),
+}
+
+impl FmuError {
+    /// The status this error returns to the host.
+    pub fn status(&self) -> fmi2Status {
+        match self {
+            FmuError::Discard(_) | FmuError::StatusUnavailable(_) => fmi2Status::fmi2Discard,
+            _ => fmi2Status::fmi2Error,
+        }
+    }
+}
+
+impl From<Error> for FmuError {
+    fn from(e: Error) -> Self {
+        FmuError::Core(e)
+    }
+}
+
+impl fmt::Display for FmuError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            FmuError::IllegalCall { call, state } => write!(
+                f,
+                "illegal call sequence: {} is not allowed in state {state:?}",
+                call.name()
+            ),
+            FmuError::Argument(m) => f.write_str(m),
+            FmuError::Core(e) => write!(f, "{e}"),
+            FmuError::Unsupported(why) => write!(f, "not supported: {why}"),
+            FmuError::StatusUnavailable(why) => write!(f, "status not available: {why}"),
+            FmuError::Discard(e) => write!(f, "step discarded: {e}"),
+            FmuError::Panic(m) => write!(f, "internal error (panic caught): {m}"),
+        }
+    }
+}

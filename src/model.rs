@@ -1,0 +1,135 @@
+//! The shared vocabulary of SlowDrift: the degrees of freedom, the water, the platform's
+//! cylinders, and the modelling choices. Every other module may import this one; it imports
+//! nothing of the crate.
+//!
+//! Conventions (physics.md section 1): SI units and radians; the body frame follows the slow
+//! yaw; DOF order surge, sway, yaw.
+
+use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
+
+/// A slow-drift degree of freedom, in the order of every force and state array of the crate.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Dof {
+    Surge,
+    Sway,
+    Yaw,
+}
+
+impl Dof {
+    /// Surge, sway, yaw: the order of the crate's force arrays.
+    pub const ALL: [Dof; 3] = [Dof::Surge, Dof::Sway, Dof::Yaw];
+}
+
+/// Headings of hydrodynamic data closer than this are the same heading, rad (0.01 deg: files
+/// print headings in degrees with five significant digits). A wave direction of the sea
+/// matches a data heading within it (the full QTF is never interpolated in heading).
+pub const HEADING_MATCH_TOLERANCE: f64 = 0.01 * PI / 180.0;
+
+/// Physical constants of the water (physics.md section 1).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Environment {
+    /// Acceleration of gravity, m/s^2.
+    pub gravity: f64,
+    /// Water density, kg/m^3.
+    pub water_density: f64,
+}
+
+impl Default for Environment {
+    fn default() -> Self {
+        Environment {
+            gravity: 9.80665,
+            water_density: 1025.0,
+        }
+    }
+}
+
+/// A vertical circular cylinder of the platform (a "column" in the paper and the
+/// configuration file): Morison drag strips (E&S 8, 9) and the column solvers. Body frame, m.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Cylinder {
+    /// Centre, body frame x (forward), m.
+    pub x: f64,
+    /// Centre, body frame y (port), m.
+    pub y: f64,
+    /// Diameter, m.
+    pub diameter: f64,
+    /// Draft: the keel is at z = -draft, m.
+    pub draft: f64,
+}
+
+/// Which form of Newman's approximation builds the slowly varying records (physics.md 4).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum NewmanForm {
+    /// The paper's form (E&S 4): T_ij = sign * sqrt(T_ii T_jj) where the signs agree, 0 otherwise.
+    Geometric,
+    /// T_ij = (T_ii + T_jj) / 2.
+    Arithmetic,
+}
+
+/// How the slowly varying wave force is computed from second-order theory (physics.md 4).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SecondOrder {
+    /// Newman's approximation from the drift table's diagonal, in the form `newman`.
+    Newman,
+    /// The full difference-frequency QTF of the drift source, factorised at FFT cost
+    /// (`forces::QtfFactorisation`), truncated at `qtf_tolerance`.
+    FullQtf,
+}
+
+/// Whether the components of different directions of a short-crested sea interact in the
+/// slowly varying force (physics.md section 4; `forces::directional`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Interaction {
+    /// The default: [`Interaction::Bidirectional`] when the drift source has bi-directional
+    /// drift, else [`Interaction::MeanDirection`]. Without cross terms the slow-drift
+    /// variance falls roughly like 1/N_beta as a spread sea is split into more directions
+    /// (README "Spread seas"), so some interaction is always on unless asked otherwise.
+    Auto,
+    /// Each direction's own double sum only (cross-direction terms dropped; the behaviour
+    /// before issue #5 part 2).
+    None,
+    /// Cross terms from T(omega; (beta_k + beta_l)/2) of the uni-directional drift table.
+    MeanDirection,
+    /// Cross terms from the bi-directional drift of the drift source.
+    Bidirectional,
+}
+
+/// Where the wave-drift damping coefficients b_ij(omega, beta) come from (physics.md 5).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DriftDamping {
+    /// No wave-drift damping.
+    Off,
+    /// The b_ij columns of the drift table.
+    Table,
+    /// Aranha's formula from the drift table and its derivatives.
+    Aranha,
+}
+
+/// Morison drag models of the paper (E&S 8, 9).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum DragModel {
+    /// No viscous drag.
+    Off,
+    /// Separate slow and fast parts: C_DS U|U| + C_DL u|u| (E&S 8).
+    Separate { slow: f64, fast: f64 },
+    /// One coefficient on the total relative velocity: C_D (U + u)|U + u| (E&S 9).
+    Combined { cd: f64 },
+}
+
+/// Records of the wave force and damping that follow the body's yaw (issue #5 part 3;
+/// physics.md section 4, last bullet): built at `headings` body yaw angles theta_j and
+/// interpolated linearly in the instantaneous yaw at every RK4 stage.
+#[derive(Debug, Clone, PartialEq)]
+pub struct YawFollowing {
+    /// Number of body yaw angles theta_j (at least 2).
+    pub headings: usize,
+    /// The covered yaw range [min, max], rad, with theta_j evenly spaced from min to max
+    /// (both included); a yaw outside it is an error. `None` = the full circle: theta_j
+    /// evenly spaced over [-pi, pi), 360 deg / headings apart, periodic (any yaw is covered).
+    pub range: Option<(f64, f64)>,
+}
+
+/// Default [`ModelOptions::qtf_tolerance`].
+pub const DEFAULT_QTF_TOLERANCE: f64 = 1e-6;
