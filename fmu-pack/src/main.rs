@@ -69,7 +69,7 @@ fn read(path: &Path) -> Result<Vec<u8>, String> {
 }
 
 fn pack(root: &Path, library: &Path, resources: &Path, fmu_path: &Path) -> Result<(), String> {
-    let readme = String::from_utf8_lossy(&read(&root.join("README.md"))?).into_owned();
+    let fmu_reference = String::from_utf8_lossy(&read(&root.join("docs/fmu.md"))?).into_owned();
     let entries = vec![
         zip::Entry {
             path: "modelDescription.xml".into(),
@@ -89,7 +89,7 @@ fn pack(root: &Path, library: &Path, resources: &Path, fmu_path: &Path) -> Resul
         },
         zip::Entry {
             path: "documentation/index.html".into(),
-            data: documentation(&readme).into_bytes(),
+            data: documentation(&fmu_reference).into_bytes(),
         },
     ];
     std::fs::create_dir_all(fmu_path.parent().expect("has a parent")).map_err(|e| e.to_string())?;
