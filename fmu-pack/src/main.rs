@@ -5,9 +5,8 @@
 //! archive through its C ABI, as a master would, runs the default platform in the default
 //! sea state for three hours and prints a short summary.
 
+mod archive;
 mod master;
-mod unzip;
-mod zip;
 
 use slowdrift::config::default_platform::{write_resources, RESOURCE_CONFIG, RESOURCE_DRIFT};
 use slowdrift::stats::summarize;
@@ -71,31 +70,38 @@ fn read(path: &Path) -> Result<Vec<u8>, String> {
 fn pack(root: &Path, library: &Path, resources: &Path, fmu_path: &Path) -> Result<(), String> {
     let fmu_reference = String::from_utf8_lossy(&read(&root.join("docs/fmu.md"))?).into_owned();
     let entries = vec![
-        zip::Entry {
+        archive::Entry {
             path: "modelDescription.xml".into(),
             data: read(&root.join("modelDescription/modelDescription.xml"))?,
         },
-        zip::Entry {
+        archive::Entry {
             path: format!("binaries/linux64/{MODEL_IDENTIFIER}.so"),
             data: read(library)?,
         },
-        zip::Entry {
+        archive::Entry {
             path: format!("resources/{RESOURCE_CONFIG}"),
             data: read(&resources.join(RESOURCE_CONFIG))?,
         },
-        zip::Entry {
+        archive::Entry {
             path: format!("resources/{RESOURCE_DRIFT}"),
             data: read(&resources.join(RESOURCE_DRIFT))?,
         },
-        zip::Entry {
+        archive::Entry {
             path: "documentation/index.html".into(),
             data: documentation(&fmu_reference).into_bytes(),
         },
     ];
     std::fs::create_dir_all(fmu_path.parent().expect("has a parent")).map_err(|e| e.to_string())?;
-    let mut file =
+    let file =
         std::fs::File::create(fmu_path).map_err(|e| format!("{}: {e}", fmu_path.display()))?;
-    zip::write_zip(&mut file, &entries).map_err(|e| format!("{}: {e}", fmu_path.display()))
+    archive::write(std::io::BufWriter::new(file), &entries)
+        // Flushing the buffer here, unlike dropping it, reports a failed write.
+        .and_then(|out| {
+            out.into_inner()
+                .map(drop)
+                .map_err(|e| e.into_error().into())
+        })
+        .map_err(|e| format!("{}: {e}", fmu_path.display()))
 }
 
 /// `file://` URI of an absolute path, percent-encoding every byte outside RFC 3986's
@@ -124,26 +130,15 @@ fn documentation(readme: &str) -> String {
     format!("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>SlowDrift</title></head>\n<body><pre>\n{escaped}</pre></body></html>\n")
 }
 
-/// Unpacks the archive's library, model description and resources, loads the library and
-/// runs three hours of the default platform.
+/// Unpacks the whole archive, as a master would (refusing entries that would land outside
+/// the folder), loads the library from it and runs three hours of the default platform.
 fn check_by_running(fmu_path: &Path, unpack_dir: &Path) -> Result<(), String> {
-    let archive = read(fmu_path)?;
-    let entry = |p: &str| {
-        unzip::read_entry(&archive, p).map_err(|e| format!("{}: {e}", fmu_path.display()))
-    };
+    archive::unpack(fmu_path, unpack_dir)?;
     let resources = unpack_dir.join("resources");
-    std::fs::create_dir_all(&resources).map_err(|e| e.to_string())?;
-    let library = unpack_dir.join(format!("{MODEL_IDENTIFIER}.so"));
-    std::fs::write(
-        &library,
-        entry(&format!("binaries/linux64/{MODEL_IDENTIFIER}.so"))?,
-    )
-    .map_err(|e| e.to_string())?;
-    for name in [RESOURCE_CONFIG, RESOURCE_DRIFT] {
-        std::fs::write(resources.join(name), entry(&format!("resources/{name}"))?)
-            .map_err(|e| e.to_string())?;
-    }
-    let xml = String::from_utf8(entry("modelDescription.xml")?).map_err(|e| e.to_string())?;
+    let library = unpack_dir.join(format!("binaries/linux64/{MODEL_IDENTIFIER}.so"));
+    let xml_path = unpack_dir.join("modelDescription.xml");
+    let xml =
+        String::from_utf8(read(&xml_path)?).map_err(|e| format!("{}: {e}", xml_path.display()))?;
     let description = master::ModelDescription::parse(xml)?;
     let fmu = master::Fmu::load(&library)?;
     let uri = file_uri(&resources.canonicalize().map_err(|e| e.to_string())?)?;
