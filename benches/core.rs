@@ -43,22 +43,24 @@ mod timing;
 use criterion::Criterion;
 use rustfft::num_complex::Complex64;
 use rustfft::FftPlanner;
-use slowdrift::config::{Current, InitialCondition, ModelOptions, Platform, Run};
 use slowdrift::forces::{
     plan_inverse_fft, transfers_on_grid, DirectionTransfer, ForceRecords, InverseFft,
-    QtfFactorisation, RecordOptions, Synthesizer, MIN_QTF_TOLERANCE,
+    QtfFactorisation, RecordOptions, Synthesizer,
 };
 use slowdrift::hydro::aranha::aranha_damping;
 use slowdrift::hydro::column_drift::isolated_columns_table;
 use slowdrift::hydro::columns::ColumnArray;
-use slowdrift::hydro::wamit::{read_difference_qtf, WamitOptions};
+use slowdrift::hydro::io::wamit::{read_difference_qtf, WamitOptions};
+use slowdrift::hydro::qtf::MIN_QTF_TOLERANCE;
 use slowdrift::hydro::{DriftRow, DriftTable};
 use slowdrift::model::{
     DragModel, DriftDamping, Environment, Interaction, NewmanForm, SecondOrder,
     DEFAULT_QTF_TOLERANCE,
 };
+use slowdrift::problem::Hydro;
+use slowdrift::scenario::{Current, InitialCondition, ModelOptions, Platform, Run};
 use slowdrift::sea_state::{FrequencyGrid, SeaState, Spectrum, Spreading, WaveComponents};
-use slowdrift::{Config, Simulation};
+use slowdrift::{Problem, Simulation};
 use std::hint::black_box;
 use std::time::Duration;
 use timing::median_time;
@@ -100,10 +102,10 @@ fn platform() -> Platform {
 }
 
 /// JONSWAP Hs 6 m, Tp 10 s, long-crested from 30 deg; Newman geometric; Aranha damping.
-fn config(duration: f64, time_step: f64, drag: DragModel) -> Config {
+fn config(duration: f64, time_step: f64, drag: DragModel) -> Problem {
     let environment = Environment::default();
     let drift = drift_table(&environment);
-    Config {
+    Problem {
         environment,
         sea: SeaState {
             spectrum: Spectrum::Jonswap {
@@ -124,9 +126,7 @@ fn config(duration: f64, time_step: f64, drag: DragModel) -> Config {
             start_time: 0.0,
         },
         platform: platform(),
-        drift,
-        qtf: None,
-        bidirectional: None,
+        hydro: Hydro::drift(drift),
         model: ModelOptions {
             second_order: SecondOrder::Newman,
             qtf_tolerance: DEFAULT_QTF_TOLERANCE,
@@ -138,6 +138,7 @@ fn config(duration: f64, time_step: f64, drag: DragModel) -> Config {
             yaw_following: None,
         },
         initial: InitialCondition::default(),
+        origins: Default::default(),
     }
 }
 
@@ -152,7 +153,7 @@ struct RecordInputs {
 }
 
 impl RecordInputs {
-    fn new(config: &Config) -> Self {
+    fn new(config: &Problem) -> Self {
         let grid = FrequencyGrid::new(
             config.run.start_time,
             config.run.duration,
@@ -162,7 +163,7 @@ impl RecordInputs {
         .unwrap();
         let components = WaveComponents::generate(&config.sea, grid);
         let damping_table = aranha_damping(
-            &config.drift,
+            &config.hydro.drift,
             config.environment.gravity,
             &config.platform.columns,
         )

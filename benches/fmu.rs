@@ -6,7 +6,7 @@
 //! three-hour run at a 1 s step, in the same process and the same run:
 //!
 //! - `fmu/core_advance_1s`: `Simulation::advance(1.0, f)` on a `Simulation` of the default
-//!   `Config`;
+//!   `Problem`;
 //! - `fmu/fmi2DoStep_1s`: `fmi2DoStep(c, t, 1.0, fmi2True)` through the exported functions
 //!   (`slowdrift::fmi2::exports`), called in-process on an instance with its start values,
 //!   `fmi2SetupExperiment(0, 10800)` and the same held input f. Same configuration, so the
@@ -26,10 +26,10 @@
 //! per-step overhead.
 
 use criterion::Criterion;
-use slowdrift::config::default_platform::default_config;
 use slowdrift::fmi2::exports::*;
 use slowdrift::fmi2::types::*;
 use slowdrift::model_description::{vr, GUID};
+use slowdrift::problem::default_problem;
 use slowdrift::{Outputs, Simulation};
 use std::ffi::CString;
 use std::hint::black_box;
@@ -60,7 +60,7 @@ struct Core {
 
 impl Core {
     fn new() -> Core {
-        let mut config = default_config().expect("default config");
+        let mut config = default_problem().expect("default config");
         config.run.duration = THREE_HOURS;
         config.run.start_time = 0.0;
         let sim = Simulation::new(config).expect("simulation");

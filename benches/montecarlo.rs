@@ -18,9 +18,10 @@
 //! ([`slowdrift::allocator::retain_freed_memory`]).
 
 use criterion::Criterion;
-use slowdrift::config::default_platform::{default_config, DEFAULT_DRIFT_LABEL};
-use slowdrift::hydro::database::HydroDatabase;
+use slowdrift::hydro::io::database::HydroDatabase;
 use slowdrift::montecarlo::{run_jobs, run_seed, Case, Job};
+use slowdrift::problem::default_problem;
+use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
 use std::hint::black_box;
 use std::path::Path;
 use std::process::Command;
@@ -32,7 +33,7 @@ const WORKLOAD_RUNS: u64 = 1000;
 const NUMPY_RUNS: usize = 2;
 
 fn fig10_case() -> Case {
-    let mut config = default_config().expect("the default platform");
+    let mut config = default_problem().expect("the default platform");
     config.run.duration = DURATION;
     let transient = config.default_transient();
     Case {
@@ -68,7 +69,7 @@ fn numpy_seconds(case: &Case) -> Result<(f64, String), String> {
         "platform",
         DEFAULT_DRIFT_LABEL,
         &case.config.environment,
-        &case.config.drift,
+        &case.config.hydro.drift,
     )
     .save(&database)
     .map_err(|e| e.to_string())?;

@@ -15,17 +15,17 @@
 mod timing;
 
 use criterion::Criterion;
-use slowdrift::config::default_platform::default_config;
 use slowdrift::model::Interaction;
+use slowdrift::problem::default_problem;
 use slowdrift::sea_state::Spreading;
-use slowdrift::{Config, Simulation};
+use slowdrift::{Problem, Simulation};
 use std::hint::black_box;
 use std::time::Duration;
 use timing::median_time;
 
 const N_BETA: usize = 15;
 
-fn spread(base: &Config, interaction: Interaction) -> Config {
+fn spread(base: &Problem, interaction: Interaction) -> Problem {
     let mut config = base.clone();
     config.sea.spreading = Spreading::CosN { n: 2.0 };
     config.sea.n_directions = N_BETA;
@@ -34,7 +34,7 @@ fn spread(base: &Config, interaction: Interaction) -> Config {
 }
 
 fn main() {
-    let base = default_config().expect("the default platform");
+    let base = default_problem().expect("the default platform");
     let cases = [
         ("long_crested", base.clone()),
         ("spread15_none", spread(&base, Interaction::None)),

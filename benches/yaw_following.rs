@@ -14,16 +14,16 @@
 mod timing;
 
 use criterion::Criterion;
-use slowdrift::config::default_platform::default_config;
 use slowdrift::model::{DragModel, YawFollowing};
-use slowdrift::{Config, Simulation};
+use slowdrift::problem::default_problem;
+use slowdrift::{Problem, Simulation};
 use std::hint::black_box;
 use std::time::Duration;
 use timing::median_time;
 
 const THREE_HOURS: f64 = 3.0 * 3600.0;
 
-fn config(base: &Config, yaw: bool, drag: bool) -> Config {
+fn config(base: &Problem, yaw: bool, drag: bool) -> Problem {
     let mut c = base.clone();
     c.run.duration = THREE_HOURS;
     c.run.time_step = 1.0;
@@ -40,7 +40,7 @@ fn config(base: &Config, yaw: bool, drag: bool) -> Config {
 
 fn main() {
     let mut c = Criterion::default().configure_from_args();
-    let base = default_config().unwrap();
+    let base = default_problem().unwrap();
     let mut report = Vec::new();
 
     let mut group = c.benchmark_group("yaw");

@@ -8,12 +8,16 @@ use std::fmt;
 pub enum Error {
     /// A configuration value is out of range, not finite, or inconsistent.
     InvalidValue {
-        /// Dotted path of the field, e.g. `sea.spectrum.hs`.
+        /// The setting: its configuration-file key path (`sea.hs`), or, once located by the
+        /// scenario's origins, its name where the user wrote it (`[sea] hs`, `FMU parameter
+        /// Hs`, `row 3, column 'hs'`).
         field: String,
-        /// The offending value, as text.
+        /// The offending value, as text, in the units of the name.
         value: String,
         /// Why it is refused.
         reason: String,
+        /// The file and line where the value was written, when known.
+        at: Option<Location>,
     },
     /// A file could not be read or written.
     Io { path: String, message: String },
@@ -49,6 +53,7 @@ impl Error {
             field: field.into(),
             value: value.to_string(),
             reason: reason.into(),
+            at: None,
         }
     }
 }
@@ -60,7 +65,16 @@ impl fmt::Display for Error {
                 field,
                 value,
                 reason,
+                at,
             } => {
+                match at {
+                    Some(Location {
+                        path,
+                        line: Some(line),
+                    }) => write!(f, "{path}:{line}: ")?,
+                    Some(Location { path, line: None }) => write!(f, "{path}: ")?,
+                    None => {}
+                }
                 write!(f, "invalid {field} = {value}: {reason}")
             }
             Error::Io { path, message } => write!(f, "{path}: {message}"),
@@ -99,6 +113,24 @@ impl fmt::Display for Error {
 }
 
 impl std::error::Error for Error {}
+
+/// A place in a file: the file's name and, when known, the 1-based line.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Location {
+    pub path: String,
+    pub line: Option<usize>,
+}
+
+impl Location {
+    /// A parse error at this place.
+    pub fn error(&self, message: impl Into<String>) -> Error {
+        Error::Parse {
+            path: self.path.clone(),
+            line: self.line,
+            message: message.into(),
+        }
+    }
+}
 
 /// Result with the core's [`Error`].
 pub type Result<T> = std::result::Result<T, Error>;

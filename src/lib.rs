@@ -19,7 +19,6 @@
 #![deny(unsafe_code)]
 
 pub mod allocator;
-pub mod config;
 pub mod dynamics;
 pub mod error;
 pub mod fmi2;
@@ -28,14 +27,17 @@ pub mod hydro;
 pub mod model;
 pub mod model_description;
 pub mod montecarlo;
+pub mod problem;
 pub mod record_plan;
+pub mod scenario;
 pub mod sea_state;
 pub mod simulation;
 pub mod special;
 pub mod stats;
 pub mod studies;
 
-pub use config::Config;
 pub use error::{Error, Result};
+pub use problem::Problem;
 pub use record_plan::{QtfRank, RecordPlan};
+pub use scenario::Scenario;
 pub use simulation::{Outputs, Simulation, Snapshot};

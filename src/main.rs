@@ -17,8 +17,8 @@
 mod cli;
 mod plot;
 
-use slowdrift::config::default_platform::{default_config, DEFAULT_DRIFT_LABEL};
-use slowdrift::config::file;
+use slowdrift::problem::{self, default_problem};
+use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
 use slowdrift::stats::{summarize, Summary};
 use slowdrift::{Outputs, Simulation};
 use std::io::{BufWriter, Write};
@@ -103,10 +103,10 @@ fn parse_arguments(args: &[String]) -> Result<Arguments, String> {
 
 fn simulate(args: Arguments) -> Result<(), String> {
     let config = match &args.config {
-        Some(path) => file::load(path).map_err(|e| e.to_string())?,
+        Some(path) => problem::load(path).map_err(|e| e.to_string())?,
         None => {
             println!("embedded default platform; drift: {DEFAULT_DRIFT_LABEL}");
-            default_config().map_err(|e| e.to_string())?
+            default_problem().map_err(|e| e.to_string())?
         }
     };
     let transient = args.transient.unwrap_or_else(|| config.default_transient());

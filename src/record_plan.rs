@@ -8,7 +8,6 @@
 //! records of a seed then cost only what depends on the seed's wave amplitudes (the
 //! transforms, the kinematics, the yaw-following records).
 
-use crate::config::Config;
 use crate::error::{Error, Result};
 use crate::forces::{
     add_cross_terms, direction_pairs, plan_inverse_fft, transfers_on_grid, DirectionTransfer,
@@ -21,13 +20,14 @@ use crate::hydro::DriftTable;
 use crate::model::Dof;
 use crate::model::HEADING_MATCH_TOLERANCE;
 use crate::model::{DriftDamping, SecondOrder};
+use crate::problem::Problem;
 use crate::sea_state::{Direction, FrequencyGrid, WaveComponents};
 
 /// The seed-independent part of a configuration's records. It serves every configuration
 /// equal to the one it was made from except for `sea.seed`.
 pub struct RecordPlan {
     /// The configuration it was made from, with seed 0.
-    seedless: Config,
+    seedless: Problem,
     /// Records sampled at h/2, so that every RK4 stage of a regular step is a sample.
     grid: FrequencyGrid,
     fft: InverseFft,
@@ -64,8 +64,8 @@ type DirectionQtfs = Vec<[GridQtf; 3]>;
 impl RecordPlan {
     /// Validates `config` and computes everything of its records that the seed does not
     /// change.
-    pub fn new(config: &Config) -> Result<Self> {
-        config.validate()?;
+    pub fn new(config: &Problem) -> Result<Self> {
+        config.check()?;
         let sea = &config.sea;
         let grid = FrequencyGrid::new(
             config.run.start_time,
@@ -76,9 +76,9 @@ impl RecordPlan {
         let directions = sea.directions();
         let damping_table = match config.model.drift_damping {
             DriftDamping::Off => None,
-            DriftDamping::Table => Some(config.drift.clone()),
+            DriftDamping::Table => Some(config.hydro.drift.clone()),
             DriftDamping::Aranha => Some(aranha_damping(
-                &config.drift,
+                &config.hydro.drift,
                 config.environment.gravity,
                 &config.platform.columns,
             )?),
@@ -102,7 +102,7 @@ impl RecordPlan {
         // kinematics).
         let transfers = match config.model.yaw_following {
             None => transfers_on_grid(
-                damping_table.as_ref().unwrap_or(&config.drift),
+                damping_table.as_ref().unwrap_or(&config.hydro.drift),
                 &grid,
                 &directions,
                 damping_table.is_some(),
@@ -132,7 +132,7 @@ impl RecordPlan {
 
     /// Whether this plan serves `config`: equal to the plan's configuration but for the
     /// seed.
-    pub fn serves(&self, config: &Config) -> bool {
+    pub fn serves(&self, config: &Problem) -> bool {
         let mut other = self.seedless.clone();
         other.sea.seed = config.sea.seed;
         other == *config
@@ -140,14 +140,14 @@ impl RecordPlan {
 
     /// The records of `config` (which the plan serves), with the ranks of the full QTF's
     /// blocks.
-    pub(crate) fn build_records(&self, config: &Config) -> Result<(ForceRecords, Vec<QtfRank>)> {
+    pub(crate) fn build_records(&self, config: &Problem) -> Result<(ForceRecords, Vec<QtfRank>)> {
         let components = WaveComponents::generate(&config.sea, self.grid.clone());
         let yaw_following = match &config.model.yaw_following {
             None => None,
             Some(options) => Some(YawFollowingRecords::build(
                 &components,
                 YawGrid::new(options),
-                self.damping_table.as_ref().unwrap_or(&config.drift),
+                self.damping_table.as_ref().unwrap_or(&config.hydro.drift),
                 self.damping_table.is_some(),
                 config.model.newman,
                 &self.fft,
@@ -178,14 +178,15 @@ impl RecordPlan {
 }
 
 fn full_qtf_on_grid(
-    config: &Config,
+    config: &Problem,
     grid: &FrequencyGrid,
     directions: &[Direction],
 ) -> Result<(DirectionQtfs, Vec<QtfRank>)> {
     let qtf = config
+        .hydro
         .qtf
         .as_ref()
-        .expect("Config::validate requires the QTF for full-qtf");
+        .expect("Problem::validate requires the QTF for full-qtf");
     let mut ranks = Vec::new();
     let mut on_grid = Vec::with_capacity(directions.len());
     for (k, direction) in directions.iter().enumerate() {
@@ -193,9 +194,9 @@ fn full_qtf_on_grid(
         for dof in Dof::ALL {
             let block = qtf
                 .block(dof, direction.heading, HEADING_MATCH_TOLERANCE)
-                .expect("Config::validate requires every direction's QTF");
+                .expect("Problem::validate requires every direction's QTF");
             let factors =
-                QtfFactorisation::new(&qtf.omegas, &block.values(), config.model.qtf_tolerance)?;
+                QtfFactorisation::new(&qtf.omegas, &block.values, config.model.qtf_tolerance)?;
             ranks.push(QtfRank {
                 direction: k,
                 heading: direction.heading,

@@ -5,10 +5,10 @@
 //! advances one RK4 step h, `advance` any interval in equal substeps no longer than h.
 //! Time is always origin + count * step from an integer count, never an accumulated sum.
 
-use crate::config::Config;
 use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};
 use crate::error::{Error, Result};
 use crate::forces::ForceRecords;
+use crate::problem::Problem;
 use crate::record_plan::{QtfRank, RecordPlan};
 
 /// Relative tolerance for deciding that an interval is a whole number of steps.
@@ -106,7 +106,7 @@ pub struct Outputs {
 /// One slow-drift simulation.
 #[derive(Debug, Clone)]
 pub struct Simulation {
-    config: Config,
+    config: Problem,
     model: SlowDriftModel,
     records: ForceRecords,
     qtf_ranks: Vec<QtfRank>,
@@ -115,7 +115,7 @@ pub struct Simulation {
 
 impl Simulation {
     /// Validates the configuration and precomputes the records.
-    pub fn new(config: Config) -> Result<Self> {
+    pub fn new(config: Problem) -> Result<Self> {
         let plan = RecordPlan::new(&config)?;
         Self::with_plan(config, &plan)
     }
@@ -123,7 +123,7 @@ impl Simulation {
     /// A simulation of `config` whose seed-independent record work comes from `plan`, made
     /// from a configuration equal to `config` but for `sea.seed` (else an error naming
     /// the plan). The same records, bit for bit, as [`Simulation::new`].
-    pub fn with_plan(config: Config, plan: &RecordPlan) -> Result<Self> {
+    pub fn with_plan(config: Problem, plan: &RecordPlan) -> Result<Self> {
         if !plan.serves(&config) {
             return Err(Error::invalid(
                 "plan",
@@ -144,7 +144,7 @@ impl Simulation {
     }
 
     /// The configuration this simulation was built from.
-    pub fn config(&self) -> &Config {
+    pub fn config(&self) -> &Problem {
         &self.config
     }
 
@@ -336,7 +336,7 @@ fn check_external(external: &[f64; 3]) -> Result<()> {
     Ok(())
 }
 
-fn initial_state(config: &Config) -> Snapshot {
+fn initial_state(config: &Problem) -> Snapshot {
     Snapshot {
         origin: config.run.start_time,
         count: 0,

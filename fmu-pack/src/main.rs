@@ -8,7 +8,7 @@
 mod archive;
 mod master;
 
-use slowdrift::config::default_platform::{write_resources, RESOURCE_CONFIG, RESOURCE_DRIFT};
+use slowdrift::fmi2::resources::{write_resources, RESOURCE_CONFIG, RESOURCE_DRIFT};
 use slowdrift::stats::summarize;
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
@@ -121,7 +121,7 @@ fn file_uri(path: &Path) -> Result<String, String> {
     Ok(uri)
 }
 
-/// The README as a preformatted HTML page.
+/// The FMU reference (docs/fmu.md) as a preformatted HTML page.
 fn documentation(readme: &str) -> String {
     let escaped = readme
         .replace('&', "&amp;")

@@ -6,10 +6,10 @@
 //! (and wave-drift damping) of a configuration (default: the embedded default platform,
 //! whose `[drift]` is the column-array solver) as a native hydro database.
 
-use slowdrift::config::default_platform::{default_config, DEFAULT_DRIFT_LABEL};
-use slowdrift::config::file;
-use slowdrift::hydro::database::HydroDatabase;
-use slowdrift::hydro::wamit::WamitOptions;
+use slowdrift::hydro::io::database::HydroDatabase;
+use slowdrift::hydro::io::wamit::WamitOptions;
+use slowdrift::problem::{self, default_problem};
+use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
 use std::path::PathBuf;
 
 pub const USAGE: &str =
@@ -41,15 +41,15 @@ fn columns(args: &[String]) -> Result<(), String> {
     let out = out.ok_or_else(|| format!("--out is required\nusage: {COLUMNS_USAGE}"))?;
     let (config, source) = match &config_path {
         Some(path) => (
-            file::load(path).map_err(|e| e.to_string())?,
+            problem::load(path).map_err(|e| e.to_string())?,
             format!("[drift] of {}", path.display()),
         ),
         None => (
-            default_config().map_err(|e| e.to_string())?,
+            default_problem().map_err(|e| e.to_string())?,
             DEFAULT_DRIFT_LABEL.to_string(),
         ),
     };
-    let table = &config.drift;
+    let table = &config.hydro.drift;
     let database = HydroDatabase::from_drift_table("platform", &source, &config.environment, table);
     database.save(&out).map_err(|e| e.to_string())?;
     println!(

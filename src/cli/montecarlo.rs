@@ -8,12 +8,12 @@
 //! requested seeds in seed order, so it does not depend on the threads, the finishing
 //! order or the interruptions.
 
-use slowdrift::config::default_platform::{default_config, DEFAULT_DRIFT_LABEL};
-use slowdrift::config::file;
 use slowdrift::montecarlo::cases::{read_case_table, CaseRow};
 use slowdrift::montecarlo::runs_file::{self, RunRow};
 use slowdrift::montecarlo::{plan, run_jobs, seed_statistics, Case, Job, DOFS, STATISTICS};
-use slowdrift::Config;
+use slowdrift::problem::{self, default_problem};
+use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
+use slowdrift::Problem;
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
@@ -133,14 +133,14 @@ pub fn run(args: &[String]) -> Result<(), String> {
 
 /// The base configuration (the file, else the embedded default with `--duration` applied)
 /// and the cases on top of it (all, or the one `--case` names).
-fn load_cases(options: &Options, announce: bool) -> Result<(Config, Vec<Case>), String> {
+fn load_cases(options: &Options, announce: bool) -> Result<(Problem, Vec<Case>), String> {
     let mut base = match &options.config {
-        Some(path) => file::load(path).map_err(|e| e.to_string())?,
+        Some(path) => problem::load(path).map_err(|e| e.to_string())?,
         None => {
             if announce {
                 println!("embedded default platform; drift: {DEFAULT_DRIFT_LABEL}");
             }
-            default_config().map_err(|e| e.to_string())?
+            default_problem().map_err(|e| e.to_string())?
         }
     };
     let file_base = base.clone();

@@ -11,10 +11,10 @@
 //! frame. Second-order terms in the slow velocities are neglected, as in the paper. Since
 //! S is orthogonal, q'' = S (M + A)^{-1} S^T (right-hand side).
 
-use crate::config::Config;
 use crate::error::{Error, Result};
 use crate::forces::{drag_force, ForceRecords, SamplePoint, YawPoint};
 use crate::model::DragModel;
+use crate::problem::Problem;
 use nalgebra::{Matrix3, Vector3};
 
 /// Forces acting on the body at one instant, inertial frame (N, N, N m).
@@ -78,7 +78,7 @@ impl Rotation {
 
 impl SlowDriftModel {
     /// Builds the model; refuses a singular mass matrix M + A.
-    pub fn new(config: &Config) -> Result<Self> {
+    pub fn new(config: &Problem) -> Result<Self> {
         let p = &config.platform;
         let rigid = Matrix3::from_diagonal(&Vector3::new(p.mass, p.mass, p.yaw_inertia));
         let total = rigid + matrix(&p.added_mass);

@@ -13,9 +13,9 @@ use super::machine::{Call, MachineState};
 use super::parameters::{Experiment, Parameters};
 use super::state::{fingerprint, mismatch, FmuState};
 use super::types::fmi2Status;
-use crate::config::Config;
 use crate::error::Error;
 use crate::model_description::{find, log_category, vr, Causality, VariableType, VARIABLES};
+use crate::problem::{resolve, Problem};
 use crate::simulation::{Outputs, Simulation};
 use std::ffi::CString;
 use std::path::PathBuf;
@@ -168,17 +168,19 @@ impl Instance {
         Ok(())
     }
 
-    /// The configuration of the current parameters and experiment.
-    fn config(&self) -> Result<Config, FmuError> {
-        Ok(self
+    /// The problem of the current parameters and experiment: the base scenario with the
+    /// parameters applied, resolved (its database read or its solver run).
+    fn problem(&self) -> Result<Problem, FmuError> {
+        let scenario = self
             .parameters
-            .to_config(self.resources.as_deref(), &self.experiment)?)
+            .to_scenario(self.resources.as_deref(), &self.experiment)?;
+        Ok(resolve(&scenario)?)
     }
 
     /// The simulation, built now if needed.
     fn simulation(&mut self) -> Result<&mut Simulation, FmuError> {
         if self.built.is_none() {
-            let config = self.config()?;
+            let config = self.problem()?;
             let fingerprint = fingerprint(&config);
             let simulation = Simulation::new(config)?;
             self.built = Some(Built {
@@ -198,7 +200,7 @@ impl Instance {
     fn current_fingerprint(&self) -> Result<u64, FmuError> {
         match &self.built {
             Some(b) => Ok(b.fingerprint),
-            None => Ok(fingerprint(&self.config()?)),
+            None => Ok(fingerprint(&self.problem()?)),
         }
     }
 

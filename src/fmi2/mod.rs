@@ -7,7 +7,7 @@
 //! - [`logger`]: the host's logger and the debug-logging categories;
 //! - [`fmu_error`]: why a call failed, and its `fmi2Status`;
 //! - [`instance`]: one instance's parameters, inputs, outputs and simulation (safe Rust);
-//! - [`parameters`]: FMU parameters and experiment -> [`crate::Config`];
+//! - [`parameters`]: FMU parameters and experiment -> [`crate::Problem`];
 //! - [`state`]: saved states and their versioned byte format.
 //!
 //! The cdylib exports the `fmi2*` symbols only (`exports.map`, a linker version script
@@ -19,5 +19,6 @@ pub mod instance;
 pub mod logger;
 pub mod machine;
 pub mod parameters;
+pub mod resources;
 pub mod state;
 pub mod types;

@@ -1,11 +1,11 @@
-//! The FMU's parameters and experiment, and how they become a [`Config`].
+//! The FMU's parameters and experiment, and how they become a [`Problem`].
 //!
 //! The base configuration comes, in this order of preference, from:
 //! 1. the String parameter `hydroDatabase` when it is not empty: a path or `file:` URI of a
-//!    TOML configuration file ([`crate::config::file`]). The native hydrodynamic database of
+//!    TOML configuration file ([`crate::scenario::file`]). The native hydrodynamic database of
 //!    issue #3 will replace this file format; the parameter keeps its name;
 //! 2. `platform.toml` in the FMU's `resources` folder (`fmuResourceLocation`), when present;
-//! 3. the embedded default platform ([`default_platform::default_config`]).
+//! 3. the embedded default platform ([`default::default_scenario`]).
 //!
 //! The FMU parameters then always override the base: the sea (JONSWAP `Hs`, `Tp`, `gamma`,
 //! `waveDirection`, cos^N spreading, `nDirections`, `seed`), the current, the drag model and
@@ -15,10 +15,10 @@
 //! Newman form, strips, initial condition) comes from the base. The run's start time and
 //! duration come from `fmi2SetupExperiment`.
 
-use crate::config::{default_platform, file, Config};
 use crate::error::{Error, Result};
 use crate::model::{DragModel, DriftDamping, Interaction, YawFollowing};
 use crate::model_description::{start, vr};
+use crate::scenario::{default, file, Scenario};
 use crate::sea_state::{Spectrum, Spreading};
 use std::path::{Path, PathBuf};
 
@@ -28,7 +28,7 @@ use std::path::{Path, PathBuf};
 /// the usual three-hour storm and keeps an instance near 8 MB.
 pub const MAX_DURATION_WITHOUT_STOP_TIME: f64 = 6.0 * 3600.0;
 
-use crate::config::default_platform::RESOURCE_CONFIG;
+use super::resources::RESOURCE_CONFIG;
 
 /// The FMU's parameters, one field per parameter of modelDescription.xml, initialised from
 /// its start values.
@@ -141,16 +141,18 @@ impl Parameters {
 
     /// The configuration these parameters describe for `experiment`, validated. The error
     /// names the FMU parameter, or the core's field, and the value.
-    pub fn to_config(&self, resources: Option<&Path>, experiment: &Experiment) -> Result<Config> {
-        let c = self.apply(self.base_config(resources)?, experiment)?;
-        c.validate()?;
-        Ok(c)
+    pub fn to_scenario(
+        &self,
+        resources: Option<&Path>,
+        experiment: &Experiment,
+    ) -> Result<Scenario> {
+        self.apply(self.base_scenario(resources)?, experiment)
     }
 
     /// `base` with these parameters and `experiment` applied, not yet validated (see the
     /// module documentation for what the parameters override). Errors only for an
     /// Integer or Enumeration parameter outside its range.
-    pub fn apply(&self, mut c: Config, experiment: &Experiment) -> Result<Config> {
+    pub fn apply<H>(&self, mut c: Scenario<H>, experiment: &Experiment) -> Result<Scenario<H>> {
         c.sea.spectrum = Spectrum::Jonswap {
             hs: self.hs,
             tp: self.tp,
@@ -252,9 +254,9 @@ impl Parameters {
     /// `Err` says why `config` cannot be expressed through the FMU's parameters: a
     /// spectrum other than JONSWAP, cos-2s spreading, or any difference from `base`
     /// outside the overridden fields (checked by applying the result to `base`).
-    pub fn for_config(
-        config: &Config,
-        base: &Config,
+    pub fn for_config<H: Clone + PartialEq>(
+        config: &Scenario<H>,
+        base: &Scenario<H>,
         hydro_database: &str,
     ) -> std::result::Result<(Parameters, Experiment), String> {
         let Spectrum::Jonswap { hs, tp, gamma } = config.sea.spectrum else {
@@ -372,7 +374,7 @@ impl Parameters {
         Ok((parameters, experiment))
     }
 
-    fn base_config(&self, resources: Option<&Path>) -> Result<Config> {
+    fn base_scenario(&self, resources: Option<&Path>) -> Result<Scenario> {
         if !self.hydro_database.is_empty() {
             let path = if self.hydro_database.starts_with("file:") {
                 file_uri_to_path(&self.hydro_database).ok_or_else(|| {
@@ -393,7 +395,7 @@ impl Parameters {
         {
             return file::load(&path);
         }
-        default_platform::default_config()
+        default::default_scenario()
     }
 }
 
@@ -492,6 +494,27 @@ fn percent_decode(s: &str) -> Option<String> {
 mod tests {
     use super::*;
     use crate::model_description::{Causality, VariableType, VARIABLES};
+    use crate::problem::{resolve, Hydro, Problem};
+    use std::sync::OnceLock;
+
+    /// The embedded default's hydrodynamics, resolved once (the column solver takes a second).
+    fn default_hydro() -> &'static Hydro {
+        static HYDRO: OnceLock<Hydro> = OnceLock::new();
+        HYDRO.get_or_init(|| {
+            resolve(&default::default_scenario().unwrap())
+                .unwrap()
+                .hydro
+        })
+    }
+
+    /// The checked problem of `p` on the embedded default (the resolved hydrodynamics shared).
+    fn problem(p: &Parameters, experiment: &Experiment) -> Result<Problem> {
+        let problem = p
+            .to_scenario(None, experiment)?
+            .with_hydro(default_hydro().clone());
+        problem.check()?;
+        Ok(problem)
+    }
 
     #[test]
     fn every_uri_form_masters_send() {
@@ -552,8 +575,10 @@ mod tests {
     #[test]
     fn start_values_give_the_default_configuration() {
         let experiment = Experiment::new(0.0, Some(10800.0)).unwrap();
-        let config = Parameters::default().to_config(None, &experiment).unwrap();
-        assert_eq!(config, default_platform::default_config().unwrap());
+        let scenario = Parameters::default()
+            .to_scenario(None, &experiment)
+            .unwrap();
+        assert_eq!(scenario, default::default_scenario().unwrap());
     }
 
     #[test]
@@ -567,7 +592,7 @@ mod tests {
             gamma: 2.5,
             ..Parameters::default()
         };
-        let c = p.to_config(None, &experiment).unwrap();
+        let c = problem(&p, &experiment).unwrap();
         assert_eq!(c.sea.spreading, Spreading::CosN { n: 4.0 });
         assert_eq!(c.sea.n_directions, 7);
         assert_eq!(
@@ -656,7 +681,7 @@ mod tests {
             ),
         ];
         for (p, field) in bad {
-            let message = p.to_config(None, &experiment).unwrap_err().to_string();
+            let message = problem(&p, &experiment).unwrap_err().to_string();
             assert!(message.contains(field), "{message} should name {field}");
         }
     }
@@ -666,7 +691,7 @@ mod tests {
     #[test]
     fn interaction_and_yaw_following() {
         let experiment = Experiment::new(0.0, Some(3600.0)).unwrap();
-        let base = Parameters::default().to_config(None, &experiment).unwrap();
+        let base = problem(&Parameters::default(), &experiment).unwrap();
         assert_eq!(base.model.interaction, Interaction::Auto);
         assert_eq!(base.model.yaw_following, None);
         let mut from_file = base.clone();
@@ -730,5 +755,39 @@ mod tests {
         assert!(Experiment::new(0.0, Some(0.0)).is_err());
         assert!(Experiment::new(0.0, Some(f64::INFINITY)).is_err());
         assert_eq!(Experiment::new(10.0, Some(70.0)).unwrap().duration(), 60.0);
+    }
+
+    /// The FMU's start values (modelDescription.xml) describe the same default as this file.
+    #[test]
+    fn model_description_start_values_match_the_default() {
+        use crate::model::{DragModel, DriftDamping};
+        use crate::model_description::start;
+        use crate::sea_state::{Spectrum, Spreading};
+        let c = default::default_scenario().unwrap();
+        let Spectrum::Jonswap { hs, tp, gamma } = c.sea.spectrum else {
+            panic!("the default sea is JONSWAP");
+        };
+        assert_eq!((hs, tp), (start::HS, start::TP));
+        assert_eq!(gamma.is_none(), start::GAMMA == 0.0);
+        assert_eq!(c.sea.mean_direction, start::WAVE_DIRECTION);
+        assert_eq!(
+            c.sea.spreading == Spreading::LongCrested,
+            start::SPREADING_EXPONENT == 0.0
+        );
+        assert_eq!(c.sea.seed, start::SEED as u64);
+        assert_eq!(c.current.speed, start::CURRENT_SPEED);
+        assert_eq!(c.run.time_step, start::STEP_SIZE);
+        let stiffness = [
+            start::STIFFNESS_SURGE,
+            start::STIFFNESS_SWAY,
+            start::STIFFNESS_YAW,
+        ];
+        for (i, k) in stiffness.iter().enumerate() {
+            assert_eq!(c.platform.stiffness[i][i], *k);
+        }
+        assert_eq!(c.model.drag, DragModel::Combined { cd: start::CD });
+        assert_eq!(start::DRAG_MODEL, 2, "2 = combined");
+        assert_eq!(c.model.drift_damping, DriftDamping::Table);
+        assert_eq!(start::DRIFT_DAMPING, 1, "1 = table");
     }
 }

@@ -19,8 +19,8 @@
 //! the same: a state from a differently configured instance is refused.
 
 use super::machine::MachineState;
-use crate::config::Config;
 use crate::error::{Error, Result};
+use crate::problem::Problem;
 use crate::simulation::Snapshot;
 
 /// First bytes of a serialized state.
@@ -147,14 +147,15 @@ pub fn mismatch(found: u64, expected: u64) -> Error {
 /// records (sea, seed, platform, drift table, run) changes the fingerprint. The source of
 /// the configuration (embedded, resources, a file at any path) does not enter, only its
 /// content, so a state moves between processes that unpacked the FMU in different places.
-pub fn fingerprint(config: &Config) -> u64 {
+pub fn fingerprint(config: &Problem) -> u64 {
     crate::error::fnv1a_64(&format!("{config:?}"))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::config::default_platform::default_config;
+    use crate::problem::resolve;
+    use crate::scenario::default::default_scenario;
 
     fn state(snapshot: bool) -> FmuState {
         FmuState {
@@ -210,7 +211,7 @@ mod tests {
 
     #[test]
     fn fingerprint_sees_every_change() {
-        let a = default_config().unwrap();
+        let a = resolve(&default_scenario().unwrap()).unwrap();
         assert_eq!(fingerprint(&a), fingerprint(&a.clone()));
         let mut b = a.clone();
         b.sea.seed += 1;

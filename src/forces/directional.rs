@@ -48,17 +48,17 @@
 
 use super::synthesis::{InverseFft, Synthesizer};
 use super::{ForceRecords, Record};
-use crate::config::Config;
 use crate::error::{Error, Result};
 use crate::hydro::bidirectional::{mean_direction_pairs, DirectionPairs};
 use crate::model::Interaction;
+use crate::problem::Problem;
 use crate::sea_state::{Direction, FrequencyGrid, WaveComponents};
 use rustfft::num_complex::Complex64;
 
 /// The bi-directional drift at the sea's directions that `config` asks for, or `None`
 /// when there is nothing to add (interaction off, or one direction).
 pub fn direction_pairs(
-    config: &Config,
+    config: &Problem,
     grid: &FrequencyGrid,
     directions: &[Direction],
 ) -> Result<Option<DirectionPairs>> {
@@ -70,10 +70,10 @@ pub fn direction_pairs(
     match config.interaction() {
         Interaction::None => Ok(None),
         Interaction::MeanDirection => {
-            mean_direction_pairs(&config.drift, band, &headings).map(Some)
+            mean_direction_pairs(&config.hydro.drift, band, &headings).map(Some)
         }
         Interaction::Bidirectional | Interaction::Auto => {
-            let source = config.bidirectional.as_ref().ok_or_else(|| {
+            let source = config.hydro.bidirectional.as_ref().ok_or_else(|| {
                 Error::invalid(
                     "model.interaction",
                     "bidirectional",

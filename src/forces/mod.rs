@@ -15,7 +15,7 @@ mod yaw_following;
 pub use directional::{add_cross_terms, cross_direction_force, direction_pairs};
 pub use kinematics::ColumnKinematics;
 pub use newman::NewmanBuilder;
-pub use qtf::{check_covers, check_tolerance, GridQtf, QtfFactorisation, MIN_QTF_TOLERANCE};
+pub use qtf::{GridQtf, QtfFactorisation};
 pub use record::{Record, RecordClock, SamplePoint};
 pub use synthesis::{plan_inverse_fft, InverseFft, Synthesizer};
 pub use transfer::{transfers_on_grid, DirectionTransfer};

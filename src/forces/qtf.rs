@@ -32,13 +32,10 @@
 
 use super::synthesis::Synthesizer;
 use crate::error::{Error, Result};
+use crate::hydro::qtf::{check_covers, check_tolerance};
 use crate::sea_state::FrequencyGrid;
 use nalgebra::{DMatrix, SymmetricEigen};
 use rustfft::num_complex::Complex64;
-
-/// Smallest accepted truncation tolerance: below it the discarded eigenvalues are the
-/// round-off of the decomposition itself (about n * 1e-16 of the largest).
-pub const MIN_QTF_TOLERANCE: f64 = 1e-12;
 
 /// A Hermitian QTF factorised on its own grid and truncated: sum_r s_r u_r u_r^H.
 #[derive(Debug, Clone, PartialEq)]
@@ -56,7 +53,7 @@ pub struct QtfFactorisation {
 impl QtfFactorisation {
     /// Factorises the n x n QTF `matrix` (row-major, `[i * n + j]` = T(w_i, w_j)) given on
     /// `omegas` and keeps the fewest terms whose discarded trace-norm share is at most
-    /// `tolerance` (in [`MIN_QTF_TOLERANCE`], 1)).
+    /// `tolerance` (in [`crate::hydro::qtf::MIN_QTF_TOLERANCE`], 1)).
     pub fn new(omegas: &[f64], matrix: &[Complex64], tolerance: f64) -> Result<Self> {
         check_tolerance(tolerance)?;
         let n = omegas.len();
@@ -218,48 +215,6 @@ impl GridQtf {
     }
 }
 
-/// Refuses a tolerance outside [[`MIN_QTF_TOLERANCE`], 1).
-pub fn check_tolerance(tolerance: f64) -> Result<()> {
-    if (MIN_QTF_TOLERANCE..1.0).contains(&tolerance) {
-        Ok(())
-    } else {
-        Err(Error::invalid(
-            "model.qtf_tolerance",
-            tolerance,
-            format!(
-                "must be at least {MIN_QTF_TOLERANCE} (below it the discarded eigenvalues are \
-                 round-off) and below 1"
-            ),
-        ))
-    }
-}
-
-/// Refuses a QTF grid that does not cover `band` (rad/s), naming the gap.
-pub fn check_covers(omegas: &[f64], band: (f64, f64)) -> Result<()> {
-    let (low, high) = (omegas[0], omegas[omegas.len() - 1]);
-    let mut gaps = Vec::new();
-    if band.0 < low {
-        gaps.push(format!("{:.4} .. {low:.4} rad/s", band.0));
-    }
-    if band.1 > high {
-        gaps.push(format!("{high:.4} .. {:.4} rad/s", band.1));
-    }
-    if gaps.is_empty() {
-        return Ok(());
-    }
-    Err(Error::invalid(
-        "qtf.omegas",
-        format!("[{low:.4}, {high:.4}] rad/s"),
-        format!(
-            "the QTF does not cover the wave band [{:.4}, {:.4}] rad/s: no data for {} \
-             (nothing is extrapolated; narrow sea.band or supply QTF data there)",
-            band.0,
-            band.1,
-            gaps.join(" and ")
-        ),
-    ))
-}
-
 /// Lower node k and weight s of `w` in `omegas` (covered): w = (1 - s) w_k + s w_{k+1};
 /// s is exactly 0 at a node.
 fn bracket(omegas: &[f64], w: f64) -> (usize, f64) {
@@ -274,6 +229,7 @@ fn bracket(omegas: &[f64], w: f64) -> (usize, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::hydro::qtf::MIN_QTF_TOLERANCE;
 
     fn smooth_qtf(w1: f64, w2: f64) -> Complex64 {
         // A smooth positive kernel less an oscillating rank-1 term: indefinite.

@@ -6,9 +6,9 @@ pub mod aranha;
 pub mod bidirectional;
 pub mod column_drift;
 pub mod columns;
-pub mod database;
 mod drift_table;
 mod heading_grid;
-pub mod wamit;
+pub mod io;
+pub mod qtf;
 
 pub use drift_table::{DriftRow, DriftTable};

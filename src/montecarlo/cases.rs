@@ -1,63 +1,55 @@
-//! The case table: a CSV file whose header names the fields it overrides and whose every
-//! row is one case on top of a base configuration.
+//! The case table: a CSV file whose header names the settings it writes and whose every row
+//! is one case on top of a base configuration.
 //!
-//! Columns (any subset, any order; an empty cell keeps the base value): `name`, `hs` (m),
-//! `tp` (s), `gamma` (JONSWAP; 0 = the DNV default), `direction_deg`, `spreading_exponent`
-//! (0 = long-crested, else the exponent of the base's spreading form: cos^N, or s of
-//! cos-2s; a long-crested base becomes cos^N), `n_directions`, `current_speed` (m/s),
-//! `current_direction_deg`, `cd` (combined drag model), `cd_slow` and `cd_fast` (separate
-//! model; one of them alone keeps the other from a separate-model base), `duration` (s),
-//! `yaw_stiffness` (N m/rad: the mooring's C_66), `yaw_headings` (0 = yaw following off,
-//! n >= 2 = records at n body yaw angles around the full circle, `model.yaw_following`),
-//! `interaction` (text: `auto`, `none`, `mean-direction` or `bidirectional`, as `[model]
-//! interaction` of the configuration file).
-//! Degrees are converted to radians here. Blank lines and lines starting with `#` are
-//! skipped; fields are separated by commas and trimmed (no quoting).
+//! Columns (any subset, any order): `name`, and the case-table columns of the override
+//! table ([`crate::scenario::overrides::SETTINGS`]: `hs`, `tp`, `gamma`, `direction_deg`,
+//! `spreading_exponent`, `n_directions`, `current_speed`, `current_direction_deg`, `drag`,
+//! `cd`, `cd_slow`, `cd_fast`, `drift_damping`, `interaction`, `yaw_headings`,
+//! `surge_stiffness`, `sway_stiffness`, `yaw_stiffness`, `time_step`, `duration`), each with
+//! the rule, unit and vocabulary of its setting: an override changes only what it names; a
+//! value the base's choice does not use (`cd_slow` under combined drag) is refused; columns
+//! ending in `_deg` are in degrees. An empty cell keeps the base value. Blank lines and lines
+//! starting with `#` are skipped; fields are trimmed; quoting follows RFC 4180.
 //!
 //! A malformed table is an [`Error::Parse`] naming the file, the line, the data row and the
-//! column. Values are only checked for being numbers here: a value the model refuses (a
-//! negative Hs, say) makes that case's runs fail, not the table.
+//! column. A value the model refuses (a negative Hs, say) makes that case's runs fail, not
+//! the table; its error names the row and column.
 
 use super::Case;
-use crate::config::file::DEFAULT_N_DIRECTIONS;
-use crate::error::{Error, Result};
-use crate::model::{DragModel, Interaction, YawFollowing};
-use crate::sea_state::{Spectrum, Spreading};
-use crate::Config;
+use crate::error::{Error, Location, Result};
+use crate::model::DragModel;
+use crate::scenario::overrides::{by_column, Refusal, Setting, Value, SETTINGS};
+use crate::scenario::Written;
+use crate::Problem;
 use std::path::Path;
 
-/// The columns a case table may have.
-pub const COLUMNS: [&str; 16] = [
-    "name",
-    "hs",
-    "tp",
-    "gamma",
-    "direction_deg",
-    "spreading_exponent",
-    "n_directions",
-    "current_speed",
-    "current_direction_deg",
-    "cd",
-    "cd_slow",
-    "cd_fast",
-    "duration",
-    "yaw_stiffness",
-    "yaw_headings",
-    "interaction",
-];
-
-/// One row of a case table: its name and the values it sets, by column name.
+/// One cell of a case table.
 #[derive(Debug, Clone, PartialEq)]
+pub enum Cell {
+    /// A number, in the column's unit (degrees for a column ending in `_deg`).
+    Number(f64),
+    /// A word of the setting's vocabulary.
+    Word(String),
+}
+
+/// One row of a case table: its name and the values it writes, by setting.
+#[derive(Debug, Clone)]
 pub struct CaseRow {
     /// 1-based data row (the header is not counted).
     pub row: usize,
     /// 1-based line in the file.
     pub line: usize,
     pub name: String,
-    /// (column, value) for every non-empty numeric cell, in header order.
-    pub values: Vec<(&'static str, f64)>,
-    /// The `interaction` cell, when given.
-    pub interaction: Option<Interaction>,
+    /// (setting, value) for every non-empty cell, in header order.
+    pub cells: Vec<(&'static Setting, Cell)>,
+}
+
+/// The known column names, for messages.
+fn columns() -> String {
+    let names: Vec<&str> = std::iter::once("name")
+        .chain(SETTINGS.iter().filter_map(|s| s.column))
+        .collect();
+    names.join(", ")
 }
 
 /// Reads a case table file.
@@ -69,89 +61,76 @@ pub fn read_case_table(path: &Path) -> Result<Vec<CaseRow>> {
     parse_case_table(&text, &path.display().to_string())
 }
 
+/// The header's columns: `None` for `name`, else the setting.
+type Header = Vec<Option<&'static Setting>>;
+
 /// Parses the text of a case table; `source` names it in errors.
 pub fn parse_case_table(text: &str, source: &str) -> Result<Vec<CaseRow>> {
-    let error = |line: usize, message: String| Error::Parse {
+    let at = |line: u64| Location {
         path: source.to_string(),
-        line: Some(line),
-        message,
+        line: usize::try_from(line).ok(),
     };
-    let mut lines = text
-        .lines()
-        .enumerate()
-        .map(|(i, l)| (i + 1, l.trim()))
-        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
-    let (header_line, header) = lines
-        .next()
-        .ok_or_else(|| error(1, "the case table is empty (no header line)".into()))?;
-    let mut columns: Vec<&'static str> = Vec::new();
-    for field in header.split(',').map(str::trim) {
-        let known = COLUMNS.iter().find(|c| **c == field).ok_or_else(|| {
-            error(
-                header_line,
-                format!(
-                    "unknown column '{field}'; the columns are {}",
-                    COLUMNS.join(", ")
-                ),
-            )
-        })?;
-        if columns.contains(known) {
+    let error = |line: u64, message: String| at(line).error(message);
+    let mut reader = csv::ReaderBuilder::new()
+        .has_headers(false)
+        .comment(Some(b'#'))
+        .trim(csv::Trim::All)
+        .flexible(true)
+        .from_reader(text.as_bytes());
+    let mut records = reader.records();
+    let csv_error = |e: csv::Error| {
+        let line = e.position().map_or(1, csv::Position::line);
+        error(line, e.to_string())
+    };
+    let header_record = match records.next() {
+        Some(record) => record.map_err(csv_error)?,
+        None => return Err(error(1, "the case table is empty (no header line)".into())),
+    };
+    let header_line = header_record.position().map_or(1, csv::Position::line);
+    let mut header: Header = Vec::new();
+    let mut names: Vec<&str> = Vec::new();
+    for field in header_record.iter() {
+        let setting = match field {
+            "name" => None,
+            _ => Some(by_column(field).ok_or_else(|| {
+                error(
+                    header_line,
+                    format!("unknown column '{field}'; the columns are {}", columns()),
+                )
+            })?),
+        };
+        if names.contains(&field) {
             return Err(error(
                 header_line,
                 format!("column '{field}' appears twice"),
             ));
         }
-        columns.push(known);
-    }
-    if columns.contains(&"cd") && (columns.contains(&"cd_slow") || columns.contains(&"cd_fast")) {
-        return Err(error(
-            header_line,
-            "columns 'cd' (combined drag) and 'cd_slow'/'cd_fast' (separate drag) exclude each \
-             other"
-                .into(),
-        ));
+        names.push(field);
+        header.push(setting);
     }
     let mut rows: Vec<CaseRow> = Vec::new();
-    for (row, (line, text)) in lines.enumerate() {
-        let row = row + 1;
-        let fields: Vec<&str> = text.split(',').map(str::trim).collect();
-        if fields.len() != columns.len() {
+    for (index, record) in records.enumerate() {
+        let record = record.map_err(csv_error)?;
+        let row = index + 1;
+        let line = record.position().map_or(header_line, csv::Position::line);
+        if record.len() != header.len() {
             return Err(error(
                 line,
                 format!(
                     "row {row} has {} fields, the header has {} ({})",
-                    fields.len(),
-                    columns.len(),
-                    columns.join(", ")
+                    record.len(),
+                    header.len(),
+                    names.join(", ")
                 ),
             ));
         }
         let mut name = format!("case{row}");
-        let mut values = Vec::new();
-        let mut interaction = None;
-        for (&column, &field) in columns.iter().zip(&fields) {
+        let mut cells = Vec::new();
+        for ((setting, column), field) in header.iter().zip(&names).zip(record.iter()) {
             if field.is_empty() {
                 continue;
             }
-            if column == "interaction" {
-                interaction = Some(match field {
-                    "auto" => Interaction::Auto,
-                    "none" => Interaction::None,
-                    "mean-direction" => Interaction::MeanDirection,
-                    "bidirectional" => Interaction::Bidirectional,
-                    _ => {
-                        return Err(error(
-                            line,
-                            format!(
-                                "row {row}, column 'interaction': '{field}' is not one of \
-                                 auto, none, mean-direction, bidirectional"
-                            ),
-                        ))
-                    }
-                });
-                continue;
-            }
-            if column == "name" {
+            let Some(setting) = setting else {
                 if field.contains('"') {
                     return Err(error(
                         line,
@@ -160,10 +139,31 @@ pub fn parse_case_table(text: &str, source: &str) -> Result<Vec<CaseRow>> {
                 }
                 name = field.to_string();
                 continue;
-            }
-            let value = parse_value(column, field)
-                .map_err(|why| error(line, format!("row {row}, column '{column}': {why}")))?;
-            values.push((column, value));
+            };
+            let cell =
+                if setting.takes_words() {
+                    if !setting.words.contains(&field) {
+                        return Err(error(
+                            line,
+                            format!(
+                                "row {row}, column '{column}': '{field}' is not one of {}",
+                                setting.words.join(", ")
+                            ),
+                        ));
+                    }
+                    Cell::Word(field.to_string())
+                } else {
+                    match field.parse::<f64>() {
+                        Ok(v) if v.is_finite() => Cell::Number(v),
+                        _ => return Err(error(
+                            line,
+                            format!(
+                                "row {row}, column '{column}': '{field}' is not a finite number"
+                            ),
+                        )),
+                    }
+                };
+            cells.push((*setting, cell));
         }
         if let Some(other) = rows.iter().find(|r| r.name == name) {
             return Err(error(
@@ -176,10 +176,9 @@ pub fn parse_case_table(text: &str, source: &str) -> Result<Vec<CaseRow>> {
         }
         rows.push(CaseRow {
             row,
-            line,
+            line: line as usize,
             name,
-            values,
-            interaction,
+            cells,
         });
     }
     if rows.is_empty() {
@@ -188,44 +187,67 @@ pub fn parse_case_table(text: &str, source: &str) -> Result<Vec<CaseRow>> {
     Ok(rows)
 }
 
-fn parse_value(column: &str, field: &str) -> std::result::Result<f64, String> {
-    if column == "yaw_headings" {
-        return match field.parse::<usize>() {
-            Ok(n) if n != 1 => Ok(n as f64),
-            _ => Err(format!(
-                "'{field}' is not 0 (off) or a whole number of at least 2"
-            )),
-        };
-    }
-    if column == "n_directions" {
-        return match field.parse::<usize>() {
-            Ok(n) if n >= 1 => Ok(n as f64),
-            _ => Err(format!("'{field}' is not a whole number of at least 1")),
-        };
-    }
-    match field.parse::<f64>() {
-        Ok(v) if v.is_finite() => Ok(v),
-        _ => Err(format!("'{field}' is not a finite number")),
-    }
-}
-
 impl CaseRow {
-    /// The case: `base` with this row's values, and its transient (`transient`, or the
-    /// configuration's default when `None`). A value that does not fit the base (an `hs`
-    /// for a tabulated spectrum, say) is an error naming the row and column.
-    pub fn case(&self, base: &Config, transient: Option<f64>, source: &str) -> Result<Case> {
-        let mut config = base.clone();
-        if let Some(interaction) = self.interaction {
-            config.model.interaction = interaction;
+    /// The single case of a campaign without a case table.
+    pub fn base() -> CaseRow {
+        CaseRow {
+            row: 1,
+            line: 1,
+            name: "base".into(),
+            cells: Vec::new(),
         }
-        for &(column, value) in &self.values {
-            self.set(&mut config, column, value)
-                .map_err(|why| Error::Parse {
-                    path: source.to_string(),
-                    line: Some(self.line),
-                    message: format!("row {}, column '{column}': {why}", self.row),
+    }
+
+    /// The number this row writes in `column`, in the column's unit, if any.
+    pub fn number(&self, column: &str) -> Option<f64> {
+        self.cells.iter().find_map(|(s, cell)| match cell {
+            Cell::Number(x) if s.column == Some(column) => Some(*x),
+            _ => None,
+        })
+    }
+
+    /// The case: `base` with this row's values written in the override table's order, and
+    /// its transient (`transient`, or the case's default when `None`). A value the base's
+    /// choices do not use, or a drag model chosen without its coefficients, is an error
+    /// naming the row and column.
+    pub fn case(&self, base: &Problem, transient: Option<f64>, source: &str) -> Result<Case> {
+        let at = Location {
+            path: source.to_string(),
+            line: Some(self.line),
+        };
+        let mut config = base.clone();
+        for setting in &SETTINGS {
+            let Some((_, cell)) = self.cells.iter().find(|(s, _)| std::ptr::eq(*s, setting)) else {
+                continue;
+            };
+            let column = setting.column.expect("a case-table cell has a column");
+            let value = match cell {
+                Cell::Number(x) if setting.in_degrees() => Value::Number(x.to_radians()),
+                Cell::Number(x) => Value::Number(*x),
+                Cell::Word(w) => Value::Word(w),
+            };
+            let written = Written::CaseTable {
+                at: at.clone(),
+                row: self.row,
+                column,
+            };
+            setting
+                .apply(&mut config, value, written)
+                .map_err(|refusal| {
+                    let hint = match refusal {
+                        Refusal::NotInForce(_) if setting.key.starts_with("model.cd") => {
+                            " (add a 'drag' column)"
+                        }
+                        _ => "",
+                    };
+                    at.error(format!(
+                        "row {}, column '{column}': {}{hint}",
+                        self.row,
+                        refusal.reason()
+                    ))
                 })?;
         }
+        self.check_drag(&config.model.drag, &at)?;
         let transient = transient.unwrap_or_else(|| config.default_transient());
         Ok(Case {
             name: self.name.clone(),
@@ -234,109 +256,30 @@ impl CaseRow {
         })
     }
 
-    fn set(
-        &self,
-        config: &mut Config,
-        column: &str,
-        value: f64,
-    ) -> std::result::Result<(), String> {
-        let sea = &mut config.sea;
-        match (column, &mut sea.spectrum) {
-            ("hs", Spectrum::Jonswap { hs, .. } | Spectrum::PiersonMoskowitz { hs, .. }) => {
-                *hs = value
-            }
-            ("tp", Spectrum::Jonswap { tp, .. } | Spectrum::PiersonMoskowitz { tp, .. }) => {
-                *tp = value
-            }
-            ("gamma", Spectrum::Jonswap { gamma, .. }) => *gamma = (value != 0.0).then_some(value),
-            ("hs" | "tp" | "gamma", spectrum) => {
-                return Err(format!(
-                    "the base configuration's spectrum ({}) has no {column}",
-                    spectrum_name(spectrum)
-                ))
-            }
-            ("direction_deg", _) => sea.mean_direction = value.to_radians(),
-            ("spreading_exponent", _) => {
-                sea.spreading = match sea.spreading {
-                    _ if value == 0.0 => Spreading::LongCrested,
-                    Spreading::Cos2s { .. } => Spreading::Cos2s { s: value },
-                    Spreading::CosN { .. } => Spreading::CosN { n: value },
-                    Spreading::LongCrested => {
-                        if sea.n_directions <= 1 {
-                            sea.n_directions = DEFAULT_N_DIRECTIONS;
-                        }
-                        Spreading::CosN { n: value }
-                    }
-                };
-                if value == 0.0 {
-                    sea.n_directions = 1;
-                }
-            }
-            ("n_directions", _) => sea.n_directions = value as usize,
-            ("current_speed", _) => config.current.speed = value,
-            ("current_direction_deg", _) => config.current.direction = value.to_radians(),
-            ("cd", _) => config.model.drag = DragModel::Combined { cd: value },
-            ("cd_slow" | "cd_fast", _) => {
-                let (mut slow, mut fast) = match config.model.drag {
-                    DragModel::Separate { slow, fast } => (Some(slow), Some(fast)),
-                    _ => (None, None),
-                };
-                let mut other = "cd_fast";
-                if column == "cd_slow" {
-                    slow = Some(value);
-                } else {
-                    fast = Some(value);
-                    other = "cd_slow";
-                }
-                let given = |c: &str| self.values.iter().any(|(name, _)| *name == c);
-                match (slow, fast) {
-                    (Some(slow), Some(fast)) => {
-                        config.model.drag = DragModel::Separate { slow, fast }
-                    }
-                    // The other coefficient comes later in this row.
-                    _ if given(other) => {
-                        config.model.drag = DragModel::Separate {
-                            slow: slow.unwrap_or(0.0),
-                            fast: fast.unwrap_or(0.0),
-                        }
-                    }
-                    _ => {
-                        return Err(format!(
-                            "the base configuration's drag model is not 'separate': give \
-                             {other} too"
-                        ))
-                    }
-                }
-            }
-            ("duration", _) => config.run.duration = value,
-            ("yaw_stiffness", _) => config.platform.stiffness[2][2] = value,
-            ("yaw_headings", _) => {
-                config.model.yaw_following = (value != 0.0).then_some(YawFollowing {
-                    headings: value as usize,
-                    range: None,
-                })
-            }
-            (other, _) => return Err(format!("'{other}' is not an overridable field")),
-        }
-        Ok(())
-    }
-}
-
-fn spectrum_name(spectrum: &Spectrum) -> &'static str {
-    match spectrum {
-        Spectrum::Jonswap { .. } => "jonswap",
-        Spectrum::PiersonMoskowitz { .. } => "pierson-moskowitz",
-        Spectrum::Tabulated { .. } => "table",
+    /// A drag model this row chose needs its coefficients in the row.
+    fn check_drag(&self, drag: &DragModel, at: &Location) -> Result<()> {
+        let missing = match *drag {
+            DragModel::Combined { cd } if cd.is_nan() => "cd",
+            DragModel::Separate { slow, .. } if slow.is_nan() => "cd_slow",
+            DragModel::Separate { fast, .. } if fast.is_nan() => "cd_fast",
+            _ => return Ok(()),
+        };
+        Err(at.error(format!(
+            "row {}, column 'drag': the model chosen needs a '{missing}' column too",
+            self.row
+        )))
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::config::file;
+    use crate::model::{Interaction, YawFollowing};
+    use crate::scenario::DEFAULT_N_DIRECTIONS;
+    use crate::sea_state::{Spectrum, Spreading};
 
-    fn base() -> Config {
-        file::load(Path::new(concat!(
+    fn base() -> Problem {
+        crate::problem::load(Path::new(concat!(
             env!("CARGO_MANIFEST_DIR"),
             "/tests/data/example.toml"
         )))
@@ -398,9 +341,11 @@ mod tests {
         assert_eq!(cases[1].config, expected);
     }
 
+    /// A coefficient changes only its own model's; a model is chosen by the `drag` column,
+    /// with its coefficients.
     #[test]
     fn drag_columns_choose_the_model() {
-        let c = cases("cd_slow, cd_fast\n0.5, 0.9\n").unwrap();
+        let c = cases("drag, cd_slow, cd_fast\nseparate, 0.5, 0.9\n").unwrap();
         assert_eq!(
             c[0].config.model.drag,
             DragModel::Separate {
@@ -410,14 +355,26 @@ mod tests {
         );
         let c = cases("cd\n1.1\n").unwrap();
         assert_eq!(c[0].config.model.drag, DragModel::Combined { cd: 1.1 });
-        // The example's drag is combined: one separate coefficient alone does not say the other.
-        let e = cases("cd_slow\n0.5\n").unwrap_err().to_string();
+        // The example's drag is combined: a separate coefficient does not apply to it.
+        let e = cases("cd_slow, cd_fast\n0.5, 0.9\n")
+            .unwrap_err()
+            .to_string();
         assert!(
-            e.contains("row 1, column 'cd_slow'") && e.contains("cd_fast"),
+            e.contains("row 1, column 'cd_slow': cd_slow applies when drag = separate")
+                && e.contains("add a 'drag' column"),
             "{e}"
         );
-        let e = cases("cd, cd_fast\n0.5, 0.9\n").unwrap_err().to_string();
-        assert!(e.contains("exclude each other"), "{e}");
+        let e = cases("drag, cd_slow\nseparate, 0.5\n")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("needs a 'cd_fast' column"), "{e}");
+        let e = cases("drag\noff\n").unwrap();
+        assert_eq!(e[0].config.model.drag, DragModel::Off);
+        let e = cases("drag\nviscous\n").unwrap_err().to_string();
+        assert!(
+            e.contains("'viscous' is not one of off, separate, combined"),
+            "{e}"
+        );
     }
 
     #[test]
@@ -434,6 +391,8 @@ mod tests {
         assert_eq!(c[1].config, base());
         let e = cases("yaw_headings\n1\n").unwrap_err().to_string();
         assert!(e.contains("row 1, column 'yaw_headings'"), "{e}");
+        let c = cases("yaw_headings\n-1\n").unwrap();
+        assert_eq!(c[0].config.model.yaw_following, None);
     }
 
     #[test]

@@ -1,6 +1,6 @@
 //! Monte Carlo campaigns: many seeds of one or many cases, on all cores.
 //!
-//! A [`Case`] is a complete [`Config`] (its seed is replaced per run) with the start-up
+//! A [`Case`] is a complete [`Problem`] (its seed is replaced per run) with the start-up
 //! transient to drop. [`run_seed`] simulates one (case, seed) and summarises surge, sway and
 //! yaw after the transient ([`DofStats`]); [`run_jobs`] runs a list of (case, seed) jobs on
 //! scoped threads that take the next job from a shared counter and hand each result to the
@@ -17,7 +17,7 @@ pub mod runs_file;
 
 use crate::error::{Error, Result};
 use crate::stats::summarize;
-use crate::{Config, RecordPlan, Simulation};
+use crate::{Problem, RecordPlan, Simulation};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc;
@@ -33,7 +33,7 @@ pub struct Case {
     /// Unique name (the case table's `name`, or `case<row>`).
     pub name: String,
     /// The configuration; `sea.seed` is set per run.
-    pub config: Config,
+    pub config: Problem,
     /// Start-up transient dropped from the statistics, s from the start of the run.
     pub transient: f64,
 }
@@ -108,7 +108,7 @@ pub fn run_seed_with(case: &Case, plan: &RecordPlan, seed: u64) -> Result<[DofSt
 /// Simulates `config` from its initial condition for its duration with no external force
 /// and returns the records of X (m), Y (m) and theta (rad), sampled every time step from
 /// t = start_time (the initial state) to the end.
-pub fn simulate_positions(config: Config) -> Result<[Vec<f64>; 3]> {
+pub fn simulate_positions(config: Problem) -> Result<[Vec<f64>; 3]> {
     positions(Simulation::new(config)?)
 }
 

@@ -14,7 +14,7 @@
 use super::Case;
 use crate::fmi2::parameters::{Experiment, Parameters};
 use crate::model_description::{Causality, VariableType, VARIABLES};
-use crate::Config;
+use crate::Problem;
 use serde_json::{json, Map, Value};
 
 /// Relative tolerance of the FMU's end-of-run check (`fmi2DoStep` refuses a step that ends
@@ -23,7 +23,7 @@ const FMU_TIME_TOLERANCE: f64 = 1e-9;
 
 /// The JSON document of `cases` run on top of `base`; `hydro_database` is the FMU's
 /// `hydroDatabase` parameter that loads `base` (empty for the packed default platform).
-pub fn cases_json(cases: &[Case], base: &Config, hydro_database: &str) -> Value {
+pub fn cases_json(cases: &[Case], base: &Problem, hydro_database: &str) -> Value {
     let cases: Vec<Value> = cases
         .iter()
         .map(|case| case_json(case, base, hydro_database))
@@ -31,7 +31,7 @@ pub fn cases_json(cases: &[Case], base: &Config, hydro_database: &str) -> Value 
     json!({ "format_version": 1, "cases": cases })
 }
 
-fn case_json(case: &Case, base: &Config, hydro_database: &str) -> Value {
+fn case_json(case: &Case, base: &Problem, hydro_database: &str) -> Value {
     let run = &case.config.run;
     let steps = (run.duration / run.time_step).round();
     let fmu = match Parameters::for_config(&case.config, base, hydro_database) {
@@ -81,20 +81,19 @@ fn fmu_json(parameters: &Parameters, experiment: &Experiment, steps: f64, h: f64
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::config::file;
     use crate::montecarlo::cases::parse_case_table;
     use crate::sea_state::Spectrum;
     use std::path::Path;
 
-    fn base() -> Config {
-        file::load(Path::new(concat!(
+    fn base() -> Problem {
+        crate::problem::load(Path::new(concat!(
             env!("CARGO_MANIFEST_DIR"),
             "/tests/data/example.toml"
         )))
         .unwrap()
     }
 
-    fn plan(table: &str, base: &Config) -> Value {
+    fn plan(table: &str, base: &Problem) -> Value {
         let cases: Vec<Case> = parse_case_table(table, "cases.csv")
             .unwrap()
             .iter()

@@ -39,13 +39,13 @@ impl SeaState {
     pub fn validate(&self) -> Result<()> {
         self.spectrum.validate()?;
         self.spreading.validate()?;
-        require_finite("sea.mean_direction", self.mean_direction)?;
+        require_finite("sea.direction_deg", self.mean_direction.to_degrees())?;
         if self.n_directions == 0 && !matches!(self.spreading, Spreading::LongCrested) {
             return Err(Error::invalid("sea.n_directions", 0, "must be at least 1"));
         }
         if let Some((lo, hi)) = self.band {
-            require_finite("sea.band.omega_min", lo)?;
-            require_finite("sea.band.omega_max", hi)?;
+            require_finite("sea.band[0]", lo)?;
+            require_finite("sea.band[1]", hi)?;
             if !(lo > 0.0 && hi > lo) {
                 return Err(Error::invalid(
                     "sea.band",

@@ -85,20 +85,16 @@ impl Spectrum {
     pub fn validate(&self) -> Result<()> {
         match self {
             Spectrum::Jonswap { hs, tp, gamma } => {
-                require_positive("sea.spectrum.hs", *hs)?;
-                require_positive("sea.spectrum.tp", *tp)?;
+                require_positive("sea.hs", *hs)?;
+                require_positive("sea.tp", *tp)?;
                 if let Some(g) = gamma {
-                    require_finite("sea.spectrum.gamma", *g)?;
+                    require_finite("sea.gamma", *g)?;
                     if *g < 1.0 {
-                        return Err(Error::invalid(
-                            "sea.spectrum.gamma",
-                            g,
-                            "must be at least 1",
-                        ));
+                        return Err(Error::invalid("sea.gamma", g, "must be at least 1"));
                     }
                     if *g > MAX_GAMMA {
                         return Err(Error::invalid(
-                            "sea.spectrum.gamma",
+                            "sea.gamma",
                             g,
                             format!(
                                 "must be at most {MAX_GAMMA}: DNV's normalisation A_gamma = \
@@ -111,8 +107,8 @@ impl Spectrum {
                 Ok(())
             }
             Spectrum::PiersonMoskowitz { hs, tp } => {
-                require_positive("sea.spectrum.hs", *hs)?;
-                require_positive("sea.spectrum.tp", *tp)
+                require_positive("sea.hs", *hs)?;
+                require_positive("sea.tp", *tp)
             }
             Spectrum::Tabulated { omega, density } => validate_table(omega, density),
         }
@@ -122,14 +118,14 @@ impl Spectrum {
 fn validate_table(omega: &[f64], density: &[f64]) -> Result<()> {
     if omega.len() < 2 {
         return Err(Error::invalid(
-            "sea.spectrum.omega",
+            "sea.omega",
             omega.len(),
             "a table needs at least 2 rows",
         ));
     }
     if omega.len() != density.len() {
         return Err(Error::invalid(
-            "sea.spectrum.density",
+            "sea.density",
             density.len(),
             format!(
                 "has a different length from sea.spectrum.omega ({})",
@@ -138,18 +134,18 @@ fn validate_table(omega: &[f64], density: &[f64]) -> Result<()> {
         ));
     }
     for (i, (&w, &s)) in omega.iter().zip(density).enumerate() {
-        require_positive(&format!("sea.spectrum.omega[{i}]"), w)?;
-        require_finite(&format!("sea.spectrum.density[{i}]"), s)?;
+        require_positive(&format!("sea.omega[{i}]"), w)?;
+        require_finite(&format!("sea.density[{i}]"), s)?;
         if s < 0.0 {
             return Err(Error::invalid(
-                format!("sea.spectrum.density[{i}]"),
+                format!("sea.density[{i}]"),
                 s,
                 "must not be negative",
             ));
         }
         if i > 0 && w <= omega[i - 1] {
             return Err(Error::invalid(
-                format!("sea.spectrum.omega[{i}]"),
+                format!("sea.omega[{i}]"),
                 w,
                 "frequencies must be strictly increasing",
             ));
@@ -157,7 +153,7 @@ fn validate_table(omega: &[f64], density: &[f64]) -> Result<()> {
     }
     if density.iter().all(|&s| s == 0.0) {
         return Err(Error::invalid(
-            "sea.spectrum.density",
+            "sea.density",
             "all zero",
             "the spectrum holds no energy",
         ));

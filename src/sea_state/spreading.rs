@@ -33,8 +33,8 @@ impl Spreading {
     pub fn validate(&self) -> Result<()> {
         match self {
             Spreading::LongCrested => Ok(()),
-            Spreading::CosN { n } => require_positive("sea.spreading.n", *n),
-            Spreading::Cos2s { s } => require_positive("sea.spreading.s", *s),
+            Spreading::CosN { n } => require_positive("sea.spreading_exponent", *n),
+            Spreading::Cos2s { s } => require_positive("sea.spreading_exponent", *s),
         }
     }
 

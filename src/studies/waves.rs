@@ -1,9 +1,9 @@
 //! The wave elevation record of a configuration, for the elevation statistics of E&S
 //! Figs 7 and 8 (pdf against the Gaussian, spectrum against the input).
 
-use crate::config::Config;
 use crate::error::{require_positive, Result};
 use crate::model::DragModel;
+use crate::problem::Problem;
 use crate::Simulation;
 
 /// A sampled elevation record at the body origin.
@@ -19,7 +19,7 @@ pub struct ElevationRecord {
 /// [`Simulation::new`] synthesises by one inverse FFT (E&S 6) for a run of that length,
 /// its first `length / dt` samples. The drag kinematics are not built (they do not change
 /// the elevation). Errors: `length` not positive, or what [`Simulation::new`] refuses.
-pub fn elevation_record(config: &Config, length: f64) -> Result<ElevationRecord> {
+pub fn elevation_record(config: &Problem, length: f64) -> Result<ElevationRecord> {
     require_positive("study.record_length", length)?;
     let mut config = config.clone();
     config.run.duration = length;

@@ -4,15 +4,15 @@
 use crate::common::*;
 use slowdrift::hydro::{DriftRow, DriftTable};
 use slowdrift::sea_state::{Spectrum, Spreading};
-use slowdrift::{Config, Error, Simulation};
+use slowdrift::{Error, Problem, Simulation};
 
-fn config() -> Config {
+fn config() -> Problem {
     base_config(200.0, 1.0, 1)
 }
 
 /// `Simulation::new` must fail with `InvalidValue` naming `field` and `value`, and the
 /// message must show both.
-fn refused(config: Config, field: &str, value: &str) -> Error {
+fn refused(config: Problem, field: &str, value: &str) -> Error {
     let err = Simulation::new(config).expect_err("must be refused");
     match &err {
         Error::InvalidValue {
@@ -28,7 +28,7 @@ fn refused(config: Config, field: &str, value: &str) -> Error {
     err
 }
 
-fn with(edit: impl FnOnce(&mut Config)) -> Config {
+fn with(edit: impl FnOnce(&mut Problem)) -> Problem {
     let mut c = config();
     edit(&mut c);
     c
@@ -41,24 +41,16 @@ fn the_base_configuration_is_accepted() {
 
 #[test]
 fn non_positive_sea_state_parameters_are_refused() {
-    refused(
-        with(|c| c.sea.spectrum = jonswap(0.0, 10.0)),
-        "sea.spectrum.hs",
-        "0",
-    );
+    refused(with(|c| c.sea.spectrum = jonswap(0.0, 10.0)), "sea.hs", "0");
     refused(
         with(|c| c.sea.spectrum = jonswap(-2.0, 10.0)),
-        "sea.spectrum.hs",
+        "sea.hs",
         "-2",
     );
-    refused(
-        with(|c| c.sea.spectrum = jonswap(6.0, 0.0)),
-        "sea.spectrum.tp",
-        "0",
-    );
+    refused(with(|c| c.sea.spectrum = jonswap(6.0, 0.0)), "sea.tp", "0");
     refused(
         with(|c| c.sea.spectrum = Spectrum::PiersonMoskowitz { hs: 6.0, tp: -1.5 }),
-        "sea.spectrum.tp",
+        "sea.tp",
         "-1.5",
     );
     let gamma = |g| {
@@ -70,9 +62,9 @@ fn non_positive_sea_state_parameters_are_refused() {
             }
         })
     };
-    refused(gamma(0.5), "sea.spectrum.gamma", "0.5");
+    refused(gamma(0.5), "sea.gamma", "0.5");
     // A_gamma = 1 - 0.287 ln(gamma) <= 0 above 32.6: the spectrum would turn negative.
-    refused(gamma(40.0), "sea.spectrum.gamma", "40");
+    refused(gamma(40.0), "sea.gamma", "40");
     assert!(
         Simulation::new(gamma(1.0)).is_ok(),
         "gamma = 1 is PM-like, valid"
@@ -119,12 +111,12 @@ fn non_finite_values_are_refused() {
     let inf = f64::INFINITY;
     refused(
         with(|c| c.sea.spectrum = jonswap(nan, 10.0)),
-        "sea.spectrum.hs",
+        "sea.hs",
         "NaN",
     );
     refused(
         with(|c| c.sea.spectrum = jonswap(6.0, inf)),
-        "sea.spectrum.tp",
+        "sea.tp",
         "inf",
     );
     refused(
@@ -135,7 +127,7 @@ fn non_finite_values_are_refused() {
                 gamma: Some(nan),
             }
         }),
-        "sea.spectrum.gamma",
+        "sea.gamma",
         "NaN",
     );
     refused(
@@ -145,12 +137,12 @@ fn non_finite_values_are_refused() {
                 density: vec![1.0, nan, 1.0],
             }
         }),
-        "sea.spectrum.density[1]",
+        "sea.density[1]",
         "NaN",
     );
     refused(
         with(|c| c.sea.mean_direction = inf),
-        "sea.mean_direction",
+        "sea.direction_deg",
         "inf",
     );
     refused(with(|c| c.platform.mass = nan), "platform.mass", "NaN");
@@ -182,14 +174,14 @@ fn non_finite_values_are_refused() {
     refused(with(|c| c.current.speed = nan), "current.speed", "NaN");
     refused(
         with(|c| c.current.direction = inf),
-        "current.direction",
+        "current.direction_deg",
         "inf",
     );
     refused(with(|c| c.run.start_time = nan), "run.start_time", "NaN");
     refused(with(|c| c.run.duration = inf), "run.duration", "inf");
     refused(
         with(|c| c.initial.position[2] = nan),
-        "initial.position[2]",
+        "initial.heading_deg",
         "NaN",
     );
     refused(
@@ -295,7 +287,7 @@ fn a_drift_table_that_misses_the_wave_band_or_heading_is_refused() {
         }
     }
     let err = refused(
-        with(|c| c.drift = DriftTable::from_rows(&full_circle).unwrap()),
+        with(|c| c.hydro.drift = DriftTable::from_rows(&full_circle).unwrap()),
         "drift.omega",
         "[0.5, 1.5] rad/s",
     );
@@ -316,12 +308,12 @@ fn a_drift_table_that_misses_the_wave_band_or_heading_is_refused() {
     }
     let narrow = DriftTable::from_rows(&rows).unwrap();
     assert_eq!(narrow.headings().len(), 3);
-    let mut c = with(|c| c.drift = narrow.clone());
+    let mut c = with(|c| c.hydro.drift = narrow.clone());
     c.sea.mean_direction = 90f64.to_radians();
     let err = refused(c, "drift.heading", "90.000 deg");
     assert!(err.to_string().contains("[0.000, 20.000] deg"), "{err}");
     // The same table serves waves inside its headings.
-    let mut c = with(|c| c.drift = narrow);
+    let mut c = with(|c| c.hydro.drift = narrow);
     c.sea.mean_direction = 15f64.to_radians();
     assert!(Simulation::new(c).is_ok());
 }
@@ -334,7 +326,7 @@ fn zero_directions_with_spreading_are_refused() {
     });
     refused(c, "sea.n_directions", "0");
     let c = with(|c| c.sea.spreading = Spreading::CosN { n: 0.0 });
-    refused(c, "sea.spreading.n", "0");
+    refused(c, "sea.spreading_exponent", "0");
 }
 
 #[test]

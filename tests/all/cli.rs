@@ -1,7 +1,7 @@
 //! The command-line tool as a user runs it.
 
-use slowdrift::config::file;
-use slowdrift::hydro::database::HydroDatabase;
+use slowdrift::hydro::io::database::HydroDatabase;
+use slowdrift::problem;
 use std::path::Path;
 use std::process::Command;
 
@@ -36,7 +36,7 @@ fn hydro_columns_writes_the_configuration_drift_table() {
     std::fs::remove_file(&out).ok();
     assert_eq!(
         database.to_drift_table().unwrap(),
-        file::load(&config).unwrap().drift
+        problem::load(&config).unwrap().hydro.drift
     );
 }
 
@@ -64,7 +64,7 @@ fn simulate_prints_the_summary_and_writes_the_series() {
     }
     let csv = std::fs::read_to_string(&out).unwrap();
     std::fs::remove_file(&out).ok();
-    let duration = file::load(&config).unwrap().run;
+    let duration = problem::load(&config).unwrap().run;
     let rows = (duration.duration / duration.time_step).round() as usize + 1;
     assert_eq!(
         csv.lines().count(),

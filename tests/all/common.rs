@@ -2,14 +2,15 @@
 //! expected answers the tests derive independently.
 #![allow(dead_code)] // each test binary uses a different subset
 
-use slowdrift::config::{Current, InitialCondition, ModelOptions, Platform, Run};
 use slowdrift::hydro::{DriftRow, DriftTable};
 use slowdrift::model::{
     Cylinder, DragModel, DriftDamping, Environment, Interaction, NewmanForm, SecondOrder,
     DEFAULT_QTF_TOLERANCE,
 };
+use slowdrift::problem::Hydro;
+use slowdrift::scenario::{Current, InitialCondition, ModelOptions, Platform, Run};
 use slowdrift::sea_state::{SeaState, Spectrum, Spreading};
-use slowdrift::Config;
+use slowdrift::Problem;
 use std::f64::consts::PI;
 
 pub const GRAVITY: f64 = 9.80665;
@@ -94,8 +95,8 @@ pub fn oscillator_platform(mass: f64, yaw_inertia: f64, periods: [f64; 3], zeta:
 }
 
 /// Head seas on an oscillator platform, Newman geometric, no drift damping, no drag.
-pub fn base_config(duration: f64, time_step: f64, seed: u64) -> Config {
-    Config {
+pub fn base_config(duration: f64, time_step: f64, seed: u64) -> Problem {
+    Problem {
         environment: Environment::default(),
         sea: long_crested(jonswap(6.0, 10.0), seed),
         current: Current::default(),
@@ -105,9 +106,7 @@ pub fn base_config(duration: f64, time_step: f64, seed: u64) -> Config {
             start_time: 0.0,
         },
         platform: oscillator_platform(1.0e7, 1.0e10, [60.0, 60.0, 40.0], 0.2),
-        drift: drift_table(smooth_drift),
-        qtf: None,
-        bidirectional: None,
+        hydro: Hydro::drift(drift_table(smooth_drift)),
         model: ModelOptions {
             second_order: SecondOrder::Newman,
             qtf_tolerance: DEFAULT_QTF_TOLERANCE,
@@ -119,6 +118,7 @@ pub fn base_config(duration: f64, time_step: f64, seed: u64) -> Config {
             yaw_following: None,
         },
         initial: InitialCondition::default(),
+        origins: Default::default(),
     }
 }
 
@@ -136,7 +136,7 @@ pub fn simpson(f: impl Fn(f64) -> f64, a: f64, b: f64, panels: usize) -> f64 {
 /// driven by Newman's geometric force of the [`smooth_drift`] surge drift:
 /// var x = integral S_F(mu) |H(mu)|^2 dmu with S_F(mu) = 8 integral S(w) S(w + mu)
 /// T(w) T(w + mu) dw over the simulated band (physics.md section 8).
-pub fn oscillator_surge_variance(config: &Config) -> f64 {
+pub fn oscillator_surge_variance(config: &Problem) -> f64 {
     let p = &config.platform;
     let (mass, stiffness, damping) = (
         p.mass + p.added_mass[0][0],

@@ -12,7 +12,7 @@ use slowdrift::hydro::bidirectional::{BidirectionalSource, BidirectionalTable, D
 use slowdrift::hydro::columns::ColumnArray;
 use slowdrift::model::{Interaction, NewmanForm};
 use slowdrift::sea_state::{FrequencyGrid, SeaState, Spreading, WaveComponents};
-use slowdrift::{Config, Simulation};
+use slowdrift::{Problem, Simulation};
 
 fn spread_sea(seed: u64, n_directions: usize) -> SeaState {
     SeaState {
@@ -109,7 +109,7 @@ fn heading_independent_mean_direction_is_the_long_crested_force_of_summed_amplit
     let drift = |omega: f64, _beta: f64| [3.0e4 * (omega - 0.8), 1.0e4 * omega, -2.0e5];
     let mut config = base_config(400.0, 1.0, 11);
     config.sea = spread_sea(11, 5);
-    config.drift = drift_table(drift);
+    config.hydro.drift = drift_table(drift);
     config.model.newman = NewmanForm::Arithmetic;
     config.model.interaction = Interaction::MeanDirection;
     let sim = Simulation::new(config.clone()).unwrap();
@@ -217,10 +217,10 @@ fn interpolate_diagonal(pairs: &DirectionPairs, k: usize, w: f64) -> f64 {
     (lo + (hi - lo) * f).re
 }
 
-fn spread_config(interaction: Interaction) -> Config {
+fn spread_config(interaction: Interaction) -> Problem {
     let mut config = base_config(600.0, 1.0, 3);
     config.sea = spread_sea(3, 7);
-    config.drift = drift_table(smooth_drift);
+    config.hydro.drift = drift_table(smooth_drift);
     config.model.interaction = interaction;
     config
 }
@@ -235,7 +235,7 @@ fn none_and_one_direction_leave_the_records_unchanged() {
     let grid = FrequencyGrid::new(0.0, 600.0, 0.5, config.sea.band()).unwrap();
     let comps = WaveComponents::generate(&config.sea, grid);
     let transfers =
-        transfers_on_grid(&config.drift, &comps.grid, &comps.directions, false).unwrap();
+        transfers_on_grid(&config.hydro.drift, &comps.grid, &comps.directions, false).unwrap();
     let plain = ForceRecords::build(
         &comps,
         &transfers,
@@ -258,7 +258,7 @@ fn none_and_one_direction_leave_the_records_unchanged() {
     assert_eq!(with.records().elevation, plain.elevation);
 
     let mut long = base_config(600.0, 1.0, 3);
-    long.drift = drift_table(smooth_drift);
+    long.hydro.drift = drift_table(smooth_drift);
     let reference = Simulation::new(long.clone()).unwrap();
     long.model.interaction = Interaction::MeanDirection;
     assert_eq!(
@@ -283,7 +283,7 @@ fn missing_bidirectional_data_is_named() {
     let table =
         BidirectionalTable::from_column_array(&array, &env, &[0.3, 0.8, 1.5], &narrow).unwrap();
     let mut config = spread_config(Interaction::Bidirectional);
-    config.bidirectional = Some(BidirectionalSource::Table(table));
+    config.hydro.bidirectional = Some(BidirectionalSource::Table(table));
     let e = Simulation::new(config.clone()).unwrap_err().to_string();
     assert!(
         e.contains("bidirectional_drift.headings") && e.contains("extrapolated"),
@@ -292,7 +292,7 @@ fn missing_bidirectional_data_is_named() {
     let full: Vec<f64> = (0..36).map(|i| (i as f64 * 10.0).to_radians()).collect();
     let table =
         BidirectionalTable::from_column_array(&array, &env, &[0.5, 0.8, 1.5], &full).unwrap();
-    config.bidirectional = Some(BidirectionalSource::Table(table));
+    config.hydro.bidirectional = Some(BidirectionalSource::Table(table));
     let e = Simulation::new(config).unwrap_err().to_string();
     assert!(e.contains("does not cover the wave band"), "{e}");
 }

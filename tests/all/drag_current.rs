@@ -85,7 +85,7 @@ fn current_through_drift_damping_shifts_the_mean_force() {
     let table = DriftTable::from_rows(&rows).unwrap();
     let run = |current: f64| {
         let mut config = base_config(16_384.0, 1.0, 4);
-        config.drift = table.clone();
+        config.hydro.drift = table.clone();
         config.model.drift_damping = DriftDamping::Table;
         config.current.speed = current;
         let mut sim = Simulation::new(config).unwrap();

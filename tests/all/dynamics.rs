@@ -147,7 +147,7 @@ fn undamped_platform_conserves_energy_up_to_rk4_dissipation() {
     let periods = [60.0, 60.0, 40.0];
     let duration = 20.0 * 60.0;
     let mut config = base_config(duration + 10.0, h, 11);
-    config.drift = drift_table(|_, _| [0.0; 3]);
+    config.hydro.drift = drift_table(|_, _| [0.0; 3]);
     config.platform.linear_damping = [[0.0; 3]; 3];
     config.initial.position = [1.0, 0.5, 0.01];
     let inertia = [
@@ -190,9 +190,9 @@ fn undamped_platform_conserves_energy_up_to_rk4_dissipation() {
     assert!(loss > 0.0 && loss < 1e-4, "relative energy loss {loss}");
 }
 
-fn rotation_config(theta0: f64) -> slowdrift::Config {
+fn rotation_config(theta0: f64) -> slowdrift::Problem {
     let mut config = base_config(300.0, 1.0, 5);
-    config.drift = drift_table(|w, _| {
+    config.hydro.drift = drift_table(|w, _| {
         let surge = 2.0e4 * (1.0 + w * w);
         [surge, 0.3 * surge, 50.0 * surge]
     });
@@ -268,7 +268,7 @@ fn advance_in_whole_steps_is_step() {
 /// Narrow-band waves: difference frequencies below 0.2 rad/s, so the force is smooth on the
 /// 0.5 s record spacing and cubic interpolation between samples costs ~ (0.2 * 0.5)^4 * 3/128
 /// = 2e-6 relative.
-fn smooth_force_config() -> slowdrift::Config {
+fn smooth_force_config() -> slowdrift::Problem {
     let mut config = base_config(200.0, 1.0, 9);
     config.sea.band = Some((0.55, 0.75));
     config

@@ -4,11 +4,11 @@
 //! arguments, unreadable configuration files; and none of it disturbs another instance.
 
 use crate::fmu::*;
-use slowdrift::config::file;
 use slowdrift::fmi2::exports::*;
 use slowdrift::fmi2::machine::{Call, MachineState};
 use slowdrift::fmi2::types::*;
 use slowdrift::model_description::{vr, GUID, MODEL_IDENTIFIER};
+use slowdrift::problem;
 use slowdrift::Simulation;
 use std::ffi::{c_char, CString};
 use std::path::{Path, PathBuf};
@@ -610,7 +610,7 @@ fn file_uri(path: &Path) -> String {
     format!("file://{}", path.display().to_string().replace(' ', "%20"))
 }
 
-const DEFAULT_TOML: &str = include_str!("../../src/config/default.toml");
+const DEFAULT_TOML: &str = include_str!("../../src/scenario/default.toml");
 
 /// Outputs after 50 steps of an instance that is set up by `prepare`.
 fn fifty_steps(fmu: &Fmu, prepare: impl Fn(&Fmu)) -> (fmi2Status, Vec<f64>) {
@@ -626,7 +626,7 @@ fn fifty_steps(fmu: &Fmu, prepare: impl Fn(&Fmu)) -> (fmi2Status, Vec<f64>) {
     (status, fmu.outputs())
 }
 
-fn native_fifty_steps(mut config: slowdrift::Config) -> Vec<f64> {
+fn native_fifty_steps(mut config: slowdrift::Problem) -> Vec<f64> {
     config.run.start_time = START;
     config.run.duration = STOP - START;
     let mut sim = Simulation::new(config).unwrap();
@@ -666,7 +666,7 @@ fn hydro_database_files() {
     let heavy = DEFAULT_TOML.replace("mass = 1.0097e8", "mass = 2.0e8");
     assert_ne!(heavy, DEFAULT_TOML);
     let good = scratch.write("heavy platform.toml", &heavy);
-    let expected = native_fifty_steps(file::load(&good).unwrap());
+    let expected = native_fifty_steps(problem::load(&good).unwrap());
     for reference in [good.display().to_string(), file_uri(&good)] {
         let fmu = Fmu::new("file");
         let (status, outputs) = fifty_steps(&fmu, |f| {
@@ -700,8 +700,8 @@ fn hydro_database_files() {
 fn resources_platform_toml_is_the_default() {
     let scratch = Scratch::new("resources");
     let heavy = DEFAULT_TOML.replace("mass = 1.0097e8", "mass = 2.0e8");
-    let path = scratch.write(slowdrift::config::default_platform::RESOURCE_CONFIG, &heavy);
-    let expected = native_fifty_steps(file::load(&path).unwrap());
+    let path = scratch.write(slowdrift::fmi2::resources::RESOURCE_CONFIG, &heavy);
+    let expected = native_fifty_steps(problem::load(&path).unwrap());
     let dir = scratch.0.display().to_string();
     for uri in [
         file_uri(&scratch.0),
@@ -714,8 +714,7 @@ fn resources_platform_toml_is_the_default() {
         assert_eq!(status, fmi2Status::fmi2OK, "{uri}: {}", fmu.messages());
         assert_eq!(bits(&outputs), bits(&expected), "{uri}");
     }
-    let embedded =
-        native_fifty_steps(slowdrift::config::default_platform::default_config().unwrap());
+    let embedded = native_fifty_steps(slowdrift::problem::default_problem().unwrap());
     assert_ne!(bits(&embedded), bits(&expected));
     let empty = Scratch::new("no resources");
     for location in [

@@ -1,21 +1,22 @@
 //! Drives the exported `fmi2*` functions in-process, as a C master would, with a logger
 //! that records every message per instance; and the independent route for the expected
-//! values: a native [`Simulation`] built from a [`Config`] written here field by field.
+//! values: a native [`Simulation`] built from a [`Problem`] written here field by field.
 #![allow(dead_code)] // each test binary uses a different subset
 
-use slowdrift::config::default_platform::{default_config, write_resources};
 use slowdrift::fmi2::exports::*;
+use slowdrift::fmi2::resources::write_resources;
 use slowdrift::fmi2::types::*;
 use slowdrift::model_description::{vr, Causality, GUID, VARIABLES};
-use slowdrift::{Config, Outputs, Simulation};
+use slowdrift::problem::default_problem;
+use slowdrift::{Outputs, Problem, Simulation};
 use std::ffi::{c_char, c_void, CStr, CString};
 use std::ptr;
 use std::sync::{Mutex, OnceLock};
 
 /// The embedded default, computed once per test binary (the column solver takes about 1 s).
-pub fn default_platform() -> &'static Config {
-    static DEFAULT: OnceLock<Config> = OnceLock::new();
-    DEFAULT.get_or_init(|| default_config().unwrap())
+pub fn default_platform() -> &'static Problem {
+    static DEFAULT: OnceLock<Problem> = OnceLock::new();
+    DEFAULT.get_or_init(|| default_problem().unwrap())
 }
 
 /// A `resources` folder as fmu-pack writes it (the default with its drift precomputed),
@@ -121,7 +122,7 @@ pub fn native_outputs(o: &Outputs) -> Vec<f64> {
 
 /// The native configuration of the embedded default with a seed, a wave direction and a
 /// run, as the FMU parameters and `fmi2SetupExperiment` describe them.
-pub fn native_config(seed: u64, direction: f64, start: f64, stop: f64) -> Config {
+pub fn native_config(seed: u64, direction: f64, start: f64, stop: f64) -> Problem {
     let mut c = default_platform().clone();
     c.sea.seed = seed;
     c.sea.mean_direction = direction;

@@ -7,15 +7,16 @@
 use crate::common::*;
 use rustfft::num_complex::Complex64;
 use slowdrift::forces::{
-    DirectionTransfer, ForceRecords, GridQtf, QtfFactorisation, RecordOptions, MIN_QTF_TOLERANCE,
+    DirectionTransfer, ForceRecords, GridQtf, QtfFactorisation, RecordOptions,
 };
-use slowdrift::hydro::database::{HydroDatabase, QtfData, QtfMatrix};
-use slowdrift::hydro::wamit::WamitOptions;
+use slowdrift::hydro::io::database::{HydroDatabase, QtfData, QtfMatrix};
+use slowdrift::hydro::io::wamit::WamitOptions;
+use slowdrift::hydro::qtf::MIN_QTF_TOLERANCE;
 use slowdrift::model::Dof;
 use slowdrift::model::{DriftDamping, NewmanForm, SecondOrder};
 use slowdrift::sea_state::{FrequencyGrid, SeaState, Spectrum, Spreading, WaveComponents};
 use slowdrift::stats::{summarize, welch_spectrum};
-use slowdrift::{Config, Simulation};
+use slowdrift::{Problem, Simulation};
 use std::f64::consts::PI;
 
 /// A smooth, indefinite, complex Hermitian QTF that differs from Newman's: a kernel that
@@ -122,11 +123,11 @@ fn spread_sea(seed: u64) -> SeaState {
 }
 
 /// A configuration with the full QTF at every direction of `sea`.
-fn full_qtf_config(sea: SeaState, omegas: &[f64], tolerance: f64) -> Config {
+fn full_qtf_config(sea: SeaState, omegas: &[f64], tolerance: f64) -> Problem {
     let mut config = base_config(300.0, 0.5, sea.seed);
     config.run.start_time = 100.0;
     let headings: Vec<f64> = sea.directions().iter().map(|d| d.heading).collect();
-    config.qtf = Some(qtf_data(omegas, &headings));
+    config.hydro.qtf = Some(qtf_data(omegas, &headings).to_qtf());
     config.sea = sea;
     config.model.second_order = SecondOrder::FullQtf;
     config.model.qtf_tolerance = tolerance;
@@ -400,7 +401,7 @@ fn force_spectrum_matches_the_double_integral_of_the_spectrum_and_the_qtf() {
 /// 6.0e5 kg), the platform's yaw inertia 1.2264e10 kg m^2 (Robertson et al. 2014), the
 /// WAMIT zero-frequency added mass, mooring stiffness for 100 s periods in surge, sway and
 /// yaw and linear damping at 5 % of critical.
-fn oc4_config(database: &HydroDatabase, second_order: SecondOrder, seed: u64) -> Config {
+fn oc4_config(database: &HydroDatabase, second_order: SecondOrder, seed: u64) -> Problem {
     let mut config = base_config(3.0 * 3600.0, 1.0, seed);
     let p = &mut config.platform;
     p.mass = 1.4073e7;
@@ -426,8 +427,8 @@ fn oc4_config(database: &HydroDatabase, second_order: SecondOrder, seed: u64) ->
         },
         seed,
     );
-    config.drift = database.to_drift_table().unwrap();
-    config.qtf = database.qtf.clone();
+    config.hydro.drift = database.to_drift_table().unwrap();
+    config.hydro.qtf = database.qtf.as_ref().map(|q| q.to_qtf());
     config.model.second_order = second_order;
     config.model.drift_damping = DriftDamping::Off;
     config
@@ -445,8 +446,8 @@ fn oc4_full_qtf_against_newman() {
     let database = HydroDatabase::from_wamit(&root, &WamitOptions::default())
         .unwrap()
         .database;
-    let q = database.qtf.as_ref().unwrap();
-    let surge = q.block(Dof::Surge, 0.0, 1e-6).unwrap().values();
+    let q = database.qtf.as_ref().unwrap().to_qtf();
+    let surge = q.block(Dof::Surge, 0.0, 1e-6).unwrap().values.clone();
     for tolerance in [1e-2, 1e-4, 1e-6, 1e-8] {
         let f = QtfFactorisation::new(&q.omegas, &surge, tolerance).unwrap();
         println!(

@@ -2,9 +2,9 @@
 //! reset, and exact time keeping (time = start + n h from an integer count).
 
 use crate::common::*;
-use slowdrift::{Config, Simulation};
+use slowdrift::{Problem, Simulation};
 
-fn config(seed: u64) -> Config {
+fn config(seed: u64) -> Problem {
     base_config(600.0, 1.0, seed)
 }
 

@@ -7,8 +7,8 @@
 //! headings in any order, bi-directional pairs, malformed lines, missing DOFs and headings.
 
 use rustfft::num_complex::Complex64;
-use slowdrift::hydro::database::{HydroDatabase, MassProperties, FORMAT_VERSION};
-use slowdrift::hydro::wamit::{
+use slowdrift::hydro::io::database::{HydroDatabase, MassProperties, FORMAT_VERSION};
+use slowdrift::hydro::io::wamit::{
     read_added_mass_damping, read_difference_qtf, read_hydrostatics, read_mean_drift, WamitOptions,
 };
 use slowdrift::model::Dof;
@@ -684,7 +684,7 @@ fn mean_drift_file_gives_a_drift_table_and_lists_what_is_missing() {
 // ------------------------------------------------------------------------ database
 
 fn small_database() -> HydroDatabase {
-    use slowdrift::hydro::database::{DriftPoint, QtfData, QtfMatrix};
+    use slowdrift::hydro::io::database::{DriftPoint, QtfData, QtfMatrix};
     let b = [[1.0e3, 0.1, 0.0], [0.0, 2.0e3, 0.0], [0.0, 0.0, 3.0e5]];
     HydroDatabase {
         format_version: FORMAT_VERSION,

@@ -2,24 +2,24 @@
 //! Aranha damping), each against an independent route: the mean-position records of the
 //! sea rotated by -theta (the existing path with the wave direction minus theta).
 
-use slowdrift::config::default_platform::default_config;
 use slowdrift::forces::{ForceRecords, YawPoint};
 use slowdrift::hydro::{DriftRow, DriftTable};
 use slowdrift::model::{DragModel, Interaction, SecondOrder, YawFollowing};
+use slowdrift::problem::default_problem;
 use slowdrift::sea_state::Spreading;
-use slowdrift::{Config, Error, Simulation};
+use slowdrift::{Error, Problem, Simulation};
 use std::sync::OnceLock;
 
 /// The default configuration (its column solver runs once per test binary).
-fn default() -> Config {
-    static DEFAULT: OnceLock<Config> = OnceLock::new();
-    DEFAULT.get_or_init(|| default_config().unwrap()).clone()
+fn default() -> Problem {
+    static DEFAULT: OnceLock<Problem> = OnceLock::new();
+    DEFAULT.get_or_init(|| default_problem().unwrap()).clone()
 }
 
 /// The default platform for `duration` s in a sea towards `direction_deg`, optionally
 /// spread cos^2 over 5 directions (each direction's own terms only: yaw following does not
 /// carry the cross-direction terms), with the given yaw following.
-fn config(duration: f64, direction_deg: f64, spread: bool, yaw: Option<YawFollowing>) -> Config {
+fn config(duration: f64, direction_deg: f64, spread: bool, yaw: Option<YawFollowing>) -> Problem {
     let mut c = default();
     c.run.duration = duration;
     c.sea.mean_direction = direction_deg.to_radians();
@@ -65,7 +65,7 @@ fn max_abs(v: &[f64]) -> f64 {
 }
 
 /// The mean-position records of the sea rotated by -theta: the direct route at yaw theta.
-fn direct(base: &Config, theta_deg: f64) -> Vec<Vec<f64>> {
+fn direct(base: &Problem, theta_deg: f64) -> Vec<Vec<f64>> {
     let mut c = base.clone();
     c.model.yaw_following = None;
     c.sea.mean_direction -= theta_deg.to_radians();
@@ -198,7 +198,7 @@ fn with_the_yaw_held_at_zero_yaw_following_changes_nothing() {
 
 /// An oblique spread sea on the default platform with a yaw spring 20 times softer, from
 /// an initial yaw of `initial_deg`.
-fn yawing(duration: f64, initial_deg: f64, yaw: Option<YawFollowing>) -> Config {
+fn yawing(duration: f64, initial_deg: f64, yaw: Option<YawFollowing>) -> Problem {
     let mut c = config(duration, 30.0, true, yaw);
     c.platform.stiffness[2][2] /= 20.0;
     c.initial.position[2] = initial_deg.to_radians();
@@ -280,7 +280,7 @@ fn a_table_that_misses_relative_headings_is_refused_naming_the_gap() {
         })
         .collect();
     let mut c = crate::common::base_config(600.0, 1.0, 1);
-    c.drift = DriftTable::from_rows(&rows).unwrap();
+    c.hydro.drift = DriftTable::from_rows(&rows).unwrap();
     c.model.yaw_following = range(5, -10.0, 10.0);
     let text = Simulation::new(c.clone()).unwrap_err().to_string();
     assert!(text.contains("model.yaw_following"), "{text}");
@@ -336,6 +336,7 @@ fn record_means_are_the_drift_at_the_relative_heading() {
         let mut expected = [0.0; 3];
         for (i, a) in components.of_direction(0).iter().enumerate() {
             let t = c
+                .hydro
                 .drift
                 .drift(grid.omega(i), -theta_deg.to_radians())
                 .unwrap();

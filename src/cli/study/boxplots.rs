@@ -6,9 +6,9 @@ use crate::cli::montecarlo::run_campaign;
 use crate::plot::{
     padded_range, write_figure, BoxItem, Figure, LegendAt, Panel, Series, Style, Ticks,
 };
-use slowdrift::config::Config;
 use slowdrift::montecarlo::{Case, Job};
 use slowdrift::studies::distribution::{box_stats, log_log_slope, sample_std};
+use slowdrift::Problem;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -19,7 +19,7 @@ const DEFAULT_SAMPLES: [usize; 7] = [1000, 1000, 1000, 400, 200, 200, 200];
 
 /// Fig. 10: box plots of the surge mean and rms over many seeds for record lengths
 /// 2^A .. 2^B s (analysed after the transient), and their scatter against length.
-pub(super) fn boxplots(base: &Config, options: &Options, out: &Path) -> Result<(), String> {
+pub(super) fn boxplots(base: &Problem, options: &Options, out: &Path) -> Result<(), String> {
     let exponents = options.exponents()?;
     let samples: Vec<usize> = match options.get("--samples") {
         Some(text) => text

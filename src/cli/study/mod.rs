@@ -9,10 +9,12 @@ mod sensitivity;
 mod transient;
 mod waves;
 
-use slowdrift::config::default_platform::{default_config, DEFAULT_DRIFT_LABEL};
-use slowdrift::config::{file, Config, TRANSIENT_CYCLES};
 use slowdrift::montecarlo::runs_file::RunRow;
 use slowdrift::montecarlo::Case;
+use slowdrift::problem::default_problem;
+use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
+use slowdrift::scenario::TRANSIENT_CYCLES;
+use slowdrift::{problem, Problem};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
@@ -65,10 +67,10 @@ pub fn run(args: &[String]) -> Result<(), String> {
     let out = PathBuf::from(options.required("--out")?);
     std::fs::create_dir_all(&out).map_err(|e| format!("{}: {e}", out.display()))?;
     let base = match options.get("--config") {
-        Some(path) => file::load(Path::new(path)).map_err(|e| e.to_string())?,
+        Some(path) => problem::load(Path::new(path)).map_err(|e| e.to_string())?,
         None => {
             println!("embedded default platform; drift: {DEFAULT_DRIFT_LABEL}");
-            default_config().map_err(|e| e.to_string())?
+            default_problem().map_err(|e| e.to_string())?
         }
     };
     match kind {
@@ -161,7 +163,7 @@ fn report(paths: &[PathBuf]) {
     }
 }
 
-fn sea_text(config: &Config) -> String {
+fn sea_text(config: &Problem) -> String {
     use slowdrift::sea_state::Spectrum;
     let spectrum = match &config.sea.spectrum {
         Spectrum::Jonswap { hs, tp, .. } => format!("JONSWAP Hs {hs} m, Tp {tp} s"),
@@ -172,7 +174,7 @@ fn sea_text(config: &Config) -> String {
 }
 
 /// The undamped surge natural period times [`TRANSIENT_CYCLES`] (ten slow-drift cycles), s.
-fn ten_cycles(config: &Config) -> Result<f64, String> {
+fn ten_cycles(config: &Problem) -> Result<f64, String> {
     config
         .surge_natural_period()
         .map(|p| TRANSIENT_CYCLES * p)

@@ -4,9 +4,9 @@
 use super::{report, sea_text, surge_values, write_text, Options};
 use crate::cli::montecarlo::run_campaign;
 use crate::plot::{padded_range, write_figure, Figure, LegendAt, Panel, Series, Style, Ticks};
-use slowdrift::config::Config;
 use slowdrift::montecarlo::cases::read_case_table;
 use slowdrift::montecarlo::{seed_statistics, Job};
+use slowdrift::Problem;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -28,7 +28,7 @@ fn column_label(column: &str) -> String {
 
 /// Figs 12-15: surge mean and rms (mean over seeds, +- 1 standard error) against one
 /// column of a case table.
-pub(super) fn sensitivity(base: &Config, options: &Options, out: &Path) -> Result<(), String> {
+pub(super) fn sensitivity(base: &Problem, options: &Options, out: &Path) -> Result<(), String> {
     let table = PathBuf::from(options.required("--cases")?);
     let column = options.required("--x")?;
     let seeds = options.whole("--seeds", 100, 2)?;

@@ -3,10 +3,11 @@
 
 use super::{parse_numbers, report, sea_text, ten_cycles, write_text, Options};
 use crate::plot::{padded_range, write_figure, Figure, LegendAt, Panel, Series, Style, Ticks};
-use slowdrift::config::{Config, TRANSIENT_CYCLES};
 use slowdrift::montecarlo::{seed_statistics, simulate_positions, SeedStatistics};
+use slowdrift::scenario::TRANSIENT_CYCLES;
 use slowdrift::studies::blocks::block_summaries;
 use slowdrift::studies::parallel_map;
+use slowdrift::Problem;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -14,7 +15,7 @@ use std::path::Path;
 /// periods from the start, averaged over runs (seeds 1..=runs, the same seeds for every
 /// initial condition), for initial surge offsets added to the configuration's initial
 /// position (released at rest).
-pub(super) fn transient(base: &Config, options: &Options, out: &Path) -> Result<(), String> {
+pub(super) fn transient(base: &Problem, options: &Options, out: &Path) -> Result<(), String> {
     let runs = options.whole("--runs", 200, 2)?;
     let blocks = options.whole("--blocks", 8, 2)?;
     let offsets = parse_numbers("--offsets", options.get("--offsets").unwrap_or("0,15"))?;

@@ -5,11 +5,11 @@ use super::{report, sea_text, write_text, Options};
 use crate::plot::{
     padded_range, power_of_two_text, write_figure, Figure, LegendAt, Panel, Series, Style, Ticks,
 };
-use slowdrift::config::Config;
 use slowdrift::stats::welch_spectrum;
 use slowdrift::studies::distribution::{gaussian_pdf, histogram_pdf};
 use slowdrift::studies::parallel_map;
 use slowdrift::studies::waves::elevation_record;
+use slowdrift::Problem;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -23,7 +23,7 @@ const PDF_HALF_WIDTH: f64 = 4.0;
 
 /// The integral of S(omega)^power over the simulated band by the trapezoidal rule on 20 000
 /// intervals; power 1 is the variance the synthesis targets (E&S 5-6), m^2.
-fn band_integral(config: &Config, power: i32) -> f64 {
+fn band_integral(config: &Problem, power: i32) -> f64 {
     const INTERVALS: usize = 20_000;
     let (lo, hi) = config.sea.band();
     let h = (hi - lo) / INTERVALS as f64;
@@ -35,7 +35,7 @@ fn band_integral(config: &Config, power: i32) -> f64 {
 /// length L has variance sum |a_n|^2 / 2 with |a_n|^2 exponentially distributed of mean
 /// 2 S(w_n) dw (E&S 5), so sd / mean = sqrt(dw sum S^2 dw) / m0 -> sqrt((2 pi / L)
 /// integral S^2 dw) / integral S dw.
-fn variance_relative_sd(config: &Config, length: f64) -> f64 {
+fn variance_relative_sd(config: &Problem, length: f64) -> f64 {
     (2.0 * std::f64::consts::PI / length * band_integral(config, 2)).sqrt()
         / band_integral(config, 1)
 }
@@ -46,7 +46,7 @@ fn length_label(exponent: u32) -> String {
 
 /// Figs 7 and 8: elevation pdf against the Gaussian and Welch spectrum against the input,
 /// one panel per record length 2^A .. 2^B s, and a last panel of the convergence.
-pub(super) fn waves(base: &Config, options: &Options, out: &Path) -> Result<(), String> {
+pub(super) fn waves(base: &Problem, options: &Options, out: &Path) -> Result<(), String> {
     let exponents = options.exponents()?;
     let variance = band_integral(base, 1);
     let sigma = variance.sqrt();

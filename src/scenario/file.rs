@@ -1,4 +1,4 @@
-//! The TOML configuration file: reads it into a validated [`Config`].
+//! The TOML configuration file: reads it into a [`Scenario`].
 //!
 //! Units are SI everywhere except angles: every angle in the file is in degrees and its key
 //! ends in `_deg` (rates in deg/s end in `_rate_deg`). This module converts them to radians,
@@ -87,13 +87,13 @@
 //! header of column names, then one numeric row per line; blank lines and lines starting
 //! with `#` are skipped.
 
-use super::{Config, Current, InitialCondition, ModelOptions, Platform, Run};
-use crate::error::{Error, Result};
-use crate::hydro::bidirectional::BidirectionalSource;
-use crate::hydro::column_drift::isolated_columns_table;
-use crate::hydro::columns::ColumnArray;
-use crate::hydro::database::{HydroDatabase, QtfData};
-use crate::hydro::{DriftRow, DriftTable};
+use super::{
+    ColumnGrid, Current, DriftSource, InitialCondition, ModelOptions, Origins, Platform, Run,
+    Scenario, DEFAULT_N_DIRECTIONS,
+};
+use crate::error::{Error, Location, Result};
+use crate::hydro::io::drift_csv::DriftFields;
+use crate::hydro::DriftTable;
 use crate::model::{
     Cylinder, DragModel, DriftDamping, Environment, Interaction, NewmanForm, SecondOrder,
     YawFollowing,
@@ -106,34 +106,14 @@ use toml::Spanned;
 
 /// Default RK4 time step, s.
 pub const DEFAULT_TIME_STEP: f64 = 1.0;
-/// Default number of discrete directions of a short-crested sea.
-pub const DEFAULT_N_DIRECTIONS: usize = 15;
 /// Number of directions of a long-crested sea (the only value accepted for it).
 pub const LONG_CRESTED_DIRECTIONS: usize = 1;
 /// Default seed of the random wave amplitudes.
 pub const DEFAULT_SEED: u64 = 1;
 
-/// Drift column: wave frequency, rad/s.
-const COLUMN_OMEGA: &str = "omega";
-/// Drift column: wave heading relative to the body x axis, deg.
-const COLUMN_BETA: &str = "beta_deg";
-/// Drift columns: mean drift surge, sway (N/m^2) and yaw (N m/m^2).
-const COLUMNS_DRIFT: [&str; 3] = ["surge", "sway", "yaw"];
-/// Drift columns: wave-drift damping b_ij, row i = force, column j = velocity.
-const COLUMNS_DAMPING: [[&str; 3]; 3] = [
-    ["b11", "b12", "b13"],
-    ["b21", "b22", "b23"],
-    ["b31", "b32", "b33"],
-];
-
-/// First character of a comment line in a CSV drift file.
-const CSV_COMMENT: char = '#';
-/// Field separator of a CSV drift file.
-const CSV_SEPARATOR: char = ',';
-
-/// Reads and validates the configuration file at `path`. A CSV drift file it names is
-/// looked up relative to the directory of `path`.
-pub fn load(path: &Path) -> Result<Config> {
+/// Reads the configuration file at `path`. A CSV or database file it names is looked up
+/// relative to the directory of `path` (and read when the scenario is resolved).
+pub fn load(path: &Path) -> Result<Scenario> {
     let text = std::fs::read_to_string(path).map_err(|e| Error::Io {
         path: path.display().to_string(),
         message: e.to_string(),
@@ -142,18 +122,19 @@ pub fn load(path: &Path) -> Result<Config> {
     parse(&text, &path.display().to_string(), base_dir)
 }
 
-/// Parses and validates configuration text. `origin` names the text in error messages
-/// (normally the file name); a CSV drift file is looked up relative to `base_dir`.
-pub fn parse(text: &str, origin: &str, base_dir: &Path) -> Result<Config> {
+/// Parses configuration text. `origin` names the text in error messages (normally the file
+/// name); a CSV or database file is looked up relative to `base_dir`. Values are checked when
+/// the problem is ([`crate::problem::Problem::check`]); this reader refuses what does not fit
+/// the format: unknown keys, wrong types, keys that the section's choice does not use.
+pub fn parse(text: &str, origin: &str, base_dir: &Path) -> Result<Scenario> {
     let file: ConfigFile = toml::from_str(text).map_err(|e| Error::Parse {
         path: origin.to_string(),
         line: e.span().map(|span| line_of(text, span.start)),
         message: e.message().to_string(),
     })?;
     let source = Source { text, origin };
-    let config = file.into_config(&source, base_dir)?;
-    config.validate()?;
-    Ok(config)
+    let origins = Origins::of_file(origin, text);
+    file.into_scenario(&source, base_dir, origins)
 }
 
 /// The configuration text and its name, to turn spans into `file:line` errors.
@@ -163,6 +144,14 @@ struct Source<'a> {
 }
 
 impl Source<'_> {
+    /// The line where `span` starts.
+    fn location(&self, span: Range<usize>) -> Location {
+        Location {
+            path: self.origin.to_string(),
+            line: Some(line_of(self.text, span.start)),
+        }
+    }
+
     /// A parse error at the line where `span` starts.
     fn error_at(&self, span: Range<usize>, message: String) -> Error {
         Error::Parse {
@@ -215,7 +204,7 @@ struct ConfigFile {
 }
 
 impl ConfigFile {
-    fn into_config(self, source: &Source, base_dir: &Path) -> Result<Config> {
+    fn into_scenario(self, source: &Source, base_dir: &Path, origins: Origins) -> Result<Scenario> {
         let sea_span = self.sea.span();
         let sea = self
             .sea
@@ -232,27 +221,22 @@ impl ConfigFile {
             }
             None => ModelOptions::default(),
         };
-        let environment = self.environment.into_core();
-        let platform = self.platform.into_core();
         let drift_span = self.drift.span();
-        let (drift, qtf, bidirectional) = self.drift.into_inner().into_table(
-            source,
-            drift_span,
-            base_dir,
-            &platform,
-            &environment,
-        )?;
-        Ok(Config {
-            environment,
+        let hydro = self
+            .drift
+            .into_inner()
+            .into_source(source, drift_span, base_dir)
+            .map_err(|e| origins.locate(e))?;
+        Ok(Scenario {
+            environment: self.environment.into_core(),
             sea,
             current: self.current.into_core(),
             run: self.run.into_core(),
-            platform,
-            drift,
-            qtf,
-            bidirectional,
+            platform: self.platform.into_core(),
+            hydro,
             model,
             initial: self.initial.into_core(),
+            origins,
         })
     }
 }
@@ -728,7 +712,7 @@ enum DriftFile {
     },
     /// A CSV file, relative to the configuration file's directory.
     Csv { file: PathBuf },
-    /// The drift table of a native hydro database (JSON, `hydro::database`), relative to
+    /// The drift table of a native hydro database (JSON, `hydro::io::database`), relative to
     /// the configuration file's directory. `bidirectional = "column-array"` takes the
     /// bi-directional drift from the deep-water column solver on `[[platform.columns]]` at
     /// the database's drift frequencies (what the FMU's packed default platform uses, since
@@ -794,14 +778,14 @@ fn default_columns_heading_step() -> f64 {
     COLUMNS_HEADING_STEP_DEG
 }
 
-/// `count` frequencies evenly spaced from `min` to `max`, and headings every `step_deg`
-/// from 0 up to (not including) 360 deg, in radians.
+/// A column-solver grid: `count` frequencies from `min` to `max` (rad/s), headings every
+/// `step_deg` around the circle.
 fn columns_grid(
     min: f64,
     max: f64,
     count: usize,
     step_deg: f64,
-) -> std::result::Result<(Vec<f64>, Vec<f64>), String> {
+) -> std::result::Result<ColumnGrid, String> {
     if !(min > 0.0 && max > min && min.is_finite() && max.is_finite()) {
         return Err(format!(
             "omega_min = {min}, omega_max = {max}: need 0 < omega_min < omega_max"
@@ -815,71 +799,46 @@ fn columns_grid(
             "heading_step_deg = {step_deg}: need 0 < step <= 180"
         ));
     }
-    let omegas = (0..count)
-        .map(|i| min + (max - min) * i as f64 / (count - 1) as f64)
-        .collect();
-    let n_headings = (360.0 / step_deg).round() as usize;
-    let headings = (0..n_headings)
-        .map(|i| (i as f64 * 360.0 / n_headings as f64).to_radians())
-        .collect();
-    Ok((omegas, headings))
+    Ok(ColumnGrid {
+        omega_min: min,
+        omega_max: max,
+        n_omega: count,
+        heading_step: step_deg.to_radians(),
+    })
 }
 
 impl DriftFile {
-    /// Builds the drift table, and takes the QTF when the source has one (a database) and
-    /// the bi-directional drift when it has it (the column-array solver, a database with a
-    /// table); `span` locates the `[drift]` section for error messages.
-    fn into_table(
+    /// The drift source this section names; `span` locates the `[drift]` section for error
+    /// messages. An inline table is checked and sorted here; files are read, and solvers
+    /// run, when the scenario is resolved.
+    fn into_source(
         self,
         source: &Source,
         span: Range<usize>,
         base_dir: &Path,
-        platform: &Platform,
-        environment: &Environment,
-    ) -> Result<DriftData> {
-        if let DriftFile::Database {
-            file,
-            bidirectional,
-        } = self
-        {
-            let (table, qtf, own) =
-                database_drift(source, span.clone(), &base_dir.join(file), environment)?;
-            let bidirectional = match bidirectional {
-                None => own,
-                Some(BidirectionalFile::ColumnArray) => {
-                    if own.is_some() {
-                        return Err(source.error_at(
-                            span,
-                            "[drift] bidirectional = \"column-array\" but the database has its \
-                             own bidirectional_drift table: use one of them"
-                                .to_string(),
-                        ));
-                    }
-                    Some(BidirectionalSource::ColumnArray {
-                        array: ColumnArray::new(platform.columns.clone(), None)?,
-                        omegas: table.omegas().to_vec(),
-                    })
-                }
-            };
-            return Ok((table, qtf, bidirectional));
-        }
-        let table = match self {
+    ) -> Result<DriftSource> {
+        let grid = |omega_min, omega_max, n_omega, heading_step_deg| {
+            columns_grid(omega_min, omega_max, n_omega, heading_step_deg)
+                .map_err(|m| source.error_at(span.clone(), format!("[drift] {m}")))
+        };
+        Ok(match self {
+            DriftFile::Database {
+                file,
+                bidirectional,
+            } => DriftSource::Database {
+                path: base_dir.join(file),
+                bidirectional_from_columns: matches!(
+                    bidirectional,
+                    Some(BidirectionalFile::ColumnArray)
+                ),
+            },
             DriftFile::Columns {
                 omega_min,
                 omega_max,
                 n_omega,
                 heading_step_deg,
             } => {
-                let (omegas, headings) =
-                    columns_grid(omega_min, omega_max, n_omega, heading_step_deg)
-                        .map_err(|m| source.error_at(span.clone(), format!("[drift] {m}")))?;
-                if platform.columns.is_empty() {
-                    return Err(source.error_at(
-                        span,
-                        "[drift] source = \"columns\" needs [[platform.columns]]".to_string(),
-                    ));
-                }
-                isolated_columns_table(&platform.columns, environment, &omegas, &headings)
+                DriftSource::IsolatedColumns(grid(omega_min, omega_max, n_omega, heading_step_deg)?)
             }
             DriftFile::ColumnArray {
                 omega_min,
@@ -887,212 +846,46 @@ impl DriftFile {
                 n_omega,
                 heading_step_deg,
                 depth,
-            } => {
-                let (omegas, headings) =
-                    columns_grid(omega_min, omega_max, n_omega, heading_step_deg)
-                        .map_err(|m| source.error_at(span.clone(), format!("[drift] {m}")))?;
-                let array = ColumnArray::new(platform.columns.clone(), depth)?;
-                let table = array.drift_table(environment, &omegas, &headings)?;
-                let bidirectional = BidirectionalSource::ColumnArray { array, omegas };
-                return Ok((table, None, Some(bidirectional)));
-            }
+            } => DriftSource::ColumnArray {
+                grid: grid(omega_min, omega_max, n_omega, heading_step_deg)?,
+                depth,
+            },
             DriftFile::Table { columns, rows } => {
-                let at =
-                    |message: String| source.error_at(span.clone(), format!("[drift] {message}"));
+                let at = source.location(span.clone());
                 let names: Vec<&str> = columns.iter().map(String::as_str).collect();
-                let layout = ColumnLayout::new(&names).map_err(at)?;
+                let fields = DriftFields::new(&names, &at)?;
                 let rows = rows
                     .iter()
                     .enumerate()
                     .map(|(r, values)| {
-                        layout
-                            .row(values)
-                            .map_err(|m| at(format!("rows[{r}]: {m}")))
+                        fields.row(values, &at).map_err(|e| match e {
+                            Error::Parse {
+                                path,
+                                line,
+                                message,
+                            } => Error::Parse {
+                                path,
+                                line,
+                                message: format!("[drift] rows[{r}]: {message}"),
+                            },
+                            other => other,
+                        })
                     })
                     .collect::<Result<Vec<_>>>()?;
-                DriftTable::from_rows(&rows)
+                DriftSource::Table(DriftTable::from_rows(&rows)?)
             }
-            DriftFile::Csv { file } => read_csv(&base_dir.join(file)),
-            DriftFile::Database { .. } => unreachable!("handled above"),
-        }?;
-        Ok((table, None, None))
-    }
-}
-
-/// The drift table, the QTF and the bi-directional drift of a `[drift]` source.
-type DriftData = (DriftTable, Option<QtfData>, Option<BidirectionalSource>);
-
-/// The drift table and the QTF (if any) of a native hydro database made with
-/// `environment`'s density and gravity.
-fn database_drift(
-    source: &Source,
-    span: Range<usize>,
-    path: &Path,
-    environment: &Environment,
-) -> Result<DriftData> {
-    let database = HydroDatabase::load(path)?;
-    let made_with = (database.water_density, database.gravity);
-    if made_with != (environment.water_density, environment.gravity) {
-        return Err(source.error_at(
-            span,
-            format!(
-                "[drift] the database {} was made with water_density = {}, \
-                 gravity = {}, but [environment] has {}, {}: set [environment] \
-                 to the database's values or re-import with them",
-                path.display(),
-                made_with.0,
-                made_with.1,
-                environment.water_density,
-                environment.gravity
-            ),
-        ));
-    }
-    Ok((
-        database.to_drift_table()?,
-        database.qtf,
-        database.bidirectional_drift.map(BidirectionalSource::Table),
-    ))
-}
-
-/// Where each quantity sits in a row of the drift table.
-struct ColumnLayout {
-    width: usize,
-    omega: usize,
-    beta: usize,
-    drift: [usize; 3],
-    damping: Option<[[usize; 3]; 3]>,
-}
-
-impl ColumnLayout {
-    /// Locates the columns by name; every name must be known and appear once.
-    fn new(names: &[&str]) -> std::result::Result<Self, String> {
-        let known = |name: &str| {
-            name == COLUMN_OMEGA
-                || name == COLUMN_BETA
-                || COLUMNS_DRIFT.contains(&name)
-                || COLUMNS_DAMPING.iter().any(|line| line.contains(&name))
-        };
-        for (k, name) in names.iter().enumerate() {
-            if !known(name) {
-                return Err(format!(
-                    "unknown drift column \"{name}\"; known: {COLUMN_OMEGA}, {COLUMN_BETA}, {}, b11 .. b33",
-                    COLUMNS_DRIFT.join(", ")
-                ));
-            }
-            if names[..k].contains(name) {
-                return Err(format!("drift column \"{name}\" appears twice"));
-            }
-        }
-        let find = |name: &str| names.iter().position(|n| *n == name);
-        let require = |name: &str| {
-            find(name).ok_or_else(|| format!("the drift table has no \"{name}\" column (required)"))
-        };
-        let omega = require(COLUMN_OMEGA)?;
-        let beta = require(COLUMN_BETA)?;
-        let drift = [
-            require(COLUMNS_DRIFT[0])?,
-            require(COLUMNS_DRIFT[1])?,
-            require(COLUMNS_DRIFT[2])?,
-        ];
-        let damping_given = COLUMNS_DAMPING
-            .iter()
-            .flatten()
-            .filter(|n| find(n).is_some())
-            .count();
-        let damping = if damping_given == 0 {
-            None
-        } else {
-            let mut index = [[0; 3]; 3];
-            for (i, line) in COLUMNS_DAMPING.iter().enumerate() {
-                for (j, name) in line.iter().enumerate() {
-                    index[i][j] = find(name).ok_or_else(|| {
-                        format!(
-                            "the drift table has {damping_given} of the b_ij columns but no \"{name}\": \
-                             give all nine or none"
-                        )
-                    })?;
-                }
-            }
-            Some(index)
-        };
-        Ok(ColumnLayout {
-            width: names.len(),
-            omega,
-            beta,
-            drift,
-            damping,
+            DriftFile::Csv { file } => DriftSource::Csv(base_dir.join(file)),
         })
     }
-
-    /// One row of numbers as a [`DriftRow`], the heading converted to radians.
-    fn row(&self, values: &[f64]) -> std::result::Result<DriftRow, String> {
-        if values.len() != self.width {
-            return Err(format!(
-                "{} values, but the drift table has {} columns",
-                values.len(),
-                self.width
-            ));
-        }
-        Ok(DriftRow {
-            omega: values[self.omega],
-            heading: values[self.beta].to_radians(),
-            drift: self.drift.map(|k| values[k]),
-            damping: self
-                .damping
-                .map(|index| index.map(|line| line.map(|k| values[k]))),
-        })
-    }
-}
-
-/// Reads a CSV drift table: a header line of column names, then numeric rows.
-fn read_csv(path: &Path) -> Result<DriftTable> {
-    let name = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| Error::Io {
-        path: name.clone(),
-        message: e.to_string(),
-    })?;
-    let at = |line: usize, message: String| Error::Parse {
-        path: name.clone(),
-        line: Some(line),
-        message,
-    };
-    let mut lines = text
-        .lines()
-        .enumerate()
-        .map(|(k, line)| (k + 1, line.trim()))
-        .filter(|(_, line)| !line.is_empty() && !line.starts_with(CSV_COMMENT));
-    let Some((header_line, header)) = lines.next() else {
-        return Err(Error::Parse {
-            path: name.clone(),
-            line: None,
-            message: "no header line of column names".to_string(),
-        });
-    };
-    let names: Vec<&str> = header.split(CSV_SEPARATOR).map(str::trim).collect();
-    let layout = ColumnLayout::new(&names).map_err(|m| at(header_line, m))?;
-    let mut rows = Vec::new();
-    for (line_number, line) in lines {
-        let values = line
-            .split(CSV_SEPARATOR)
-            .zip(names.iter().chain(std::iter::repeat(&"(extra)")))
-            .map(|(field, column)| {
-                let field = field.trim();
-                field.parse::<f64>().map_err(|_| {
-                    at(
-                        line_number,
-                        format!("column \"{column}\": \"{field}\" is not a number"),
-                    )
-                })
-            })
-            .collect::<Result<Vec<f64>>>()?;
-        rows.push(layout.row(&values).map_err(|m| at(line_number, m))?);
-    }
-    DriftTable::from_rows(&rows)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::hydro::bidirectional::BidirectionalSource;
+    use crate::hydro::io::database::HydroDatabase;
+    use crate::hydro::DriftRow;
+    use crate::problem::{resolve, Problem};
     use std::sync::atomic::{AtomicUsize, Ordering};
 
     /// A complete file: every key given, none at its default.
@@ -1184,8 +977,23 @@ columns = ["omega", "beta_deg", "surge", "sway", "yaw"]
 rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
 "#;
 
-    fn parse_text(text: &str) -> Result<Config> {
-        parse(text, "test.toml", Path::new("."))
+    /// The text parsed, resolved and checked, as a simulation would take it.
+    fn problem(text: &str, base_dir: &Path) -> Result<Problem> {
+        let problem = resolve(&parse(text, "test.toml", base_dir)?)?;
+        problem.check()?;
+        Ok(problem)
+    }
+
+    fn parse_text(text: &str) -> Result<Problem> {
+        problem(text, Path::new("."))
+    }
+
+    /// The 1-based line of the first line of `text` that starts with `key`.
+    fn key_line(text: &str, key: &str) -> usize {
+        text.lines()
+            .position(|l| l.starts_with(key))
+            .expect("key present")
+            + 1
     }
 
     fn error_text(text: &str) -> String {
@@ -1314,8 +1122,8 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
             row(2.0, 90.0, [4.0, 950.0, 6.0]),
         ])
         .expect("valid rows");
-        assert_eq!(config.drift, expected);
-        assert_eq!(config.drift.headings(), &[0.0, 90f64.to_radians()]);
+        assert_eq!(config.hydro.drift, expected);
+        assert_eq!(config.hydro.drift.headings(), &[0.0, 90f64.to_radians()]);
     }
 
     #[test]
@@ -1336,7 +1144,7 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
         assert_eq!(config.platform.linear_damping, [[0.0; 3]; 3]);
         assert_eq!(config.platform.quadratic_damping, [[0.0; 3]; 3]);
         assert!(config.platform.columns.is_empty());
-        assert!(!config.drift.has_damping());
+        assert!(!config.hydro.drift.has_damping());
     }
 
     #[test]
@@ -1467,7 +1275,7 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
     fn negative_hs_is_refused_by_validation() {
         let text = MINIMAL.replace("hs = 2.0", "hs = -1");
         assert!(
-            error_text(&text).starts_with("invalid sea.spectrum.hs = -1: "),
+            error_text(&text).starts_with("test.toml:4: invalid [sea] hs = -1: "),
             "{}",
             error_text(&text)
         );
@@ -1479,15 +1287,39 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
             "spectrum = \"pierson-moskowitz\"",
             "spectrum = \"jonswap\"\ngamma = 0.5",
         );
-        assert!(error_text(&text).starts_with("invalid sea.spectrum.gamma = 0.5: "));
+        let expected = format!(
+            "test.toml:{}: invalid [sea] gamma = 0.5: ",
+            key_line(&text, "gamma")
+        );
+        assert!(
+            error_text(&text).starts_with(&expected),
+            "{}",
+            error_text(&text)
+        );
     }
 
     #[test]
     fn nan_is_refused() {
         let text = MINIMAL.replace("tp = 8.0", "tp = nan");
-        assert!(error_text(&text).starts_with("invalid sea.spectrum.tp = NaN: "));
+        let expected = format!(
+            "test.toml:{}: invalid [sea] tp = NaN: ",
+            key_line(&text, "tp")
+        );
+        assert!(
+            error_text(&text).starts_with(&expected),
+            "{}",
+            error_text(&text)
+        );
         let text = MINIMAL.replace("mass = 1.0e7", "mass = nan");
-        assert!(error_text(&text).starts_with("invalid platform.mass = NaN: "));
+        let expected = format!(
+            "test.toml:{}: invalid [platform] mass = NaN: ",
+            key_line(&text, "mass")
+        );
+        assert!(
+            error_text(&text).starts_with(&expected),
+            "{}",
+            error_text(&text)
+        );
     }
 
     #[test]
@@ -1555,7 +1387,7 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
             .to_string();
         let head = MINIMAL.split("[drift]").next().expect("drift section");
         let text = format!("{head}[drift]\nsource = \"csv\"\nfile = \"{name}\"\n");
-        let from_csv = parse(&text, "test.toml", dir).expect("valid file");
+        let from_csv = problem(&text, dir).expect("valid file");
         std::fs::remove_file(&csv).expect("remove temporary file");
         assert_eq!(from_csv, parse_text(MINIMAL).expect("valid file"));
     }
@@ -1601,7 +1433,7 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
 
     /// A database holding MINIMAL's drift table, made with `rho` and g = 9.80665.
     fn database_with_minimal_drift(rho: f64) -> HydroDatabase {
-        use crate::hydro::database::{DriftPoint, FORMAT_VERSION};
+        use crate::hydro::io::database::{DriftPoint, FORMAT_VERSION};
         let point = |omega: f64, surge: f64| DriftPoint {
             omega,
             heading: 0.0,
@@ -1641,7 +1473,7 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
         );
         let mut database = database_with_minimal_drift(1025.0);
         database.save(&json).expect("writable");
-        let solver = parse(&with_columns, "test.toml", dir).expect("valid");
+        let solver = problem(&with_columns, dir).expect("valid");
         let table = BidirectionalTable {
             omegas: vec![0.3, 2.0],
             headings: vec![0.0],
@@ -1650,14 +1482,17 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
         };
         database.bidirectional_drift = Some(table.clone());
         database.save(&json).expect("writable");
-        let own = parse(&text, "test.toml", dir).expect("valid");
-        let clash = parse(&with_columns, "test.toml", dir).expect_err("two sources");
+        let own = problem(&text, dir).expect("valid");
+        let clash = problem(&with_columns, dir).expect_err("two sources");
         std::fs::remove_file(&json).expect("remove temporary file");
         assert!(matches!(
-            solver.bidirectional,
+            solver.hydro.bidirectional,
             Some(BidirectionalSource::ColumnArray { ref omegas, .. }) if omegas == &[0.3, 2.0]
         ));
-        assert_eq!(own.bidirectional, Some(BidirectionalSource::Table(table)));
+        assert_eq!(
+            own.hydro.bidirectional,
+            Some(BidirectionalSource::Table(table))
+        );
         let message = clash.to_string();
         assert!(
             message.contains("bidirectional = \"column-array\"")
@@ -1676,12 +1511,12 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
         let name = json.file_name().expect("file name").to_string_lossy();
         let head = MINIMAL.split("[drift]").next().expect("drift section");
         let text = format!("{head}[drift]\nsource = \"database\"\nfile = \"{name}\"\n");
-        let from_database = parse(&text, "test.toml", dir);
+        let from_database = problem(&text, dir);
 
         database_with_minimal_drift(1000.0)
             .save(&json)
             .expect("writable");
-        let mismatch = parse(&text, "test.toml", dir).expect_err("rho differs");
+        let mismatch = problem(&text, dir).expect_err("rho differs");
         std::fs::remove_file(&json).expect("remove temporary file");
         assert_eq!(
             from_database.expect("valid file"),
@@ -1701,8 +1536,8 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
         omegas: &[f64],
         heading_deg: f64,
         model: &str,
-    ) -> Result<Config> {
-        use crate::hydro::database::{QtfData, QtfMatrix};
+    ) -> Result<Problem> {
+        use crate::hydro::io::database::{QtfData, QtfMatrix};
         use crate::model::Dof;
         let n = omegas.len();
         let mut database = database_with_minimal_drift(1025.0);
@@ -1728,7 +1563,7 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
         let name = json.file_name().expect("file name").to_string_lossy();
         let head = MINIMAL.split("[drift]").next().expect("drift section");
         let text = format!("{head}{model}\n[drift]\nsource = \"database\"\nfile = \"{name}\"\n");
-        let config = parse(&text, "test.toml", dir);
+        let config = problem(&text, dir);
         std::fs::remove_file(&json).expect("remove temporary file");
         config
     }
@@ -1741,11 +1576,11 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
         let config = with_qtf_database("qtf-ok.json", &covering, 0.0, full).expect("valid");
         assert_eq!(config.model.second_order, SecondOrder::FullQtf);
         assert_eq!(config.model.qtf_tolerance, 1e-4);
-        assert_eq!(config.qtf.as_ref().map(|q| q.omegas.len()), Some(4));
+        assert_eq!(config.hydro.qtf.as_ref().map(|q| q.omegas.len()), Some(4));
         let defaults = with_qtf_database("qtf-default.json", &covering, 0.0, "").expect("valid");
         assert_eq!(defaults.model.second_order, SecondOrder::Newman);
         assert!(
-            defaults.qtf.is_some(),
+            defaults.hydro.qtf.is_some(),
             "the QTF is carried even when unused"
         );
 
@@ -1764,7 +1599,7 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
         assert!(with_qtf_database("qtf-tol.json", &covering, 0.0, tolerance)
             .expect_err("zero tolerance")
             .to_string()
-            .contains("model.qtf_tolerance"));
+            .contains("[model] qtf_tolerance"));
         let newman = "[model]\nqtf_tolerance = 1e-4";
         assert!(with_qtf_database("qtf-newman.json", &covering, 0.0, newman)
             .expect_err("tolerance without full-qtf")
@@ -1784,11 +1619,12 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
     #[test]
     fn example_file_loads() {
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/example.toml");
-        let config = load(&path).expect("the example is valid");
-        assert_eq!(config.drift.headings().len(), 2);
-        assert_eq!(config.drift.omegas().len(), 6);
+        let config = resolve(&load(&path).expect("the example is valid")).expect("resolves");
+        assert_eq!(config.hydro.drift.headings().len(), 2);
+        assert_eq!(config.hydro.drift.omegas().len(), 6);
         let band = config.sea.band();
         config
+            .hydro
             .drift
             .check_covers(band, &[config.sea.mean_direction])
             .expect("the example's drift table covers its sea state");

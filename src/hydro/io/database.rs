@@ -28,16 +28,17 @@
 //! amplitude squared with F(t) = Re sum a_i a_j* T_ij e^{i (w_i - w_j) t} (physics.md
 //! section 4). Numbers are written so that they read back bit for bit.
 
-use super::bidirectional::BidirectionalTable;
 use super::wamit::{
     read_added_mass_damping, read_difference_qtf, read_hydrostatics, read_mean_drift,
     DifferenceQtf, WamitOptions,
 };
-use super::{DriftRow, DriftTable};
 use crate::error::{require_finite, require_finite_matrix, require_positive, Error, Result};
+use crate::hydro::bidirectional::BidirectionalTable;
+use crate::hydro::qtf::{Qtf, QtfBlock};
+use crate::hydro::{DriftRow, DriftTable};
 use crate::model::{Dof, Environment};
+use rustfft::num_complex::Complex64;
 use serde::{Deserialize, Serialize};
-use std::f64::consts::PI;
 use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 
@@ -456,14 +457,6 @@ impl HydroDatabase {
 }
 
 impl QtfData {
-    /// The block of `dof` at `heading` (rad, within `tolerance`, modulo 2 pi), if any.
-    pub fn block(&self, dof: Dof, heading: f64, tolerance: f64) -> Option<&QtfMatrix> {
-        let apart = |a: f64, b: f64| (a - b + PI).rem_euclid(2.0 * PI) - PI;
-        self.blocks
-            .iter()
-            .find(|b| b.dof == dof && apart(b.heading, heading).abs() <= tolerance)
-    }
-
     /// Checks the frequencies (positive, strictly increasing) and every block's shape and
     /// finiteness.
     pub fn validate(&self) -> Result<()> {
@@ -498,18 +491,26 @@ impl QtfData {
     }
 }
 
-impl QtfMatrix {
-    /// Row-major n x n values, `[i * n + j]` = T(w_i, w_j).
-    pub fn values(&self) -> Vec<rustfft::num_complex::Complex64> {
-        self.re
-            .iter()
-            .zip(&self.im)
-            .flat_map(|(re, im)| {
-                re.iter()
-                    .zip(im)
-                    .map(|(&a, &b)| rustfft::num_complex::Complex64::new(a, b))
-            })
-            .collect()
+impl QtfData {
+    /// The QTF in memory (complex matrices); [`QtfData::validate`] first.
+    pub fn to_qtf(&self) -> Qtf {
+        Qtf {
+            omegas: self.omegas.clone(),
+            blocks: self
+                .blocks
+                .iter()
+                .map(|b| QtfBlock {
+                    dof: b.dof,
+                    heading: b.heading,
+                    values: b
+                        .re
+                        .iter()
+                        .zip(&b.im)
+                        .flat_map(|(re, im)| re.iter().zip(im).map(|(&a, &b)| Complex64::new(a, b)))
+                        .collect(),
+                })
+                .collect(),
+        }
     }
 }
 
@@ -552,7 +553,7 @@ fn qtf_data(qtf: &DifferenceQtf) -> Result<QtfData> {
     for heading in qtf.headings() {
         for (dof, wamit_dof) in Dof::ALL.into_iter().zip(SLOW_DOFS) {
             let m = qtf.matrix(wamit_dof, heading)?;
-            let part = |f: fn(&rustfft::num_complex::Complex64) -> f64| -> Vec<Vec<f64>> {
+            let part = |f: fn(&Complex64) -> f64| -> Vec<Vec<f64>> {
                 m.chunks(n).map(|row| row.iter().map(f).collect()).collect()
             };
             blocks.push(QtfMatrix {

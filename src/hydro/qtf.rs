@@ -1,0 +1,131 @@
+//! The full difference-frequency QTF in memory, per unit wave amplitude squared:
+//! T(w_i, w_j) for one DOF at one uni-directional heading, with
+//! F(t) = Re sum_i sum_j a_i a_j* T(w_i, w_j) e^{i (w_i - w_j) t} (physics.md section 4; the
+//! crate's convention e^{i omega t}). Surge and sway in N/m^2, yaw in N m/m^2, body frame.
+//! The database stores it as real and imaginary parts (`hydro::io::database`).
+
+use crate::error::{Error, Result};
+use crate::model::Dof;
+use rustfft::num_complex::Complex64;
+use std::f64::consts::PI;
+
+/// A QTF on its frequency grid: one block per (DOF, heading).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Qtf {
+    /// Frequencies, rad/s, strictly increasing.
+    pub omegas: Vec<f64>,
+    pub blocks: Vec<QtfBlock>,
+}
+
+/// T(w_i, w_j) of one DOF at one heading.
+#[derive(Debug, Clone, PartialEq)]
+pub struct QtfBlock {
+    pub dof: Dof,
+    /// Wave heading relative to the body x axis, rad.
+    pub heading: f64,
+    /// Row-major n x n values, `[i * n + j]` = T(w_i, w_j).
+    pub values: Vec<Complex64>,
+}
+
+impl Qtf {
+    /// The block of `dof` at `heading` (rad, within `tolerance`, modulo 2 pi), if any.
+    pub fn block(&self, dof: Dof, heading: f64, tolerance: f64) -> Option<&QtfBlock> {
+        let apart = |a: f64, b: f64| (a - b + PI).rem_euclid(2.0 * PI) - PI;
+        self.blocks
+            .iter()
+            .find(|b| b.dof == dof && apart(b.heading, heading).abs() <= tolerance)
+    }
+
+    /// Checks the frequencies (positive, strictly increasing) and every block's size and
+    /// finiteness.
+    pub fn validate(&self) -> Result<()> {
+        let n = self.omegas.len();
+        for (k, w) in self.omegas.iter().enumerate() {
+            if !(w.is_finite() && *w > 0.0) || (k > 0 && *w <= self.omegas[k - 1]) {
+                return Err(Error::invalid(
+                    format!("qtf.omegas[{k}]"),
+                    w,
+                    "frequencies must be positive and strictly increasing",
+                ));
+            }
+        }
+        for (k, b) in self.blocks.iter().enumerate() {
+            if b.values.len() != n * n {
+                return Err(Error::invalid(
+                    format!("qtf.blocks[{k}]"),
+                    format!("{} values", b.values.len()),
+                    format!("must be {n} x {n} (one row and column per frequency)"),
+                ));
+            }
+            if !b.heading.is_finite()
+                || b.values
+                    .iter()
+                    .any(|z| !(z.re.is_finite() && z.im.is_finite()))
+            {
+                return Err(Error::invalid(
+                    format!("qtf.blocks[{k}]"),
+                    "NaN or infinity",
+                    "must be finite",
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// The distinct headings of the blocks, rad, in the order they first appear.
+    pub fn headings(&self) -> Vec<f64> {
+        let mut headings: Vec<f64> = Vec::new();
+        for b in &self.blocks {
+            if !headings.contains(&b.heading) {
+                headings.push(b.heading);
+            }
+        }
+        headings
+    }
+}
+
+/// Smallest accepted truncation tolerance: below it the discarded eigenvalues are the
+/// round-off of the decomposition itself (about n * 1e-16 of the largest).
+pub const MIN_QTF_TOLERANCE: f64 = 1e-12;
+
+/// Refuses a tolerance outside [[`MIN_QTF_TOLERANCE`], 1).
+pub fn check_tolerance(tolerance: f64) -> Result<()> {
+    if (MIN_QTF_TOLERANCE..1.0).contains(&tolerance) {
+        Ok(())
+    } else {
+        Err(Error::invalid(
+            "model.qtf_tolerance",
+            tolerance,
+            format!(
+                "must be at least {MIN_QTF_TOLERANCE} (below it the discarded eigenvalues are \
+                 round-off) and below 1"
+            ),
+        ))
+    }
+}
+
+/// Refuses a QTF grid that does not cover `band` (rad/s), naming the gap.
+pub fn check_covers(omegas: &[f64], band: (f64, f64)) -> Result<()> {
+    let (low, high) = (omegas[0], omegas[omegas.len() - 1]);
+    let mut gaps = Vec::new();
+    if band.0 < low {
+        gaps.push(format!("{:.4} .. {low:.4} rad/s", band.0));
+    }
+    if band.1 > high {
+        gaps.push(format!("{high:.4} .. {:.4} rad/s", band.1));
+    }
+    if gaps.is_empty() {
+        return Ok(());
+    }
+    Err(Error::invalid(
+        "qtf.omegas",
+        format!("[{low:.4}, {high:.4}] rad/s"),
+        format!(
+            "the QTF does not cover the wave band [{:.4}, {:.4}] rad/s: no data for {} \
+             (nothing is extrapolated; narrow sea.band or supply QTF data there)",
+            band.0,
+            band.1,
+            gaps.join(" and ")
+        ),
+    ))
+}

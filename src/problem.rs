@@ -1,0 +1,378 @@
+//! A [`Problem`]: a scenario with its hydrodynamics resolved, checked once, ready for a
+//! [`crate::Simulation`].
+//!
+//! [`resolve`] turns a [`Scenario`]'s [`DriftSource`] into data ([`Hydro`]): it reads the CSV
+//! or database file, or runs the column solver, once. [`Problem::validate`] is the one check
+//! of every field; [`crate::RecordPlan::new`] calls it ([`Problem::check`]) before any record
+//! is made. Errors name
+//! fields by their configuration-file keys (`sea.hs`, `current.direction_deg`), in the file's
+//! units; the scenario's [`crate::scenario::Origins`] then say where the value was written.
+
+use crate::error::{
+    require_finite, require_finite_matrix, require_non_negative, require_positive, Error, Result,
+};
+use crate::hydro::bidirectional::BidirectionalSource;
+use crate::hydro::column_drift::isolated_columns_table;
+use crate::hydro::columns::ColumnArray;
+use crate::hydro::io::{database::HydroDatabase, drift_csv};
+use crate::hydro::qtf::{check_tolerance, Qtf};
+use crate::hydro::DriftTable;
+use crate::model::{
+    Dof, DragModel, DriftDamping, Environment, Interaction, SecondOrder, HEADING_MATCH_TOLERANCE,
+};
+use crate::scenario::default::default_scenario;
+use crate::scenario::{file, ColumnGrid, DriftSource, Platform, Scenario};
+use std::path::Path;
+
+/// The hydrodynamic data of a problem.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Hydro {
+    /// Mean drift (and, when given, the wave-drift damping b_ij) per unit amplitude squared.
+    pub drift: DriftTable,
+    /// The full difference-frequency QTF (uni-directional headings), when the drift source
+    /// has one; used by [`SecondOrder::FullQtf`].
+    pub qtf: Option<Qtf>,
+    /// The bi-directional drift, when the drift source has it (the column-array solver, a
+    /// database with a `bidirectional_drift` table); used by [`Interaction::Bidirectional`].
+    pub bidirectional: Option<BidirectionalSource>,
+}
+
+impl Hydro {
+    /// A drift table alone.
+    pub fn drift(drift: DriftTable) -> Hydro {
+        Hydro {
+            drift,
+            qtf: None,
+            bidirectional: None,
+        }
+    }
+}
+
+/// Everything one simulation needs: the scenario with its hydrodynamics resolved.
+pub type Problem = Scenario<Hydro>;
+
+/// Resolves the scenario's drift source into data: reads its file or runs its solver, once.
+/// (The problem is checked where the records are planned, [`Problem::check`].)
+pub fn resolve(scenario: &Scenario) -> Result<Problem> {
+    let hydro = resolve_hydro(&scenario.hydro, &scenario.platform, &scenario.environment)
+        .map_err(|e| scenario.origins.locate(e))?;
+    Ok(scenario.clone().with_hydro(hydro))
+}
+
+/// The problem of the configuration file at `path`: read and resolved.
+pub fn load(path: &Path) -> Result<Problem> {
+    resolve(&file::load(path)?)
+}
+
+/// The embedded default platform and sea, resolved (its column solver runs: about a second).
+pub fn default_problem() -> Result<Problem> {
+    resolve(&default_scenario()?)
+}
+
+/// The data of a drift source for a platform in an environment.
+pub fn resolve_hydro(
+    source: &DriftSource,
+    platform: &Platform,
+    environment: &Environment,
+) -> Result<Hydro> {
+    match source {
+        DriftSource::Table(table) => Ok(Hydro::drift(table.clone())),
+        DriftSource::Csv(path) => Ok(Hydro::drift(drift_csv::read(path)?)),
+        DriftSource::Database {
+            path,
+            bidirectional_from_columns,
+        } => {
+            let database = HydroDatabase::load(path)?;
+            let made_with = (database.water_density, database.gravity);
+            if made_with != (environment.water_density, environment.gravity) {
+                return Err(Error::invalid(
+                    "drift.file",
+                    path.display(),
+                    format!(
+                        "the database was made with water_density = {}, gravity = {}, but \
+                         [environment] has {}, {}: set [environment] to the database's values \
+                         or re-import with them",
+                        made_with.0, made_with.1, environment.water_density, environment.gravity
+                    ),
+                ));
+            }
+            let drift = database.to_drift_table()?;
+            let qtf = database.qtf.as_ref().map(|q| q.to_qtf());
+            let bidirectional = match (database.bidirectional_drift, bidirectional_from_columns) {
+                (own, false) => own.map(BidirectionalSource::Table),
+                (None, true) => Some(BidirectionalSource::ColumnArray {
+                    array: ColumnArray::new(platform.columns.clone(), None)?,
+                    omegas: drift.omegas().to_vec(),
+                }),
+                (Some(_), true) => {
+                    return Err(Error::invalid(
+                        "drift.bidirectional",
+                        "\"column-array\"",
+                        format!(
+                            "the database {} has its own bidirectional_drift table: use one of \
+                             them",
+                            path.display()
+                        ),
+                    ))
+                }
+            };
+            Ok(Hydro {
+                drift,
+                qtf,
+                bidirectional,
+            })
+        }
+        DriftSource::IsolatedColumns(grid) => {
+            if platform.columns.is_empty() {
+                return Err(Error::invalid(
+                    "drift.source",
+                    "columns",
+                    "needs [[platform.columns]]",
+                ));
+            }
+            let (omegas, headings) = grid_nodes(grid);
+            Ok(Hydro::drift(isolated_columns_table(
+                &platform.columns,
+                environment,
+                &omegas,
+                &headings,
+            )?))
+        }
+        DriftSource::ColumnArray { grid, depth } => {
+            let (omegas, headings) = grid_nodes(grid);
+            let array = ColumnArray::new(platform.columns.clone(), *depth)?;
+            let drift = array.drift_table(environment, &omegas, &headings)?;
+            Ok(Hydro {
+                drift,
+                qtf: None,
+                bidirectional: Some(BidirectionalSource::ColumnArray { array, omegas }),
+            })
+        }
+    }
+}
+
+/// The frequencies (evenly spaced from min to max) and headings (every step from 0 up to,
+/// not including, a full turn; computed in degrees, as the file gives the step) of a
+/// column-solver grid, rad/s and rad. The grid was checked when it was read.
+fn grid_nodes(grid: &ColumnGrid) -> (Vec<f64>, Vec<f64>) {
+    let n = grid.n_omega;
+    let omegas = (0..n)
+        .map(|i| grid.omega_min + (grid.omega_max - grid.omega_min) * i as f64 / (n - 1) as f64)
+        .collect();
+    let n_headings = (360.0 / grid.heading_step.to_degrees()).round() as usize;
+    let headings = (0..n_headings)
+        .map(|i| (i as f64 * 360.0 / n_headings as f64).to_radians())
+        .collect();
+    (omegas, headings)
+}
+
+impl Problem {
+    /// [`Problem::validate`], the error located where the user wrote the value.
+    pub fn check(&self) -> Result<()> {
+        self.validate().map_err(|e| self.origins.locate(e))
+    }
+
+    /// Checks every field; the error names the first offending field (by its key path) and
+    /// value.
+    pub fn validate(&self) -> Result<()> {
+        require_positive("environment.gravity", self.environment.gravity)?;
+        require_positive("environment.water_density", self.environment.water_density)?;
+        self.sea.validate()?;
+        require_non_negative("current.speed", self.current.speed)?;
+        require_finite("current.direction_deg", self.current.direction.to_degrees())?;
+        require_positive("run.duration", self.run.duration)?;
+        require_positive("run.time_step", self.run.time_step)?;
+        require_finite("run.start_time", self.run.start_time)?;
+        if self.run.time_step > self.run.duration {
+            return Err(Error::invalid(
+                "run.time_step",
+                self.run.time_step,
+                format!("is longer than run.duration = {}", self.run.duration),
+            ));
+        }
+        self.validate_platform()?;
+        if self.model.strips_per_column == 0 {
+            return Err(Error::invalid(
+                "model.strips_per_column",
+                0,
+                "must be at least 1",
+            ));
+        }
+        match self.model.drag {
+            DragModel::Off => {}
+            DragModel::Separate { slow, fast } => {
+                require_non_negative("model.cd_slow", slow)?;
+                require_non_negative("model.cd_fast", fast)?;
+            }
+            DragModel::Combined { cd } => require_non_negative("model.cd", cd)?,
+        }
+        if self.model.drag != DragModel::Off && self.platform.columns.is_empty() {
+            return Err(Error::invalid(
+                "platform.columns",
+                "[]",
+                "viscous drag is on but the platform has no columns",
+            ));
+        }
+        if self.model.drift_damping == DriftDamping::Table && !self.hydro.drift.has_damping() {
+            return Err(Error::invalid(
+                "model.drift_damping",
+                "table",
+                "the drift table has no b_ij columns",
+            ));
+        }
+        self.validate_yaw_following()?;
+        self.validate_qtf()?;
+        self.validate_interaction()?;
+        let [x, y, theta] = self.initial.position;
+        let [vx, vy, yaw_rate] = self.initial.velocity;
+        require_finite("initial.position[0]", x)?;
+        require_finite("initial.position[1]", y)?;
+        require_finite("initial.heading_deg", theta.to_degrees())?;
+        require_finite("initial.velocity[0]", vx)?;
+        require_finite("initial.velocity[1]", vy)?;
+        require_finite("initial.yaw_rate_deg", yaw_rate.to_degrees())?;
+        Ok(())
+    }
+
+    /// The full QTF, when selected: present, with surge, sway and yaw at every wave
+    /// direction's heading (within 0.01 deg; no interpolation in heading), covering the band.
+    fn validate_qtf(&self) -> Result<()> {
+        if let Some(q) = &self.hydro.qtf {
+            q.validate()?;
+        }
+        if self.model.second_order != SecondOrder::FullQtf {
+            return Ok(());
+        }
+        check_tolerance(self.model.qtf_tolerance)?;
+        let Some(q) = &self.hydro.qtf else {
+            return Err(Error::invalid(
+                "model.second_order",
+                "full-qtf",
+                "needs a QTF: use [drift] source = \"database\" with a database that holds one \
+                 (`slowdrift hydro wamit` with a .12d, .11d or .10d file)",
+            ));
+        };
+        let missing: Vec<String> = self
+            .sea
+            .directions()
+            .iter()
+            .filter(|d| {
+                Dof::ALL
+                    .iter()
+                    .any(|&dof| q.block(dof, d.heading, HEADING_MATCH_TOLERANCE).is_none())
+            })
+            .map(|d| format!("{:.3}", d.heading.to_degrees()))
+            .collect();
+        if !missing.is_empty() {
+            let have: Vec<String> = q
+                .headings()
+                .iter()
+                .map(|h| format!("{:.3}", h.to_degrees()))
+                .collect();
+            return Err(Error::invalid(
+                "model.second_order",
+                "full-qtf",
+                format!(
+                    "the QTF has no surge, sway and yaw blocks at the wave heading(s) {} deg \
+                     (it has {} deg); the full QTF is not interpolated in heading, so every \
+                     direction of the sea needs its own QTF heading",
+                    missing.join(", "),
+                    have.join(", ")
+                ),
+            ));
+        }
+        crate::hydro::qtf::check_covers(&q.omegas, self.sea.band())
+    }
+
+    /// Yaw following: at least two headings, a finite increasing range that holds the
+    /// initial yaw, Newman's approximation (the full QTF is not interpolated in heading).
+    fn validate_yaw_following(&self) -> Result<()> {
+        let Some(yaw) = &self.model.yaw_following else {
+            return Ok(());
+        };
+        if yaw.headings < 2 {
+            return Err(Error::invalid(
+                "model.yaw_following.headings",
+                yaw.headings,
+                "must be at least 2",
+            ));
+        }
+        if self.model.second_order == SecondOrder::FullQtf {
+            return Err(Error::invalid(
+                "model.yaw_following",
+                format!("{} headings", yaw.headings),
+                "needs second_order = \"newman\": the full QTF is not interpolated in heading",
+            ));
+        }
+        if let Some((min, max)) = yaw.range {
+            require_finite("model.yaw_following.range_deg[0]", min)?;
+            require_finite("model.yaw_following.range_deg[1]", max)?;
+            if min >= max {
+                return Err(Error::invalid(
+                    "model.yaw_following.range_deg",
+                    format!("[{:.3}, {:.3}] deg", min.to_degrees(), max.to_degrees()),
+                    "needs min < max",
+                ));
+            }
+            let theta = self.initial.position[2];
+            if !(min..=max).contains(&theta) {
+                return Err(Error::invalid(
+                    "initial.heading_deg",
+                    format!("{:.3} deg", theta.to_degrees()),
+                    format!(
+                        "the initial yaw is outside model.yaw_following.range_deg [{:.3}, {:.3}] deg",
+                        min.to_degrees(),
+                        max.to_degrees()
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// Bi-directional interaction needs bi-directional data; a table must be sound.
+    fn validate_interaction(&self) -> Result<()> {
+        if let Some(BidirectionalSource::Table(table)) = &self.hydro.bidirectional {
+            table.validate()?;
+        }
+        if self.model.interaction == Interaction::Bidirectional
+            && self.hydro.bidirectional.is_none()
+        {
+            return Err(Error::invalid(
+                "model.interaction",
+                "bidirectional",
+                "the drift source has no bi-directional drift (it comes from [drift] source = \
+                 \"column-array\" or a database with a bidirectional_drift table); use \
+                 interaction = \"mean-direction\" to approximate it from the drift table, or \
+                 \"none\"",
+            ));
+        }
+        Ok(())
+    }
+
+    /// The interaction actually used ([`Interaction::Auto`] resolved against the data).
+    pub fn interaction(&self) -> Interaction {
+        match (self.model.interaction, &self.hydro.bidirectional) {
+            (Interaction::Auto, Some(_)) => Interaction::Bidirectional,
+            (Interaction::Auto, None) => Interaction::MeanDirection,
+            (chosen, _) => chosen,
+        }
+    }
+
+    fn validate_platform(&self) -> Result<()> {
+        let p = &self.platform;
+        require_positive("platform.mass", p.mass)?;
+        require_positive("platform.yaw_inertia", p.yaw_inertia)?;
+        require_finite_matrix("platform.added_mass", &p.added_mass)?;
+        require_finite_matrix("platform.stiffness", &p.stiffness)?;
+        require_finite_matrix("platform.linear_damping", &p.linear_damping)?;
+        require_finite_matrix("platform.quadratic_damping", &p.quadratic_damping)?;
+        for (k, c) in p.columns.iter().enumerate() {
+            require_finite(&format!("platform.columns[{k}].x"), c.x)?;
+            require_finite(&format!("platform.columns[{k}].y"), c.y)?;
+            require_positive(&format!("platform.columns[{k}].diameter"), c.diameter)?;
+            require_positive(&format!("platform.columns[{k}].draft"), c.draft)?;
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,206 @@
+//! What the user asked for: a [`Scenario`], in SI units and radians, with its hydrodynamic
+//! data named but not yet computed ([`DriftSource`]: "the column solver on this grid", "this
+//! database file"). Reading a scenario does no numerical work; [`crate::problem::resolve`]
+//! runs the readers and solvers once and gives the [`crate::problem::Problem`] a simulation
+//! takes.
+//!
+//! The TOML reader ([`file`]), the embedded default ([`default`]) and the override table
+//! ([`overrides`]: the FMU parameters and the case-table columns) all produce or change a
+//! scenario. Degrees exist only in the file formats and are converted there, once.
+
+pub mod default;
+pub mod file;
+mod origin;
+pub mod overrides;
+
+pub use origin::{Origins, Written};
+
+use crate::model::{
+    Cylinder, DragModel, DriftDamping, Environment, Interaction, NewmanForm, SecondOrder,
+    YawFollowing, DEFAULT_QTF_TOLERANCE,
+};
+use crate::sea_state::SeaState;
+use std::path::PathBuf;
+
+/// Steady, depth-uniform current (E&S section 3).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Current {
+    /// Speed, m/s (0 = no current).
+    pub speed: f64,
+    /// Direction towards which the current flows, rad from +X, counter-clockwise.
+    pub direction: f64,
+}
+
+/// Run length and time step.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Run {
+    /// Simulated duration, s. The wave record is built at least this long, so it never repeats.
+    pub duration: f64,
+    /// RK4 step h, s. Force records are sampled at h/2 so that every RK4 stage lands on a sample.
+    pub time_step: f64,
+    /// Time of the first sample, s.
+    pub start_time: f64,
+}
+
+/// Rigid-body and mooring data of the platform in the 3 slow-drift DOFs (surge, sway, yaw).
+///
+/// Matrices are indexed (surge, sway, yaw). Mass, added mass and damping act in the body
+/// frame; the stiffness acts on the inertial position (X, Y, theta), as in E&S 1.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Platform {
+    /// Mass, kg.
+    pub mass: f64,
+    /// Yaw moment of inertia about the body origin, kg m^2.
+    pub yaw_inertia: f64,
+    /// Low-frequency added mass A (kg, kg m, kg m^2).
+    pub added_mass: [[f64; 3]; 3],
+    /// Mooring stiffness C (N/m, N, N m/rad) acting on (X, Y, theta).
+    pub stiffness: [[f64; 3]; 3],
+    /// Extra linear damping on the body-frame velocity (N s/m, ...).
+    pub linear_damping: [[f64; 3]; 3],
+    /// Extra quadratic damping: force_i = sum_j Bq_ij v_j |v_j| on the body-frame velocity.
+    pub quadratic_damping: [[f64; 3]; 3],
+    /// The platform's columns: Morison drag strips and the column solvers (empty = none).
+    pub columns: Vec<Cylinder>,
+}
+
+/// Modelling choices.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ModelOptions {
+    pub second_order: SecondOrder,
+    /// Relative trace-norm share of the QTF's eigenvalues that may be discarded (full QTF).
+    pub qtf_tolerance: f64,
+    /// The form of Newman's approximation: the wave force under [`SecondOrder::Newman`],
+    /// and the wave-drift damping records always.
+    pub newman: NewmanForm,
+    /// Interaction between the directions of a short-crested sea (arithmetic Newman form
+    /// across directions, whatever `newman` is; `forces::directional`).
+    pub interaction: Interaction,
+    pub drift_damping: DriftDamping,
+    pub drag: DragModel,
+    /// Number of Morison strips per column, from the keel to the instantaneous free surface.
+    pub strips_per_column: usize,
+    /// Wave force and damping records that follow the yaw; `None` (the default) = the
+    /// paper's records at the mean position and zero yaw.
+    pub yaw_following: Option<YawFollowing>,
+}
+
+impl Default for ModelOptions {
+    fn default() -> Self {
+        ModelOptions {
+            second_order: SecondOrder::Newman,
+            qtf_tolerance: DEFAULT_QTF_TOLERANCE,
+            newman: NewmanForm::Geometric,
+            interaction: Interaction::Auto,
+            drift_damping: DriftDamping::Aranha,
+            drag: DragModel::Off,
+            strips_per_column: 20,
+            yaw_following: None,
+        }
+    }
+}
+
+/// Initial slow-drift state, inertial frame: (X, Y, theta) in m, m, rad and their rates.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct InitialCondition {
+    pub position: [f64; 3],
+    pub velocity: [f64; 3],
+}
+
+/// A frequency and heading grid on which a column solver tabulates the drift.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ColumnGrid {
+    /// Lowest and highest frequency, rad/s.
+    pub omega_min: f64,
+    pub omega_max: f64,
+    /// Number of frequencies, evenly spaced from `omega_min` to `omega_max`.
+    pub n_omega: usize,
+    /// Heading step, rad: headings from 0 up to (not including) a full turn.
+    pub heading_step: f64,
+}
+
+/// Where the mean drift (and, with it, the QTF and the bi-directional drift) comes from: the
+/// `[drift]` section of the configuration, as the user named it. Nothing here is computed or
+/// read until [`crate::problem::resolve`].
+#[derive(Debug, Clone, PartialEq)]
+pub enum DriftSource {
+    /// A table given in the configuration file, already checked and sorted.
+    Table(crate::hydro::DriftTable),
+    /// A CSV drift table (`hydro::io::drift_csv`).
+    Csv(PathBuf),
+    /// A native hydro database (`hydro::io::database`); `bidirectional_from_columns` takes the
+    /// bi-directional drift from the deep-water column solver on the platform's columns at the
+    /// database's drift frequencies instead of the database's own table.
+    Database {
+        path: PathBuf,
+        bidirectional_from_columns: bool,
+    },
+    /// The closed-form drift of each column as an isolated, infinitely deep cylinder
+    /// (`hydro::column_drift`; no interaction).
+    IsolatedColumns(ColumnGrid),
+    /// The columns as an interacting array (Linton & Evans 1990, `hydro::columns`); `depth`
+    /// in m for bottom-mounted columns, `None` for deep water and infinitely deep columns.
+    ColumnArray {
+        grid: ColumnGrid,
+        depth: Option<f64>,
+    },
+}
+
+/// One simulation as described: the sea, the platform, the run and the modelling choices,
+/// with its hydrodynamics `H`: a [`DriftSource`] in a scenario as the user wrote it, the data
+/// themselves in a [`crate::problem::Problem`] (`Scenario<Hydro>`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scenario<H = DriftSource> {
+    pub environment: Environment,
+    pub sea: SeaState,
+    pub current: Current,
+    pub run: Run,
+    pub platform: Platform,
+    pub hydro: H,
+    pub model: ModelOptions,
+    pub initial: InitialCondition,
+    /// Where each setting was written, for error messages (not part of what is simulated:
+    /// origins always compare equal).
+    pub origins: Origins,
+}
+
+/// Default number of discrete directions of a short-crested sea.
+pub const DEFAULT_N_DIRECTIONS: usize = 15;
+
+/// Slow-drift cycles dropped as start-up transient by default (E&S section 5: the
+/// statistics settle after about ten cycles of the surge natural period).
+pub const TRANSIENT_CYCLES: f64 = 10.0;
+
+impl<H> Scenario<H> {
+    /// The same scenario with other hydrodynamics.
+    pub fn with_hydro<K>(self, hydro: K) -> Scenario<K> {
+        Scenario {
+            environment: self.environment,
+            sea: self.sea,
+            current: self.current,
+            run: self.run,
+            platform: self.platform,
+            hydro,
+            model: self.model,
+            initial: self.initial,
+            origins: self.origins,
+        }
+    }
+
+    /// The undamped surge natural period 2 pi sqrt((M + A11) / C11), s; `None` without
+    /// surge stiffness.
+    pub fn surge_natural_period(&self) -> Option<f64> {
+        let p = &self.platform;
+        (p.stiffness[0][0] > 0.0).then(|| {
+            2.0 * std::f64::consts::PI * ((p.mass + p.added_mass[0][0]) / p.stiffness[0][0]).sqrt()
+        })
+    }
+
+    /// The default start-up transient, s: [`TRANSIENT_CYCLES`] surge natural periods, at
+    /// most half the run (0 without surge stiffness).
+    pub fn default_transient(&self) -> f64 {
+        self.surge_natural_period().map_or(0.0, |period| {
+            (TRANSIENT_CYCLES * period).min(0.5 * self.run.duration)
+        })
+    }
+}

@@ -1,0 +1,266 @@
+//! Where the settings of a scenario were written, so that an error names a setting as the
+//! user wrote it: `platform.toml:12: invalid [sea] hs = -1: ...` for a configuration file,
+//! `invalid FMU parameter Hs = -1: ...` for the FMU, `cases.csv:4: invalid row 3, column
+//! 'hs' = -1: ...` for a case table.
+//!
+//! Errors of [`crate::problem::Problem::validate`] name fields by their configuration-file
+//! key path (`sea.hs`, `platform.columns[2].draft`, `current.direction_deg`, in the file's
+//! units); [`Origins::locate`] rewrites such an error for the place the value came from.
+
+use crate::error::{Error, Location};
+use std::collections::BTreeMap;
+use std::ops::Range;
+
+/// One setting written over the configuration: by an FMU parameter or a case-table cell.
+#[derive(Debug, Clone)]
+pub enum Written {
+    /// An FMU parameter (its variable name); FMU angles are in radians.
+    Fmu { variable: &'static str },
+    /// A cell of a case table.
+    CaseTable {
+        at: Location,
+        row: usize,
+        column: &'static str,
+    },
+}
+
+/// Where each setting of a scenario came from. Two scenarios that describe the same
+/// simulation are equal wherever they were written: `Origins` always compare equal.
+#[derive(Debug, Clone, Default)]
+pub struct Origins {
+    /// The configuration file: its name and the line of every key path in it.
+    file: Option<(String, BTreeMap<String, usize>)>,
+    /// Settings written over the file, by key path; the last one written wins.
+    overrides: Vec<(String, Written)>,
+}
+
+impl PartialEq for Origins {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+impl Origins {
+    /// The keys of configuration text `text` (already known to parse) read from `path`: the
+    /// line of every table, key and array element, by key path (`sea`, `sea.hs`,
+    /// `platform.columns[1]`, `platform.columns[1].draft`).
+    pub fn of_file(path: &str, text: &str) -> Origins {
+        let mut lines = BTreeMap::new();
+        if let Ok(table) = toml::de::DeTable::parse(text) {
+            index_table(text, "", table.get_ref(), &mut lines);
+        }
+        Origins {
+            file: Some((path.to_string(), lines)),
+            overrides: Vec::new(),
+        }
+    }
+
+    /// Records that `key` (a key path) was written by `written`.
+    pub fn record(&mut self, key: &str, written: Written) {
+        self.overrides.push((key.to_string(), written));
+    }
+
+    /// `error` (from validation, naming a key path) as the user wrote the setting: where
+    /// it was written and under which name. Other errors are returned unchanged.
+    pub fn locate(&self, error: Error) -> Error {
+        let Error::InvalidValue {
+            field,
+            value,
+            reason,
+            at: None,
+        } = error
+        else {
+            return error;
+        };
+        if let Some((key, written)) = self
+            .overrides
+            .iter()
+            .rev()
+            .find(|(key, _)| covers(key, &field))
+        {
+            return match written {
+                Written::Fmu { variable } => Error::InvalidValue {
+                    field: format!("FMU parameter {variable}"),
+                    value: in_radians(key, value),
+                    reason,
+                    at: None,
+                },
+                Written::CaseTable { at, row, column } => Error::InvalidValue {
+                    field: format!("row {row}, column '{column}'"),
+                    value,
+                    reason,
+                    at: Some(at.clone()),
+                },
+            };
+        }
+        match &self.file {
+            Some((path, lines)) => {
+                let line = lines
+                    .iter()
+                    .filter(|(key, _)| covers(key, &field))
+                    .max_by_key(|(key, _)| key.len())
+                    .map(|(_, line)| *line);
+                Error::InvalidValue {
+                    field: file_key(&field),
+                    value,
+                    reason,
+                    at: Some(Location {
+                        path: path.clone(),
+                        line,
+                    }),
+                }
+            }
+            None => Error::InvalidValue {
+                field,
+                value,
+                reason,
+                at: None,
+            },
+        }
+    }
+}
+
+/// Whether the key path `key` names `field` or a part of it (`platform.stiffness` covers
+/// `platform.stiffness[2][2]`, `sea` covers `sea.hs`).
+fn covers(key: &str, field: &str) -> bool {
+    field
+        .strip_prefix(key)
+        .is_some_and(|rest| rest.is_empty() || rest.starts_with('.') || rest.starts_with('['))
+}
+
+/// A key path as the configuration file spells it: `sea.hs` -> `[sea] hs`.
+fn file_key(field: &str) -> String {
+    match field.split_once('.') {
+        Some((section, key)) if !section.contains('[') => format!("[{section}] {key}"),
+        _ => field.to_string(),
+    }
+}
+
+/// A value of a key in degrees (`..._deg`) as the FMU's radians.
+fn in_radians(key: &str, value: String) -> String {
+    match value.parse::<f64>() {
+        Ok(deg) if key.contains("_deg") => format!("{} rad", deg.to_radians()),
+        _ => value,
+    }
+}
+
+/// 1-based line of byte `offset` in `text`.
+fn line_of(text: &str, offset: usize) -> usize {
+    let end = offset.min(text.len());
+    text.as_bytes()[..end]
+        .iter()
+        .filter(|&&b| b == b'\n')
+        .count()
+        + 1
+}
+
+fn index_table(
+    text: &str,
+    prefix: &str,
+    table: &toml::de::DeTable,
+    lines: &mut BTreeMap<String, usize>,
+) {
+    for (key, value) in table.iter() {
+        let path = if prefix.is_empty() {
+            key.get_ref().to_string()
+        } else {
+            format!("{prefix}.{}", key.get_ref())
+        };
+        lines.insert(path.clone(), line_of(text, key.span().start));
+        index_value(text, &path, value.get_ref(), value.span(), lines);
+    }
+}
+
+fn index_value(
+    text: &str,
+    path: &str,
+    value: &toml::de::DeValue,
+    span: Range<usize>,
+    lines: &mut BTreeMap<String, usize>,
+) {
+    match value {
+        toml::de::DeValue::Table(table) => index_table(text, path, table, lines),
+        toml::de::DeValue::Array(items) => {
+            for (k, item) in items.iter().enumerate() {
+                let element = format!("{path}[{k}]");
+                let start = if item.span().start < span.start {
+                    span.start
+                } else {
+                    item.span().start
+                };
+                lines.entry(element.clone()).or_insert(line_of(text, start));
+                index_value(text, &element, item.get_ref(), item.span(), lines);
+            }
+        }
+        _ => {}
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const TEXT: &str = "[sea]\nspectrum = \"jonswap\"\nhs = 4.0\n\n[[platform.columns]]\nx = 1\n\n[[platform.columns]]\nx = 2\ndraft = 3\n";
+
+    fn invalid(field: &str) -> Error {
+        Error::invalid(field, -1, "must be greater than zero")
+    }
+
+    #[test]
+    fn a_file_key_is_named_with_its_section_and_line() {
+        let origins = Origins::of_file("p.toml", TEXT);
+        assert_eq!(
+            origins.locate(invalid("sea.hs")).to_string(),
+            "p.toml:3: invalid [sea] hs = -1: must be greater than zero"
+        );
+        // An absent key is named at its section.
+        assert_eq!(
+            origins.locate(invalid("sea.tp")).to_string(),
+            "p.toml:1: invalid [sea] tp = -1: must be greater than zero"
+        );
+        assert_eq!(
+            origins
+                .locate(invalid("platform.columns[1].draft"))
+                .to_string(),
+            "p.toml:10: invalid [platform] columns[1].draft = -1: must be greater than zero"
+        );
+    }
+
+    #[test]
+    fn an_override_is_named_where_it_was_written() {
+        let mut origins = Origins::of_file("p.toml", TEXT);
+        origins.record("sea.hs", Written::Fmu { variable: "Hs" });
+        assert_eq!(
+            origins.locate(invalid("sea.hs")).to_string(),
+            "invalid FMU parameter Hs = -1: must be greater than zero"
+        );
+        origins.record(
+            "sea.hs",
+            Written::CaseTable {
+                at: Location {
+                    path: "cases.csv".into(),
+                    line: Some(4),
+                },
+                row: 3,
+                column: "hs",
+            },
+        );
+        assert_eq!(
+            origins.locate(invalid("sea.hs")).to_string(),
+            "cases.csv:4: invalid row 3, column 'hs' = -1: must be greater than zero"
+        );
+        // Degrees of the file are radians for the FMU.
+        let mut fmu = Origins::default();
+        fmu.record(
+            "current.direction_deg",
+            Written::Fmu {
+                variable: "currentDirection",
+            },
+        );
+        let e = Error::invalid("current.direction_deg", 180.0, "why");
+        assert!(fmu
+            .locate(e)
+            .to_string()
+            .contains("currentDirection = 3.14159"));
+    }
+}
