@@ -55,8 +55,8 @@ struct Model {
     guid: String,
     model_identifier: Option<String>,
     vars: Vec<Var>,
-    /// Enumeration type name -> item values.
-    enum_items: BTreeMap<String, BTreeSet<i64>>,
+    /// Enumeration type name -> item value -> item name.
+    enum_items: BTreeMap<String, BTreeMap<i64, String>>,
     outputs: Vec<Unknown>,
     initial_unknowns: Vec<Unknown>,
     saw_model_structure: bool,
@@ -162,7 +162,16 @@ fn parse(xml: &str) -> Result<Model, String> {
                         .ok_or(format!("line {line}: Item without value"))?
                         .parse::<i64>()
                         .map_err(|err| format!("line {line}: Item value: {err}"))?;
-                    model.enum_items.entry(t.clone()).or_default().insert(value);
+                    let name = a
+                        .get("name")
+                        .ok_or(format!("line {line}: Item without name"))?
+                        .clone();
+                    let items = model.enum_items.entry(t.clone()).or_default();
+                    if items.insert(value, name).is_some() {
+                        return Err(format!(
+                            "line {line}: {t}: item value {value} appears twice"
+                        ));
+                    }
                 }
             }
             (Some("ModelVariables"), "ScalarVariable") => {
@@ -326,7 +335,7 @@ fn check(m: &Model) -> Vec<String> {
             if v.ty == "Enumeration" {
                 let items = v.declared_type.as_ref().and_then(|t| m.enum_items.get(t));
                 match (items, start.parse::<i64>()) {
-                    (Some(items), Ok(s)) if !items.contains(&s) => {
+                    (Some(items), Ok(s)) if !items.contains_key(&s) => {
                         errors.push(format!("{at}: start {s} is not an item of its enumeration"))
                     }
                     (None, _) => errors.push(format!("{at}: declaredType is not an enumeration")),
@@ -646,6 +655,34 @@ fn generate(m: &Model) -> String {
         let _ = writeln!(w, "        name: {:?},", v.name);
         let _ = writeln!(w, "        value_reference: {},", v.vr);
         let _ = writeln!(w, "        var_type: VariableType::{},", v.ty);
+        let start = match (&v.start, v.ty.as_str()) {
+            (None, _) => "Start::None".to_string(),
+            (Some(s), "Real") => format!(
+                "Start::Real({})",
+                start_literal("Real", s).expect("checked").1
+            ),
+            (Some(s), "Integer" | "Enumeration") => {
+                format!(
+                    "Start::Integer({})",
+                    start_literal("Integer", s).expect("checked").1
+                )
+            }
+            (Some(s), _) => format!("Start::String({s:?})"),
+        };
+        let _ = writeln!(w, "        start: {start},");
+        let items: Vec<String> = v
+            .declared_type
+            .as_ref()
+            .and_then(|t| m.enum_items.get(t))
+            .filter(|_| v.ty == "Enumeration")
+            .map(|items| {
+                items
+                    .iter()
+                    .map(|(value, name)| format!("({value}, {name:?})"))
+                    .collect()
+            })
+            .unwrap_or_default();
+        let _ = writeln!(w, "        items: &[{}],", items.join(", "));
         let _ = writeln!(
             w,
             "        causality: Causality::{},",

@@ -143,14 +143,6 @@ pub(crate) fn panic_message(payload: &(dyn std::any::Any + Send)) -> Option<Stri
         .or_else(|| payload.downcast_ref::<String>().cloned())
 }
 
-/// 64-bit FNV-1a hash of a text: the fingerprints of FMU states and Monte Carlo cases.
-pub(crate) fn fnv1a_64(text: &str) -> u64 {
-    const OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
-    const PRIME: u64 = 0x0000_0100_0000_01b3;
-    text.bytes()
-        .fold(OFFSET, |h, b| (h ^ u64::from(b)).wrapping_mul(PRIME))
-}
-
 /// Checks that `value` is finite and strictly positive.
 pub fn require_positive(field: &str, value: f64) -> Result<()> {
     require_finite(field, value)?;

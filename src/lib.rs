@@ -21,6 +21,7 @@
 pub mod allocator;
 pub mod dynamics;
 pub mod error;
+pub mod fingerprint;
 pub mod fmi2;
 pub mod forces;
 pub mod hydro;

@@ -17,6 +17,8 @@
 mod cli;
 mod plot;
 
+use clap::{Args, CommandFactory, Parser, Subcommand};
+use cli::args::Checked;
 use slowdrift::problem::{self, default_problem};
 use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
 use slowdrift::stats::{summarize, Summary};
@@ -25,27 +27,69 @@ use std::io::{BufWriter, Write};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-const USAGE: &str =
-    "usage: slowdrift simulate [--config FILE.toml] [--out FILE.csv] [--transient SECONDS]
-       slowdrift hydro wamit --root PATH/NAME [--ulen 1] [--rho 1025] [--g 9.80665] --out FILE.json
-       slowdrift hydro columns [--config FILE.toml] --out FILE.json
-       slowdrift montecarlo [--config FILE.toml] [--cases CASES.csv] [--case NAME] --seeds N
-                            [--first-seed 1] [--duration SECONDS] [--transient SECONDS] [--threads T]
-                            --out RESULTS.csv
-       slowdrift montecarlo [--config FILE.toml] [--cases CASES.csv] [--duration SECONDS]
-                            [--transient SECONDS] --print-cases
-       slowdrift study waves|boxplots|transient|sensitivity ... --out DIR (slowdrift study for the options)";
+/// Slow-drift motions of moored floating platforms in random waves (Emmerhoff & Sclavounos
+/// 1996): one simulation, hydro databases, Monte Carlo campaigns and the paper's studies.
+#[derive(Parser)]
+#[command(
+    name = "slowdrift",
+    version,
+    max_term_width = 100,
+    after_help = "Each command lists its options, units and defaults: slowdrift COMMAND --help."
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
 
-struct Arguments {
+#[derive(Subcommand)]
+enum Command {
+    /// One simulation (the embedded default platform without --config): prints the summary
+    /// of surge, sway and yaw, optionally writes the time series as CSV
+    Simulate(SimulateArgs),
+    /// Hydro databases: imports WAMIT output, or writes a configuration's drift table
+    Hydro(cli::hydro::HydroArgs),
+    /// Many seeds of one case or of a table of cases on all cores, resumably
+    Montecarlo(cli::montecarlo::MontecarloArgs),
+    /// The paper's studies (E&S 1996 Figs 7-15) as CSV and figures (PNG and SVG) in a directory
+    Study(cli::study::StudyArgs),
+}
+
+/// `slowdrift simulate`.
+#[derive(Args)]
+#[command(args_override_self = true)]
+struct SimulateArgs {
+    /// Platform, sea and run configuration (TOML) [default: the embedded default platform]
+    #[arg(long, value_name = "FILE.toml", allow_hyphen_values = true)]
     config: Option<PathBuf>,
+    /// Writes the time series as CSV, 17 significant digits (every value reads back bit for
+    /// bit) [default: not written]
+    #[arg(long, value_name = "FILE.csv", allow_hyphen_values = true)]
     out: Option<PathBuf>,
+    /// Start-up transient dropped before the statistics, s [default: ten surge natural
+    /// periods, at most half the run]
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true, value_parser = Checked(transient))]
     transient: Option<f64>,
+}
+
+/// `--transient SECONDS` of `simulate`.
+fn transient(flag: &str, text: &str) -> Result<f64, String> {
+    let seconds: f64 = text
+        .parse()
+        .map_err(|_| format!("{flag} {text}: not a number"))?;
+    if !(seconds.is_finite() && seconds >= 0.0) {
+        return Err(format!(
+            "{flag} {text}: must be a non-negative number of seconds"
+        ));
+    }
+    Ok(seconds)
 }
 
 fn main() -> ExitCode {
     // Monte Carlo campaigns build and drop tens of MB of records per run.
     slowdrift::allocator::retain_freed_memory();
-    match run(std::env::args().skip(1).collect()) {
+    // Usage errors: clap's message on stderr, exit status 2; --help and --version: exit 0.
+    let cli = Cli::parse();
+    match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(message) => {
             eprintln!("slowdrift: {message}");
@@ -54,54 +98,20 @@ fn main() -> ExitCode {
     }
 }
 
-fn run(args: Vec<String>) -> Result<(), String> {
-    match args.first().map(String::as_str) {
-        Some("simulate") => simulate(parse_arguments(&args[1..])?),
-        Some("hydro") => cli::hydro::run(&args[1..]),
-        Some("montecarlo") => cli::montecarlo::run(&args[1..]),
-        Some("study") => cli::study::run(&args[1..]),
-        Some("--help") | Some("-h") | None => {
-            println!("{USAGE}");
-            Ok(())
-        }
-        Some(other) => Err(format!("unknown command '{other}'\n{USAGE}")),
+fn run(cli: Cli) -> Result<(), String> {
+    match cli.command {
+        Some(Command::Simulate(args)) => simulate(args),
+        Some(Command::Hydro(args)) => cli::hydro::run(args),
+        Some(Command::Montecarlo(args)) => cli::montecarlo::run(args),
+        Some(Command::Study(args)) => cli::study::run(args),
+        // No command: the help, as `slowdrift --help`.
+        None => Cli::command()
+            .print_help()
+            .map_err(|e| format!("writing the help: {e}")),
     }
 }
 
-fn parse_arguments(args: &[String]) -> Result<Arguments, String> {
-    let mut parsed = Arguments {
-        config: None,
-        out: None,
-        transient: None,
-    };
-    let mut rest = args.iter();
-    while let Some(flag) = rest.next() {
-        let mut value = || {
-            rest.next()
-                .ok_or_else(|| format!("{flag} needs a value\n{USAGE}"))
-        };
-        match flag.as_str() {
-            "--config" => parsed.config = Some(PathBuf::from(value()?)),
-            "--out" => parsed.out = Some(PathBuf::from(value()?)),
-            "--transient" => {
-                let text = value()?;
-                let seconds: f64 = text
-                    .parse()
-                    .map_err(|_| format!("--transient {text}: not a number"))?;
-                if !(seconds.is_finite() && seconds >= 0.0) {
-                    return Err(format!(
-                        "--transient {text}: must be a non-negative number of seconds"
-                    ));
-                }
-                parsed.transient = Some(seconds);
-            }
-            other => return Err(format!("unknown option '{other}'\n{USAGE}")),
-        }
-    }
-    Ok(parsed)
-}
-
-fn simulate(args: Arguments) -> Result<(), String> {
+fn simulate(args: SimulateArgs) -> Result<(), String> {
     let config = match &args.config {
         Some(path) => problem::load(path).map_err(|e| e.to_string())?,
         None => {

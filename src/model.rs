@@ -28,7 +28,7 @@ impl Dof {
 pub const HEADING_MATCH_TOLERANCE: f64 = 0.01 * PI / 180.0;
 
 /// Physical constants of the water (physics.md section 1).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Environment {
     /// Acceleration of gravity, m/s^2.
     pub gravity: f64,
@@ -47,7 +47,7 @@ impl Default for Environment {
 
 /// A vertical circular cylinder of the platform (a "column" in the paper and the
 /// configuration file): Morison drag strips (E&S 8, 9) and the column solvers. Body frame, m.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Cylinder {
     /// Centre, body frame x (forward), m.
     pub x: f64,
@@ -60,7 +60,7 @@ pub struct Cylinder {
 }
 
 /// Which form of Newman's approximation builds the slowly varying records (physics.md 4).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum NewmanForm {
     /// The paper's form (E&S 4): T_ij = sign * sqrt(T_ii T_jj) where the signs agree, 0 otherwise.
     Geometric,
@@ -69,7 +69,7 @@ pub enum NewmanForm {
 }
 
 /// How the slowly varying wave force is computed from second-order theory (physics.md 4).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum SecondOrder {
     /// Newman's approximation from the drift table's diagonal, in the form `newman`.
     Newman,
@@ -80,7 +80,7 @@ pub enum SecondOrder {
 
 /// Whether the components of different directions of a short-crested sea interact in the
 /// slowly varying force (physics.md section 4; `forces::directional`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum Interaction {
     /// The default: [`Interaction::Bidirectional`] when the drift source has bi-directional
     /// drift, else [`Interaction::MeanDirection`]. Without cross terms the slow-drift
@@ -97,7 +97,7 @@ pub enum Interaction {
 }
 
 /// Where the wave-drift damping coefficients b_ij(omega, beta) come from (physics.md 5).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum DriftDamping {
     /// No wave-drift damping.
     Off,
@@ -108,7 +108,7 @@ pub enum DriftDamping {
 }
 
 /// Morison drag models of the paper (E&S 8, 9).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub enum DragModel {
     /// No viscous drag.
     Off,
@@ -121,7 +121,7 @@ pub enum DragModel {
 /// Records of the wave force and damping that follow the body's yaw (issue #5 part 3;
 /// physics.md section 4, last bullet): built at `headings` body yaw angles theta_j and
 /// interpolated linearly in the instantaneous yaw at every RK4 stage.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct YawFollowing {
     /// Number of body yaw angles theta_j (at least 2).
     pub headings: usize,

@@ -49,8 +49,18 @@ pub enum Variability {
     Continuous,
 }
 
+/// The start value of a variable, as its type has it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Start {
+    None,
+    Real(f64),
+    /// Integer or Enumeration.
+    Integer(i32),
+    String(&'static str),
+}
+
 /// One model variable of the model description.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct VariableInfo {
     /// The variable's name in the XML.
     pub name: &'static str,
@@ -58,6 +68,10 @@ pub struct VariableInfo {
     pub value_reference: u32,
     /// Its base type.
     pub var_type: VariableType,
+    /// Its start value.
+    pub start: Start,
+    /// The items (value, name) of its enumeration type (empty unless an Enumeration).
+    pub items: &'static [(i32, &'static str)],
     pub causality: Causality,
     pub variability: Variability,
 }

@@ -22,10 +22,11 @@ use crate::model::{
 };
 use crate::scenario::default::default_scenario;
 use crate::scenario::{file, ColumnGrid, DriftSource, Platform, Scenario};
+use serde::Serialize;
 use std::path::Path;
 
 /// The hydrodynamic data of a problem.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Hydro {
     /// Mean drift (and, when given, the wave-drift damping b_ij) per unit amplitude squared.
     pub drift: DriftTable,

@@ -53,7 +53,14 @@ fn run() -> Result<(), String> {
 fn build_library(root: &Path) -> Result<(), String> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let status = Command::new(cargo)
-        .args(["build", "--release", "--lib", "-p", "slowdrift"])
+        .args([
+            "build",
+            "--release",
+            "--lib",
+            "--no-default-features",
+            "-p",
+            "slowdrift",
+        ])
         .current_dir(root)
         .status()
         .map_err(|e| format!("running cargo: {e}"))?;

@@ -6,39 +6,89 @@
 //! (and wave-drift damping) of a configuration (default: the embedded default platform,
 //! whose `[drift]` is the column-array solver) as a native hydro database.
 
+use super::args::Checked;
+use clap::{Args, Subcommand};
 use slowdrift::hydro::io::database::HydroDatabase;
 use slowdrift::hydro::io::wamit::WamitOptions;
 use slowdrift::problem::{self, default_problem};
 use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
 use std::path::PathBuf;
 
-pub const USAGE: &str =
-    "slowdrift hydro wamit --root PATH/NAME [--ulen 1] [--rho 1025] [--g 9.80665] --out FILE.json";
-pub const COLUMNS_USAGE: &str = "slowdrift hydro columns [--config FILE.toml] --out FILE.json";
+/// `slowdrift hydro`.
+#[derive(Args)]
+#[command(subcommand_required = true)]
+pub struct HydroArgs {
+    #[command(subcommand)]
+    command: HydroCommand,
+}
 
-/// Runs `slowdrift hydro ...` with the arguments after `hydro`.
-pub fn run(args: &[String]) -> Result<(), String> {
-    match args.first().map(String::as_str) {
-        Some("wamit") => wamit(&args[1..]),
-        Some("columns") => columns(&args[1..]),
-        _ => Err(format!("usage: {USAGE}\n       {COLUMNS_USAGE}")),
+#[derive(Subcommand)]
+enum HydroCommand {
+    /// Imports the WAMIT files NAME.1, .hst, .8, .9 and .12d (else .11d, else .10d) that exist
+    /// into a native hydro database (JSON) and prints what it found in each
+    Wamit(WamitArgs),
+    /// Writes the drift table (and wave-drift damping) of a configuration as a native hydro
+    /// database (JSON)
+    Columns(ColumnsArgs),
+}
+
+#[derive(Args)]
+#[command(args_override_self = true)]
+struct WamitArgs {
+    /// The WAMIT output: PATH/NAME of the files NAME.1, NAME.hst, ...
+    #[arg(long, value_name = "PATH/NAME", allow_hyphen_values = true)]
+    root: PathBuf,
+    /// WAMIT's length scale ULEN of the non-dimensional values, m
+    #[arg(long, value_name = "ULEN", allow_hyphen_values = true,
+          default_value_t = WamitOptions::default().ulen, value_parser = Checked(positive))]
+    ulen: f64,
+    /// Water density, kg/m^3 (a configuration using the database must have the same)
+    #[arg(long, value_name = "RHO", allow_hyphen_values = true,
+          default_value_t = WamitOptions::default().rho, value_parser = Checked(positive))]
+    rho: f64,
+    /// Gravitational acceleration, m/s^2 (a configuration using the database must have the
+    /// same)
+    #[arg(long, value_name = "G", allow_hyphen_values = true,
+          default_value_t = WamitOptions::default().gravity, value_parser = Checked(positive))]
+    g: f64,
+    /// The native hydro database to write (JSON)
+    #[arg(long, value_name = "FILE.json", allow_hyphen_values = true)]
+    out: PathBuf,
+}
+
+#[derive(Args)]
+#[command(args_override_self = true)]
+struct ColumnsArgs {
+    /// Configuration (TOML) whose [drift] is written [default: the embedded default platform,
+    /// whose [drift] is the column-array solver]
+    #[arg(long, value_name = "FILE.toml", allow_hyphen_values = true)]
+    config: Option<PathBuf>,
+    /// The native hydro database to write (JSON)
+    #[arg(long, value_name = "FILE.json", allow_hyphen_values = true)]
+    out: PathBuf,
+}
+
+/// `--ulen`, `--rho`, `--g`: a positive number.
+fn positive(flag: &str, value: &str) -> Result<f64, String> {
+    match value.parse::<f64>() {
+        Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
+        _ => Err(format!("{flag} {value}: must be a positive number")),
     }
 }
 
-fn columns(args: &[String]) -> Result<(), String> {
-    let (mut config_path, mut out) = (None, None);
-    let mut rest = args.iter();
-    while let Some(flag) = rest.next() {
-        let value = rest
-            .next()
-            .ok_or_else(|| format!("{flag} needs a value\nusage: {COLUMNS_USAGE}"))?;
-        match flag.as_str() {
-            "--config" => config_path = Some(PathBuf::from(value)),
-            "--out" => out = Some(PathBuf::from(value)),
-            other => return Err(format!("unknown option '{other}'\nusage: {COLUMNS_USAGE}")),
-        }
+/// Runs `slowdrift hydro ...`.
+pub fn run(args: HydroArgs) -> Result<(), String> {
+    match args.command {
+        HydroCommand::Wamit(args) => wamit(args),
+        HydroCommand::Columns(args) => columns(args),
     }
-    let out = out.ok_or_else(|| format!("--out is required\nusage: {COLUMNS_USAGE}"))?;
+}
+
+fn columns(args: ColumnsArgs) -> Result<(), String> {
+    let ColumnsArgs {
+        config: config_path,
+        out,
+    } = args;
     let (config, source) = match &config_path {
         Some(path) => (
             problem::load(path).map_err(|e| e.to_string())?,
@@ -66,32 +116,14 @@ fn columns(args: &[String]) -> Result<(), String> {
     Ok(())
 }
 
-fn wamit(args: &[String]) -> Result<(), String> {
-    let mut root = None;
-    let mut out = None;
-    let mut options = WamitOptions::default();
-    let mut rest = args.iter();
-    while let Some(flag) = rest.next() {
-        let value = rest
-            .next()
-            .ok_or_else(|| format!("{flag} needs a value\nusage: {USAGE}"))?;
-        let number = || -> Result<f64, String> {
-            match value.parse::<f64>() {
-                Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
-                _ => Err(format!("{flag} {value}: must be a positive number")),
-            }
-        };
-        match flag.as_str() {
-            "--root" => root = Some(PathBuf::from(value)),
-            "--out" => out = Some(PathBuf::from(value)),
-            "--ulen" => options.ulen = number()?,
-            "--rho" => options.rho = number()?,
-            "--g" => options.gravity = number()?,
-            other => return Err(format!("unknown option '{other}'\nusage: {USAGE}")),
-        }
-    }
-    let root = root.ok_or_else(|| format!("--root is required\nusage: {USAGE}"))?;
-    let out = out.ok_or_else(|| format!("--out is required\nusage: {USAGE}"))?;
+fn wamit(args: WamitArgs) -> Result<(), String> {
+    let root = args.root;
+    let out = args.out;
+    let options = WamitOptions {
+        ulen: args.ulen,
+        rho: args.rho,
+        gravity: args.g,
+    };
     let import = HydroDatabase::from_wamit(&root, &options).map_err(|e| e.to_string())?;
     println!(
         "WAMIT files {}.* (ULEN = {} m, rho = {} kg/m^3, g = {} m/s^2):",

@@ -8,9 +8,12 @@
 //! requested seeds in seed order, so it does not depend on the threads, the finishing
 //! order or the interruptions.
 
+use super::args::{all_cores, seconds, whole};
+use clap::Args;
+use slowdrift::fmi2::campaign;
 use slowdrift::montecarlo::cases::{read_case_table, CaseRow};
 use slowdrift::montecarlo::runs_file::{self, RunRow};
-use slowdrift::montecarlo::{plan, run_jobs, seed_statistics, Case, Job, DOFS, STATISTICS};
+use slowdrift::montecarlo::{run_jobs, seed_statistics, Case, Job, DOFS, STATISTICS};
 use slowdrift::problem::{self, default_problem};
 use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
 use slowdrift::Problem;
@@ -18,12 +21,60 @@ use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-pub const USAGE: &str =
-    "slowdrift montecarlo [--config FILE.toml] [--cases CASES.csv] [--case NAME] \
-     --seeds N [--first-seed 1] [--duration SECONDS] [--transient SECONDS] [--threads T] \
-     --out RESULTS.csv
-       slowdrift montecarlo [--config FILE.toml] [--cases CASES.csv] [--duration SECONDS] \
-     [--transient SECONDS] --print-cases";
+/// `slowdrift montecarlo`: run the seeds, or (`--print-cases`) print the cases.
+#[derive(Args)]
+#[command(
+    args_override_self = true,
+    override_usage = "slowdrift montecarlo [--config FILE.toml] [--cases CASES.csv] [--case NAME] --seeds N\n           \
+                      [--first-seed 1] [--duration SECONDS] [--transient SECONDS] [--threads T]\n           \
+                      --out RESULTS.csv\n       \
+                      slowdrift montecarlo [--config FILE.toml] [--cases CASES.csv] [--duration SECONDS]\n           \
+                      [--transient SECONDS] --print-cases"
+)]
+pub struct MontecarloArgs {
+    /// Base configuration (TOML) [default: the embedded default platform]
+    #[arg(long, value_name = "FILE.toml", allow_hyphen_values = true)]
+    config: Option<PathBuf>,
+    /// Case table (CSV), one case per row on top of the base; an empty cell keeps the base
+    /// value [default: the base alone, case 'base']
+    #[arg(long, value_name = "CASES.csv", allow_hyphen_values = true)]
+    cases: Option<PathBuf>,
+    /// Runs only the case of this name
+    #[arg(long = "case", value_name = "NAME", allow_hyphen_values = true)]
+    only: Option<String>,
+    /// Seeds per case, at least 1: seeds S .. S+N-1 (required unless --print-cases)
+    #[arg(long, value_name = "N", allow_hyphen_values = true, value_parser = whole(1u64),
+          required_unless_present = "print_cases")]
+    seeds: Option<u64>,
+    /// The first seed S, at least 0
+    #[arg(long, value_name = "S", allow_hyphen_values = true, default_value_t = 1,
+          value_parser = whole(0u64))]
+    first_seed: u64,
+    /// Replaces run.duration of the base, s [default: the configuration's]
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true, value_parser = seconds(true))]
+    duration: Option<f64>,
+    /// Start-up transient dropped before the statistics, s, for every case [default: ten
+    /// surge natural periods, at most half the run]
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true, value_parser = seconds(false))]
+    transient: Option<f64>,
+    /// Threads, at least 1 (the results do not depend on it) [default: all cores]
+    #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = whole(1usize))]
+    threads: Option<usize>,
+    /// The summary, one line per case and DOF; the runs go to RESULTS.runs.csv beside it,
+    /// appended as they finish, and a restart with the same --out resumes (required unless
+    /// --print-cases)
+    #[arg(
+        long,
+        value_name = "RESULTS.csv",
+        allow_hyphen_values = true,
+        required_unless_present = "print_cases"
+    )]
+    out: Option<PathBuf>,
+    /// Runs nothing: prints the cases as JSON on stdout (name, fingerprint, transient, steps
+    /// and the FMU parameters that run each case)
+    #[arg(long)]
+    print_cases: bool,
+}
 
 struct Options {
     config: Option<PathBuf>,
@@ -45,46 +96,19 @@ enum Command {
     PrintCases(Options),
 }
 
-fn parse(args: &[String]) -> Result<Command, String> {
-    let usage = |message: String| format!("{message}\nusage: {USAGE}");
-    let (mut config, mut cases, mut seeds, mut first_seed) = (None, None, None, 1);
-    let (mut duration, mut transient, mut threads, mut out) = (None, None, None, None);
-    let (mut only, mut print_cases) = (None, false);
-    let mut rest = args.iter();
-    while let Some(flag) = rest.next() {
-        if flag == "--print-cases" {
-            print_cases = true;
-            continue;
-        }
-        let value = rest
-            .next()
-            .ok_or_else(|| usage(format!("{flag} needs a value")))?;
-        let whole = |least: u64| match value.parse::<u64>() {
-            Ok(n) if n >= least => Ok(n),
-            _ => Err(format!(
-                "{flag} {value}: must be a whole number of at least {least}"
-            )),
-        };
-        let seconds = |positive: bool| match value.parse::<f64>() {
-            Ok(v) if v.is_finite() && (v > 0.0 || (!positive && v == 0.0)) => Ok(v),
-            _ => Err(format!(
-                "{flag} {value}: must be a {} number of seconds",
-                if positive { "positive" } else { "non-negative" }
-            )),
-        };
-        match flag.as_str() {
-            "--config" => config = Some(PathBuf::from(value)),
-            "--cases" => cases = Some(PathBuf::from(value)),
-            "--case" => only = Some(value.clone()),
-            "--seeds" => seeds = Some(whole(1)?),
-            "--first-seed" => first_seed = whole(0)?,
-            "--duration" => duration = Some(seconds(true)?),
-            "--transient" => transient = Some(seconds(false)?),
-            "--threads" => threads = Some(whole(1)? as usize),
-            "--out" => out = Some(PathBuf::from(value)),
-            other => return Err(usage(format!("unknown option '{other}'"))),
-        }
-    }
+fn command(args: MontecarloArgs) -> Result<Command, String> {
+    let MontecarloArgs {
+        config,
+        cases,
+        only,
+        seeds,
+        first_seed,
+        duration,
+        transient,
+        threads,
+        out,
+        print_cases,
+    } = args;
     if print_cases {
         return Ok(Command::PrintCases(Options {
             config,
@@ -98,7 +122,10 @@ fn parse(args: &[String]) -> Result<Command, String> {
             out: PathBuf::new(),
         }));
     }
-    let seeds = seeds.ok_or_else(|| usage("--seeds is required".into()))?;
+    // clap requires both without --print-cases.
+    let (Some(seeds), Some(out)) = (seeds, out) else {
+        return Err("--seeds and --out are required without --print-cases".into());
+    };
     first_seed
         .checked_add(seeds - 1)
         .ok_or_else(|| format!("--first-seed {first_seed} + --seeds {seeds} overflows"))?;
@@ -110,10 +137,8 @@ fn parse(args: &[String]) -> Result<Command, String> {
         first_seed,
         duration,
         transient,
-        threads: threads.unwrap_or_else(|| {
-            std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)
-        }),
-        out: out.ok_or_else(|| usage("--out is required".into()))?,
+        threads: threads.unwrap_or_else(all_cores),
+        out,
     }))
 }
 
@@ -123,9 +148,9 @@ pub fn runs_path(out: &Path) -> PathBuf {
     out.with_file_name(format!("{stem}.runs.csv"))
 }
 
-/// Runs `slowdrift montecarlo` with the arguments after `montecarlo`.
-pub fn run(args: &[String]) -> Result<(), String> {
-    match parse(args)? {
+/// Runs `slowdrift montecarlo`.
+pub fn run(args: MontecarloArgs) -> Result<(), String> {
+    match command(args)? {
         Command::Run(options) => run_and_summarise(options),
         Command::PrintCases(options) => print_cases(&options),
     }
@@ -152,7 +177,7 @@ fn load_cases(options: &Options, announce: bool) -> Result<(Problem, Vec<Case>),
             read_case_table(path).map_err(|e| e.to_string())?,
             path.display().to_string(),
         ),
-        None => (vec![base_row()], String::new()),
+        None => (vec![CaseRow::base()], String::new()),
     };
     let mut cases = rows
         .iter()
@@ -184,7 +209,7 @@ fn print_cases(options: &Options) -> Result<(), String> {
             .to_string(),
         None => String::new(),
     };
-    println!("{}", plan::cases_json(&cases, &base, &hydro_database));
+    println!("{}", campaign::cases_json(&cases, &base, &hydro_database));
     Ok(())
 }
 
@@ -285,17 +310,6 @@ pub fn run_campaign(
     let text =
         std::fs::read_to_string(runs_path).map_err(|e| format!("{}: {e}", runs_path.display()))?;
     runs_file::parse(&text, &runs_path.display().to_string()).map_err(|e| e.to_string())
-}
-
-/// The single case of a campaign without a case table.
-fn base_row() -> CaseRow {
-    CaseRow {
-        row: 1,
-        line: 1,
-        name: "base".into(),
-        values: Vec::new(),
-        interaction: None,
-    }
 }
 
 fn check_fingerprints(

@@ -7,12 +7,15 @@
 //! - [`logger`]: the host's logger and the debug-logging categories;
 //! - [`fmu_error`]: why a call failed, and its `fmi2Status`;
 //! - [`instance`]: one instance's parameters, inputs, outputs and simulation (safe Rust);
-//! - [`parameters`]: FMU parameters and experiment -> [`crate::Problem`];
+//! - [`parameters`]: FMU parameters and experiment -> [`crate::Scenario`];
+//! - [`campaign`]: the FMU parameters that run each case of a campaign (`--print-cases`);
+//! - [`resources`]: the `resources/` folder of the packed FMU;
 //! - [`state`]: saved states and their versioned byte format.
 //!
 //! The cdylib exports the `fmi2*` symbols only (`exports.map`, a linker version script
 //! that build.rs passes on Linux).
 
+pub mod campaign;
 pub mod exports;
 pub mod fmu_error;
 pub mod instance;

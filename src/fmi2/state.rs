@@ -142,13 +142,12 @@ pub fn mismatch(found: u64, expected: u64) -> Error {
     )
 }
 
-/// A 64-bit FNV-1a hash of the configuration's `Debug` text, which prints every field and
-/// every number in its shortest round-trip form: any change to anything that determines the
-/// records (sea, seed, platform, drift table, run) changes the fingerprint. The source of
-/// the configuration (embedded, resources, a file at any path) does not enter, only its
-/// content, so a state moves between processes that unpacked the FMU in different places.
+/// The [`crate::fingerprint`] of the problem: any change to anything that determines the
+/// records (sea, seed, platform, drift table, run) changes it. Where the configuration came
+/// from (embedded, resources, a file at any path) does not enter, only its content, so a
+/// state moves between processes that unpacked the FMU in different places.
 pub fn fingerprint(config: &Problem) -> u64 {
-    crate::error::fnv1a_64(&format!("{config:?}"))
+    crate::fingerprint::fingerprint(config)
 }
 
 #[cfg(test)]

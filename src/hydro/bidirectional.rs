@@ -67,7 +67,7 @@ pub struct BidirectionalTable {
 }
 
 /// Where the bi-directional drift of a configuration comes from.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub enum BidirectionalSource {
     /// The column-array solver at the data frequencies `omegas` (those of the drift table it
     /// also made), evaluated at the sea's exact directions.

@@ -8,6 +8,7 @@
 
 use super::heading_grid::{heading_bracket, is_periodic, Bracket};
 use crate::error::{require_finite, Error, Result};
+use serde::Serialize;
 use std::f64::consts::PI;
 
 /// Relative tolerance when matching headings and frequencies.
@@ -31,7 +32,7 @@ pub struct DriftRow {
 }
 
 /// Drift (and damping) on a frequency x heading grid.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct DriftTable {
     omegas: Vec<f64>,
     headings: Vec<f64>,

@@ -7,10 +7,11 @@
 use crate::error::{Error, Result};
 use crate::model::Dof;
 use rustfft::num_complex::Complex64;
+use serde::Serialize;
 use std::f64::consts::PI;
 
 /// A QTF on its frequency grid: one block per (DOF, heading).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Qtf {
     /// Frequencies, rad/s, strictly increasing.
     pub omegas: Vec<f64>,
@@ -18,13 +19,27 @@ pub struct Qtf {
 }
 
 /// T(w_i, w_j) of one DOF at one heading.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct QtfBlock {
     pub dof: Dof,
     /// Wave heading relative to the body x axis, rad.
     pub heading: f64,
     /// Row-major n x n values, `[i * n + j]` = T(w_i, w_j).
+    #[serde(serialize_with = "re_im_pairs")]
     pub values: Vec<Complex64>,
+}
+
+/// Complex values as [re, im] pairs.
+fn re_im_pairs<S: serde::Serializer>(
+    values: &[Complex64],
+    out: S,
+) -> std::result::Result<S::Ok, S::Error> {
+    use serde::ser::SerializeSeq;
+    let mut seq = out.serialize_seq(Some(values.len()))?;
+    for z in values {
+        seq.serialize_element(&[z.re, z.im])?;
+    }
+    seq.end()
 }
 
 impl Qtf {

@@ -140,29 +140,30 @@ pub fn parse_case_table(text: &str, source: &str) -> Result<Vec<CaseRow>> {
                 name = field.to_string();
                 continue;
             };
-            let cell =
-                if setting.takes_words() {
-                    if !setting.words.contains(&field) {
+            let cell = if setting.takes_words() {
+                if !setting.words.contains(&field) {
+                    return Err(error(
+                        line,
+                        format!(
+                            "row {row}, column '{column}': '{field}' is not one of {}",
+                            setting.words.join(", ")
+                        ),
+                    ));
+                }
+                Cell::Word(field.to_string())
+            } else {
+                match field.parse::<f64>() {
+                    Ok(v) if v.is_finite() => Cell::Number(v),
+                    _ => {
                         return Err(error(
-                            line,
-                            format!(
-                                "row {row}, column '{column}': '{field}' is not one of {}",
-                                setting.words.join(", ")
-                            ),
-                        ));
-                    }
-                    Cell::Word(field.to_string())
-                } else {
-                    match field.parse::<f64>() {
-                        Ok(v) if v.is_finite() => Cell::Number(v),
-                        _ => return Err(error(
                             line,
                             format!(
                                 "row {row}, column '{column}': '{field}' is not a finite number"
                             ),
-                        )),
+                        ))
                     }
-                };
+                }
+            };
             cells.push((*setting, cell));
         }
         if let Some(other) = rows.iter().find(|r| r.name == name) {

@@ -12,7 +12,6 @@
 //! [`runs_file`] writes and reads the per-run CSV that makes a campaign resumable.
 
 pub mod cases;
-pub mod plan;
 pub mod runs_file;
 
 use crate::error::{Error, Result};
@@ -39,14 +38,16 @@ pub struct Case {
 }
 
 impl Case {
-    /// A stable 64-bit FNV-1a hash of everything that determines the results except the
-    /// seed (the configuration with seed 0, and the transient), as 16 hex digits: the
-    /// per-run file stores it so that a resumed campaign refuses to mix configurations.
+    /// The [`crate::fingerprint`] of everything that determines the results except the
+    /// seed (the problem with seed 0, and the transient), as 16 hex digits: the per-run file
+    /// stores it so that a resumed campaign refuses to mix configurations.
     pub fn fingerprint(&self) -> String {
         let mut config = self.config.clone();
         config.sea.seed = 0;
-        let text = format!("{config:?} transient {:?}", self.transient);
-        format!("{:016x}", crate::error::fnv1a_64(&text))
+        format!(
+            "{:016x}",
+            crate::fingerprint::fingerprint(&(&config, self.transient))
+        )
     }
 }
 

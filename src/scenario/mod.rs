@@ -20,10 +20,11 @@ use crate::model::{
     YawFollowing, DEFAULT_QTF_TOLERANCE,
 };
 use crate::sea_state::SeaState;
+use serde::Serialize;
 use std::path::PathBuf;
 
 /// Steady, depth-uniform current (E&S section 3).
-#[derive(Debug, Clone, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
 pub struct Current {
     /// Speed, m/s (0 = no current).
     pub speed: f64,
@@ -32,7 +33,7 @@ pub struct Current {
 }
 
 /// Run length and time step.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Run {
     /// Simulated duration, s. The wave record is built at least this long, so it never repeats.
     pub duration: f64,
@@ -46,7 +47,7 @@ pub struct Run {
 ///
 /// Matrices are indexed (surge, sway, yaw). Mass, added mass and damping act in the body
 /// frame; the stiffness acts on the inertial position (X, Y, theta), as in E&S 1.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Platform {
     /// Mass, kg.
     pub mass: f64,
@@ -65,7 +66,7 @@ pub struct Platform {
 }
 
 /// Modelling choices.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ModelOptions {
     pub second_order: SecondOrder,
     /// Relative trace-norm share of the QTF's eigenvalues that may be discarded (full QTF).
@@ -101,14 +102,14 @@ impl Default for ModelOptions {
 }
 
 /// Initial slow-drift state, inertial frame: (X, Y, theta) in m, m, rad and their rates.
-#[derive(Debug, Clone, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
 pub struct InitialCondition {
     pub position: [f64; 3],
     pub velocity: [f64; 3],
 }
 
 /// A frequency and heading grid on which a column solver tabulates the drift.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ColumnGrid {
     /// Lowest and highest frequency, rad/s.
     pub omega_min: f64,
@@ -122,7 +123,7 @@ pub struct ColumnGrid {
 /// Where the mean drift (and, with it, the QTF and the bi-directional drift) comes from: the
 /// `[drift]` section of the configuration, as the user named it. Nothing here is computed or
 /// read until [`crate::problem::resolve`].
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub enum DriftSource {
     /// A table given in the configuration file, already checked and sorted.
     Table(crate::hydro::DriftTable),
@@ -149,7 +150,7 @@ pub enum DriftSource {
 /// One simulation as described: the sea, the platform, the run and the modelling choices,
 /// with its hydrodynamics `H`: a [`DriftSource`] in a scenario as the user wrote it, the data
 /// themselves in a [`crate::problem::Problem`] (`Scenario<Hydro>`).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Scenario<H = DriftSource> {
     pub environment: Environment,
     pub sea: SeaState,
@@ -160,7 +161,8 @@ pub struct Scenario<H = DriftSource> {
     pub model: ModelOptions,
     pub initial: InitialCondition,
     /// Where each setting was written, for error messages (not part of what is simulated:
-    /// origins always compare equal).
+    /// origins always compare equal and are not fingerprinted).
+    #[serde(skip)]
     pub origins: Origins,
 }
 

@@ -10,6 +10,7 @@ pub use spectrum::Spectrum;
 pub use spreading::{Direction, Spreading};
 
 use crate::error::{require_finite, Error, Result};
+use serde::Serialize;
 
 /// Default lower edge of the simulated band, as a fraction of the peak frequency.
 /// The PM and JONSWAP densities at 0.5 wp are about 2e-7 and 1e-7 of the peak, and the
@@ -20,7 +21,7 @@ const DEFAULT_BAND_LOW_RATIO: f64 = 0.5;
 const DEFAULT_BAND_HIGH_RATIO: f64 = 4.0;
 
 /// A short-term sea state.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct SeaState {
     pub spectrum: Spectrum,
     pub spreading: Spreading,

@@ -1,9 +1,10 @@
 //! One-sided wave spectra S(omega) in m^2 s/rad (physics.md section 2).
 
 use crate::error::{require_finite, require_positive, Error, Result};
+use serde::Serialize;
 
 /// A one-sided wave spectrum; m0 = integral of S d omega = Hs^2 / 16.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub enum Spectrum {
     /// JONSWAP in the DNV-RP-C205 (sec. 3.5.5) form. `gamma = None` takes DNV's default.
     /// Not renormalised: A_gamma = 1 - 0.287 ln(gamma) is DNV's fit, so m0 differs from

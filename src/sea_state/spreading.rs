@@ -2,13 +2,14 @@
 //! (E&S 11; DNV-RP-C205 sec. 3.5.8; physics.md section 2).
 
 use crate::error::{require_positive, Result};
+use serde::Serialize;
 use std::f64::consts::PI;
 
 /// Number of Simpson panels used to integrate the spreading function over one cell.
 const SIMPSON_PANELS_PER_CELL: usize = 256;
 
 /// Directional spreading function D(beta - beta_0).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub enum Spreading {
     /// One direction: the mean direction (the N -> infinity limit).
     LongCrested,

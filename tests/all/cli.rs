@@ -73,14 +73,284 @@ fn simulate_prints_the_summary_and_writes_the_series() {
     );
 }
 
+/// Runs the CLI expecting a refusal: a non-zero status and every one of `expected` in the
+/// message on stderr.
+fn refused(args: &[&str], expected: &[&str]) {
+    let run = slowdrift(args);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(!run.status.success(), "{args:?} succeeded: {stderr}");
+    for text in expected {
+        assert!(stderr.contains(text), "{args:?}: no {text:?} in {stderr}");
+    }
+}
+
 #[test]
 fn bad_arguments_fail_with_the_usage() {
-    let run = slowdrift(&["simulate", "--bogus"]);
-    assert!(!run.status.success());
-    assert!(String::from_utf8_lossy(&run.stderr).contains("unknown option '--bogus'"));
-    let run = slowdrift(&["hydro", "columns"]);
-    assert!(!run.status.success());
-    assert!(String::from_utf8_lossy(&run.stderr).contains("--out is required"));
+    refused(
+        &["simulate", "--bogus"],
+        &["unexpected argument '--bogus'", "Usage: slowdrift simulate"],
+    );
+    refused(
+        &["hydro", "columns"],
+        &[
+            "required",
+            "--out <FILE.json>",
+            "Usage: slowdrift hydro columns",
+        ],
+    );
+    refused(&["frobnicate"], &["unrecognized subcommand 'frobnicate'"]);
+    refused(
+        &["simulate", "--transient", "-5"],
+        &["--transient -5: must be a non-negative number of seconds"],
+    );
+    refused(
+        &["simulate", "--transient", "ten"],
+        &["--transient ten: not a number"],
+    );
+    refused(
+        &[
+            "hydro", "wamit", "--root", "x", "--rho", "0", "--out", "y.json",
+        ],
+        &["--rho 0: must be a positive number"],
+    );
+    refused(
+        &["hydro", "wamit", "--out", "y.json"],
+        &["required", "--root <PATH/NAME>"],
+    );
+}
+
+/// The help text of `args`, which must exit 0, with every run of whitespace made one space
+/// (the help is wrapped to the terminal's width).
+fn help(args: &[&str]) -> String {
+    let run = slowdrift(args);
+    assert!(
+        run.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let text = String::from_utf8_lossy(&run.stdout);
+    text.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+fn assert_lists(args: &[&str], expected: &[&str]) {
+    let text = help(args);
+    for item in expected {
+        assert!(text.contains(item), "{args:?}: no {item:?} in {text}");
+    }
+}
+
+/// `--help` of the tool and of every command exits 0 and lists the options with their
+/// values, units and defaults.
+#[test]
+fn help_lists_the_options_with_units_and_defaults() {
+    let commands = [
+        "simulate",
+        "hydro",
+        "montecarlo",
+        "study",
+        "slowdrift COMMAND --help",
+    ];
+    assert_lists(&["--help"], &commands);
+    // Without a command: the same help, and success (as the tool always did).
+    assert_lists(&[], &commands);
+    assert_lists(
+        &["simulate", "--help"],
+        &[
+            "--config <FILE.toml>",
+            "--out <FILE.csv>",
+            "--transient <SECONDS> Start-up transient dropped before the statistics, s \
+             [default: ten surge natural periods, at most half the run]",
+        ],
+    );
+    assert_lists(
+        &["hydro", "wamit", "--help"],
+        &[
+            "--root <PATH/NAME>",
+            "m [default: 1]",
+            "--rho <RHO> Water density, kg/m^3",
+            "[default: 1025]",
+            "m/s^2",
+            "[default: 9.80665]",
+            "--out <FILE.json>",
+        ],
+    );
+    assert_lists(
+        &["hydro", "columns", "--help"],
+        &["--config <FILE.toml>", "--out <FILE.json>"],
+    );
+    assert_lists(
+        &["montecarlo", "--help"],
+        &[
+            "--print-cases",
+            "--seeds <N>",
+            "(required unless --print-cases)",
+            "--first-seed <S>",
+            "[default: 1]",
+            "--duration <SECONDS> Replaces run.duration of the base, s",
+            "--transient <SECONDS>",
+            "at most half the run]",
+            "--threads <T>",
+            "[default: all cores]",
+            "--cases <CASES.csv>",
+            "--case <NAME>",
+            "--out <RESULTS.csv>",
+        ],
+    );
+    assert_lists(
+        &["study", "--help"],
+        &[
+            "Usage: slowdrift study <waves|boxplots|transient|sensitivity>",
+            "waves",
+            "boxplots",
+            "transient",
+            "sensitivity",
+        ],
+    );
+    assert_lists(
+        &["study", "waves", "--help"],
+        &[
+            "--exponents <A..B> Record lengths 2^A .. 2^B s",
+            "[default: 11..17]",
+            "--out <DIR>",
+        ],
+    );
+    assert_lists(
+        &["study", "boxplots", "--help"],
+        &[
+            "--exponents <A..B>",
+            "--samples <N,N,...>",
+            "[default: 1000,1000,1000,400,200,200,200 for 11..17, else 200]",
+            "--transient <SECONDS>",
+            "s [default: ten undamped surge natural periods]",
+            "--threads <T>",
+            "--out <DIR>",
+        ],
+    );
+    assert_lists(
+        &["study", "transient", "--help"],
+        &[
+            "--runs <N>",
+            "[default: 200]",
+            "--blocks <N>",
+            "[default: 8]",
+            "--block-cycles <CYCLES>",
+            "undamped surge natural periods",
+            "[default: 10]",
+            "--offsets <M,M,...>",
+            "m (released at rest) [default: 0,15]",
+            "--threads <T>",
+        ],
+    );
+    assert_lists(
+        &["study", "sensitivity", "--help"],
+        &[
+            "--cases <CASES.csv>",
+            "--x <COLUMN>",
+            "--seeds <N>",
+            "[default: 100]",
+            "--threads <T>",
+            "--out <DIR>",
+        ],
+    );
+}
+
+/// `montecarlo` checks its options before anything runs, naming the option and the value.
+#[test]
+fn montecarlo_refuses_bad_options() {
+    let config = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/example.toml");
+    let config = config.to_str().unwrap();
+    let out = std::env::temp_dir().join(format!("slowdrift-cli-mc-{}.csv", std::process::id()));
+    let out = out.to_str().unwrap();
+    let base = ["montecarlo", "--config", config];
+    let with =
+        |extra: &[&'static str]| -> Vec<&str> { base.iter().chain(extra).copied().collect() };
+    refused(
+        &[with(&["--seeds", "0"]), vec!["--out", out]].concat(),
+        &["--seeds 0: must be a whole number of at least 1"],
+    );
+    refused(
+        &[
+            with(&["--seeds", "2", "--threads", "0"]),
+            vec!["--out", out],
+        ]
+        .concat(),
+        &["--threads 0: must be a whole number of at least 1"],
+    );
+    refused(
+        &[
+            with(&["--seeds", "2", "--first-seed", "-1"]),
+            vec!["--out", out],
+        ]
+        .concat(),
+        &["--first-seed -1: must be a whole number of at least 0"],
+    );
+    refused(
+        &[
+            with(&["--seeds", "2", "--duration", "0"]),
+            vec!["--out", out],
+        ]
+        .concat(),
+        &["--duration 0: must be a positive number of seconds"],
+    );
+    refused(
+        &[
+            with(&["--seeds", "2", "--transient", "-1"]),
+            vec!["--out", out],
+        ]
+        .concat(),
+        &["--transient -1: must be a non-negative number of seconds"],
+    );
+    refused(
+        &[with(&[]), vec!["--out", out]].concat(),
+        &["required", "--seeds <N>"],
+    );
+    refused(
+        &with(&["--seeds", "2"]),
+        &["required", "--out <RESULTS.csv>"],
+    );
+    // An unknown option is named, with the option it resembles.
+    refused(
+        &[with(&["--seed", "2"]), vec!["--out", out]].concat(),
+        &["unexpected argument '--seed'", "'--seeds'"],
+    );
+    refused(
+        &[
+            with(&["--seeds", "2", "--first-seed", "18446744073709551615"]),
+            vec!["--out", out],
+        ]
+        .concat(),
+        &["--first-seed 18446744073709551615 + --seeds 2 overflows"],
+    );
+    assert!(!Path::new(out).exists(), "nothing ran, nothing was written");
+}
+
+/// `montecarlo --print-cases` needs neither --seeds nor --out, and other options given
+/// once more replace the earlier value (as they always did).
+#[test]
+fn montecarlo_prints_cases_without_seeds_or_out() {
+    let config = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/example.toml");
+    let run = slowdrift(&[
+        "montecarlo",
+        "--config",
+        config.to_str().unwrap(),
+        "--transient",
+        "100",
+        "--transient",
+        "123",
+        "--print-cases",
+    ]);
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let document: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    assert_eq!(document["format_version"], 1, "{stdout}");
+    let cases = document["cases"].as_array().unwrap();
+    assert_eq!(cases.len(), 1, "{stdout}");
+    assert_eq!(cases[0]["name"], "base", "{stdout}");
+    assert_eq!(cases[0]["transient"], 123.0, "{stdout}");
 }
 
 fn temp_dir(name: &str) -> std::path::PathBuf {
@@ -179,21 +449,26 @@ fn study_sensitivity_runs_plots_and_resumes() {
 fn study_refuses_bad_arguments() {
     let dir = temp_dir("bad");
     let out = dir.to_str().unwrap();
+    let kinds = "<waves|boxplots|transient|sensitivity>";
     for (args, expected) in [
-        (vec!["study"], "waves, boxplots, transient, sensitivity"),
+        (vec!["study"], vec![kinds]),
         (
             vec!["study", "plots", "--out", out],
-            "waves, boxplots, transient, sensitivity",
+            vec!["unrecognized subcommand 'plots'", kinds],
         ),
         (
             vec!["study", "waves", "--seeds", "3", "--out", out],
-            "unknown option '--seeds'",
+            vec!["unexpected argument '--seeds'"],
         ),
         (
             vec!["study", "waves", "--exponents", "12..11", "--out", out],
-            "--exponents 12..11",
+            vec!["--exponents 12..11: must be A..B with 4 <= A <= B <= 20"],
         ),
-        (vec!["study", "waves"], "--out is required"),
+        (vec!["study", "waves"], vec!["required", "--out <DIR>"]),
+        (
+            vec!["study", "waves", "--out", out, "--out", out],
+            vec!["'--out <DIR>' cannot be used multiple times"],
+        ),
         (
             vec![
                 "study",
@@ -205,23 +480,34 @@ fn study_refuses_bad_arguments() {
                 "--out",
                 out,
             ],
-            "--samples: 2 counts for 3 record lengths",
+            vec!["--samples: 2 counts for 3 record lengths"],
+        ),
+        (
+            vec!["study", "boxplots", "--samples", "3,1", "--out", out],
+            vec!["--samples 1: must be a whole number of at least 2"],
         ),
         (
             vec!["study", "transient", "--offsets", "0,x", "--out", out],
-            "'x' is not a finite number",
+            vec!["--offsets 0,x: 'x' is not a finite number"],
+        ),
+        (
+            vec!["study", "transient", "--block-cycles", "0", "--out", out],
+            vec!["--block-cycles 0: must be a positive number"],
+        ),
+        (
+            vec!["study", "transient", "--runs", "1", "--out", out],
+            vec!["--runs 1: must be a whole number of at least 2"],
         ),
         (
             vec!["study", "sensitivity", "--x", "cd", "--out", out],
-            "--cases is required",
+            vec!["required", "--cases <CASES.csv>"],
+        ),
+        (
+            vec!["study", "sensitivity", "--cases", "c.csv", "--out", out],
+            vec!["required", "--x <COLUMN>"],
         ),
     ] {
-        let run = slowdrift(&args);
-        let stderr = String::from_utf8_lossy(&run.stderr);
-        assert!(
-            !run.status.success() && stderr.contains(expected),
-            "{args:?}: {stderr}"
-        );
+        refused(&args, &expected);
     }
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -526,7 +526,7 @@ fn bad_values_are_refused() {
     }
     type Case = (fn(&Fmu) -> fmi2Status, &'static [&'static str]);
     let cases: [Case; 9] = [
-        (|f| f.set_real(vr::HS, -1.0), &["sea.spectrum.hs = -1"]),
+        (|f| f.set_real(vr::HS, -1.0), &["FMU parameter Hs = -1"]),
         (|f| f.set_int(vr::INTERACTION, 5), &["interaction = 5"]),
         (
             |f| f.set_int(vr::YAW_FOLLOWING_HEADINGS, 1),
@@ -537,9 +537,12 @@ fn bad_values_are_refused() {
                 f.set_int(vr::YAW_FOLLOWING_HEADINGS, 4);
                 f.set_real(vr::YAW_FOLLOWING_RANGE, -0.2)
             },
-            &["model.yaw_following"],
+            &["FMU parameter yawFollowingRange = -0.2"],
         ),
-        (|f| f.set_real(vr::STEP_SIZE, 0.0), &["run.time_step = 0"]),
+        (
+            |f| f.set_real(vr::STEP_SIZE, 0.0),
+            &["FMU parameter stepSize = 0"],
+        ),
         (|f| f.set_int(vr::N_DIRECTIONS, 0), &["nDirections = 0"]),
         (|f| f.set_int(vr::SEED, -1), &["seed = -1"]),
         (|f| f.set_int(vr::DRAG_MODEL, 3), &["dragModel = 3"]),

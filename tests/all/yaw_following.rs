@@ -309,7 +309,7 @@ fn invalid_yaw_following_options_are_refused_naming_the_field() {
     c.model.yaw_following = range(5, -3.0, 3.0);
     c.initial.position[2] = 4f64.to_radians();
     let text = Simulation::new(c.clone()).unwrap_err().to_string();
-    assert!(text.contains("initial.position[2] = 4.000 deg"), "{text}");
+    assert!(text.contains("initial.heading_deg = 4.000 deg"), "{text}");
     c.initial.position[2] = 0.0;
     c.model.second_order = SecondOrder::FullQtf;
     let text = Simulation::new(c.clone()).unwrap_err().to_string();

@@ -2,7 +2,7 @@
 numbers) and a plain fmpy FMU2Slave run.
 
 Native route: `slowdrift simulate --config FILE.toml --out FILE.csv` on a TOML file written
-from src/config/default.toml with the same sea, seed, stiffness, step and duration as the FMU
+from src/scenario/default.toml with the same sea, seed, stiffness, step and duration as the FMU
 parameters and stop time. The CLI writes 17 significant digits (`{:.16e}`), which read back
 bit for bit, so the two routes can be compared exactly.
 """
@@ -17,7 +17,7 @@ import numpy as np
 
 from mooring_loop import REPO
 
-DEFAULT_TOML = os.path.join(REPO, "src", "config", "default.toml")
+DEFAULT_TOML = os.path.join(REPO, "src", "scenario", "default.toml")
 
 # The FMU's outputs in the order of the native CSV's columns after time_s.
 OUTPUTS = ("X", "Y", "theta", "Xdot", "Ydot", "thetadot", "eta",

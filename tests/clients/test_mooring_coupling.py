@@ -8,7 +8,7 @@ import numpy as np
 
 from mooring_loop import run_loop
 
-# src/config/default.toml: mass + low-frequency added mass; yaw inertia + added inertia.
+# src/scenario/default.toml: mass + low-frequency added mass; yaw inertia + added inertia.
 M_SURGE = 1.0097e8 + 6.389e7
 I_YAW = 2.005e11 + 1.052e11
 

@@ -6,7 +6,7 @@ import moordyn
 
 from mooring_stiffness import DEFAULT_DAT, Mooring, body6, quiet, static_force
 
-# Design target: the default platform's internal stiffness (src/config/default.toml).
+# Design target: the default platform's internal stiffness (src/scenario/default.toml).
 DEFAULT_K_SURGE = 1.627e5
 DEFAULT_K_YAW = 1.207e9
 

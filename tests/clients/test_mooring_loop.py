@@ -34,7 +34,7 @@ TRANSIENT = 2000.0  # s, discarded before the statistics (ten surge periods)
 BOUND = 100.0  # m, |X| and |Y|: a physical bound (the 3-hour maximum is ~10-20 m)
 BOUND_YAW = 0.5  # rad
 ZETA = 0.05
-# src/config/default.toml: surge mass + low-frequency added mass (for w_n = sqrt(K / M)).
+# src/scenario/default.toml: surge mass + low-frequency added mass (for w_n = sqrt(K / M)).
 M_SURGE = 1.0097e8 + 6.389e7
 
 

@@ -1,7 +1,7 @@
 """A campaign's cases, read by the native tool (`slowdrift montecarlo --print-cases`): one
 reader of the case table and the configuration for both paths, with the same error
 messages (file, line, row, column) and the same per-case fingerprint
-(src/montecarlo/plan.rs describes the JSON)."""
+(src/fmi2/campaign.rs describes the JSON)."""
 
 import json
 import subprocess
@@ -27,6 +27,9 @@ class Case:
     start_time: float = 0.0
     stop_time: float = 0.0
     fmu_unavailable: str = ""
+    # The message every run of the case fails with when the model refuses its values (as
+    # the native tool records it); empty for a case that runs.
+    refused: str = ""
 
 
 def case_arguments(config=None, cases=None, duration=None, transient=None):
@@ -62,7 +65,8 @@ def read_cases(slowdrift, arguments):
     for c in document["cases"]:
         fmu = c["fmu"]
         common = dict(name=c["name"], fingerprint=c["fingerprint"], transient=c["transient"],
-                      time_step=c["time_step"], steps=int(c["steps"]))
+                      time_step=c["time_step"], steps=int(c["steps"]),
+                      refused=c.get("refused", ""))
         if "unavailable" in fmu:
             out.append(Case(**common, fmu_unavailable=fmu["unavailable"]))
         else:

@@ -93,6 +93,10 @@ class CampaignPlugin(WorkerPlugin):
 
     def run(self, case, seeds):
         """[(seed, "ok", statistics) or (seed, "failed", message)] for consecutive seeds."""
+        if case.refused:
+            # The model refuses the case's values whatever the seed: every run fails with the
+            # native tool's message, which names where the values were written.
+            return [(seed, "failed", case.refused) for seed in seeds]
         if self.backend == "fmu":
             runner = self._fmu_runner()
             results = []

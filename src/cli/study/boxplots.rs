@@ -1,7 +1,7 @@
 //! `slowdrift study boxplots`: surge mean and rms over many seeds for record lengths
 //! 2^11 .. 2^17 s as box plots (E&S Fig. 10).
 
-use super::{parse_whole, report, sea_text, surge_values, ten_cycles, write_text, Options};
+use super::{report, sea_text, surge_values, ten_cycles, threads, write_text, BoxplotsArgs};
 use crate::cli::montecarlo::run_campaign;
 use crate::plot::{
     padded_range, write_figure, BoxItem, Figure, LegendAt, Panel, Series, Style, Ticks,
@@ -10,7 +10,6 @@ use slowdrift::montecarlo::{Case, Job};
 use slowdrift::studies::distribution::{box_stats, log_log_slope, sample_std};
 use slowdrift::Problem;
 use std::fmt::Write as _;
-use std::path::Path;
 
 /// Default sample counts of `boxplots` for record lengths 2^11 .. 2^17 s: 1000 where runs
 /// are cheap, fewer for the long records (about 4 minutes on 2 cores for the default
@@ -19,13 +18,11 @@ const DEFAULT_SAMPLES: [usize; 7] = [1000, 1000, 1000, 400, 200, 200, 200];
 
 /// Fig. 10: box plots of the surge mean and rms over many seeds for record lengths
 /// 2^A .. 2^B s (analysed after the transient), and their scatter against length.
-pub(super) fn boxplots(base: &Problem, options: &Options, out: &Path) -> Result<(), String> {
-    let exponents = options.exponents()?;
-    let samples: Vec<usize> = match options.get("--samples") {
-        Some(text) => text
-            .split(',')
-            .map(|v| parse_whole("--samples", v.trim(), 2))
-            .collect::<Result<_, _>>()?,
+pub(super) fn boxplots(base: &Problem, args: &BoxplotsArgs) -> Result<(), String> {
+    let exponents = &args.exponents.0;
+    let out = args.out.as_path();
+    let samples: Vec<usize> = match &args.samples {
+        Some(counts) => counts.0.clone(),
         None if exponents.len() == DEFAULT_SAMPLES.len() => DEFAULT_SAMPLES.to_vec(),
         None => vec![200],
     };
@@ -39,15 +36,8 @@ pub(super) fn boxplots(base: &Problem, options: &Options, out: &Path) -> Result<
             ))
         }
     };
-    let transient = match options.get("--transient") {
-        Some(v) => match v.parse::<f64>() {
-            Ok(t) if t.is_finite() && t >= 0.0 => t,
-            _ => {
-                return Err(format!(
-                    "--transient {v}: must be a non-negative number of seconds"
-                ))
-            }
-        },
+    let transient = match args.transient {
+        Some(seconds) => seconds,
         None => ten_cycles(base)?,
     };
     let cases: Vec<Case> = exponents
@@ -70,14 +60,14 @@ pub(super) fn boxplots(base: &Problem, options: &Options, out: &Path) -> Result<
     let runs = run_campaign(
         &cases,
         &jobs,
-        options.threads()?,
+        threads(args.threads),
         &out.join("fig10.runs.csv"),
     )?;
 
     let mut csv = String::from("record_length_s,samples,mean_median_m,mean_iqr_m,mean_std_m,rms_median_m,rms_iqr_m,rms_std_m\n");
     let (mut mean_boxes, mut rms_boxes) = (Vec::new(), Vec::new());
     let (mut lengths, mut mean_std, mut rms_std) = (Vec::new(), Vec::new(), Vec::new());
-    for ((case, &k), &n) in cases.iter().zip(&exponents).zip(&samples) {
+    for ((case, &k), &n) in cases.iter().zip(exponents).zip(&samples) {
         let (means, rmss) = surge_values(&runs, case, n);
         if means.len() < 2 {
             return Err(format!(

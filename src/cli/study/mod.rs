@@ -9,139 +9,212 @@ mod sensitivity;
 mod transient;
 mod waves;
 
+use super::args::{all_cores, parse_whole, seconds, whole, Checked};
+use clap::{Args, Subcommand};
 use slowdrift::montecarlo::runs_file::RunRow;
 use slowdrift::montecarlo::Case;
-use slowdrift::problem::default_problem;
+use slowdrift::problem::{self, default_problem};
 use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
 use slowdrift::scenario::TRANSIENT_CYCLES;
-use slowdrift::{problem, Problem};
-use std::collections::BTreeMap;
+use slowdrift::Problem;
 use std::path::{Path, PathBuf};
 
-pub const USAGE: &str = "slowdrift study waves [--config FILE.toml] [--exponents 11..17] --out DIR
-       slowdrift study boxplots [--config FILE.toml] [--exponents 11..17] [--samples N,N,...]
-                                [--transient SECONDS] [--threads T] --out DIR
-       slowdrift study transient [--config FILE.toml] [--runs 200] [--blocks 8] [--block-cycles 10]
-                                 [--offsets 0,15]
-                                 [--threads T] --out DIR
-       slowdrift study sensitivity [--config FILE.toml] --cases CASES.csv --x COLUMN [--seeds 100]
-                                   [--threads T] --out DIR";
+/// `slowdrift study`.
+#[derive(Args)]
+#[command(
+    subcommand_required = true,
+    subcommand_value_name = "waves|boxplots|transient|sensitivity"
+)]
+pub struct StudyArgs {
+    #[command(subcommand)]
+    study: Study,
+}
 
-/// Runs `slowdrift study` with the arguments after `study`.
-pub fn run(args: &[String]) -> Result<(), String> {
-    let kind = args.first().map(String::as_str);
-    let allowed: &[&str] = match kind {
-        Some("waves") => &["--config", "--exponents", "--out"],
-        Some("boxplots") => &[
-            "--config",
-            "--exponents",
-            "--samples",
-            "--transient",
-            "--threads",
-            "--out",
-        ],
-        Some("transient") => &[
-            "--config",
-            "--runs",
-            "--blocks",
-            "--block-cycles",
-            "--offsets",
-            "--threads",
-            "--out",
-        ],
-        Some("sensitivity") => &[
-            "--config",
-            "--cases",
-            "--x",
-            "--seeds",
-            "--threads",
-            "--out",
-        ],
-        _ => {
-            return Err(format!(
-                "study needs one of waves, boxplots, transient, sensitivity\nusage: {USAGE}"
-            ))
-        }
+#[derive(Subcommand)]
+enum Study {
+    /// The elevation's pdf against the Gaussian and its spectrum against the input for record
+    /// lengths 2^A .. 2^B s (E&S Figs 7, 8)
+    Waves(WavesArgs),
+    /// Surge mean and rms over many seeds for record lengths 2^A .. 2^B s as box plots (E&S
+    /// Fig. 10); resumable (DIR/fig10.runs.csv)
+    Boxplots(BoxplotsArgs),
+    /// Surge mean and rms per block of slow-drift cycles over many runs, for several initial
+    /// offsets (E&S Fig. 11)
+    Transient(TransientArgs),
+    /// Surge mean and rms against a column of a case table (E&S Figs 12-15); resumable
+    /// (DIR/CASES.runs.csv)
+    Sensitivity(SensitivityArgs),
+}
+
+/// `study waves`.
+#[derive(Args)]
+struct WavesArgs {
+    /// Platform and sea (TOML) [default: the embedded default platform]
+    #[arg(long, value_name = "FILE.toml", allow_hyphen_values = true)]
+    config: Option<PathBuf>,
+    /// Record lengths 2^A .. 2^B s, 4 <= A <= B <= 20
+    #[arg(long, value_name = "A..B", allow_hyphen_values = true, default_value = "11..17",
+          value_parser = Checked(exponents))]
+    exponents: Exponents,
+    /// Directory of the CSV and the figures (PNG and SVG), created if missing
+    #[arg(long, value_name = "DIR", allow_hyphen_values = true)]
+    out: PathBuf,
+}
+
+/// `study boxplots`.
+#[derive(Args)]
+struct BoxplotsArgs {
+    /// Platform and sea (TOML) [default: the embedded default platform]
+    #[arg(long, value_name = "FILE.toml", allow_hyphen_values = true)]
+    config: Option<PathBuf>,
+    /// Record lengths after the transient 2^A .. 2^B s, 4 <= A <= B <= 20
+    #[arg(long, value_name = "A..B", allow_hyphen_values = true, default_value = "11..17",
+          value_parser = Checked(exponents))]
+    exponents: Exponents,
+    /// Seeds (1..N) per record length, each at least 2: one count for every length or one per
+    /// length [default: 1000,1000,1000,400,200,200,200 for 11..17, else 200]
+    #[arg(long, value_name = "N,N,...", allow_hyphen_values = true,
+          value_parser = Checked(sample_counts))]
+    samples: Option<Counts>,
+    /// Start-up transient simulated before each record and dropped, s [default: ten
+    /// undamped surge natural periods]
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true, value_parser = seconds(false))]
+    transient: Option<f64>,
+    /// Threads, at least 1 (the results do not depend on it) [default: all cores]
+    #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = whole(1usize))]
+    threads: Option<usize>,
+    /// Directory of the CSV, the figures (PNG and SVG) and the per-run file, created if missing
+    #[arg(long, value_name = "DIR", allow_hyphen_values = true)]
+    out: PathBuf,
+}
+
+/// `study transient`.
+#[derive(Args)]
+struct TransientArgs {
+    /// Platform and sea (TOML); its [initial] position is the start [default: the embedded
+    /// default platform]
+    #[arg(long, value_name = "FILE.toml", allow_hyphen_values = true)]
+    config: Option<PathBuf>,
+    /// Runs (seeds 1..N, the same for every offset) per initial offset, at least 2
+    #[arg(long, value_name = "N", allow_hyphen_values = true, default_value_t = 200,
+          value_parser = whole(2usize))]
+    runs: usize,
+    /// Blocks per run, at least 2
+    #[arg(long, value_name = "N", allow_hyphen_values = true, default_value_t = 8,
+          value_parser = whole(2usize))]
+    blocks: usize,
+    /// Length of a block in undamped surge natural periods (slow-drift cycles), positive
+    #[arg(long, value_name = "CYCLES", allow_hyphen_values = true,
+          default_value_t = TRANSIENT_CYCLES, value_parser = Checked(block_cycles))]
+    block_cycles: f64,
+    /// Initial surge offsets added to the configuration's initial position, m (released at
+    /// rest)
+    #[arg(long, value_name = "M,M,...", allow_hyphen_values = true, default_value = "0,15",
+          value_parser = Checked(|flag: &str, text: &str| parse_numbers(flag, text).map(Numbers)))]
+    offsets: Numbers,
+    /// Threads, at least 1 (the results do not depend on it) [default: all cores]
+    #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = whole(1usize))]
+    threads: Option<usize>,
+    /// Directory of the CSV and the figures (PNG and SVG), created if missing
+    #[arg(long, value_name = "DIR", allow_hyphen_values = true)]
+    out: PathBuf,
+}
+
+/// `study sensitivity`.
+#[derive(Args)]
+struct SensitivityArgs {
+    /// Base platform and sea (TOML) [default: the embedded default platform]
+    #[arg(long, value_name = "FILE.toml", allow_hyphen_values = true)]
+    config: Option<PathBuf>,
+    /// Case table (CSV, as for montecarlo), one point per row
+    #[arg(long, value_name = "CASES.csv", allow_hyphen_values = true)]
+    cases: PathBuf,
+    /// The case-table column on the x axis (cd, cd_slow, current_speed, hs, ...)
+    #[arg(long, value_name = "COLUMN", allow_hyphen_values = true)]
+    x: String,
+    /// Seeds 1..N per case, at least 2
+    #[arg(long, value_name = "N", allow_hyphen_values = true, default_value_t = 100,
+          value_parser = whole(2usize))]
+    seeds: usize,
+    /// Threads, at least 1 (the results do not depend on it) [default: all cores]
+    #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = whole(1usize))]
+    threads: Option<usize>,
+    /// Directory of the CSV (CASES.summary.csv), the figures (CASES.png, CASES.svg) and the
+    /// per-run file (CASES.runs.csv), created if missing
+    #[arg(long, value_name = "DIR", allow_hyphen_values = true)]
+    out: PathBuf,
+}
+
+/// `--exponents A..B`: record lengths 2^A .. 2^B s (inclusive).
+#[derive(Clone)]
+struct Exponents(Vec<u32>);
+
+/// `--samples N,N,...`.
+#[derive(Clone)]
+struct Counts(Vec<usize>);
+
+/// `--offsets X,X,...`.
+#[derive(Clone)]
+struct Numbers(Vec<f64>);
+
+/// Runs `slowdrift study ...`.
+pub fn run(args: StudyArgs) -> Result<(), String> {
+    let (config, out) = match &args.study {
+        Study::Waves(a) => (&a.config, &a.out),
+        Study::Boxplots(a) => (&a.config, &a.out),
+        Study::Transient(a) => (&a.config, &a.out),
+        Study::Sensitivity(a) => (&a.config, &a.out),
     };
-    let options = Options::parse(&args[1..], allowed)?;
-    let out = PathBuf::from(options.required("--out")?);
-    std::fs::create_dir_all(&out).map_err(|e| format!("{}: {e}", out.display()))?;
-    let base = match options.get("--config") {
-        Some(path) => problem::load(Path::new(path)).map_err(|e| e.to_string())?,
+    std::fs::create_dir_all(out).map_err(|e| format!("{}: {e}", out.display()))?;
+    let base = match config {
+        Some(path) => problem::load(path).map_err(|e| e.to_string())?,
         None => {
             println!("embedded default platform; drift: {DEFAULT_DRIFT_LABEL}");
             default_problem().map_err(|e| e.to_string())?
         }
     };
-    match kind {
-        Some("waves") => waves::waves(&base, &options, &out),
-        Some("boxplots") => boxplots::boxplots(&base, &options, &out),
-        Some("transient") => transient::transient(&base, &options, &out),
-        _ => sensitivity::sensitivity(&base, &options, &out),
+    match &args.study {
+        Study::Waves(a) => waves::waves(&base, a),
+        Study::Boxplots(a) => boxplots::boxplots(&base, a),
+        Study::Transient(a) => transient::transient(&base, a),
+        Study::Sensitivity(a) => sensitivity::sensitivity(&base, a),
     }
 }
 
-/// `--flag value` pairs, each flag at most once and from an allowed list.
-struct Options(BTreeMap<String, String>);
-
-impl Options {
-    fn parse(args: &[String], allowed: &[&str]) -> Result<Self, String> {
-        let mut map = BTreeMap::new();
-        let mut rest = args.iter();
-        while let Some(flag) = rest.next() {
-            if !allowed.contains(&flag.as_str()) {
-                return Err(format!(
-                    "unknown option '{flag}' (this study takes {})\nusage: {USAGE}",
-                    allowed.join(", ")
-                ));
-            }
-            let value = rest.next().ok_or_else(|| format!("{flag} needs a value"))?;
-            if map.insert(flag.clone(), value.clone()).is_some() {
-                return Err(format!("{flag} given twice"));
-            }
-        }
-        Ok(Options(map))
-    }
-
-    fn get(&self, flag: &str) -> Option<&str> {
-        self.0.get(flag).map(String::as_str)
-    }
-
-    fn required(&self, flag: &str) -> Result<&str, String> {
-        self.get(flag)
-            .ok_or_else(|| format!("{flag} is required\nusage: {USAGE}"))
-    }
-
-    fn whole(&self, flag: &str, default: usize, least: usize) -> Result<usize, String> {
-        self.get(flag)
-            .map_or(Ok(default), |v| parse_whole(flag, v, least))
-    }
-
-    fn threads(&self) -> Result<usize, String> {
-        let cores = std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get);
-        self.whole("--threads", cores, 1)
-    }
-
-    /// `--exponents A..B`: record lengths 2^A .. 2^B s (inclusive), 4 <= A <= B <= 20.
-    fn exponents(&self) -> Result<Vec<u32>, String> {
-        let text = self.get("--exponents").unwrap_or("11..17");
-        let parsed = text
-            .split_once("..")
-            .and_then(|(a, b)| Some((a.parse::<u32>().ok()?, b.parse::<u32>().ok()?)));
-        match parsed {
-            Some((a, b)) if (4..=b).contains(&a) && b <= 20 => Ok((a..=b).collect()),
-            _ => Err(format!("--exponents {text}: must be A..B with 4 <= A <= B <= 20 (record lengths 2^A .. 2^B s)")),
-        }
-    }
-}
-
-fn parse_whole(flag: &str, value: &str, least: usize) -> Result<usize, String> {
-    match value.parse::<usize>() {
-        Ok(n) if n >= least => Ok(n),
+/// `--exponents A..B` with 4 <= A <= B <= 20.
+fn exponents(flag: &str, text: &str) -> Result<Exponents, String> {
+    let parsed = text
+        .split_once("..")
+        .and_then(|(a, b)| Some((a.parse::<u32>().ok()?, b.parse::<u32>().ok()?)));
+    match parsed {
+        Some((a, b)) if (4..=b).contains(&a) && b <= 20 => Ok(Exponents((a..=b).collect())),
         _ => Err(format!(
-            "{flag} {value}: must be a whole number of at least {least}"
+            "{flag} {text}: must be A..B with 4 <= A <= B <= 20 (record lengths 2^A .. 2^B s)"
         )),
     }
+}
+
+/// `--samples N,N,...`, each at least 2 (how many against the record lengths is checked by
+/// the study).
+fn sample_counts(flag: &str, text: &str) -> Result<Counts, String> {
+    text.split(',')
+        .map(|v| parse_whole(flag, v.trim(), 2))
+        .collect::<Result<_, _>>()
+        .map(Counts)
+}
+
+/// `--block-cycles C`: the first of the numbers given, positive.
+fn block_cycles(flag: &str, text: &str) -> Result<f64, String> {
+    parse_numbers(flag, text)?
+        .first()
+        .copied()
+        .filter(|c| *c > 0.0)
+        .ok_or_else(|| format!("{flag} {text}: must be a positive number"))
+}
+
+/// `--threads T`, or all cores.
+fn threads(given: Option<usize>) -> usize {
+    given.unwrap_or_else(all_cores)
 }
 
 fn parse_numbers(flag: &str, text: &str) -> Result<Vec<f64>, String> {

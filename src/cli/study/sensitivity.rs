@@ -1,14 +1,13 @@
 //! `slowdrift study sensitivity`: mean and rms against a case-table column (drag coefficients,
 //! current speed; E&S Figs 12-15).
 
-use super::{report, sea_text, surge_values, write_text, Options};
+use super::{report, sea_text, surge_values, threads, write_text, SensitivityArgs};
 use crate::cli::montecarlo::run_campaign;
 use crate::plot::{padded_range, write_figure, Figure, LegendAt, Panel, Series, Style, Ticks};
 use slowdrift::montecarlo::cases::read_case_table;
 use slowdrift::montecarlo::{seed_statistics, Job};
 use slowdrift::Problem;
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
 
 /// The axis description of a case-table column.
 fn column_label(column: &str) -> String {
@@ -28,26 +27,22 @@ fn column_label(column: &str) -> String {
 
 /// Figs 12-15: surge mean and rms (mean over seeds, +- 1 standard error) against one
 /// column of a case table.
-pub(super) fn sensitivity(base: &Problem, options: &Options, out: &Path) -> Result<(), String> {
-    let table = PathBuf::from(options.required("--cases")?);
-    let column = options.required("--x")?;
-    let seeds = options.whole("--seeds", 100, 2)?;
-    let rows = read_case_table(&table).map_err(|e| e.to_string())?;
+pub(super) fn sensitivity(base: &Problem, args: &SensitivityArgs) -> Result<(), String> {
+    let table = &args.cases;
+    let column = args.x.as_str();
+    let seeds = args.seeds;
+    let out = args.out.as_path();
+    let rows = read_case_table(table).map_err(|e| e.to_string())?;
     let source = table.display().to_string();
     let mut cases = Vec::new();
     let mut xs = Vec::new();
     for row in &rows {
-        let x = row
-            .values
-            .iter()
-            .find(|(c, _)| *c == column)
-            .map(|(_, v)| *v)
-            .ok_or_else(|| {
-                format!(
-                    "{source}: row {} ('{}') has no value in column '{column}'",
-                    row.row, row.name
-                )
-            })?;
+        let x = row.number(column).ok_or_else(|| {
+            format!(
+                "{source}: row {} ('{}') has no value in column '{column}'",
+                row.row, row.name
+            )
+        })?;
         xs.push(x);
         cases.push(row.case(base, None, &source).map_err(|e| e.to_string())?);
     }
@@ -62,7 +57,7 @@ pub(super) fn sensitivity(base: &Problem, options: &Options, out: &Path) -> Resu
     let runs = run_campaign(
         &cases,
         &jobs,
-        options.threads()?,
+        threads(args.threads),
         &out.join(format!("{stem}.runs.csv")),
     )?;
     let mut csv = format!(

@@ -1,7 +1,7 @@
 //! `slowdrift study transient`: the rms per block of slow-drift cycles over many runs, and how
 //! the initial condition changes it (E&S Fig. 11).
 
-use super::{parse_numbers, report, sea_text, ten_cycles, write_text, Options};
+use super::{report, sea_text, ten_cycles, threads, write_text, TransientArgs};
 use crate::plot::{padded_range, write_figure, Figure, LegendAt, Panel, Series, Style, Ticks};
 use slowdrift::montecarlo::{seed_statistics, simulate_positions, SeedStatistics};
 use slowdrift::scenario::TRANSIENT_CYCLES;
@@ -9,34 +9,25 @@ use slowdrift::studies::blocks::block_summaries;
 use slowdrift::studies::parallel_map;
 use slowdrift::Problem;
 use std::fmt::Write as _;
-use std::path::Path;
 
 /// Fig. 11: surge mean and rms per block of `--block-cycles` (default ten) undamped surge
 /// periods from the start, averaged over runs (seeds 1..=runs, the same seeds for every
 /// initial condition), for initial surge offsets added to the configuration's initial
 /// position (released at rest).
-pub(super) fn transient(base: &Problem, options: &Options, out: &Path) -> Result<(), String> {
-    let runs = options.whole("--runs", 200, 2)?;
-    let blocks = options.whole("--blocks", 8, 2)?;
-    let offsets = parse_numbers("--offsets", options.get("--offsets").unwrap_or("0,15"))?;
-    let cycles = match options.get("--block-cycles") {
-        Some(v) => parse_numbers("--block-cycles", v)?
-            .first()
-            .copied()
-            .filter(|c| *c > 0.0)
-            .ok_or_else(|| format!("--block-cycles {v}: must be a positive number"))?,
-        None => TRANSIENT_CYCLES,
-    };
+pub(super) fn transient(base: &Problem, args: &TransientArgs) -> Result<(), String> {
+    let (runs, blocks, cycles) = (args.runs, args.blocks, args.block_cycles);
+    let offsets = &args.offsets.0;
+    let out = args.out.as_path();
     let block = ten_cycles(base)? / TRANSIENT_CYCLES * cycles;
     let dt = base.run.time_step;
     let jobs = offsets.len() * runs;
     println!(
         "{} initial offsets x {runs} runs of {blocks} blocks of {block:.0} s on {} thread(s)",
         offsets.len(),
-        options.threads()?
+        threads(args.threads)
     );
     let started = std::time::Instant::now();
-    let results = parallel_map(jobs, options.threads()?, |i| {
+    let results = parallel_map(jobs, threads(args.threads), |i| {
         let mut config = base.clone();
         config.sea.seed = (i % runs) as u64 + 1;
         config.run.duration = blocks as f64 * block;

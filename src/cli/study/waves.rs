@@ -1,7 +1,8 @@
 //! `slowdrift study waves`: the elevation's pdf against the Gaussian and its spectrum against
 //! the input for record lengths 2^11 .. 2^17 s (E&S Figs 7, 8).
 
-use super::{report, sea_text, write_text, Options};
+use super::{report, sea_text, write_text, WavesArgs};
+use crate::cli::args::all_cores;
 use crate::plot::{
     padded_range, power_of_two_text, write_figure, Figure, LegendAt, Panel, Series, Style, Ticks,
 };
@@ -11,7 +12,6 @@ use slowdrift::studies::parallel_map;
 use slowdrift::studies::waves::elevation_record;
 use slowdrift::Problem;
 use std::fmt::Write as _;
-use std::path::Path;
 
 /// Welch segment of the elevation spectra, s (a resolution of 2 pi / 2048 = 0.003 rad/s).
 const SPECTRUM_SEGMENT: f64 = 2048.0;
@@ -46,13 +46,14 @@ fn length_label(exponent: u32) -> String {
 
 /// Figs 7 and 8: elevation pdf against the Gaussian and Welch spectrum against the input,
 /// one panel per record length 2^A .. 2^B s, and a last panel of the convergence.
-pub(super) fn waves(base: &Problem, options: &Options, out: &Path) -> Result<(), String> {
-    let exponents = options.exponents()?;
+pub(super) fn waves(base: &Problem, args: &WavesArgs) -> Result<(), String> {
+    let exponents = &args.exponents.0;
+    let out = args.out.as_path();
     let variance = band_integral(base, 1);
     let sigma = variance.sqrt();
     let (band_lo, band_hi) = base.sea.band();
     let wp = base.sea.spectrum.peak_frequency();
-    let records = parallel_map(exponents.len(), options.threads()?, |i| {
+    let records = parallel_map(exponents.len(), all_cores(), |i| {
         elevation_record(base, 2f64.powi(exponents[i] as i32))
     });
     let mut pdf_panels = Vec::new();

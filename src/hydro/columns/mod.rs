@@ -71,6 +71,7 @@ use nalgebra::DMatrix;
 use rustfft::num_complex::Complex64;
 use rustfft::FftPlanner;
 use scattering::{column_force, depth_terms, wavenumber, Circle, FrequencySystem};
+use serde::Serialize;
 
 /// Least number of modes kept beyond k a_max on every column (module doc).
 pub const EXTRA_MODES: usize = 10;
@@ -89,7 +90,7 @@ pub const MAX_GEOMETRIC_MODES: usize = 120;
 const FREQUENCY_STEP: f64 = 1e-4;
 
 /// An array of fixed vertical circular columns (module doc).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ColumnArray {
     columns: Vec<Cylinder>,
     cylinders: Vec<Circle>,

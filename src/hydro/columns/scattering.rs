@@ -30,7 +30,7 @@ use rustfft::num_complex::Complex64;
 use std::f64::consts::PI;
 
 /// A column in plan view: the circle of its centre and radius, m.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub(super) struct Circle {
     pub x: f64,
     pub y: f64,
