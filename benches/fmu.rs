@@ -27,8 +27,8 @@
 
 use criterion::Criterion;
 use slowdrift::fmi2::exports::*;
+use slowdrift::fmi2::model_description::{vr, GUID};
 use slowdrift::fmi2::types::*;
-use slowdrift::model_description::{vr, GUID};
 use slowdrift::problem::default_problem;
 use slowdrift::{Outputs, Simulation};
 use std::ffi::CString;

@@ -4,9 +4,15 @@
 //! bi-directional drift of a spread sea, and the factorised full QTF.
 //!
 //! [`crate::Simulation::new`] makes a plan for itself. A Monte Carlo campaign makes one per
-//! case and every seed of the case reuses it ([`crate::Simulation::with_plan`]): the
-//! records of a seed then cost only what depends on the seed's wave amplitudes (the
-//! transforms, the kinematics, the yaw-following records).
+//! group of cases that the same plan serves, and every seed of those cases reuses it
+//! ([`crate::Simulation::with_plan`]): the records of a seed then cost only what depends on
+//! the seed's wave amplitudes (the transforms, the kinematics, the yaw-following records).
+//!
+//! A plan is keyed by exactly what it holds depends on ([`PlanKey`]): the run's times, the
+//! sea's band and directions, the water, the hydrodynamic data, the columns (Aranha's
+//! damping) and the modelling choices of the records. Cases that differ in anything else (the
+//! seed, the wave height, the drag coefficients, the current, the mass or the mooring) share
+//! one plan.
 
 use crate::error::{Error, Result};
 use crate::forces::{
@@ -17,17 +23,60 @@ use crate::forces::{
 use crate::hydro::aranha::aranha_damping;
 use crate::hydro::bidirectional::DirectionPairs;
 use crate::hydro::DriftTable;
-use crate::model::Dof;
-use crate::model::HEADING_MATCH_TOLERANCE;
-use crate::model::{DriftDamping, SecondOrder};
-use crate::problem::Problem;
-use crate::sea_state::{Direction, FrequencyGrid, WaveComponents};
+use crate::model::{
+    Cylinder, Dof, DriftDamping, Environment, Interaction, SecondOrder, HEADING_MATCH_TOLERANCE,
+};
+use crate::problem::{Hydro, Problem};
+use crate::sea_state::{Direction, FrequencyGrid, Spreading, WaveComponents};
+use serde::Serialize;
 
-/// The seed-independent part of a configuration's records. It serves every configuration
-/// equal to the one it was made from except for `sea.seed`.
+/// What a plan's contents depend on: a plan serves every problem with the same key.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PlanKey {
+    start_time: f64,
+    duration: f64,
+    time_step: f64,
+    band: (f64, f64),
+    spreading: Spreading,
+    mean_direction: f64,
+    n_directions: usize,
+    environment: Environment,
+    hydro: Hydro,
+    columns: Vec<Cylinder>,
+    second_order: SecondOrder,
+    qtf_tolerance: f64,
+    interaction: Interaction,
+    drift_damping: DriftDamping,
+    yaw_following: bool,
+}
+
+impl PlanKey {
+    /// The key of `problem`.
+    pub fn of(problem: &Problem) -> PlanKey {
+        PlanKey {
+            start_time: problem.run.start_time,
+            duration: problem.run.duration,
+            time_step: problem.run.time_step,
+            band: problem.sea.band(),
+            spreading: problem.sea.spreading.clone(),
+            mean_direction: problem.sea.mean_direction,
+            n_directions: problem.sea.n_directions,
+            environment: problem.environment.clone(),
+            hydro: problem.hydro.clone(),
+            columns: problem.platform.columns.clone(),
+            second_order: problem.model.second_order,
+            qtf_tolerance: problem.model.qtf_tolerance,
+            interaction: problem.model.interaction,
+            drift_damping: problem.model.drift_damping,
+            yaw_following: problem.model.yaw_following.is_some(),
+        }
+    }
+}
+
+/// The seed-independent part of a problem's records. It serves every problem with the key
+/// of the one it was made from ([`PlanKey`]).
 pub struct RecordPlan {
-    /// The configuration it was made from, with seed 0.
-    seedless: Problem,
+    key: PlanKey,
     /// Records sampled at h/2, so that every RK4 stage of a regular step is a sample.
     grid: FrequencyGrid,
     fft: InverseFft,
@@ -62,10 +111,14 @@ pub struct QtfRank {
 type DirectionQtfs = Vec<[GridQtf; 3]>;
 
 impl RecordPlan {
-    /// Validates `config` and computes everything of its records that the seed does not
-    /// change.
+    /// Checks `config` and computes everything of its records that the seed does not change.
     pub fn new(config: &Problem) -> Result<Self> {
         config.check()?;
+        Self::of_checked(config)
+    }
+
+    /// [`RecordPlan::new`] of a problem already checked.
+    pub(crate) fn of_checked(config: &Problem) -> Result<Self> {
         let sea = &config.sea;
         let grid = FrequencyGrid::new(
             config.run.start_time,
@@ -116,10 +169,8 @@ impl RecordPlan {
                 (Some(qtf), ranks)
             }
         };
-        let mut seedless = config.clone();
-        seedless.sea.seed = 0;
         Ok(RecordPlan {
-            seedless,
+            key: PlanKey::of(config),
             fft: plan_inverse_fft(&grid),
             grid,
             damping_table,
@@ -130,12 +181,9 @@ impl RecordPlan {
         })
     }
 
-    /// Whether this plan serves `config`: equal to the plan's configuration but for the
-    /// seed.
+    /// Whether this plan serves `config` (it has the plan's key).
     pub fn serves(&self, config: &Problem) -> bool {
-        let mut other = self.seedless.clone();
-        other.sea.seed = config.sea.seed;
-        other == *config
+        PlanKey::of(config) == self.key
     }
 
     /// The records of `config` (which the plan serves), with the ranks of the full QTF's

@@ -114,23 +114,32 @@ pub struct Simulation {
 }
 
 impl Simulation {
-    /// Validates the configuration and precomputes the records.
+    /// Checks the problem ([`Problem::check`]) and precomputes the records.
     pub fn new(config: Problem) -> Result<Self> {
-        let plan = RecordPlan::new(&config)?;
-        Self::with_plan(config, &plan)
+        config.check()?;
+        let plan = RecordPlan::of_checked(&config)?;
+        Self::built(config, &plan)
     }
 
     /// A simulation of `config` whose seed-independent record work comes from `plan`, made
-    /// from a configuration equal to `config` but for `sea.seed` (else an error naming
-    /// the plan). The same records, bit for bit, as [`Simulation::new`].
+    /// from a problem with the same [`crate::record_plan::PlanKey`] (else an error naming the
+    /// plan). The problem is checked here. The same records, bit for bit, as
+    /// [`Simulation::new`].
     pub fn with_plan(config: Problem, plan: &RecordPlan) -> Result<Self> {
+        config.check()?;
         if !plan.serves(&config) {
             return Err(Error::invalid(
                 "plan",
                 "RecordPlan",
-                "was made for a configuration that differs from this one in more than the seed",
+                "was made for a problem whose records differ from this one's (another run, \
+                 sea band or directions, hydrodynamic data or record model)",
             ));
         }
+        Self::built(config, plan)
+    }
+
+    /// The simulation of a checked problem from a plan that serves it.
+    fn built(config: Problem, plan: &RecordPlan) -> Result<Self> {
         let model = SlowDriftModel::new(&config)?;
         let (records, qtf_ranks) = plan.build_records(&config)?;
         let state = initial_state(&config);

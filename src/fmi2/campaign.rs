@@ -18,7 +18,7 @@
 //! not rebuild (applied to the base, as the FMU applies them) is unavailable.
 
 use super::parameters::{Experiment, FmuValue, Parameters, HYDRO_DATABASE};
-use crate::model_description::VariableType;
+use crate::fmi2::model_description::VariableType;
 use crate::montecarlo::Case;
 use crate::scenario::overrides::{by_fmu, Value};
 use crate::{Problem, Scenario};
@@ -148,7 +148,7 @@ fn fmu_json(parameters: &Parameters, experiment: &Experiment, steps: f64, h: f64
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model_description::{Causality, VARIABLES};
+    use crate::fmi2::model_description::{Causality, VARIABLES};
     use crate::montecarlo::cases::parse_case_table;
     use crate::sea_state::Spectrum;
     use std::path::Path;

@@ -24,7 +24,7 @@ use super::machine::{Call, MachineState};
 use super::parameters::file_uri_to_path;
 use super::state::FmuState;
 use super::types::*;
-use crate::model_description::{log_category, GUID, MODEL_IDENTIFIER};
+use crate::fmi2::model_description::{log_category, GUID, MODEL_IDENTIFIER};
 use std::ffi::{c_char, CStr};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::ptr;

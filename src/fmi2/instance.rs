@@ -14,7 +14,7 @@ use super::parameters::{Experiment, Parameters};
 use super::state::{fingerprint, mismatch, FmuState};
 use super::types::fmi2Status;
 use crate::error::Error;
-use crate::model_description::{find, log_category, vr, Causality, VariableType, VARIABLES};
+use crate::fmi2::model_description::{find, log_category, vr, Causality, VariableType, VARIABLES};
 use crate::problem::{resolve, Problem};
 use crate::simulation::{Outputs, Simulation};
 use std::ffi::CString;
@@ -483,7 +483,7 @@ impl Instance {
 }
 
 fn start_inputs() -> [f64; 3] {
-    use crate::model_description::start;
+    use crate::fmi2::model_description::start;
     [start::FX_EXT, start::FY_EXT, start::MZ_EXT]
 }
 

@@ -3,7 +3,7 @@
 
 use super::fmu_error::FmuError;
 use super::types::{fmi2CallbackLogger, fmi2ComponentEnvironment, fmi2Status};
-use crate::model_description::{log_category, LOG_CATEGORIES};
+use crate::fmi2::model_description::{log_category, LOG_CATEGORIES};
 use std::ffi::{CStr, CString};
 
 /// The host's logger, the instance name and the debug-logging switches.

@@ -21,6 +21,7 @@ pub mod fmu_error;
 pub mod instance;
 pub mod logger;
 pub mod machine;
+pub mod model_description;
 pub mod parameters;
 pub mod resources;
 pub mod state;

@@ -1,6 +1,6 @@
 //! The FMU's `resources/` folder: the default platform with its hydrodynamics precomputed,
 //! so that an instance reads them instead of running the column solver. `fmu-pack` writes
-//! it; [`crate::fmi2::parameters`] reads [`RESOURCE_CONFIG`] from it.
+//! it; `fmi2::parameters` reads [`RESOURCE_CONFIG`] from it.
 
 use crate::error::{Error, Result};
 use crate::hydro::io::database::HydroDatabase;

@@ -46,7 +46,7 @@ pub fn aranha_damping(
             ),
         ));
     }
-    let layout = ColumnLayout::of(columns);
+    let moments = ColumnMoments::of(columns);
     let periodic = table.is_periodic_in_heading();
     let mut damping = Vec::with_capacity(headings.len() * omegas.len());
     for (ih, &beta) in headings.iter().enumerate() {
@@ -55,7 +55,7 @@ pub fn aranha_damping(
             let df_domega = derivative(omegas, iw, false, |i| table.drift_at_node(ih, i));
             let df_dbeta = derivative(headings, ih, periodic, |i| table.drift_at_node(i, iw));
             let mut b = aranha_coefficients(omega, beta, f, df_domega, df_dbeta, gravity);
-            layout.fill_yaw_rate_column(&mut b);
+            moments.fill_yaw_rate_column(&mut b);
             damping.push(b);
         }
     }
@@ -85,7 +85,7 @@ pub fn aranha_coefficients(
 }
 
 /// Mean position moments of the columns, for the yaw-rate approximation (module doc).
-pub(crate) struct ColumnLayout {
+pub(crate) struct ColumnMoments {
     mean_x: f64,
     mean_y: f64,
     mean_xx: f64,
@@ -93,11 +93,11 @@ pub(crate) struct ColumnLayout {
     mean_xy: f64,
 }
 
-impl ColumnLayout {
+impl ColumnMoments {
     pub(crate) fn of(columns: &[Cylinder]) -> Self {
         let n = columns.len().max(1) as f64;
         let sum = |f: &dyn Fn(&Cylinder) -> f64| columns.iter().map(f).sum::<f64>() / n;
-        ColumnLayout {
+        ColumnMoments {
             mean_x: sum(&|c| c.x),
             mean_y: sum(&|c| c.y),
             mean_xx: sum(&|c| c.x * c.x),

@@ -15,11 +15,13 @@ pub mod cases;
 pub mod runs_file;
 
 use crate::error::{Error, Result};
+use crate::fingerprint::fingerprint;
+use crate::record_plan::PlanKey;
 use crate::stats::summarize;
 use crate::{Problem, RecordPlan, Simulation};
+use std::collections::HashMap;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::mpsc;
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
@@ -155,81 +157,95 @@ pub fn run_jobs(
     threads: usize,
     mut on_event: impl FnMut(Option<Finished>),
 ) {
-    let next = AtomicUsize::new(0);
     let plans = CasePlans::new(cases, jobs);
-    let (sender, receiver) = mpsc::channel();
-    std::thread::scope(|scope| {
-        for _ in 0..threads.max(1).min(jobs.len().max(1)) {
-            let sender = sender.clone();
-            let (next, plans) = (&next, &plans);
-            scope.spawn(move || loop {
-                let index = next.fetch_add(1, Ordering::Relaxed);
-                let Some(job) = jobs.get(index) else { break };
-                let run = || {
-                    let plan = plans.get(job.case)?;
-                    let plan = plan.as_ref().as_ref().map_err(Clone::clone)?;
-                    run_seed_with(&cases[job.case], plan, job.seed).map_err(|e| e.to_string())
-                };
-                let result = catch_unwind(AssertUnwindSafe(run)).unwrap_or_else(|panic| {
-                    Err(Error::invalid("run", "panic", panic_text(&*panic)).to_string())
-                });
-                plans.done(job.case);
-                if sender.send(Finished { job: index, result }).is_err() {
-                    break;
-                }
-            });
-        }
-        drop(sender);
-        loop {
-            match receiver.recv_timeout(TICK) {
-                Ok(finished) => on_event(Some(finished)),
-                Err(mpsc::RecvTimeoutError::Timeout) => on_event(None),
-                Err(mpsc::RecvTimeoutError::Disconnected) => break,
-            }
-        }
+    let run_job = |index: usize| {
+        let job = jobs[index];
+        let run = || {
+            let plan = plans.get(job.case)?;
+            let plan = plan.as_ref().as_ref().map_err(|e| e.to_string())?;
+            run_seed_with(&cases[job.case], plan, job.seed).map_err(|e| e.to_string())
+        };
+        let result = catch_unwind(AssertUnwindSafe(run)).unwrap_or_else(|panic| {
+            Err(Error::invalid("run", "panic", panic_text(&*panic)).to_string())
+        });
+        plans.done(job.case);
+        result
+    };
+    crate::parallel::run_indexed(jobs.len(), threads, run_job, TICK, |event| {
+        on_event(event.map(|(job, result)| Finished { job, result }))
     });
 }
 
-/// Each case's [`RecordPlan`] (or why it could not be made), made by the first of its
-/// jobs to start and dropped when its last job is done, so that a campaign of many cases
-/// holds only the plans of the cases in progress.
+/// The [`RecordPlan`]s of a campaign, one per group of cases with the same
+/// [`PlanKey`] (cases that differ only in the wave height, the drag coefficients, the current
+/// or the mooring share one), made by the first of the group's jobs to start and dropped when
+/// its last job is done, so that a campaign holds only the plans of the groups in progress.
 struct CasePlans<'a> {
     cases: &'a [Case],
+    /// The group of each case.
+    group: Vec<usize>,
+    /// Per group: its plan (or why it could not be made), once made.
     slots: Vec<Mutex<Option<SharedPlan>>>,
-    /// Jobs of each case not yet done.
+    /// Per group: jobs not yet done.
     remaining: Vec<AtomicUsize>,
 }
 
-type SharedPlan = Arc<std::result::Result<RecordPlan, String>>;
+type SharedPlan = Arc<Result<RecordPlan>>;
 
 impl<'a> CasePlans<'a> {
     fn new(cases: &'a [Case], jobs: &[Job]) -> Self {
-        let remaining: Vec<AtomicUsize> = (0..cases.len()).map(|_| AtomicUsize::new(0)).collect();
+        let keys: Vec<PlanKey> = cases.iter().map(|c| PlanKey::of(&c.config)).collect();
+        let mut by_fingerprint: HashMap<u64, Vec<usize>> = HashMap::new();
+        let mut first_of_group: Vec<usize> = Vec::new();
+        let mut group = Vec::with_capacity(cases.len());
+        for (case, key) in keys.iter().enumerate() {
+            let candidates = by_fingerprint.entry(fingerprint(key)).or_default();
+            let found = candidates
+                .iter()
+                .copied()
+                .find(|&g| keys[first_of_group[g]] == *key);
+            let g = found.unwrap_or_else(|| {
+                first_of_group.push(case);
+                candidates.push(first_of_group.len() - 1);
+                first_of_group.len() - 1
+            });
+            group.push(g);
+        }
+        let remaining: Vec<AtomicUsize> = (0..first_of_group.len())
+            .map(|_| AtomicUsize::new(0))
+            .collect();
         for job in jobs {
-            remaining[job.case].fetch_add(1, Ordering::Relaxed);
+            remaining[group[job.case]].fetch_add(1, Ordering::Relaxed);
         }
         CasePlans {
             cases,
-            slots: (0..cases.len()).map(|_| Mutex::new(None)).collect(),
+            group,
+            slots: (0..first_of_group.len())
+                .map(|_| Mutex::new(None))
+                .collect(),
             remaining,
         }
     }
 
-    /// The plan of case `case`, made now if no job of the case has made it yet.
+    /// The plan of case `case`, made now from this case if no job of its group has made it
+    /// yet. A case the model refuses makes no plan for its group: its error is its own.
     fn get(&self, case: usize) -> std::result::Result<SharedPlan, String> {
-        let mut slot = self.slots[case]
+        let mut slot = self.slots[self.group[case]]
             .lock()
             .map_err(|_| "a run panicked while making this case's plan".to_string())?;
-        let plan = slot.get_or_insert_with(|| {
-            Arc::new(RecordPlan::new(&self.cases[case].config).map_err(|e| e.to_string()))
-        });
-        Ok(Arc::clone(plan))
+        if slot.is_none() {
+            let config = &self.cases[case].config;
+            config.check().map_err(|e| e.to_string())?;
+            *slot = Some(Arc::new(RecordPlan::of_checked(config)));
+        }
+        Ok(Arc::clone(slot.as_ref().expect("made above")))
     }
 
-    /// One job of case `case` is done; the last one drops the plan.
+    /// One job of case `case` is done; the last one of its group drops the plan.
     fn done(&self, case: usize) {
-        if self.remaining[case].fetch_sub(1, Ordering::AcqRel) == 1 {
-            if let Ok(mut slot) = self.slots[case].lock() {
+        let g = self.group[case];
+        if self.remaining[g].fetch_sub(1, Ordering::AcqRel) == 1 {
+            if let Ok(mut slot) = self.slots[g].lock() {
                 slot.take();
             }
         }

@@ -87,26 +87,6 @@ fn quote(text: &str) -> String {
     format!("\"{}\"", text.replace('"', "\"\""))
 }
 
-/// Splits a CSV line into fields, honouring double quotes.
-fn split(line: &str) -> Vec<String> {
-    let mut fields = vec![String::new()];
-    let mut quoted = false;
-    let mut chars = line.chars().peekable();
-    while let Some(c) = chars.next() {
-        let field = fields.last_mut().expect("at least one field");
-        match (c, quoted) {
-            ('"', true) if chars.peek() == Some(&'"') => {
-                field.push('"');
-                chars.next();
-            }
-            ('"', _) => quoted = !quoted,
-            (',', false) => fields.push(String::new()),
-            (c, _) => field.push(c),
-        }
-    }
-    fields
-}
-
 /// Opens (or creates) the per-run file for appending and returns the runs it already holds
 /// (the last line of each (case, seed), in file order).
 pub fn open(path: &Path) -> Result<(Vec<RunRow>, File)> {
@@ -137,37 +117,50 @@ pub fn open(path: &Path) -> Result<(Vec<RunRow>, File)> {
     Ok((runs, file))
 }
 
-/// Reads the runs of a per-run file's text; `source` names it in errors.
+/// Reads the runs of a per-run file's text (RFC 4180 quoting, the `csv` crate); `source`
+/// names it in errors.
 pub fn parse(text: &str, source: &str) -> Result<Vec<RunRow>> {
-    let error = |line: usize, message: String| Error::Parse {
+    let error = |line: u64, message: String| Error::Parse {
         path: source.to_string(),
-        line: Some(line),
+        line: usize::try_from(line).ok(),
         message,
     };
-    let mut lines = text.lines().enumerate().map(|(i, l)| (i + 1, l));
-    match lines.next() {
+    let mut reader = csv::ReaderBuilder::new()
+        .has_headers(false)
+        .flexible(true)
+        .from_reader(text.as_bytes());
+    let mut records = reader.records();
+    let csv_error = |e: csv::Error| {
+        let line = e.position().map_or(1, csv::Position::line);
+        error(line, e.to_string())
+    };
+    match records.next() {
         None => return Ok(Vec::new()),
-        Some((_, first)) if first == header() => {}
-        Some(_) => {
-            return Err(error(
-                1,
-                format!(
-                    "not a per-run file of this version: the header must be {}",
-                    header()
-                ),
-            ))
+        Some(first) => {
+            let first = first.map_err(csv_error)?;
+            if first.iter().collect::<Vec<_>>().join(",") != header() {
+                return Err(error(
+                    1,
+                    format!(
+                        "not a per-run file of this version: the header must be {}",
+                        header()
+                    ),
+                ));
+            }
         }
     }
     let mut runs: Vec<RunRow> = Vec::new();
-    for (line, text) in lines {
-        let fields = split(text);
+    for record in records {
+        let record = record.map_err(csv_error)?;
+        let line = record.position().map_or(1, csv::Position::line);
+        let fields: Vec<&str> = record.iter().collect();
         if fields.len() != 17 {
             return Err(error(line, format!("{} fields, expected 17", fields.len())));
         }
         let seed = fields[1]
             .parse()
             .map_err(|_| error(line, format!("seed '{}' is not a whole number", fields[1])))?;
-        let result = match fields[3].as_str() {
+        let result = match fields[3] {
             "ok" => {
                 let mut v = [0.0; 12];
                 for (k, value) in v.iter_mut().enumerate() {
@@ -185,7 +178,7 @@ pub fn parse(text: &str, source: &str) -> Result<Vec<RunRow>> {
                     min: v[4 * d + 3],
                 }))
             }
-            "failed" => Err(fields[16].clone()),
+            "failed" => Err(fields[16].to_string()),
             other => {
                 return Err(error(
                     line,
@@ -194,9 +187,9 @@ pub fn parse(text: &str, source: &str) -> Result<Vec<RunRow>> {
             }
         };
         let row = RunRow {
-            case: fields[0].clone(),
+            case: fields[0].to_string(),
             seed,
-            fingerprint: fields[2].clone(),
+            fingerprint: fields[2].to_string(),
             result,
         };
         runs.retain(|r| !(r.case == row.case && r.seed == row.seed));

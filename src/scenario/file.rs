@@ -69,7 +69,7 @@
 //!
 //! [drift]                    # mean drift table, per unit wave amplitude squared
 //! source = "table"           # "table" (inline) | "csv" | "database" | "columns"
-//! columns = ["omega", "beta_deg", "surge", "sway", "yaw"]
+//! fields = ["omega", "beta_deg", "surge", "sway", "yaw"]
 //! rows = [[0.3, 0.0, 2.0e3, 0.0, 0.0], ...]
 //! # source = "csv"
 //! # file = "drift.csv"       # relative to the configuration file's directory
@@ -79,13 +79,8 @@
 //!                            # [environment]'s; its QTF (if any) serves full-qtf
 //! ```
 //!
-//! Drift columns, in any order: `omega` (rad/s), `beta_deg` (wave heading relative to the
-//! body x axis, deg), `surge`, `sway` (N/m^2), `yaw` (N m/m^2), all required; optionally
-//! all nine of `b11` .. `b33` (wave-drift damping b_ij: row i = force surge/sway/yaw,
-//! column j = velocity surge/sway/yaw rate) or none of them. Every heading must list the
-//! same, strictly increasing frequencies. A CSV file's first line is the comma-separated
-//! header of column names, then one numeric row per line; blank lines and lines starting
-//! with `#` are skipped.
+//! The fields of a drift table (inline or CSV) are those of `hydro::io::drift_csv`: `omega`
+//! (rad/s), `beta_deg`, `surge`, `sway`, `yaw`, optionally all nine `b11` .. `b33`.
 
 use super::{
     ColumnGrid, Current, DriftSource, InitialCondition, ModelOptions, Origins, Platform, Run,
@@ -124,7 +119,7 @@ pub fn load(path: &Path) -> Result<Scenario> {
 
 /// Parses configuration text. `origin` names the text in error messages (normally the file
 /// name); a CSV or database file is looked up relative to `base_dir`. Values are checked when
-/// the problem is ([`crate::problem::Problem::check`]); this reader refuses what does not fit
+/// the problem is (`problem::Problem::check`); this reader refuses what does not fit
 /// the format: unknown keys, wrong types, keys that the section's choice does not use.
 pub fn parse(text: &str, origin: &str, base_dir: &Path) -> Result<Scenario> {
     let file: ConfigFile = toml::from_str(text).map_err(|e| Error::Parse {
@@ -707,7 +702,10 @@ impl InitialFile {
 enum DriftFile {
     /// The table inline: column names and rows of numbers.
     Table {
-        columns: Vec<String>,
+        /// The name of each field of a row (`hydro::io::drift_csv`); `columns` is its
+        /// former name, still read.
+        #[serde(alias = "columns")]
+        fields: Vec<String>,
         rows: Vec<Vec<f64>>,
     },
     /// A CSV file, relative to the configuration file's directory.
@@ -850,9 +848,9 @@ impl DriftFile {
                 grid: grid(omega_min, omega_max, n_omega, heading_step_deg)?,
                 depth,
             },
-            DriftFile::Table { columns, rows } => {
+            DriftFile::Table { fields, rows } => {
                 let at = source.location(span.clone());
-                let names: Vec<&str> = columns.iter().map(String::as_str).collect();
+                let names: Vec<&str> = fields.iter().map(String::as_str).collect();
                 let fields = DriftFields::new(&names, &at)?;
                 let rows = rows
                     .iter()
@@ -946,6 +944,7 @@ yaw_rate_deg = 0.5
 
 [drift]
 source = "table"
+# the former name of `fields`, still read
 columns = ["beta_deg", "omega", "yaw", "surge", "sway",
            "b11", "b12", "b13", "b21", "b22", "b23", "b31", "b32", "b33"]
 rows = [
@@ -973,7 +972,7 @@ stiffness = [[1.0e5, 0, 0], [0, 1.0e5, 0], [0, 0, 1.0e8]]
 
 [drift]
 source = "table"
-columns = ["omega", "beta_deg", "surge", "sway", "yaw"]
+fields = ["omega", "beta_deg", "surge", "sway", "yaw"]
 rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
 "#;
 

@@ -1,7 +1,7 @@
 //! What the user asked for: a [`Scenario`], in SI units and radians, with its hydrodynamic
 //! data named but not yet computed ([`DriftSource`]: "the column solver on this grid", "this
-//! database file"). Reading a scenario does no numerical work; [`crate::problem::resolve`]
-//! runs the readers and solvers once and gives the [`crate::problem::Problem`] a simulation
+//! database file"). Reading a scenario does no numerical work; `problem::resolve`
+//! runs the readers and solvers once and gives the `problem::Problem` a simulation
 //! takes.
 //!
 //! The TOML reader ([`file`]), the embedded default ([`default`]) and the override table
@@ -122,7 +122,7 @@ pub struct ColumnGrid {
 
 /// Where the mean drift (and, with it, the QTF and the bi-directional drift) comes from: the
 /// `[drift]` section of the configuration, as the user named it. Nothing here is computed or
-/// read until [`crate::problem::resolve`].
+/// read until `problem::resolve`.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub enum DriftSource {
     /// A table given in the configuration file, already checked and sorted.
@@ -149,7 +149,7 @@ pub enum DriftSource {
 
 /// One simulation as described: the sea, the platform, the run and the modelling choices,
 /// with its hydrodynamics `H`: a [`DriftSource`] in a scenario as the user wrote it, the data
-/// themselves in a [`crate::problem::Problem`] (`Scenario<Hydro>`).
+/// themselves in a `problem::Problem` (`Scenario<Hydro>`).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Scenario<H = DriftSource> {
     pub environment: Environment,

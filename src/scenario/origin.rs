@@ -3,7 +3,7 @@
 //! `invalid FMU parameter Hs = -1: ...` for the FMU, `cases.csv:4: invalid row 3, column
 //! 'hs' = -1: ...` for a case table.
 //!
-//! Errors of [`crate::problem::Problem::validate`] name fields by their configuration-file
+//! Errors of `problem::Problem::validate` name fields by their configuration-file
 //! key path (`sea.hs`, `platform.columns[2].draft`, `current.direction_deg`, in the file's
 //! units); [`Origins::locate`] rewrites such an error for the place the value came from.
 

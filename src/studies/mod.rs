@@ -7,41 +7,12 @@
 //!   like `L^-1/2`).
 //! - [`waves`]: the wave elevation record of a configuration (Figs 7, 8).
 //! - [`blocks`]: statistics per consecutive block of a record (the transient, Fig. 11).
-//! - [`parallel_map`]: runs independent simulations on scoped threads.
+//! - [`parallel_map`]: runs independent simulations on the crate's thread pool.
 
 pub mod blocks;
 pub mod distribution;
 pub mod waves;
 
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Mutex;
-
-/// `f(0), f(1), ..., f(count - 1)` computed on `threads` scoped threads (at least 1) that
-/// take the next index from a shared counter; the results are returned in index order, so
-/// they do not depend on the thread count.
-pub fn parallel_map<T: Send>(
-    count: usize,
-    threads: usize,
-    f: impl Fn(usize) -> T + Sync,
-) -> Vec<T> {
-    let next = AtomicUsize::new(0);
-    let results: Mutex<Vec<Option<T>>> = Mutex::new((0..count).map(|_| None).collect());
-    std::thread::scope(|scope| {
-        for _ in 0..threads.max(1).min(count.max(1)) {
-            scope.spawn(|| loop {
-                let index = next.fetch_add(1, Ordering::Relaxed);
-                if index >= count {
-                    break;
-                }
-                let value = f(index);
-                results.lock().unwrap_or_else(|e| e.into_inner())[index] = Some(value);
-            });
-        }
-    });
-    results
-        .into_inner()
-        .unwrap_or_else(|e| e.into_inner())
-        .into_iter()
-        .map(|v| v.expect("every index is computed once the scope has joined"))
-        .collect()
-}
+/// `f(0), ..., f(count - 1)` on `threads` threads, in index order (the crate's pool,
+/// [`crate::parallel::map`]): the independent simulations of a study.
+pub use crate::parallel::map as parallel_map;

@@ -5,9 +5,9 @@
 use crate::fmu::*;
 use slowdrift::fmi2::exports::*;
 use slowdrift::fmi2::machine::MachineState;
+use slowdrift::fmi2::model_description::vr;
 use slowdrift::fmi2::parameters::MAX_DURATION_WITHOUT_STOP_TIME;
 use slowdrift::fmi2::types::*;
-use slowdrift::model_description::vr;
 use std::ptr;
 
 const START: f64 = 100.0;

@@ -4,8 +4,8 @@
 //! on, every call formats a log line.)
 
 use crate::fmu::*;
+use slowdrift::fmi2::model_description::vr;
 use slowdrift::fmi2::types::fmi2Status;
-use slowdrift::model_description::vr;
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 

@@ -6,8 +6,8 @@
 use crate::fmu::*;
 use slowdrift::fmi2::exports::*;
 use slowdrift::fmi2::machine::{Call, MachineState};
+use slowdrift::fmi2::model_description::{vr, GUID, MODEL_IDENTIFIER};
 use slowdrift::fmi2::types::*;
-use slowdrift::model_description::{vr, GUID, MODEL_IDENTIFIER};
 use slowdrift::problem;
 use slowdrift::Simulation;
 use std::ffi::{c_char, CString};

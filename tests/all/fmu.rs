@@ -4,9 +4,9 @@
 #![allow(dead_code)] // each test binary uses a different subset
 
 use slowdrift::fmi2::exports::*;
+use slowdrift::fmi2::model_description::{vr, Causality, GUID, VARIABLES};
 use slowdrift::fmi2::resources::write_resources;
 use slowdrift::fmi2::types::*;
-use slowdrift::model_description::{vr, Causality, GUID, VARIABLES};
 use slowdrift::problem::default_problem;
 use slowdrift::{Outputs, Problem, Simulation};
 use std::ffi::{c_char, c_void, CStr, CString};

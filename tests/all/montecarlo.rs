@@ -341,18 +341,32 @@ fn one_case_of_a_table_equals_its_line_in_the_whole_campaign() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
-/// Jobs that share their case's plan (made once in `run_jobs`, dropped after the case's
-/// last job) give what a run with its own plan gives, bit for bit, and a case whose plan
-/// cannot be made fails its jobs with the configuration's error while the other case runs.
+/// Jobs that share a plan (one per group of cases with the same plan key, made once in
+/// `run_jobs`, dropped after the group's last job) give what a run with its own plan gives,
+/// bit for bit: cases that differ in the wave height, the drag coefficient and the current
+/// share the plan of the good case. A case whose plan cannot be made fails its jobs with its
+/// own error, and a refused case of a group (run first) makes no plan for the others.
 #[test]
 fn shared_plans_give_the_runs_of_fresh_ones() {
     use slowdrift::montecarlo::run_seed;
+    use slowdrift::sea_state::Spectrum;
     let mut good = base_config(400.0, 1.0, 0);
     good.platform.columns = crate::common::four_columns();
     good.model.drag = slowdrift::model::DragModel::Combined { cd: 0.6 };
     let mut bad = good.clone();
     bad.run.time_step = -1.0;
-    let cases: Vec<Case> = [good, bad]
+    let with_hs = |hs: f64| {
+        let mut c = good.clone();
+        if let Spectrum::Jonswap { hs: h, .. } = &mut c.sea.spectrum {
+            *h = hs;
+        }
+        c
+    };
+    let mut strong = with_hs(8.0);
+    strong.model.drag = slowdrift::model::DragModel::Combined { cd: 1.2 };
+    strong.current.speed = 0.5;
+    let refused = with_hs(-1.0);
+    let cases: Vec<Case> = [refused, good, bad, strong]
         .into_iter()
         .enumerate()
         .map(|(i, config)| Case {
@@ -361,9 +375,18 @@ fn shared_plans_give_the_runs_of_fresh_ones() {
             transient: 50.0,
         })
         .collect();
-    let jobs: Vec<Job> = [(0, 4), (1, 4), (0, 9), (0, 2), (1, 5)]
-        .map(|(case, seed)| Job { case, seed })
-        .to_vec();
+    let jobs: Vec<Job> = [
+        (0, 1),
+        (1, 4),
+        (2, 4),
+        (1, 9),
+        (3, 4),
+        (1, 2),
+        (2, 5),
+        (3, 2),
+    ]
+    .map(|(case, seed)| Job { case, seed })
+    .to_vec();
     let mut results = vec![None; jobs.len()];
     run_jobs(&cases, &jobs, 2, |event| {
         if let Some(f) = event {
@@ -373,6 +396,6 @@ fn shared_plans_give_the_runs_of_fresh_ones() {
     for (job, result) in jobs.iter().zip(results) {
         let expected = run_seed(&cases[job.case], job.seed).map_err(|e| e.to_string());
         assert_eq!(result.expect("every job reports"), expected, "{job:?}");
-        assert_eq!(expected.is_err(), job.case == 1);
+        assert_eq!(expected.is_err(), job.case == 0 || job.case == 2, "{job:?}");
     }
 }

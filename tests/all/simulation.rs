@@ -163,6 +163,29 @@ fn a_plan_gives_the_records_of_new_for_every_seed() {
     }
 }
 
+/// A plan serves problems that differ only in what its records do not hold (the wave height,
+/// the drag coefficient, the current, the mass): their records, bit for bit, and their
+/// trajectories are those of a fresh simulation.
+#[test]
+fn a_plan_serves_problems_that_differ_outside_its_key() {
+    let mut base = config(1);
+    base.model.drag = slowdrift::model::DragModel::Combined { cd: 0.6 };
+    base.platform.columns = crate::common::four_columns();
+    let plan = slowdrift::RecordPlan::new(&base).unwrap();
+    let mut other = base.clone();
+    other.sea.seed = 7;
+    if let slowdrift::sea_state::Spectrum::Jonswap { hs, .. } = &mut other.sea.spectrum {
+        *hs *= 1.5;
+    }
+    other.model.drag = slowdrift::model::DragModel::Combined { cd: 1.2 };
+    other.current.speed = 0.5;
+    other.platform.mass *= 1.1;
+    let mut planned = Simulation::with_plan(other.clone(), &plan).unwrap();
+    let mut fresh = Simulation::new(other).unwrap();
+    assert!(planned.records() == fresh.records());
+    assert!(trajectory(&mut planned, 300) == trajectory(&mut fresh, 300));
+}
+
 /// A plan refuses a configuration that differs in more than the seed, naming itself.
 #[test]
 fn a_plan_refuses_another_configuration() {

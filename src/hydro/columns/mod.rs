@@ -62,7 +62,7 @@ mod drift;
 mod scattering;
 
 use crate::error::{require_finite, require_positive, Error, Result};
-use crate::hydro::aranha::{aranha_coefficients, ColumnLayout};
+use crate::hydro::aranha::{aranha_coefficients, ColumnMoments};
 use crate::hydro::column_drift::{validate_grid, MAX_KA};
 use crate::hydro::{DriftRow, DriftTable};
 use crate::model::{Cylinder, Environment};
@@ -275,7 +275,7 @@ impl ColumnArray {
         headings: &[f64],
     ) -> Result<DriftTable> {
         let hydro = self.solve(environment, omegas, headings)?;
-        let layout = ColumnLayout::of(&self.columns);
+        let moments = ColumnMoments::of(&self.columns);
         let mut rows = Vec::with_capacity(omegas.len() * headings.len());
         for (ih, &heading) in headings.iter().enumerate() {
             for (iw, &omega) in omegas.iter().enumerate() {
@@ -289,7 +289,7 @@ impl ColumnArray {
                     df_dbeta,
                     environment.gravity,
                 );
-                layout.fill_yaw_rate_column(&mut b);
+                moments.fill_yaw_rate_column(&mut b);
                 rows.push(DriftRow {
                     omega,
                     heading,

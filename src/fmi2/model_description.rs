@@ -91,7 +91,7 @@ mod tests {
     use std::collections::HashSet;
 
     /// The XML, read independently of build.rs (which uses quick-xml).
-    const XML: &str = include_str!("../modelDescription/modelDescription.xml");
+    const XML: &str = include_str!("../../modelDescription/modelDescription.xml");
 
     /// The value of `key="..."` inside one tag's text, by plain string scanning.
     fn attr<'a>(tag: &'a str, key: &str) -> Option<&'a str> {
