@@ -54,7 +54,7 @@ fn ok(status: fmi2Status, what: &str) {
 /// The core side: a `Simulation` of the default configuration over three hours.
 struct Core {
     sim: Simulation,
-    start: slowdrift::simulation::Snapshot,
+    start: slowdrift::Snapshot,
     steps: u64,
 }
 

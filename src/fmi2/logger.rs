@@ -4,7 +4,7 @@
 use super::fmu_error::FmuError;
 use super::types::{fmi2CallbackLogger, fmi2ComponentEnvironment, fmi2Status};
 use crate::fmi2::model_description::{log_category, LOG_CATEGORIES};
-use std::ffi::{CStr, CString};
+use std::ffi::CString;
 
 /// The host's logger, the instance name and the debug-logging switches.
 #[derive(Debug)]
@@ -29,11 +29,6 @@ impl Logger {
             name: c_text(name),
             enabled: [logging_on; LOG_CATEGORIES.len()],
         }
-    }
-
-    /// The instance name.
-    pub fn name(&self) -> &CStr {
-        &self.name
     }
 
     /// Whether messages of `category` go to the host. Errors always do (the standard asks

@@ -17,12 +17,12 @@
 
 pub mod campaign;
 pub mod exports;
-pub mod fmu_error;
-pub mod instance;
-pub mod logger;
+mod fmu_error;
+mod instance;
+mod logger;
 pub mod machine;
 pub mod model_description;
 pub mod parameters;
 pub mod resources;
-pub mod state;
+mod state;
 pub mod types;

@@ -4,6 +4,7 @@
 mod common;
 mod fmu;
 
+mod architecture;
 mod bad_input;
 mod cli;
 mod directional;
