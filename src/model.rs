@@ -131,5 +131,5 @@ pub struct YawFollowing {
     pub range: Option<(f64, f64)>,
 }
 
-/// Default [`ModelOptions::qtf_tolerance`].
+/// Default `qtf_tolerance` of the modelling options (`scenario::ModelOptions`).
 pub const DEFAULT_QTF_TOLERANCE: f64 = 1e-6;

@@ -45,7 +45,7 @@ pub fn run_indexed<T: Send>(
     });
 }
 
-/// `f(0), ..., f(count - 1)` computed on `threads` threads ([`run_indexed`]), returned in
+/// `f(0), ..., f(count - 1)` computed on `threads` threads (`run_indexed`), returned in
 /// index order.
 pub fn map<T: Send>(count: usize, threads: usize, f: impl Fn(usize) -> T + Sync) -> Vec<T> {
     let mut results: Vec<Option<T>> = (0..count).map(|_| None).collect();

@@ -1,9 +1,9 @@
 //! Every FMI 2.0 common and co-simulation function, as `extern "C"` symbols.
 //!
-//! Each body runs inside [`firewall`] (`catch_unwind`): a panic becomes `fmi2Error` (NULL
+//! Each body runs inside `firewall` (`catch_unwind`): a panic becomes `fmi2Error` (NULL
 //! from `fmi2Instantiate`) and a log line, never an unwind into the host. Pointers become
-//! references and slices here, checked ([`slice`], [`slice_mut`], [`out`]); the work is done
-//! by the safe [`Instance`]. Functions this FMU does not support exist (masters resolve all
+//! references and slices here, checked (`slice`, `slice_mut`, `out`); the work is done
+//! by the safe `Instance`. Functions this FMU does not support exist (masters resolve all
 //! of them at load time) and answer `fmi2Error` with the reason.
 //!
 //! # Safety

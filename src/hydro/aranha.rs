@@ -13,9 +13,9 @@
 //! Yaw-rate column b_i6: Aranha gives none. Approximation used here: the translational
 //! drift is shared equally by the platform's N_c columns at (x_c, y_c), each column damps
 //! its own local velocity (-r y_c, r x_c) with b/N_c, and the moments are summed:
-//!   b_16 = -<y> b_11 + <x> b_12,   b_26 = -<y> b_21 + <x> b_22,
-//!   b_66 = <x^2> b_22 + <y^2> b_11 - <x y> (b_12 + b_21),
-//! with <.> the mean over the columns. Without columns, b_i6 = 0.
+//! `b_16 = -<y> b_11 + <x> b_12`, `b_26 = -<y> b_21 + <x> b_22`,
+//! `b_66 = <x^2> b_22 + <y^2> b_11 - <x y> (b_12 + b_21)`,
+//! with `<.>` the mean over the columns. Without columns, b_i6 = 0.
 //!
 //! Derivatives come from the table: second-order finite differences on its (possibly
 //! non-uniform) frequency and heading nodes, wrapping in heading when the table covers the

@@ -60,7 +60,7 @@ pub const MAX_KA: f64 = 200.0;
 /// [`LONG_WAVE_SLOPE`] (ka)^3 * depth_factor is returned instead (C < 4e-18 there).
 ///
 /// # Panics
-/// If `ka` is not finite and positive (see [`crate::special::bessel::bessel_j_y`]).
+/// If `ka` is not finite and positive (see `special::bessel::bessel_j_y`).
 pub fn havelock_drift_coefficient(ka: f64, depth_factor: f64) -> f64 {
     if ka < LONG_WAVE_KA && ka > 0.0 {
         return LONG_WAVE_SLOPE * ka.powi(3) * depth_factor;

@@ -40,7 +40,7 @@ pub struct Case {
 }
 
 impl Case {
-    /// The [`crate::fingerprint`] of everything that determines the results except the
+    /// The fingerprint (`crate::fingerprint`) of everything that determines the results except the
     /// seed (the problem with seed 0, and the transient), as 16 hex digits: the per-run file
     /// stores it so that a resumed campaign refuses to mix configurations.
     pub fn fingerprint(&self) -> String {

@@ -4,7 +4,7 @@
 //! runs the readers and solvers once and gives the `problem::Problem` a simulation
 //! takes.
 //!
-//! The TOML reader ([`file`]), the embedded default ([`default`]) and the override table
+//! The TOML reader ([`file`](mod@file)), the embedded default ([`default`]) and the override table
 //! ([`overrides`]: the FMU parameters and the case-table columns) all produce or change a
 //! scenario. Degrees exist only in the file formats and are converted there, once.
 

@@ -117,7 +117,7 @@ pub struct QtfData {
     pub blocks: Vec<QtfMatrix>,
 }
 
-/// T(w_i, w_j) = re[i][j] + i im[i][j] of one DOF at one heading.
+/// T(w_i, w_j) = `re[i][j] + i im[i][j]` of one DOF at one heading.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct QtfMatrix {

@@ -3,7 +3,7 @@
 //!
 //! | file | reader | content |
 //! |---|---|---|
-//! | `.1` | [`read_added_mass_damping`] | PER I J Abar [Bbar]: A = rho L^k Abar, B = rho w L^k Bbar, k = 3, 4, 5 |
+//! | `.1` | [`read_added_mass_damping`] | PER I J Abar (Bbar): A = rho L^k Abar, B = rho w L^k Bbar, k = 3, 4, 5 |
 //! | `.hst` | [`read_hydrostatics`] | I J Cbar: C = rho g L^k Cbar, k = 2, 3, 4 |
 //! | `.8`, `.9` | [`read_mean_drift`] | PER beta1 beta2 I abs(F) phase Re Im: F = rho g L^k Fbar |
 //! | `.10d`, `.11d`, `.12d` | [`read_difference_qtf`] | PER1 PER2 beta1 beta2 I abs(F) phase Re Im, same scaling |
