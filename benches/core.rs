@@ -126,7 +126,7 @@ fn config(duration: f64, time_step: f64, drag: DragModel) -> Problem {
             start_time: 0.0,
         },
         platform: platform(),
-        hydro: Hydro::drift(drift),
+        hydro: Hydro::from_drift(drift),
         model: ModelOptions {
             second_order: SecondOrder::Newman,
             qtf_tolerance: DEFAULT_QTF_TOLERANCE,

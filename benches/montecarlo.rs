@@ -38,7 +38,7 @@ fn fig10_case() -> Case {
     let transient = config.default_transient();
     Case {
         name: "fig10".into(),
-        config,
+        problem: config,
         transient,
     }
 }
@@ -68,8 +68,8 @@ fn numpy_seconds(case: &Case) -> Result<(f64, String), String> {
     HydroDatabase::from_drift_table(
         "platform",
         DEFAULT_DRIFT_LABEL,
-        &case.config.environment,
-        &case.config.hydro.drift,
+        &case.problem.environment,
+        &case.problem.hydro.drift,
     )
     .save(&database)
     .map_err(|e| e.to_string())?;

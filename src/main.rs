@@ -156,7 +156,7 @@ fn simulate(args: SimulateArgs) -> Result<(), String> {
 }
 
 fn run_to_end(sim: &mut Simulation) -> Result<Vec<Outputs>, String> {
-    let run = sim.config().run.clone();
+    let run = sim.problem().run.clone();
     let steps = (run.duration / run.time_step).round() as usize;
     let mut outputs = Vec::with_capacity(steps + 1);
     outputs.push(sim.outputs().map_err(|e| e.to_string())?);
@@ -168,7 +168,7 @@ fn run_to_end(sim: &mut Simulation) -> Result<Vec<Outputs>, String> {
 }
 
 fn print_summary(sim: &Simulation, outputs: &[Outputs], transient: f64) -> Result<(), String> {
-    let dt = sim.config().run.time_step;
+    let dt = sim.problem().run.time_step;
     let rows: [(&str, f64, &str); 3] = [
         ("surge", 1.0, "m"),
         ("sway", 1.0, "m"),

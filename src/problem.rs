@@ -40,7 +40,7 @@ pub struct Hydro {
 
 impl Hydro {
     /// A drift table alone.
-    pub fn drift(drift: DriftTable) -> Hydro {
+    pub fn from_drift(drift: DriftTable) -> Hydro {
         Hydro {
             drift,
             qtf: None,
@@ -77,8 +77,8 @@ pub fn resolve_hydro(
     environment: &Environment,
 ) -> Result<Hydro> {
     match source {
-        DriftSource::Table(table) => Ok(Hydro::drift(table.clone())),
-        DriftSource::Csv(path) => Ok(Hydro::drift(drift_csv::read(path)?)),
+        DriftSource::Table(table) => Ok(Hydro::from_drift(table.clone())),
+        DriftSource::Csv(path) => Ok(Hydro::from_drift(drift_csv::read(path)?)),
         DriftSource::Database {
             path,
             bidirectional_from_columns,
@@ -132,7 +132,7 @@ pub fn resolve_hydro(
                 ));
             }
             let (omegas, headings) = grid_nodes(grid);
-            Ok(Hydro::drift(isolated_columns_table(
+            Ok(Hydro::from_drift(isolated_columns_table(
                 &platform.columns,
                 environment,
                 &omegas,

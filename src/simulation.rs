@@ -106,7 +106,7 @@ pub struct Outputs {
 /// One slow-drift simulation.
 #[derive(Debug, Clone)]
 pub struct Simulation {
-    config: Problem,
+    problem: Problem,
     model: SlowDriftModel,
     records: ForceRecords,
     qtf_ranks: Vec<QtfRank>,
@@ -115,19 +115,19 @@ pub struct Simulation {
 
 impl Simulation {
     /// Checks the problem ([`Problem::check`]) and precomputes the records.
-    pub fn new(config: Problem) -> Result<Self> {
-        config.check()?;
-        let plan = RecordPlan::of_checked(&config)?;
-        Self::built(config, &plan)
+    pub fn new(problem: Problem) -> Result<Self> {
+        problem.check()?;
+        let plan = RecordPlan::of_checked(&problem)?;
+        Self::built(problem, &plan)
     }
 
-    /// A simulation of `config` whose seed-independent record work comes from `plan`, made
+    /// A simulation of `problem` whose seed-independent record work comes from `plan`, made
     /// from a problem with the same [`crate::record_plan::PlanKey`] (else an error naming the
     /// plan). The problem is checked here. The same records, bit for bit, as
     /// [`Simulation::new`].
-    pub fn with_plan(config: Problem, plan: &RecordPlan) -> Result<Self> {
-        config.check()?;
-        if !plan.serves(&config) {
+    pub fn with_plan(problem: Problem, plan: &RecordPlan) -> Result<Self> {
+        problem.check()?;
+        if !plan.serves(&problem) {
             return Err(Error::invalid(
                 "plan",
                 "RecordPlan",
@@ -135,16 +135,16 @@ impl Simulation {
                  sea band or directions, hydrodynamic data or record model)",
             ));
         }
-        Self::built(config, plan)
+        Self::built(problem, plan)
     }
 
     /// The simulation of a checked problem from a plan that serves it.
-    fn built(config: Problem, plan: &RecordPlan) -> Result<Self> {
-        let model = SlowDriftModel::new(&config)?;
-        let (records, qtf_ranks) = plan.build_records(&config)?;
-        let state = initial_state(&config);
+    fn built(problem: Problem, plan: &RecordPlan) -> Result<Self> {
+        let model = SlowDriftModel::new(&problem)?;
+        let (records, qtf_ranks) = plan.build_records(&problem)?;
+        let state = initial_state(&problem);
         Ok(Simulation {
-            config,
+            problem,
             model,
             records,
             qtf_ranks,
@@ -152,9 +152,9 @@ impl Simulation {
         })
     }
 
-    /// The configuration this simulation was built from.
-    pub fn config(&self) -> &Problem {
-        &self.config
+    /// The problem this simulation was built from.
+    pub fn problem(&self) -> &Problem {
+        &self.problem
     }
 
     /// The precomputed records.
@@ -201,7 +201,7 @@ impl Simulation {
                 "must be a finite positive time",
             ));
         }
-        let ratio = interval / self.config.run.time_step;
+        let ratio = interval / self.problem.run.time_step;
         let whole = ratio.round();
         if whole >= 1.0 && (ratio - whole).abs() <= WHOLE_STEPS_TOLERANCE * whole {
             return self.whole_steps(whole as u64, external);
@@ -226,7 +226,7 @@ impl Simulation {
     /// `count` steps of h at times origin + n h; all or nothing.
     fn whole_steps(&mut self, count: u64, external: [f64; 3]) -> Result<()> {
         let saved = self.state.clone();
-        let h = self.config.run.time_step;
+        let h = self.problem.run.time_step;
         for _ in 0..count {
             if let Err(e) = self.rk4(self.time(), h, external) {
                 self.state = saved;
@@ -310,13 +310,13 @@ impl Simulation {
                 "holds non-finite values",
             ));
         }
-        if snapshot.step != self.config.run.time_step {
+        if snapshot.step != self.problem.run.time_step {
             return Err(Error::invalid(
                 "snapshot.step",
                 snapshot.step,
                 format!(
                     "differs from this simulation's run.time_step = {}",
-                    self.config.run.time_step
+                    self.problem.run.time_step
                 ),
             ));
         }
@@ -329,7 +329,7 @@ impl Simulation {
 
     /// Back to the initial condition at the start time.
     pub fn reset(&mut self) {
-        self.state = initial_state(&self.config);
+        self.state = initial_state(&self.problem);
     }
 }
 

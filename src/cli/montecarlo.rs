@@ -279,7 +279,7 @@ pub fn run_campaign(
     for case in cases {
         println!(
             "  {}: {} s at {} s, transient {:.1} s",
-            case.name, case.config.run.duration, case.config.run.time_step, case.transient
+            case.name, case.problem.run.duration, case.problem.run.time_step, case.transient
         );
     }
 

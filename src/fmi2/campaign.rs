@@ -42,9 +42,9 @@ pub fn cases_json(cases: &[Case], base: &Problem, hydro_database: &str) -> Json 
 }
 
 fn case_json(case: &Case, base: &Problem, hydro_database: &str) -> Json {
-    let run = &case.config.run;
+    let run = &case.problem.run;
     let steps = (run.duration / run.time_step).round();
-    let fmu = match parameters_for(&case.config, base, hydro_database) {
+    let fmu = match parameters_for(&case.problem, base, hydro_database) {
         Ok((parameters, experiment)) => fmu_json(&parameters, &experiment, steps, run.time_step),
         Err(reason) => json!({ "unavailable": reason }),
     };
@@ -56,7 +56,7 @@ fn case_json(case: &Case, base: &Problem, hydro_database: &str) -> Json {
         "steps": steps as u64,
         "fmu": fmu,
     });
-    if let Err(e) = case.config.check() {
+    if let Err(e) = case.problem.check() {
         document["refused"] = json!(e.to_string());
     }
     document
@@ -223,12 +223,12 @@ mod tests {
                 Some(fmu["stop_time"].as_f64().unwrap()),
             )
             .unwrap();
-            let mut expected = case.config.clone();
+            let mut expected = case.problem.clone();
             expected.sea.seed = 0;
             assert_eq!(p.apply(base.clone(), &experiment).unwrap(), expected);
             assert_eq!(
                 json["steps"].as_f64().unwrap(),
-                case.config.run.duration / case.config.run.time_step
+                case.problem.run.duration / case.problem.run.time_step
             );
         }
         // Row c's negative Hs is the model's to refuse at run time, not the plan's; the
@@ -269,7 +269,7 @@ mod tests {
         };
         let case = Case {
             name: "x".into(),
-            config: {
+            problem: {
                 let mut c = other.clone();
                 c.platform.mass *= 2.0;
                 c

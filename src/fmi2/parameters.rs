@@ -21,7 +21,7 @@
 use super::resources::RESOURCE_CONFIG;
 use crate::error::{Error, Result};
 use crate::fmi2::model_description::{Causality, Start, VariableInfo, VariableType, VARIABLES};
-use crate::scenario::overrides::{Refusal, Value};
+use crate::scenario::overrides::{Refusal, Value, SETTINGS};
 use crate::scenario::{default, file, Scenario, Written};
 use std::path::{Path, PathBuf};
 
@@ -152,7 +152,7 @@ impl Parameters {
     /// documentation). Errors for a value the parameter's setting does not take (an
     /// Enumeration code outside its items, `nDirections = 0`), naming the parameter.
     pub fn apply<H>(&self, mut c: Scenario<H>, experiment: &Experiment) -> Result<Scenario<H>> {
-        for setting in crate::scenario::overrides::SETTINGS.iter() {
+        for setting in SETTINGS.iter() {
             let Some(name) = setting.fmu else {
                 continue;
             };

@@ -25,8 +25,9 @@ use crate::simulation::Snapshot;
 
 /// First bytes of a serialized state.
 pub const MAGIC: [u8; 4] = *b"SDFS";
-/// Version of the byte format; a state of any other version is refused.
-pub const FORMAT_VERSION: u32 = 1;
+/// Version of the byte format; a state of any other version is refused. Version 2: the
+/// fingerprint is the serde-JSON FNV-1a of the problem (version 1 hashed its `Debug` text).
+pub const FORMAT_VERSION: u32 = 2;
 /// Bytes before the optional snapshot.
 const HEADER_BYTES: usize = 4 + 4 + 8 + 3 + 8 + 24;
 
@@ -88,7 +89,7 @@ impl FmuState {
         if version != FORMAT_VERSION {
             return Err(refuse(
                 format!("format version {version}"),
-                "is not this library's format version 1",
+                &format!("is not this library's format version {FORMAT_VERSION}"),
             ));
         }
         let fingerprint = u64::from_le_bytes(header[8..16].try_into().expect("8 bytes"));

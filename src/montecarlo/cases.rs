@@ -252,7 +252,7 @@ impl CaseRow {
         let transient = transient.unwrap_or_else(|| config.default_transient());
         Ok(Case {
             name: self.name.clone(),
-            config,
+            problem: config,
             transient,
         })
     }
@@ -298,11 +298,14 @@ mod tests {
     fn interaction_column_sets_the_model_and_names_bad_values() {
         let parsed = cases("name, interaction\na, mean-direction\nb, none\nc,\n").unwrap();
         assert_eq!(
-            parsed[0].config.model.interaction,
+            parsed[0].problem.model.interaction,
             Interaction::MeanDirection
         );
-        assert_eq!(parsed[1].config.model.interaction, Interaction::None);
-        assert_eq!(parsed[2].config.model.interaction, base().model.interaction);
+        assert_eq!(parsed[1].problem.model.interaction, Interaction::None);
+        assert_eq!(
+            parsed[2].problem.model.interaction,
+            base().model.interaction
+        );
         let e = cases("interaction\nboth\n").unwrap_err().to_string();
         assert!(
             e.contains("row 1, column 'interaction': 'both' is not one of"),
@@ -318,7 +321,7 @@ mod tests {
                     a, 4, 11, 0, 90, 2, 1.5, 45, 3600\n\
                     ,,,,,0,,,\n";
         let cases = cases(text).unwrap();
-        let a = &cases[0].config;
+        let a = &cases[0].problem;
         assert_eq!(cases[0].name, "a");
         assert_eq!(
             a.sea.spectrum,
@@ -339,7 +342,7 @@ mod tests {
         assert_eq!(cases[1].name, "case2");
         let mut expected = base();
         expected.sea.n_directions = 1;
-        assert_eq!(cases[1].config, expected);
+        assert_eq!(cases[1].problem, expected);
     }
 
     /// A coefficient changes only its own model's; a model is chosen by the `drag` column,
@@ -348,14 +351,14 @@ mod tests {
     fn drag_columns_choose_the_model() {
         let c = cases("drag, cd_slow, cd_fast\nseparate, 0.5, 0.9\n").unwrap();
         assert_eq!(
-            c[0].config.model.drag,
+            c[0].problem.model.drag,
             DragModel::Separate {
                 slow: 0.5,
                 fast: 0.9
             }
         );
         let c = cases("cd\n1.1\n").unwrap();
-        assert_eq!(c[0].config.model.drag, DragModel::Combined { cd: 1.1 });
+        assert_eq!(c[0].problem.model.drag, DragModel::Combined { cd: 1.1 });
         // The example's drag is combined: a separate coefficient does not apply to it.
         let e = cases("cd_slow, cd_fast\n0.5, 0.9\n")
             .unwrap_err()
@@ -370,7 +373,7 @@ mod tests {
             .to_string();
         assert!(e.contains("needs a 'cd_fast' column"), "{e}");
         let e = cases("drag\noff\n").unwrap();
-        assert_eq!(e[0].config.model.drag, DragModel::Off);
+        assert_eq!(e[0].problem.model.drag, DragModel::Off);
         let e = cases("drag\nviscous\n").unwrap_err().to_string();
         assert!(
             e.contains("'viscous' is not one of off, separate, combined"),
@@ -381,19 +384,19 @@ mod tests {
     #[test]
     fn yaw_columns_set_the_spring_and_the_yaw_following() {
         let c = cases("yaw_stiffness, yaw_headings\n6.0e7, 36\n, 0\n").unwrap();
-        assert_eq!(c[0].config.platform.stiffness[2][2], 6.0e7);
+        assert_eq!(c[0].problem.platform.stiffness[2][2], 6.0e7);
         assert_eq!(
-            c[0].config.model.yaw_following,
+            c[0].problem.model.yaw_following,
             Some(YawFollowing {
                 headings: 36,
                 range: None
             })
         );
-        assert_eq!(c[1].config, base());
+        assert_eq!(c[1].problem, base());
         let e = cases("yaw_headings\n1\n").unwrap_err().to_string();
         assert!(e.contains("row 1, column 'yaw_headings'"), "{e}");
         let c = cases("yaw_headings\n-1\n").unwrap();
-        assert_eq!(c[0].config.model.yaw_following, None);
+        assert_eq!(c[0].problem.model.yaw_following, None);
     }
 
     #[test]

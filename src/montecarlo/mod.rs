@@ -34,7 +34,7 @@ pub struct Case {
     /// Unique name (the case table's `name`, or `case<row>`).
     pub name: String,
     /// The configuration; `sea.seed` is set per run.
-    pub config: Problem,
+    pub problem: Problem,
     /// Start-up transient dropped from the statistics, s from the start of the run.
     pub transient: f64,
 }
@@ -44,7 +44,7 @@ impl Case {
     /// seed (the problem with seed 0, and the transient), as 16 hex digits: the per-run file
     /// stores it so that a resumed campaign refuses to mix configurations.
     pub fn fingerprint(&self) -> String {
-        let mut config = self.config.clone();
+        let mut config = self.problem.clone();
         config.sea.seed = 0;
         format!(
             "{:016x}",
@@ -76,12 +76,12 @@ pub const STATISTICS: [&str; 4] = ["mean", "rms", "max", "min"];
 /// Simulates `case` with `seed` from its start for its duration (no external force) and
 /// summarises (X, Y, theta) after the transient; yaw is reported in degrees.
 pub fn run_seed(case: &Case, seed: u64) -> Result<[DofStats; 3]> {
-    run_seed_with(case, &RecordPlan::new(&case.config)?, seed)
+    run_seed_with(case, &RecordPlan::new(&case.problem)?, seed)
 }
 
 /// [`run_seed`] with the case's [`RecordPlan`] made beforehand (once for all its seeds).
 pub fn run_seed_with(case: &Case, plan: &RecordPlan, seed: u64) -> Result<[DofStats; 3]> {
-    let mut config = case.config.clone();
+    let mut config = case.problem.clone();
     config.sea.seed = seed;
     let dt = config.run.time_step;
     let records = positions(Simulation::with_plan(config, plan)?)?;
@@ -117,7 +117,7 @@ pub fn simulate_positions(config: Problem) -> Result<[Vec<f64>; 3]> {
 
 /// The positions of [`simulate_positions`] for a simulation at its start.
 fn positions(mut sim: Simulation) -> Result<[Vec<f64>; 3]> {
-    let run = &sim.config().run;
+    let run = &sim.problem().run;
     let (duration, dt) = (run.duration, run.time_step);
     let steps = (duration / dt).round() as usize;
     let mut records: [Vec<f64>; 3] = std::array::from_fn(|_| Vec::with_capacity(steps + 1));
@@ -194,7 +194,7 @@ type SharedPlan = Arc<Result<RecordPlan>>;
 
 impl<'a> CasePlans<'a> {
     fn new(cases: &'a [Case], jobs: &[Job]) -> Self {
-        let keys: Vec<PlanKey> = cases.iter().map(|c| PlanKey::of(&c.config)).collect();
+        let keys: Vec<PlanKey> = cases.iter().map(|c| PlanKey::of(&c.problem)).collect();
         let mut by_fingerprint: HashMap<u64, Vec<usize>> = HashMap::new();
         let mut first_of_group: Vec<usize> = Vec::new();
         let mut group = Vec::with_capacity(cases.len());
@@ -234,7 +234,7 @@ impl<'a> CasePlans<'a> {
             .lock()
             .map_err(|_| "a run panicked while making this case's plan".to_string())?;
         if slot.is_none() {
-            let config = &self.cases[case].config;
+            let config = &self.cases[case].problem;
             config.check().map_err(|e| e.to_string())?;
             *slot = Some(Arc::new(RecordPlan::of_checked(config)));
         }

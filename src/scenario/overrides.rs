@@ -55,6 +55,9 @@ impl Refusal {
 
 type Applied = Result<(), Refusal>;
 
+/// 2^53: every whole number up to it is exact in an f64 (the value type of the table).
+const LARGEST_EXACT_WHOLE: f64 = 9_007_199_254_740_992.0;
+
 /// The parts of a scenario that settings write (never its hydrodynamics).
 pub struct Parts<'a> {
     pub sea: &'a mut SeaState,
@@ -372,7 +375,7 @@ pub static SETTINGS: [Setting; 22] = [
         meaning: "seed of the random wave amplitudes (Monte Carlo campaigns set it per run)",
         apply: |s, v| {
             let x = number(v)?;
-            if x.fract() != 0.0 || !(0.0..=9.007_199_254_740_992e15).contains(&x) {
+            if x.fract() != 0.0 || !(0.0..=LARGEST_EXACT_WHOLE).contains(&x) {
                 return Err(Refusal::Invalid(format!(
                     "{x} is not a whole number of at least 0 (must not be negative)"
                 )));

@@ -106,7 +106,7 @@ pub fn base_config(duration: f64, time_step: f64, seed: u64) -> Problem {
             start_time: 0.0,
         },
         platform: oscillator_platform(1.0e7, 1.0e10, [60.0, 60.0, 40.0], 0.2),
-        hydro: Hydro::drift(drift_table(smooth_drift)),
+        hydro: Hydro::from_drift(drift_table(smooth_drift)),
         model: ModelOptions {
             second_order: SecondOrder::Newman,
             qtf_tolerance: DEFAULT_QTF_TOLERANCE,

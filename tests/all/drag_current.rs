@@ -8,7 +8,7 @@ use slowdrift::Simulation;
 
 /// Runs to the end and returns the mean position over the second half.
 fn mean_position(sim: &mut Simulation) -> [f64; 3] {
-    let run = sim.config().run.clone();
+    let run = sim.problem().run.clone();
     let steps = (run.duration / run.time_step).round() as usize;
     let mut sum = [0.0; 3];
     let mut count = 0.0;
@@ -95,7 +95,7 @@ fn current_through_drift_damping_shifts_the_mean_force() {
             .iter()
             .sum::<f64>()
             / records.clock.len as f64;
-        (mean_position(&mut sim)[0], b_mean, sim.config().clone())
+        (mean_position(&mut sim)[0], b_mean, sim.problem().clone())
     };
     let (still, b_mean, config) = run(0.0);
     let (with_current, _, _) = run(0.5);

@@ -267,7 +267,7 @@ fn oscillator_variance_agrees_within_the_reported_standard_error() {
     let expected = oscillator_surge_variance(&config);
     let case = Case {
         name: "oscillator".into(),
-        config,
+        problem: config,
         transient: 1_000.0,
     };
     let seeds = 16;
@@ -371,7 +371,7 @@ fn shared_plans_give_the_runs_of_fresh_ones() {
         .enumerate()
         .map(|(i, config)| Case {
             name: format!("c{i}"),
-            config,
+            problem: config,
             transient: 50.0,
         })
         .collect();

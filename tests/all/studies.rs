@@ -129,7 +129,7 @@ fn scatter_over_seeds_shrinks_like_one_over_root_length() {
         .iter()
         .map(|&l| Case {
             name: format!("{l}"),
-            config: base_config(transient + l, 1.0, 1),
+            problem: base_config(transient + l, 1.0, 1),
             transient,
         })
         .collect();

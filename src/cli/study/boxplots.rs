@@ -47,7 +47,7 @@ pub(super) fn boxplots(base: &Problem, args: &BoxplotsArgs) -> Result<(), String
             config.run.duration = transient + 2f64.powi(k as i32);
             Case {
                 name: format!("L2^{k}"),
-                config,
+                problem: config,
                 transient,
             }
         })
