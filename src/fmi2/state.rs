@@ -195,7 +195,7 @@ mod tests {
             cases.push((b, what));
         };
         patch(0, b'X', "magic");
-        patch(4, 2, "version");
+        patch(4, FORMAT_VERSION as u8 + 1, "version");
         patch(8, 0xee, "fingerprint");
         patch(16, 99, "machine state");
         patch(17, 2, "terminated flag");
