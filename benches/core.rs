@@ -58,7 +58,9 @@ use slowdrift::model::{
     DEFAULT_QTF_TOLERANCE,
 };
 use slowdrift::problem::Hydro;
-use slowdrift::scenario::{Current, InitialCondition, ModelOptions, Platform, Run};
+use slowdrift::scenario::{
+    Current, InitialCondition, ModelOptions, Platform, Run, DEFAULT_BLOCK_DURATION,
+};
 use slowdrift::sea_state::{FrequencyGrid, SeaState, Spectrum, Spreading, WaveComponents};
 use slowdrift::{Problem, Simulation};
 use std::hint::black_box;
@@ -124,6 +126,7 @@ fn config(duration: f64, time_step: f64, drag: DragModel) -> Problem {
             duration,
             time_step,
             start_time: 0.0,
+            block_duration: DEFAULT_BLOCK_DURATION,
         },
         platform: platform(),
         hydro: Hydro::from_drift(drift),
@@ -210,6 +213,7 @@ impl RecordInputs {
                 gravity: self.gravity,
                 fft,
             },
+            None,
         )
     }
 
@@ -404,7 +408,7 @@ fn bench_steps(c: &mut Criterion, report: &mut Vec<String>) {
         group.bench_function(*name, |b| {
             b.iter(|| {
                 if sim.time() >= limit {
-                    sim.reset();
+                    sim.reset().unwrap();
                 }
                 sim.step(black_box([0.0; 3])).unwrap();
             })
@@ -415,7 +419,7 @@ fn bench_steps(c: &mut Criterion, report: &mut Vec<String>) {
     for ((name, _, target), sim) in cases.iter().zip(&mut sims) {
         // 1000 steps per repetition, reset outside the timing.
         let t = median_time(31, || {
-            sim.reset();
+            sim.reset().unwrap();
             for _ in 0..1000 {
                 sim.step(black_box([0.0; 3])).unwrap();
             }
@@ -436,7 +440,7 @@ fn bench_steps(c: &mut Criterion, report: &mut Vec<String>) {
 // ---------------------------------------------------------------- 3. a 3-hour run at 1 s
 
 fn run_3h(sim: &mut Simulation) {
-    sim.reset();
+    sim.reset().unwrap();
     let steps = (THREE_HOURS / 1.0).round() as usize;
     for _ in 0..steps {
         sim.step(black_box([0.0; 3])).unwrap();

@@ -61,7 +61,7 @@ fn main() {
             group.bench_function(format!("step_{yaw_name}_{drag_name}"), |b| {
                 b.iter(|| {
                     if sim.time() >= THREE_HOURS - 1.0 {
-                        sim.reset();
+                        sim.reset().unwrap();
                     }
                     sim.step(black_box([0.0; 3])).unwrap();
                 })
@@ -102,7 +102,7 @@ fn main() {
     for (name, sim) in &mut sims {
         // 1000 steps per repetition, reset outside the timing.
         let t = median_time(31, || {
-            sim.reset();
+            sim.reset().unwrap();
             for _ in 0..1000 {
                 sim.step(black_box([0.0; 3])).unwrap();
             }

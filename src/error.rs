@@ -31,6 +31,8 @@ pub enum Error {
     NonFiniteInput { field: String, value: f64 },
     /// The simulation was asked to go past the end of its precomputed records.
     BeyondRecord { time: f64, record_end: f64 },
+    /// A time before the run's start, where there are no records.
+    BeforeStart { time: f64, start: f64 },
     /// The state became NaN or infinite (the step is too large for the system).
     Diverged { time: f64 },
     /// The body's yaw left the range covered by the yaw-following records (rad); they are
@@ -95,6 +97,10 @@ impl fmt::Display for Error {
                 f,
                 "time {time} s is past the end of the precomputed records ({record_end} s); \
                  increase run.duration"
+            ),
+            Error::BeforeStart { time, start } => write!(
+                f,
+                "time {time} s is before the start of the run ({start} s)"
             ),
             Error::Diverged { time } => write!(
                 f,

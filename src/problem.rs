@@ -25,6 +25,14 @@ use crate::scenario::{file, ColumnGrid, DriftSource, Platform, Scenario};
 use serde::Serialize;
 use std::path::Path;
 
+/// The shortest block of the record stream, in RK4 steps (the cross-fade takes a quarter of
+/// a block at most; `forces::stream`).
+const MIN_BLOCK_STEPS: f64 = 64.0;
+
+/// The longest block of the record stream, in samples (2^22: 24 days at 0.5 s, about 32 MiB
+/// per record), so that a huge block is a clear error instead of an allocation failure.
+const MAX_BLOCK_SAMPLES: f64 = 4_194_304.0;
+
 /// The hydrodynamic data of a problem.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Hydro {
@@ -181,8 +189,36 @@ impl Problem {
         self.sea.validate()?;
         require_non_negative("current.speed", self.current.speed)?;
         require_finite("current.direction_deg", self.current.direction.to_degrees())?;
-        require_positive("run.duration", self.run.duration)?;
+        if self.run.duration.is_nan() || self.run.duration <= 0.0 {
+            return Err(Error::invalid(
+                "run.duration",
+                self.run.duration,
+                "must be greater than zero (infinite: an open-ended run)",
+            ));
+        }
         require_positive("run.time_step", self.run.time_step)?;
+        require_positive("run.block_duration", self.run.block_duration)?;
+        let block_samples = self.run.block_duration / (0.5 * self.run.time_step);
+        if block_samples > MAX_BLOCK_SAMPLES {
+            return Err(Error::invalid(
+                "run.block_duration",
+                self.run.block_duration,
+                format!(
+                    "needs {block_samples} record samples at time_step/2; at most \
+                     {MAX_BLOCK_SAMPLES} per block (the records of one block are held at once)"
+                ),
+            ));
+        }
+        if self.run.block_duration < MIN_BLOCK_STEPS * self.run.time_step {
+            return Err(Error::invalid(
+                "run.block_duration",
+                self.run.block_duration,
+                format!(
+                    "must be at least {MIN_BLOCK_STEPS} time steps ({} s)",
+                    MIN_BLOCK_STEPS * self.run.time_step
+                ),
+            ));
+        }
         require_finite("run.start_time", self.run.start_time)?;
         if self.run.time_step > self.run.duration {
             return Err(Error::invalid(

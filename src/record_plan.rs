@@ -17,8 +17,8 @@
 use crate::error::{Error, Result};
 use crate::forces::{
     add_cross_terms, direction_pairs, plan_inverse_fft, transfers_on_grid, DirectionTransfer,
-    ForceRecords, GridQtf, InverseFft, QtfFactorisation, RecordOptions, YawFollowingRecords,
-    YawGrid,
+    ForceRecords, GridQtf, InverseFft, Join, QtfFactorisation, RecordOptions, Segments,
+    YawFollowingRecords, YawGrid,
 };
 use crate::hydro::aranha::aranha_damping;
 use crate::hydro::bidirectional::DirectionPairs;
@@ -30,11 +30,16 @@ use crate::problem::{Hydro, Problem};
 use crate::sea_state::{Direction, FrequencyGrid, Spreading, WaveComponents};
 use serde::Serialize;
 
+/// Duration of the cross-fade between two blocks of the stream, s: far longer than the
+/// correlation time of the wave-frequency signals (tens of seconds), and a small fraction of
+/// a block (docs/theory.md, "Open-ended records").
+pub const JOIN_DURATION: f64 = 512.0;
+
 /// What a plan's contents depend on: a plan serves every problem with the same key.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct PlanKey {
     start_time: f64,
-    duration: f64,
+    block_duration: f64,
     time_step: f64,
     band: (f64, f64),
     spreading: Spreading,
@@ -55,7 +60,7 @@ impl PlanKey {
     pub fn of(problem: &Problem) -> PlanKey {
         PlanKey {
             start_time: problem.run.start_time,
-            duration: problem.run.duration,
+            block_duration: problem.run.block_duration,
             time_step: problem.run.time_step,
             band: problem.sea.band(),
             spreading: problem.sea.spreading.clone(),
@@ -77,8 +82,11 @@ impl PlanKey {
 /// of the one it was made from ([`PlanKey`]).
 pub struct RecordPlan {
     key: PlanKey,
-    /// Records sampled at h/2, so that every RK4 stage of a regular step is a sample.
+    /// Records sampled at h/2, so that every RK4 stage of a regular step is a sample; one
+    /// block's span long (`forces::stream`).
     grid: FrequencyGrid,
+    /// The stream's segments on this grid.
+    segments: Segments,
     fft: InverseFft,
     /// The wave-drift damping coefficients (`None` when the damping is off).
     damping_table: Option<DriftTable>,
@@ -120,10 +128,12 @@ impl RecordPlan {
     /// [`RecordPlan::new`] of a problem already checked.
     pub(crate) fn of_checked(config: &Problem) -> Result<Self> {
         let sea = &config.sea;
+        let dt = 0.5 * config.run.time_step;
+        let segments = segments_of(config.run.block_duration, dt);
         let grid = FrequencyGrid::new(
             config.run.start_time,
-            config.run.duration,
-            0.5 * config.run.time_step,
+            segments.span() as f64 * dt,
+            dt,
             sea.band(),
         )?;
         let directions = sea.directions();
@@ -171,6 +181,7 @@ impl RecordPlan {
         };
         Ok(RecordPlan {
             key: PlanKey::of(config),
+            segments,
             fft: plan_inverse_fft(&grid),
             grid,
             damping_table,
@@ -186,10 +197,33 @@ impl RecordPlan {
         PlanKey::of(config) == self.key
     }
 
-    /// The records of `config` (which the plan serves), with the ranks of the full QTF's
-    /// blocks.
-    pub(crate) fn build_records(&self, config: &Problem) -> Result<(ForceRecords, Vec<QtfRank>)> {
-        let components = WaveComponents::generate(&config.sea, self.grid.clone());
+    /// The frequency grid of the records (one block's span).
+    pub fn grid(&self) -> &FrequencyGrid {
+        &self.grid
+    }
+
+    /// The segments of the records this plan makes.
+    pub fn segments(&self) -> Segments {
+        self.segments
+    }
+
+    /// The truncation of every full-QTF block (empty under Newman's approximation).
+    pub fn ranks(&self) -> &[QtfRank] {
+        &self.ranks
+    }
+
+    /// The records of segment `k` of `config` (which the plan serves), joined to block
+    /// k - 1's by `join` when `after_previous` (its tails are block k - 1's: segment k - 1
+    /// was the last one it built); see `forces::stream`.
+    pub(crate) fn build_segment(
+        &self,
+        config: &Problem,
+        k: u64,
+        join: &mut Join,
+        after_previous: bool,
+    ) -> Result<ForceRecords> {
+        join.begin(k, after_previous);
+        let components = WaveComponents::generate_block(&config.sea, self.grid.clone(), k);
         let yaw_following = match &config.model.yaw_following {
             None => None,
             Some(options) => Some(YawFollowingRecords::build(
@@ -199,6 +233,7 @@ impl RecordPlan {
                 self.damping_table.is_some(),
                 config.model.newman,
                 &self.fft,
+                Some(&mut *join),
             )?),
         };
         let drag_columns = match config.model.drag {
@@ -216,13 +251,29 @@ impl RecordPlan {
                 gravity: config.environment.gravity,
                 fft: Some(&self.fft),
             },
+            Some(&mut *join),
         );
         if let Some(pairs) = &self.pairs {
-            add_cross_terms(&mut records, &components, pairs, &self.fft);
+            add_cross_terms(
+                &mut records,
+                &components,
+                pairs,
+                &self.fft,
+                Some(&mut *join),
+            );
         }
         records.yaw_following = yaw_following;
-        Ok((records, self.ranks.clone()))
+        Ok(records)
     }
+}
+
+/// The segments of a stream with blocks of `block_duration` seconds sampled at `dt`: B =
+/// round(block_duration / dt) samples, and a cross-fade of [`JOIN_DURATION`] (at most a
+/// quarter of a block).
+pub fn segments_of(block_duration: f64, dt: f64) -> Segments {
+    let block = (block_duration / dt).round().max(1.0) as usize;
+    let ramp = ((JOIN_DURATION / dt).round() as usize).min(block / 4);
+    Segments { block, ramp }
 }
 
 fn full_qtf_on_grid(

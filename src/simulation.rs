@@ -8,8 +8,11 @@
 use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};
 use crate::error::{Error, Result};
 use crate::forces::ForceRecords;
+use crate::forces::{Join, Segments};
 use crate::problem::Problem;
 use crate::record_plan::{QtfRank, RecordPlan};
+use crate::sea_state::FrequencyGrid;
+use std::sync::Arc;
 
 /// Relative tolerance for deciding that an interval is a whole number of steps.
 const WHOLE_STEPS_TOLERANCE: f64 = 1e-9;
@@ -104,20 +107,37 @@ pub struct Outputs {
 }
 
 /// One slow-drift simulation.
-#[derive(Debug, Clone)]
+///
+/// The records stream in segments of one block each (`forces::stream`): the simulation
+/// holds the segment its time is in, and makes the next one when a step starts in it (or
+/// any one, when a snapshot is restored there). A segment depends only on the seed and its
+/// index, so the trajectory does not depend on the run's duration.
+#[derive(Clone)]
 pub struct Simulation {
     problem: Problem,
     model: SlowDriftModel,
+    plan: Arc<RecordPlan>,
+    join: Join,
+    /// The records of segment `segment`.
     records: ForceRecords,
-    qtf_ranks: Vec<QtfRank>,
+    segment: u64,
     state: Snapshot,
 }
 
+impl std::fmt::Debug for Simulation {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Simulation")
+            .field("segment", &self.segment)
+            .field("state", &self.state)
+            .finish_non_exhaustive()
+    }
+}
+
 impl Simulation {
-    /// Checks the problem ([`Problem::check`]) and precomputes the records.
+    /// Checks the problem ([`Problem::check`]) and makes the records of its first segment.
     pub fn new(problem: Problem) -> Result<Self> {
         problem.check()?;
-        let plan = RecordPlan::of_checked(&problem)?;
+        let plan = Arc::new(RecordPlan::of_checked(&problem)?);
         Self::built(problem, &plan)
     }
 
@@ -125,7 +145,7 @@ impl Simulation {
     /// from a problem with the same [`crate::record_plan::PlanKey`] (else an error naming the
     /// plan). The problem is checked here. The same records, bit for bit, as
     /// [`Simulation::new`].
-    pub fn with_plan(problem: Problem, plan: &RecordPlan) -> Result<Self> {
+    pub fn with_plan(problem: Problem, plan: &Arc<RecordPlan>) -> Result<Self> {
         problem.check()?;
         if !plan.serves(&problem) {
             return Err(Error::invalid(
@@ -139,17 +159,55 @@ impl Simulation {
     }
 
     /// The simulation of a checked problem from a plan that serves it.
-    fn built(problem: Problem, plan: &RecordPlan) -> Result<Self> {
+    fn built(problem: Problem, plan: &Arc<RecordPlan>) -> Result<Self> {
         let model = SlowDriftModel::new(&problem)?;
-        let (records, qtf_ranks) = plan.build_records(&problem)?;
+        let mut join = Join::new(plan.segments());
+        let records = plan.build_segment(&problem, 0, &mut join, true)?;
         let state = initial_state(&problem);
         Ok(Simulation {
             problem,
             model,
+            plan: Arc::clone(plan),
+            join,
             records,
-            qtf_ranks,
+            segment: 0,
             state,
         })
+    }
+
+    /// The segment of the records that time `t` is in: the one of the sample at or below t.
+    fn segment_of(&self, t: f64) -> Result<u64> {
+        let grid_dt = 0.5 * self.problem.run.time_step;
+        let position = (t - self.problem.run.start_time) / grid_dt;
+        if !(position >= -1e-9 && position.is_finite()) {
+            return Err(Error::BeforeStart {
+                time: t,
+                start: self.problem.run.start_time,
+            });
+        }
+        Ok(self
+            .plan
+            .segments()
+            .of_sample((position + 1e-9).floor() as u64))
+    }
+
+    /// Makes the records of the segment that time `t` is in, if they are not the current
+    /// ones: the next segment from the current one's tails; any other after building its
+    /// predecessor for its tails.
+    fn ensure_segment(&mut self, t: f64) -> Result<()> {
+        let k = self.segment_of(t)?;
+        if k == self.segment {
+            return Ok(());
+        }
+        if k != self.segment + 1 && k > 0 {
+            self.plan
+                .build_segment(&self.problem, k - 1, &mut self.join, false)?;
+        }
+        self.records = self
+            .plan
+            .build_segment(&self.problem, k, &mut self.join, true)?;
+        self.segment = k;
+        Ok(())
     }
 
     /// The problem this simulation was built from.
@@ -157,14 +215,29 @@ impl Simulation {
         &self.problem
     }
 
-    /// The precomputed records.
+    /// The records of the current segment.
     pub fn records(&self) -> &ForceRecords {
         &self.records
     }
 
+    /// The frequency grid of the records (one block's span long).
+    pub fn grid(&self) -> &FrequencyGrid {
+        self.plan.grid()
+    }
+
+    /// The segments of the record stream.
+    pub fn segments(&self) -> Segments {
+        self.plan.segments()
+    }
+
+    /// The index of the current segment of the records.
+    pub fn segment(&self) -> u64 {
+        self.segment
+    }
+
     /// The rank kept for every full-QTF block (empty under Newman's approximation).
     pub fn qtf_ranks(&self) -> &[QtfRank] {
-        &self.qtf_ranks
+        self.plan.ranks()
     }
 
     /// Current time, s.
@@ -240,6 +313,7 @@ impl Simulation {
 
     /// One RK4 step of the position and velocity from time t over h.
     fn rk4(&mut self, t: f64, h: f64, external: [f64; 3]) -> Result<()> {
+        self.ensure_segment(t)?;
         let s = &self.state;
         let y = [
             s.position[0],
@@ -320,6 +394,7 @@ impl Simulation {
                 ),
             ));
         }
+        self.ensure_segment(snapshot.time())?;
         self.records.clock.locate(snapshot.time())?;
         self.records
             .locate_yaw(snapshot.time(), snapshot.position[2])?;
@@ -327,9 +402,13 @@ impl Simulation {
         Ok(())
     }
 
-    /// Back to the initial condition at the start time.
-    pub fn reset(&mut self) {
-        self.state = initial_state(&self.problem);
+    /// Back to the initial condition at the start time (and to the first segment of the
+    /// records).
+    pub fn reset(&mut self) -> Result<()> {
+        let initial = initial_state(&self.problem);
+        self.ensure_segment(initial.time())?;
+        self.state = initial;
+        Ok(())
     }
 }
 

@@ -235,10 +235,9 @@ impl Instance {
                 self.last_successful_time = time;
                 Ok(())
             }
-            Err(e @ Error::BeyondRecord { .. }) => {
-                self.terminated = true;
-                Err(FmuError::Discard(e))
-            }
+            // The state is unchanged and the instance usable: the master may change its
+            // inputs (the yaw moment) and try again, or roll back.
+            Err(e @ Error::YawOutsideRecords { .. }) => Err(FmuError::Discard(e)),
             Err(e) => Err(e.into()),
         }
     }
@@ -463,7 +462,7 @@ impl Instance {
             }
             None => {
                 if let Some(b) = &mut self.built {
-                    b.simulation.reset();
+                    b.simulation.reset()?;
                 }
                 self.outputs = None;
             }

@@ -25,12 +25,6 @@ use crate::scenario::overrides::{Refusal, Value, SETTINGS};
 use crate::scenario::{default, file, Scenario, Written};
 use std::path::{Path, PathBuf};
 
-/// Length of the precomputed records when the master gives no stop time: six hours. The
-/// records are built once for the whole run (about 1.3 MB per simulated hour at h = 1 s,
-/// twice that at h = 0.5 s), so an unbounded run cannot be precomputed; six hours is twice
-/// the usual three-hour storm and keeps an instance near 8 MB.
-pub const MAX_DURATION_WITHOUT_STOP_TIME: f64 = 6.0 * 3600.0;
-
 /// The FMU parameter that names the base configuration file (not a setting of the table).
 pub const HYDRO_DATABASE: &str = "hydroDatabase";
 
@@ -245,7 +239,7 @@ fn fmu_text(value: Value) -> String {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Experiment {
     pub start_time: f64,
-    /// `None` = no stop time: the records cover [`MAX_DURATION_WITHOUT_STOP_TIME`].
+    /// `None` = no stop time: an open-ended run.
     pub stop_time: Option<f64>,
 }
 
@@ -279,12 +273,11 @@ impl Experiment {
         })
     }
 
-    /// The run's duration: stop - start, or the documented maximum.
+    /// The run's duration: stop - start, or infinite without a stop time (the records
+    /// stream block by block, so a run has no end but the master's).
     pub fn duration(&self) -> f64 {
         self.stop_time
-            .map_or(MAX_DURATION_WITHOUT_STOP_TIME, |stop| {
-                stop - self.start_time
-            })
+            .map_or(f64::INFINITY, |stop| stop - self.start_time)
     }
 }
 
@@ -512,10 +505,7 @@ mod tests {
                 gamma: Some(2.5)
             }
         );
-        assert_eq!(
-            (c.run.start_time, c.run.duration),
-            (5.0, MAX_DURATION_WITHOUT_STOP_TIME)
-        );
+        assert_eq!((c.run.start_time, c.run.duration), (5.0, f64::INFINITY));
         let bad = [
             (
                 params(&[("Hs", FmuValue::Real(-1.0))]),

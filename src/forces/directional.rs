@@ -46,6 +46,7 @@
 //! uni-directional drift table (`hydro::bidirectional::mean_direction_pairs`). The
 //! wave-drift damping records keep no cross terms (no bi-directional damping data exists).
 
+use super::stream::Join;
 use super::synthesis::{InverseFft, Synthesizer};
 use super::{ForceRecords, Record};
 use crate::error::{Error, Result};
@@ -92,11 +93,13 @@ pub fn cross_direction_force(
     components: &WaveComponents,
     pairs: &DirectionPairs,
     fft: &InverseFft,
+    join: Option<&mut Join>,
 ) -> [Vec<f64>; 3] {
     let grid = &components.grid;
     let nd = components.directions.len();
     debug_assert_eq!(pairs.directions, nd);
-    let mut synth = Synthesizer::with_fft(grid, fft.clone());
+    let mut synth = Synthesizer::with_fft(grid, fft.clone()).joined(join);
+    let len = synth.output_len();
     let brackets = frequency_brackets(pairs, components);
     let active: [bool; 3] = std::array::from_fn(|dof| {
         pairs.values.chunks(nd * nd).any(|block| {
@@ -105,8 +108,8 @@ pub fn cross_direction_force(
         })
     });
     let mut force: [Vec<f64>; 3] = Default::default();
-    let mut eta = vec![Complex64::default(); grid.len];
-    let mut series = vec![Complex64::default(); grid.len];
+    let mut eta = vec![Complex64::default(); len];
+    let mut series = vec![Complex64::default(); len];
     let mut coefficients = vec![Complex64::default(); grid.count];
     for l in 0..nd {
         synth.complex_series(components.of_direction(l), &mut eta);
@@ -124,7 +127,7 @@ pub fn cross_direction_force(
                 *c = sum;
             }
             synth.complex_series(&coefficients, &mut series);
-            out.resize(grid.len, 0.0);
+            out.resize(len, 0.0);
             for ((o, p), e) in out.iter_mut().zip(&series).zip(&eta) {
                 *o += (p * e.conj()).re;
             }
@@ -139,8 +142,9 @@ pub fn add_cross_terms(
     components: &WaveComponents,
     pairs: &DirectionPairs,
     fft: &InverseFft,
+    join: Option<&mut Join>,
 ) {
-    let cross = cross_direction_force(components, pairs, fft);
+    let cross = cross_direction_force(components, pairs, fft, join);
     for (record, extra) in records.wave_force.iter_mut().zip(cross) {
         if extra.is_empty() {
             continue;

@@ -125,7 +125,7 @@ pub fn column_kinematics(
         return Vec::new();
     }
     let grid = &components.grid;
-    let n = grid.len;
+    let n = synth.output_len();
     let wavenumbers: Vec<f64> = (0..grid.count)
         .map(|j| grid.omega(j).powi(2) / gravity)
         .collect();

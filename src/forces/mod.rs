@@ -7,6 +7,7 @@ mod kinematics;
 mod newman;
 mod qtf;
 mod record;
+mod stream;
 mod synthesis;
 mod transfer;
 mod viscous;
@@ -17,6 +18,7 @@ pub use kinematics::ColumnKinematics;
 pub use newman::NewmanBuilder;
 pub use qtf::{GridQtf, QtfFactorisation};
 pub use record::{Record, RecordClock, SamplePoint};
+pub use stream::{Join, Segments};
 pub use synthesis::{plan_inverse_fft, InverseFft, Synthesizer};
 pub use transfer::{transfers_on_grid, DirectionTransfer};
 pub use viscous::drag_force;
@@ -65,17 +67,31 @@ impl ForceRecords {
     /// retained term, DOF and direction instead, for the force), one per strip and column
     /// (columns with the same phases share theirs). `options.full_qtf`, when given, holds one
     /// entry per direction of `components`.
+    ///
+    /// With a `join`, the records are those of the stream segment it is building
+    /// (`forces::stream`): the joined series of the segment's record length, on the segment's
+    /// clock. Without, the N samples of the grid's periodic records.
     pub fn build(
         components: &WaveComponents,
         transfers: &[DirectionTransfer],
         options: &RecordOptions,
+        join: Option<&mut Join>,
     ) -> Self {
         let grid = &components.grid;
-        let n = grid.len;
+        let clock = match &join {
+            Some(join) => join.segments().clock(grid, join.segment()),
+            None => RecordClock {
+                start_time: grid.start_time,
+                dt: grid.dt,
+                len: grid.len,
+            },
+        };
         let mut synth = match options.fft {
             Some(fft) => Synthesizer::with_fft(grid, fft.clone()),
             None => Synthesizer::new(grid),
-        };
+        }
+        .joined(join);
+        let n = synth.output_len();
         let mut builder = NewmanBuilder::new(grid.count, n);
         // The arithmetic form needs each direction's complex elevation series.
         let mut eta_c = match options.newman {
@@ -142,11 +158,7 @@ impl ForceRecords {
             &mut synth,
         );
         ForceRecords {
-            clock: RecordClock {
-                start_time: grid.start_time,
-                dt: grid.dt,
-                len: n,
-            },
+            clock,
             elevation: Record::new(elevation),
             wave_force: force.map(record_or_zero),
             damping: with_damping.then(|| damping.map(|row| row.map(record_or_zero))),

@@ -2,8 +2,13 @@
 //!
 //! Convention: `series(first, c)[m] = sum_j c_j e^{i omega_{first+j} m dt}`
 //! = sum_j c_j e^{2 pi i (first + j) m / N}: RustFFT's inverse transform, unnormalised.
+//!
+//! A synthesizer with a [`Join`] writes the series of one segment of a stream instead of the
+//! N samples of one record (`forces::stream`): its output is the joined series of the
+//! segment's record length ([`Synthesizer::output_len`]).
 
 use super::super::sea_state::FrequencyGrid;
+use super::stream::Join;
 use rustfft::num_complex::Complex64;
 use rustfft::{Fft, FftPlanner};
 use std::sync::Arc;
@@ -17,15 +22,18 @@ pub fn plan_inverse_fft(grid: &FrequencyGrid) -> InverseFft {
     FftPlanner::new().plan_fft_inverse(grid.len)
 }
 
-/// An inverse FFT for the record length, with its scratch space.
-pub struct Synthesizer {
+/// An inverse FFT for the record length, with its scratch space, and optionally the join
+/// of a stream's segments.
+pub struct Synthesizer<'a> {
     fft: InverseFft,
     scratch: Vec<Complex64>,
     first: usize,
     count: usize,
+    /// The stream's join, and the block's full transform before it is joined.
+    join: Option<(&'a mut Join, Vec<Complex64>)>,
 }
 
-impl Synthesizer {
+impl<'a> Synthesizer<'a> {
     /// Plans the transform for the grid's record length.
     pub fn new(grid: &FrequencyGrid) -> Self {
         Self::with_fft(grid, plan_inverse_fft(grid))
@@ -40,22 +48,47 @@ impl Synthesizer {
             scratch,
             first: grid.first,
             count: grid.count,
+            join: None,
+        }
+    }
+
+    /// The same transform writing the joined series of the segment `join` is building.
+    pub fn joined(mut self, join: Option<&'a mut Join>) -> Self {
+        self.join = join.map(|j| (j, vec![Complex64::default(); self.fft.len()]));
+        self
+    }
+
+    /// Samples of every series written: N, or a segment's record length when joined.
+    pub fn output_len(&self) -> usize {
+        match &self.join {
+            Some((join, _)) => join.len(),
+            None => self.fft.len(),
         }
     }
 
     /// Complex series of the band's components: writes sum_j c_j e^{i omega_j t_m} into
-    /// `out` (length N) for every sample m.
+    /// `out` ([`Synthesizer::output_len`] samples) for every sample m.
     pub fn complex_series(&mut self, coefficients: &[Complex64], out: &mut [Complex64]) {
         debug_assert_eq!(coefficients.len(), self.count);
-        let (below, rest) = out.split_at_mut(self.first);
-        let (band, above) = rest.split_at_mut(self.count);
-        below.fill(Complex64::default());
-        band.copy_from_slice(coefficients);
-        above.fill(Complex64::default());
-        self.fft.process_with_scratch(out, &mut self.scratch);
+        match &mut self.join {
+            None => {
+                transform(&self.fft, &mut self.scratch, self.first, coefficients, out);
+            }
+            Some((join, block)) => {
+                transform(
+                    &self.fft,
+                    &mut self.scratch,
+                    self.first,
+                    coefficients,
+                    block,
+                );
+                join.series(block, out);
+            }
+        }
     }
 
-    /// Two real series in one transform, appended to `out` as N more samples:
+    /// Two real series in one transform, appended to `out` as [`Synthesizer::output_len`]
+    /// more samples:
     /// x_m + i y_m with x_m = Re sum_j cx_j e^{i omega_j t_m} and
     /// y_m = Re sum_j cy_j e^{i omega_j t_m}. Uses the Hermitian pairs n and N - n, so the
     /// band must lie below the Nyquist index (guaranteed by [`FrequencyGrid::new`]). Every
@@ -66,20 +99,59 @@ impl Synthesizer {
         cy: &[Complex64],
         out: &mut Vec<Complex64>,
     ) {
-        debug_assert_eq!((cx.len(), cy.len()), (self.count, self.count));
-        let (n, start) = (self.fft.len(), out.len());
-        let zeros = |count: usize| std::iter::repeat_n(Complex64::default(), count);
-        let i = Complex64::new(0.0, 1.0);
-        let pairs = cx.iter().zip(cy);
-        // Index k = first + j holds (cx_j + i cy_j) / 2, index N - k the conjugates' pair;
-        // the second run goes up in index, so down in j.
-        out.extend(zeros(self.first));
-        out.extend(pairs.clone().map(|(x, y)| 0.5 * (x + i * y)));
-        out.extend(zeros(n + 1 - 2 * (self.first + self.count)));
-        out.extend(pairs.rev().map(|(x, y)| 0.5 * (x.conj() + i * y.conj())));
-        out.extend(zeros(self.first - 1));
-        debug_assert_eq!(out.len(), start + n);
-        self.fft
-            .process_with_scratch(&mut out[start..], &mut self.scratch);
+        if let Some((join, block)) = &mut self.join {
+            block.clear();
+            pair_transform(&self.fft, &mut self.scratch, self.first, cx, cy, block);
+            let start = out.len();
+            out.resize(start + join.len(), Complex64::default());
+            join.series(block, &mut out[start..]);
+            return;
+        }
+        pair_transform(&self.fft, &mut self.scratch, self.first, cx, cy, out);
     }
+}
+
+/// The inverse transform of the band's coefficients placed from index `first` (zeros
+/// elsewhere), into `out` (the transform's length).
+fn transform(
+    fft: &InverseFft,
+    scratch: &mut [Complex64],
+    first: usize,
+    coefficients: &[Complex64],
+    out: &mut [Complex64],
+) {
+    let count = coefficients.len();
+    let (below, rest) = out.split_at_mut(first);
+    let (band, above) = rest.split_at_mut(count);
+    below.fill(Complex64::default());
+    band.copy_from_slice(coefficients);
+    above.fill(Complex64::default());
+    fft.process_with_scratch(out, scratch);
+}
+
+/// The two-real-series transform of [`Synthesizer::append_two_real_series`], appended to
+/// `out`.
+fn pair_transform(
+    fft: &InverseFft,
+    scratch: &mut [Complex64],
+    first: usize,
+    cx: &[Complex64],
+    cy: &[Complex64],
+    out: &mut Vec<Complex64>,
+) {
+    let count = cx.len();
+    debug_assert_eq!(cy.len(), count);
+    let (n, start) = (fft.len(), out.len());
+    let zeros = |count: usize| std::iter::repeat_n(Complex64::default(), count);
+    let i = Complex64::new(0.0, 1.0);
+    let pairs = cx.iter().zip(cy);
+    // Index k = first + j holds (cx_j + i cy_j) / 2, index N - k the conjugates' pair;
+    // the second run goes up in index, so down in j.
+    out.extend(zeros(first));
+    out.extend(pairs.clone().map(|(x, y)| 0.5 * (x + i * y)));
+    out.extend(zeros(n + 1 - 2 * (first + count)));
+    out.extend(pairs.rev().map(|(x, y)| 0.5 * (x.conj() + i * y.conj())));
+    out.extend(zeros(first - 1));
+    debug_assert_eq!(out.len(), start + n);
+    fft.process_with_scratch(&mut out[start..], scratch);
 }

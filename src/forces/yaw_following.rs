@@ -26,6 +26,7 @@
 //! The elevation and the drag columns' kinematics stay at the mean position and zero yaw.
 
 use super::newman::NewmanBuilder;
+use super::stream::Join;
 use super::synthesis::{InverseFft, Synthesizer};
 use super::transfer::transfers_on_grid;
 use super::{record_or_zero, ForceRecords, Record, SamplePoint};
@@ -175,17 +176,19 @@ impl YawFollowingRecords {
         with_damping: bool,
         form: NewmanForm,
         fft: &InverseFft,
+        join: Option<&mut Join>,
     ) -> Result<Self> {
         check_relative_headings(table, &components.directions, &grid)?;
         let freq = &components.grid;
-        let mut synth = Synthesizer::with_fft(freq, fft.clone());
-        let mut builder = NewmanBuilder::new(freq.count, freq.len);
+        let mut synth = Synthesizer::with_fft(freq, fft.clone()).joined(join);
+        let len = synth.output_len();
+        let mut builder = NewmanBuilder::new(freq.count, len);
         // The arithmetic form's complex elevation series: per direction, independent of yaw.
         let eta_c: Vec<Vec<Complex64>> = match form {
             NewmanForm::Geometric => vec![Vec::new(); components.directions.len()],
             NewmanForm::Arithmetic => (0..components.directions.len())
                 .map(|k| {
-                    let mut series = vec![Complex64::default(); freq.len];
+                    let mut series = vec![Complex64::default(); len];
                     synth.complex_series(components.of_direction(k), &mut series);
                     series
                 })

@@ -76,11 +76,11 @@ pub const STATISTICS: [&str; 4] = ["mean", "rms", "max", "min"];
 /// Simulates `case` with `seed` from its start for its duration (no external force) and
 /// summarises (X, Y, theta) after the transient; yaw is reported in degrees.
 pub fn run_seed(case: &Case, seed: u64) -> Result<[DofStats; 3]> {
-    run_seed_with(case, &RecordPlan::new(&case.problem)?, seed)
+    run_seed_with(case, &Arc::new(RecordPlan::new(&case.problem)?), seed)
 }
 
 /// [`run_seed`] with the case's [`RecordPlan`] made beforehand (once for all its seeds).
-pub fn run_seed_with(case: &Case, plan: &RecordPlan, seed: u64) -> Result<[DofStats; 3]> {
+pub fn run_seed_with(case: &Case, plan: &Arc<RecordPlan>, seed: u64) -> Result<[DofStats; 3]> {
     let mut config = case.problem.clone();
     config.sea.seed = seed;
     let dt = config.run.time_step;
@@ -161,9 +161,8 @@ pub fn run_jobs(
     let run_job = |index: usize| {
         let job = jobs[index];
         let run = || {
-            let plan = plans.get(job.case)?;
-            let plan = plan.as_ref().as_ref().map_err(|e| e.to_string())?;
-            run_seed_with(&cases[job.case], plan, job.seed).map_err(|e| e.to_string())
+            let plan = plans.get(job.case)?.map_err(|e| e.to_string())?;
+            run_seed_with(&cases[job.case], &plan, job.seed).map_err(|e| e.to_string())
         };
         let result = catch_unwind(AssertUnwindSafe(run)).unwrap_or_else(|panic| {
             Err(Error::invalid("run", "panic", panic_text(&*panic)).to_string())
@@ -190,7 +189,7 @@ struct CasePlans<'a> {
     remaining: Vec<AtomicUsize>,
 }
 
-type SharedPlan = Arc<Result<RecordPlan>>;
+type SharedPlan = Result<Arc<RecordPlan>>;
 
 impl<'a> CasePlans<'a> {
     fn new(cases: &'a [Case], jobs: &[Job]) -> Self {
@@ -236,9 +235,9 @@ impl<'a> CasePlans<'a> {
         if slot.is_none() {
             let config = &self.cases[case].problem;
             config.check().map_err(|e| e.to_string())?;
-            *slot = Some(Arc::new(RecordPlan::of_checked(config)));
+            *slot = Some(RecordPlan::of_checked(config).map(Arc::new));
         }
-        Ok(Arc::clone(slot.as_ref().expect("made above")))
+        Ok(slot.as_ref().expect("made above").clone())
     }
 
     /// One job of case `case` is done; the last one of its group drops the plan.

@@ -35,6 +35,7 @@
 //! duration = 10800.0         # s, required
 //! time_step = 1.0            # s (RK4 step)
 //! start_time = 0.0           # s
+//! block_duration = 16384.0   # s: records are made one block at a time (memory per block)
 //!
 //! [platform]                 # matrices are 3x3, rows and columns (surge, sway, yaw)
 //! mass = 1.2e7               # kg, required
@@ -84,7 +85,7 @@
 
 use super::{
     ColumnGrid, Current, DriftSource, InitialCondition, ModelOptions, Origins, Platform, Run,
-    Scenario, DEFAULT_N_DIRECTIONS,
+    Scenario, DEFAULT_BLOCK_DURATION, DEFAULT_N_DIRECTIONS,
 };
 use crate::error::{Error, Location, Result};
 use crate::hydro::io::drift_csv::DriftFields;
@@ -439,10 +440,17 @@ struct RunFile {
     /// s.
     #[serde(default)]
     start_time: f64,
+    /// s.
+    #[serde(default = "default_block_duration")]
+    block_duration: f64,
 }
 
 fn default_time_step() -> f64 {
     DEFAULT_TIME_STEP
+}
+
+fn default_block_duration() -> f64 {
+    DEFAULT_BLOCK_DURATION
 }
 
 impl RunFile {
@@ -451,6 +459,7 @@ impl RunFile {
             duration: self.duration,
             time_step: self.time_step,
             start_time: self.start_time,
+            block_duration: self.block_duration,
         }
     }
 }
@@ -1064,7 +1073,8 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
             Run {
                 duration: 3600.0,
                 time_step: 0.5,
-                start_time: 10.0
+                start_time: 10.0,
+                block_duration: DEFAULT_BLOCK_DURATION,
             }
         );
         assert_eq!(

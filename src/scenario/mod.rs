@@ -35,13 +35,22 @@ pub struct Current {
 /// Run length and time step.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Run {
-    /// Simulated duration, s. The wave record is built at least this long, so it never repeats.
+    /// Simulated duration, s (`f64::INFINITY` for an open-ended run, the FMU's without a
+    /// stop time). The records do not depend on it: the same seed gives the same sea over
+    /// the common span of two runs of any durations.
     pub duration: f64,
     /// RK4 step h, s. Force records are sampled at h/2 so that every RK4 stage lands on a sample.
     pub time_step: f64,
     /// Time of the first sample, s.
     pub start_time: f64,
+    /// Length of a block of the record stream, s: the records are synthesised and held one
+    /// block at a time (`forces::stream`), so memory does not grow with the duration.
+    pub block_duration: f64,
 }
+
+/// Default [`Run::block_duration`], s: 2^14 s (4.6 hours), so that runs of up to 2^14 s
+/// (the paper's Fig. 10 records, a three-hour storm) are one block.
+pub const DEFAULT_BLOCK_DURATION: f64 = 16384.0;
 
 /// Rigid-body and mooring data of the platform in the 3 slow-drift DOFs (surge, sway, yaw).
 ///

@@ -135,8 +135,20 @@ impl WaveComponents {
     /// direction, in increasing frequency. So |a| is Rayleigh, its phase uniform and
     /// E|a|^2 = 2 S w_k d_omega (physics.md section 3).
     pub fn generate(sea: &SeaState, grid: FrequencyGrid) -> Self {
+        Self::generate_block(sea, grid, 0)
+    }
+
+    /// The amplitudes of block `k` of a stream of records (`forces::stream`): as
+    /// [`WaveComponents::generate`], from the stream seeded by `sea.seed` advanced by k
+    /// jumps of 2^128 draws (xoshiro256++'s `jump`), so that every block's draws are
+    /// independent of every other's and depend only on (seed, k). Block 0 is
+    /// [`WaveComponents::generate`].
+    pub fn generate_block(sea: &SeaState, grid: FrequencyGrid, k: u64) -> Self {
         let directions = sea.directions();
         let mut rng = Xoshiro256PlusPlus::seed_from_u64(sea.seed);
+        for _ in 0..k {
+            rng.jump();
+        }
         let mut amplitudes = Vec::with_capacity(directions.len() * grid.count);
         for dir in &directions {
             for j in 0..grid.count {

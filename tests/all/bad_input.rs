@@ -73,11 +73,16 @@ fn non_positive_sea_state_parameters_are_refused() {
 
 /// A duration whose records could not be allocated is a clear error, not an abort.
 #[test]
-fn an_absurd_duration_is_refused() {
+fn an_absurd_block_is_refused() {
     refused(
-        with(|c| c.run.duration = 1.0e12),
-        "run.duration",
+        with(|c| c.run.block_duration = 1.0e12),
+        "run.block_duration",
         "1000000000000",
+    );
+    refused(
+        with(|c| c.run.block_duration = 10.0),
+        "run.block_duration",
+        "10",
     );
 }
 
@@ -178,7 +183,9 @@ fn non_finite_values_are_refused() {
         "inf",
     );
     refused(with(|c| c.run.start_time = nan), "run.start_time", "NaN");
-    refused(with(|c| c.run.duration = inf), "run.duration", "inf");
+    refused(with(|c| c.run.duration = f64::NAN), "run.duration", "NaN");
+    // An infinite duration is an open-ended run (the records stream block by block).
+    assert!(Simulation::new(with(|c| c.run.duration = inf)).is_ok());
     refused(
         with(|c| c.initial.position[2] = nan),
         "initial.heading_deg",
@@ -337,40 +344,27 @@ fn a_time_step_too_large_for_the_wave_band_is_refused() {
     assert!(Simulation::new(with(|c| c.run.time_step = 2.0)).is_ok());
 }
 
+/// A time before the run's start has no records: a restore there is refused, naming it.
 #[test]
-fn stepping_past_the_record_is_refused_and_keeps_the_state() {
-    let duration = 50.0;
-    let mut sim = Simulation::new(base_config(duration, 1.0, 4)).unwrap();
-    for _ in 0..50 {
-        sim.step([0.0; 3]).unwrap();
-    }
-    assert_eq!(sim.time(), duration);
-    // The record holds a few samples of tail; keep stepping until it runs out.
-    let mut extra = 0;
-    let err = loop {
-        let before = sim.snapshot();
-        match sim.step([0.0; 3]) {
-            Ok(()) => extra += 1,
-            Err(e) => {
-                assert_eq!(sim.snapshot(), before, "a refused step changed the state");
-                break e;
-            }
-        }
-        assert!(extra < 50, "the record never ends");
-    };
-    match err {
-        Error::BeyondRecord { time, record_end } => {
-            assert!(time > duration && record_end >= duration, "{err}");
-            assert!(err.to_string().contains("run.duration"), "{err}");
-        }
-        other => panic!("expected BeyondRecord, got {other:?}"),
-    }
-    // advance is refused the same way, also without changing the state.
+fn a_time_before_the_start_is_refused_and_keeps_the_state() {
+    let mut c = base_config(50.0, 1.0, 4);
+    c.run.start_time = 100.0;
+    let mut sim = Simulation::new(c).unwrap();
+    sim.step([0.0; 3]).unwrap();
     let before = sim.snapshot();
-    assert!(matches!(
-        sim.advance(0.7, [0.0; 3]),
-        Err(Error::BeyondRecord { .. })
-    ));
+    let mut early = sim.snapshot().to_bytes();
+    early[..8].copy_from_slice(&50.0f64.to_le_bytes());
+    let early = slowdrift::Snapshot::from_bytes(&early).unwrap();
+    match sim.restore(&early) {
+        Err(e @ Error::BeforeStart { .. }) => {
+            assert!(
+                e.to_string()
+                    .contains("before the start of the run (100 s)"),
+                "{e}"
+            )
+        }
+        other => panic!("expected BeforeStart, got {other:?}"),
+    }
     assert_eq!(sim.snapshot(), before);
 }
 

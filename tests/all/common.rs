@@ -8,7 +8,9 @@ use slowdrift::model::{
     DEFAULT_QTF_TOLERANCE,
 };
 use slowdrift::problem::Hydro;
-use slowdrift::scenario::{Current, InitialCondition, ModelOptions, Platform, Run};
+use slowdrift::scenario::{
+    Current, InitialCondition, ModelOptions, Platform, Run, DEFAULT_BLOCK_DURATION,
+};
 use slowdrift::sea_state::{SeaState, Spectrum, Spreading};
 use slowdrift::Problem;
 use std::f64::consts::PI;
@@ -104,6 +106,7 @@ pub fn base_config(duration: f64, time_step: f64, seed: u64) -> Problem {
             duration,
             time_step,
             start_time: 0.0,
+            block_duration: DEFAULT_BLOCK_DURATION,
         },
         platform: oscillator_platform(1.0e7, 1.0e10, [60.0, 60.0, 40.0], 0.2),
         hydro: Hydro::from_drift(drift_table(smooth_drift)),

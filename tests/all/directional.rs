@@ -71,7 +71,12 @@ fn cross_terms_by_fft_equal_the_direct_double_sum() {
     let n = 3;
     let comps = components(5, n, 150.0);
     let grid = &comps.grid;
-    let force = cross_direction_force(&comps, &linear_pairs(n), &plan_inverse_fft(&comps.grid));
+    let force = cross_direction_force(
+        &comps,
+        &linear_pairs(n),
+        &plan_inverse_fft(&comps.grid),
+        None,
+    );
     for (dof, record) in force.iter().enumerate() {
         assert_eq!(record.len(), grid.len);
         let scale = record.iter().fold(0.0f64, |m, v| m.max(v.abs()));
@@ -112,18 +117,20 @@ fn heading_independent_mean_direction_is_the_long_crested_force_of_summed_amplit
     config.hydro.drift = drift_table(drift);
     config.model.newman = NewmanForm::Arithmetic;
     config.model.interaction = Interaction::MeanDirection;
+    config.run.block_duration = 400.0;
     let sim = Simulation::new(config.clone()).unwrap();
     let spread = &sim.records().wave_force;
+    let clock = sim.records().clock;
 
-    let comps = components(11, 5, 400.0);
-    assert_eq!(comps.grid.len, sim.records().clock.len);
+    // The first segment's records: block 0 alone, sample l at clock.start_time + l dt.
+    let comps = WaveComponents::generate(&config.sea, sim.grid().clone());
     let summed: Vec<Complex64> = (0..comps.grid.count)
         .map(|i| (0..5).map(|k| comps.of_direction(k)[i]).sum())
         .collect();
     for (dof, record) in spread.iter().enumerate() {
         let scale = record.samples().iter().fold(0.0f64, |m, v| m.max(v.abs()));
-        for m in (0..comps.grid.len).step_by(53) {
-            let t = comps.grid.time(m);
+        for m in (0..clock.len).step_by(53) {
+            let t = clock.start_time + m as f64 * clock.dt;
             let (mut q_t, mut eta_t) = (Complex64::default(), Complex64::default());
             for (i, a) in summed.iter().enumerate() {
                 let w = comps.grid.omega(i);
@@ -161,7 +168,7 @@ fn mean_force_is_the_diagonal_integral() {
         let band = (grid.omega(0), grid.omega(grid.count - 1));
         let heads: Vec<f64> = comps.directions.iter().map(|d| d.heading).collect();
         let pairs = source.pairs(&env, band, &heads).unwrap();
-        let f = &cross_direction_force(&comps, &pairs, &plan_inverse_fft(&comps.grid))[0];
+        let f = &cross_direction_force(&comps, &pairs, &plan_inverse_fft(&comps.grid), None)[0];
         let mean_cross = f.iter().sum::<f64>() / f.len() as f64;
         let var = f.iter().map(|v| (v - mean_cross).powi(2)).sum::<f64>() / f.len() as f64;
         cross_std = cross_std.max(var.sqrt());
@@ -232,10 +239,12 @@ fn spread_config(interaction: Interaction) -> Problem {
 fn none_and_one_direction_leave_the_records_unchanged() {
     let config = spread_config(Interaction::None);
     let sim = Simulation::new(config.clone()).unwrap();
-    let grid = FrequencyGrid::new(0.0, 600.0, 0.5, config.sea.band()).unwrap();
-    let comps = WaveComponents::generate(&config.sea, grid);
+    let comps = WaveComponents::generate(&config.sea, sim.grid().clone());
     let transfers =
         transfers_on_grid(&config.hydro.drift, &comps.grid, &comps.directions, false).unwrap();
+    // The first segment of the stream, as the simulation makes it.
+    let mut join = slowdrift::forces::Join::new(sim.segments());
+    join.begin(0, true);
     let plain = ForceRecords::build(
         &comps,
         &transfers,
@@ -247,6 +256,7 @@ fn none_and_one_direction_leave_the_records_unchanged() {
             gravity: GRAVITY,
             fft: None,
         },
+        Some(&mut join),
     );
     assert_eq!(sim.records(), &plain);
     assert!(direction_pairs(&config, &comps.grid, &comps.directions)

@@ -6,7 +6,6 @@ use crate::fmu::*;
 use slowdrift::fmi2::exports::*;
 use slowdrift::fmi2::machine::MachineState;
 use slowdrift::fmi2::model_description::vr;
-use slowdrift::fmi2::parameters::MAX_DURATION_WITHOUT_STOP_TIME;
 use slowdrift::fmi2::types::*;
 use std::ptr;
 
@@ -352,51 +351,77 @@ fn foreign_or_damaged_state_bytes_are_refused() {
     }
 }
 
-/// Without a stop time the records cover six hours; the step past them is discarded, the
-/// instance reports terminated and the last successful time, and can still be read and
-/// terminated.
+/// Without a stop time the run is open-ended: it goes on past six hours (the records stream
+/// block by block), and over their common span it is bit for bit the run with a stop time
+/// (the sea depends on the seed alone). A yaw outside the yaw-following records' range
+/// discards the step and keeps the state.
 #[test]
-fn stepping_past_the_records_is_discarded() {
-    let fmu = Fmu::running("end", 1, 0.0, 0.0, None);
+fn runs_without_a_stop_time_have_no_end() {
     let hour = 3600.0;
-    let hours = (MAX_DURATION_WITHOUT_STOP_TIME / hour) as usize;
-    for k in 0..hours {
-        fmu.step_with(k as f64 * hour, hour, [0.0; 3]);
+    let open = Fmu::running("open", 3, 0.0, 0.0, None);
+    let bounded = Fmu::running("bounded", 3, 0.0, 0.0, Some(2.0 * hour));
+    for k in 0..2 {
+        let t = k as f64 * hour;
+        open.step_with(t, hour, [0.0; 3]);
+        bounded.step_with(t, hour, [0.0; 3]);
     }
-    let before = fmu.outputs();
-    assert_eq!(fmu.terminated(), (fmi2Status::fmi2OK, false));
-    fmu.clear_log();
     assert_eq!(
-        fmu.step(MAX_DURATION_WITHOUT_STOP_TIME, hour),
-        fmi2Status::fmi2Discard
+        bits(&open.outputs()),
+        bits(&bounded.outputs()),
+        "common span"
     );
-    let entry = fmu.last_message();
+    for k in 2..8 {
+        open.step_with(k as f64 * hour, hour, [0.0; 3]);
+    }
+    assert!(open.outputs().iter().all(|v| v.is_finite()));
+    assert_eq!(
+        open.last_successful_time(),
+        (fmi2Status::fmi2OK, 8.0 * hour)
+    );
+    assert_eq!(open.terminated(), (fmi2Status::fmi2OK, false));
+    assert_eq!(
+        bounded.step(2.0 * hour, 1.0),
+        fmi2Status::fmi2Error,
+        "a defined stop time is honoured"
+    );
+    assert!(
+        bounded.last_message().message.contains("stopTime"),
+        "{}",
+        bounded.messages()
+    );
+
+    let yawing = Fmu::new("yawing");
+    assert_eq!(yawing.setup(0.0, None), fmi2Status::fmi2OK);
+    assert_eq!(
+        yawing.set_int(vr::YAW_FOLLOWING_HEADINGS, 3),
+        fmi2Status::fmi2OK
+    );
+    assert_eq!(
+        yawing.set_real(vr::YAW_FOLLOWING_RANGE, 0.01),
+        fmi2Status::fmi2OK
+    );
+    assert_eq!(yawing.init(), fmi2Status::fmi2OK);
+    let before = yawing.outputs();
+    yawing.clear_log();
+    assert_eq!(yawing.set_real(vr::MZ_EXT, 1.0e13), fmi2Status::fmi2OK);
+    assert_eq!(yawing.step(0.0, 60.0), fmi2Status::fmi2Discard);
+    let entry = yawing.last_message();
     assert_eq!(
         (entry.status, entry.category.as_str()),
         (fmi2Status::fmi2Discard, "logStatusDiscard")
     );
-    assert!(
-        entry
-            .message
-            .contains("past the end of the precomputed records"),
-        "{}",
-        entry.message
-    );
+    assert!(entry.message.contains("yaw"), "{}", entry.message);
     assert_eq!(
-        unsafe { instance_state(fmu.c) },
+        unsafe { instance_state(yawing.c) },
         Some(MachineState::StepFailed)
     );
-    assert_eq!(fmu.terminated(), (fmi2Status::fmi2OK, true));
+    assert_eq!(yawing.last_successful_time(), (fmi2Status::fmi2OK, 0.0));
     assert_eq!(
-        fmu.last_successful_time(),
-        (fmi2Status::fmi2OK, MAX_DURATION_WITHOUT_STOP_TIME)
-    );
-    assert_eq!(
-        bits(&fmu.outputs()),
+        bits(&yawing.outputs()),
         bits(&before),
-        "the failed step changed nothing"
+        "the discarded step changed nothing"
     );
-    assert_eq!(unsafe { fmi2Terminate(fmu.c) }, fmi2Status::fmi2OK);
+    assert_eq!(unsafe { fmi2Terminate(yawing.c) }, fmi2Status::fmi2OK);
 }
 
 /// Instances in parallel threads: the same seed gives identical outputs, another seed

@@ -10,6 +10,8 @@
 use crate::common::*;
 use rustfft::num_complex::Complex64;
 use rustfft::FftPlanner;
+use slowdrift::forces::{transfers_on_grid, ForceRecords, RecordOptions};
+use slowdrift::sea_state::WaveComponents;
 use slowdrift::Simulation;
 use std::f64::consts::PI;
 
@@ -97,9 +99,27 @@ fn periodic_steady_state(force: &[f64], dt: f64) -> Vec<f64> {
 fn steady_state_error(h: f64) -> f64 {
     let (duration, transient) = (4_000.0, 2_000.0);
     let config = base_config(duration, h, 7);
-    let mut sim = Simulation::new(config).unwrap();
-    let records = sim.records().clone();
-    let exact = periodic_steady_state(records.wave_force[0].samples(), records.clock.dt);
+    let mut sim = Simulation::new(config.clone()).unwrap();
+    // The run stays in the first segment of the stream, whose force is block 0's periodic
+    // record: built here whole (N samples, global sample m at time m dt).
+    let components = WaveComponents::generate(&config.sea, sim.grid().clone());
+    let transfers = transfers_on_grid(
+        &config.hydro.drift,
+        &components.grid,
+        &components.directions,
+        false,
+    )
+    .unwrap();
+    let options = RecordOptions {
+        newman: config.model.newman,
+        full_qtf: None,
+        drag_columns: &[],
+        strips_per_column: 20,
+        gravity: config.environment.gravity,
+        fft: None,
+    };
+    let periodic = ForceRecords::build(&components, &transfers, &options, None);
+    let exact = periodic_steady_state(periodic.wave_force[0].samples(), periodic.clock.dt);
     let steps = (duration / h).round() as usize;
     let (mut diff, mut norm) = (0.0, 0.0);
     for n in 1..=steps {

@@ -87,7 +87,7 @@ fn reset_returns_to_the_initial_state_and_replays_the_run() {
     let mut sim = Simulation::new(c.clone()).unwrap();
     let initial = sim.snapshot();
     let first = trajectory(&mut sim, 300);
-    sim.reset();
+    sim.reset().unwrap();
     assert_eq!(sim.snapshot(), initial);
     assert_eq!(sim.time(), 0.0);
     assert_eq!(sim.position(), c.initial.position);
@@ -151,7 +151,7 @@ fn a_plan_gives_the_records_of_new_for_every_seed() {
     spread.model.drag = slowdrift::model::DragModel::Combined { cd: 0.6 };
     spread.model.drift_damping = slowdrift::model::DriftDamping::Aranha;
     for base in [config(1), spread] {
-        let plan = slowdrift::RecordPlan::new(&base).unwrap();
+        let plan = std::sync::Arc::new(slowdrift::RecordPlan::new(&base).unwrap());
         for seed in [3, 11] {
             let mut c = base.clone();
             c.sea.seed = seed;
@@ -171,7 +171,7 @@ fn a_plan_serves_problems_that_differ_outside_its_key() {
     let mut base = config(1);
     base.model.drag = slowdrift::model::DragModel::Combined { cd: 0.6 };
     base.platform.columns = crate::common::four_columns();
-    let plan = slowdrift::RecordPlan::new(&base).unwrap();
+    let plan = std::sync::Arc::new(slowdrift::RecordPlan::new(&base).unwrap());
     let mut other = base.clone();
     other.sea.seed = 7;
     if let slowdrift::sea_state::Spectrum::Jonswap { hs, .. } = &mut other.sea.spectrum {
@@ -189,7 +189,7 @@ fn a_plan_serves_problems_that_differ_outside_its_key() {
 /// A plan refuses a configuration that differs in more than the seed, naming itself.
 #[test]
 fn a_plan_refuses_another_configuration() {
-    let plan = slowdrift::RecordPlan::new(&config(1)).unwrap();
+    let plan = std::sync::Arc::new(slowdrift::RecordPlan::new(&config(1)).unwrap());
     let mut other = config(1);
     other.sea.mean_direction += 0.1;
     let err = Simulation::with_plan(other, &plan).unwrap_err().to_string();

@@ -235,7 +235,7 @@ fn snapshot_restore_and_reset_continue_bit_for_bit_with_yaw_following() {
     let second = run(&mut sim, 400);
     sim.restore(&snapshot).unwrap();
     assert_eq!(run(&mut sim, 400), second);
-    sim.reset();
+    sim.reset().unwrap();
     assert_eq!(run(&mut sim, 400), first);
     // The yaw swings from +3 deg across the grid yaw 0 to below -0.5 deg: the records are
     // read at and between grid yaws on both sides.
@@ -324,13 +324,38 @@ fn invalid_yaw_following_options_are_refused_naming_the_field() {
 fn record_means_are_the_drift_at_the_relative_heading() {
     // Over the record's period the Newman record's mean is exactly sum |a_i|^2 T(w_i, beta - theta)
     // (Parseval: the cross terms average out), a sum without FFTs. Head seas; yaw -5, 0, 5 deg.
-    use slowdrift::sea_state::{FrequencyGrid, WaveComponents};
+    use slowdrift::forces::{plan_inverse_fft, YawFollowingRecords, YawGrid};
+    use slowdrift::sea_state::WaveComponents;
     let c = config(10800.0, 0.0, false, range(3, -5.0, 5.0));
     let sim = Simulation::new(c.clone()).unwrap();
-    let grid =
-        FrequencyGrid::new(0.0, c.run.duration, 0.5 * c.run.time_step, c.sea.band()).unwrap();
+    // Block 0's records over their whole period N; the simulation's first segment holds
+    // them from global sample -1 (forces::stream), bit for bit.
+    let grid = sim.grid().clone();
     let components = WaveComponents::generate(&c.sea, grid.clone());
-    let sets = &sim.records().yaw_following.as_ref().unwrap().sets;
+    let periodic = YawFollowingRecords::build(
+        &components,
+        YawGrid::new(c.model.yaw_following.as_ref().unwrap()),
+        &c.hydro.drift,
+        false,
+        c.model.newman,
+        &plan_inverse_fft(&grid),
+        None,
+    )
+    .unwrap();
+    let segment = &sim.records().yaw_following.as_ref().unwrap().sets;
+    let n = grid.len;
+    for (set, whole) in segment.iter().zip(&periodic.sets) {
+        for (record, full) in set.wave_force.iter().zip(&whole.wave_force) {
+            for (l, v) in record.samples().iter().enumerate() {
+                assert_eq!(
+                    v.to_bits(),
+                    full.samples()[(l + n - 1) % n].to_bits(),
+                    "sample {l}"
+                );
+            }
+        }
+    }
+    let sets = &periodic.sets;
     let mut means = Vec::new();
     for (j, theta_deg) in [-5.0f64, 0.0, 5.0].into_iter().enumerate() {
         let mut expected = [0.0; 3];

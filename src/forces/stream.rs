@@ -1,0 +1,297 @@
+//! Records as a stream of segments, for runs of any length at constant memory.
+//!
+//! The sea is synthesised block by block: block k has its own random amplitudes (from
+//! `(seed, k)`, `WaveComponents::generate_block`) on the one frequency grid, and its linear
+//! signals x_k(t) (the elevation, the factor series of Newman's approximation and of the full
+//! QTF, the cross-direction series, the drag kinematics) come from one inverse FFT each of
+//! the grid's length N >= B + H + R. Segment k holds the records of the global samples
+//! m in [kB, (k+1)B) (B samples), with a halo of one sample before and H after, so that the
+//! 4-point stencil of any time in [kB dt, (k+1)B dt] and an RK4 step that starts in the
+//! segment stay inside it. Consecutive blocks are joined on the linear signals by a
+//! power-complementary cross-fade, inside segment k:
+//!
+//! ```text
+//! m in [kB - 1, kB + H)            x_{k-1}(m)
+//! m in [kB + H, kB + H + R)        c_j x_{k-1}(m) + s_j x_k(m),  j = m - kB - H,
+//!                                  c_j = cos(phi_j), s_j = sin(phi_j), phi_j = pi/2 (j + 1)/(R + 1)
+//! m in [kB + H + R, (k+1)B + H)    x_k(m)
+//! ```
+//!
+//! c_j^2 + s_j^2 = 1, and x_{k-1}, x_k are independent with the same statistics, so the
+//! joined signal has the exact variance (and, Gaussian, the exact one-point distribution) at
+//! every instant. Every quadratic record (Newman's |P|^2 and Re[Q eta*], the full QTF's
+//! sum s_r |U_r|^2, the cross terms) is then formed from the joined linear signals, so it
+//! keeps its product form; no quadratic record is cross-faded. Segment 0 has no
+//! predecessor: x_0 throughout. The join reduces the correlation of the linear signals
+//! across a ramp at lag tau by cos(pi/2 tau / (R dt)) at most, only within the ramp (R of
+//! every B samples).
+//!
+//! A block's signal at global sample m is the FFT output at index m - kB (the block's time
+//! origin is its segment's start). The samples x_k(m) for m in [(k+1)B - 1, (k+1)B + H + R)
+//! are the *tail* that the next segment joins with; [`Join`] keeps them, one per linear
+//! series, in the order the builders ask for the series (the same for every segment of a
+//! simulation). Segment k thus depends on blocks k - 1 and k only: it can be rebuilt at
+//! any time, bit for bit.
+
+use super::record::RecordClock;
+use crate::sea_state::FrequencyGrid;
+use rustfft::num_complex::Complex64;
+use std::f64::consts::FRAC_PI_2;
+
+/// Samples of the halo after a segment: an RK4 step that starts on the segment's last
+/// sample reaches two samples past it, and the stencil one more.
+pub const HALO_AFTER: usize = 4;
+/// Samples of the halo before a segment (the stencil's first node).
+pub const HALO_BEFORE: usize = 1;
+
+/// The lengths of a stream, in samples.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Segments {
+    /// Samples per segment (and per block), B.
+    pub block: usize,
+    /// Samples of the cross-fade, R (< B).
+    pub ramp: usize,
+}
+
+impl Segments {
+    /// The FFT length a grid needs for these segments: B + H + R samples of one block.
+    pub fn span(&self) -> usize {
+        self.block + HALO_AFTER + self.ramp
+    }
+
+    /// Samples of a segment's records (halo included).
+    pub fn record_len(&self) -> usize {
+        HALO_BEFORE + self.block + HALO_AFTER
+    }
+
+    /// Samples of a tail: x_k for m in [(k+1)B - 1, (k+1)B + H + R).
+    fn tail_len(&self) -> usize {
+        HALO_BEFORE + HALO_AFTER + self.ramp
+    }
+
+    /// The segment of global sample m.
+    pub fn of_sample(&self, m: u64) -> u64 {
+        m / self.block as u64
+    }
+
+    /// The clock of segment k's records on `grid` (sample 0 is global sample kB - 1).
+    pub fn clock(&self, grid: &FrequencyGrid, k: u64) -> RecordClock {
+        let first = k as f64 * self.block as f64 - HALO_BEFORE as f64;
+        RecordClock {
+            start_time: grid.start_time + first * grid.dt,
+            dt: grid.dt,
+            len: self.record_len(),
+        }
+    }
+}
+
+/// The state that joins consecutive segments: which segment is being built, the tails of the
+/// previous block's linear series (in the builders' order) and the cross-fade weights.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Join {
+    segments: Segments,
+    /// The segment being built.
+    segment: u64,
+    /// Whether the tails hold block `segment - 1`'s (false for segment 0, and when a
+    /// segment is built only for its tails).
+    joined: bool,
+    /// One tail per linear series, in call order.
+    tails: Vec<Vec<Complex64>>,
+    /// The series asked for so far in this segment.
+    calls: usize,
+    /// (c_j, s_j), j = 0 .. R.
+    weights: Vec<(f64, f64)>,
+}
+
+impl Join {
+    /// A join for `segments`, before any segment is built.
+    pub fn new(segments: Segments) -> Self {
+        let r = segments.ramp;
+        let weights = (0..r)
+            .map(|j| {
+                let phi = FRAC_PI_2 * (j + 1) as f64 / (r + 1) as f64;
+                (phi.cos(), phi.sin())
+            })
+            .collect();
+        Join {
+            segments,
+            segment: 0,
+            joined: false,
+            tails: Vec::new(),
+            calls: 0,
+            weights,
+        }
+    }
+
+    /// The segments joined.
+    pub fn segments(&self) -> Segments {
+        self.segments
+    }
+
+    /// Starts building segment `k`. `after_previous`: the tails hold block k - 1's (the
+    /// previous segment was the last one built); otherwise segment k is built without a
+    /// predecessor (right for k = 0; for k > 0 only to make its tails for segment k + 1).
+    pub fn begin(&mut self, k: u64, after_previous: bool) {
+        self.segment = k;
+        self.joined = after_previous && k > 0;
+        self.calls = 0;
+    }
+
+    /// The segment being built.
+    pub fn segment(&self) -> u64 {
+        self.segment
+    }
+
+    /// Samples of a joined series (the segment's record length).
+    pub fn len(&self) -> usize {
+        self.segments.record_len()
+    }
+
+    /// Never empty (a segment has at least one sample); for clippy's `len_without_is_empty`.
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+
+    /// The next linear series of this segment, from block k's FFT output `block` (N
+    /// samples, index = global sample - kB): writes the joined series (record length) into
+    /// `out` and keeps block k's tail for segment k + 1.
+    pub fn series(&mut self, block: &[Complex64], out: &mut [Complex64]) {
+        let Segments { block: b, ramp: r } = self.segments;
+        let n = block.len();
+        debug_assert!(n >= self.segments.span());
+        debug_assert_eq!(out.len(), self.segments.record_len());
+        let index = self.calls;
+        self.calls += 1;
+        if self.tails.len() <= index {
+            self.tails
+                .push(vec![Complex64::default(); self.segments.tail_len()]);
+        }
+        let tail = &mut self.tails[index];
+        // out[l] is global sample kB - 1 + l, the block's index l - 1 (wrapping to N - 1).
+        let at = |l: usize| block[(l + n - HALO_BEFORE) % n];
+        if self.joined {
+            // [kB - 1, kB + H): the previous block alone; its tail starts at kB - 1.
+            let alone = HALO_BEFORE + HALO_AFTER;
+            out[..alone].copy_from_slice(&tail[..alone]);
+            for (j, &(c, s)) in self.weights.iter().enumerate() {
+                let l = alone + j;
+                out[l] = tail[l] * c + at(l) * s;
+            }
+            for (l, o) in out.iter_mut().enumerate().skip(alone + r) {
+                *o = at(l);
+            }
+        } else {
+            for (l, o) in out.iter_mut().enumerate() {
+                *o = at(l);
+            }
+        }
+        // The tail of block k: global samples [(k+1)B - 1, (k+1)B + H + R), block index
+        // B - 1 onwards.
+        let len = tail.len();
+        tail.copy_from_slice(&block[b - HALO_BEFORE..b - HALO_BEFORE + len]);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A block's signal: x(m) = sum_j a_j e^{i w_j (m - kB)}, written out by hand.
+    fn block_signal(amplitudes: &[(f64, Complex64)], n: usize) -> Vec<Complex64> {
+        (0..n)
+            .map(|m| {
+                amplitudes
+                    .iter()
+                    .map(|(w, a)| a * Complex64::from_polar(1.0, w * m as f64))
+                    .sum()
+            })
+            .collect()
+    }
+
+    /// Two segments joined against the formula of the module doc, sample by sample, and
+    /// the weights power-complementary.
+    #[test]
+    fn segments_follow_the_cross_fade_formula() {
+        let segments = Segments { block: 40, ramp: 8 };
+        let n = 60;
+        assert!(n >= segments.span());
+        let blocks: Vec<Vec<Complex64>> = (0..3)
+            .map(|k| {
+                let a: Vec<(f64, Complex64)> = (1..5)
+                    .map(|j| {
+                        let w = 2.0 * std::f64::consts::PI * j as f64 / n as f64;
+                        (w, Complex64::new((j + k) as f64, (j * k) as f64 - 1.5))
+                    })
+                    .collect();
+                block_signal(&a, n)
+            })
+            .collect();
+        let mut join = Join::new(segments);
+        let mut out = vec![Complex64::default(); segments.record_len()];
+        let (b, h, r) = (40usize, HALO_AFTER, 8usize);
+        for k in 0..3u64 {
+            join.begin(k, true);
+            join.series(&blocks[k as usize], &mut out);
+            for (l, got) in out.iter().enumerate() {
+                let m = (k as usize * b + l) as i64 - 1;
+                let own = |block: usize| {
+                    let i = m - (block * b) as i64;
+                    blocks[block][i.rem_euclid(n as i64) as usize]
+                };
+                let start = (k as usize * b) as i64;
+                let k = k as usize;
+                let expected = if k == 0 {
+                    own(0)
+                } else if m < start + h as i64 {
+                    own(k - 1)
+                } else if m < start + (h + r) as i64 {
+                    let j = (m - start - h as i64) as usize;
+                    let phi = FRAC_PI_2 * (j + 1) as f64 / (r + 1) as f64;
+                    own(k - 1) * phi.cos() + own(k) * phi.sin()
+                } else {
+                    own(k)
+                };
+                assert!(
+                    (got - expected).norm() < 1e-12,
+                    "k {k}, m {m}: {got} vs {expected}"
+                );
+            }
+        }
+        for (c, s) in &join.weights {
+            assert!((c * c + s * s - 1.0).abs() < 1e-15);
+        }
+    }
+
+    /// A segment rebuilt after its predecessor was built only for its tails equals the
+    /// segment built in sequence.
+    #[test]
+    fn a_segment_rebuilt_from_its_predecessor_alone_is_the_same() {
+        let segments = Segments { block: 30, ramp: 5 };
+        let n = 45;
+        let blocks: Vec<Vec<Complex64>> = (0..4)
+            .map(|k| {
+                (0..n)
+                    .map(|m| {
+                        Complex64::new(((m * 7 + k * 13) % 11) as f64, (m % 5) as f64 - k as f64)
+                    })
+                    .collect()
+            })
+            .collect();
+        let mut in_sequence = Join::new(segments);
+        let mut out = vec![Complex64::default(); segments.record_len()];
+        let mut third = Vec::new();
+        for k in 0..4u64 {
+            in_sequence.begin(k, true);
+            in_sequence.series(&blocks[k as usize], &mut out);
+            if k == 3 {
+                third = out.clone();
+            }
+        }
+        let mut jump = Join::new(segments);
+        jump.begin(2, false);
+        jump.series(&blocks[2], &mut out);
+        jump.begin(3, true);
+        jump.series(&blocks[3], &mut out);
+        assert_eq!(out, third);
+    }
+}
