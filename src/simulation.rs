@@ -220,6 +220,13 @@ impl Simulation {
         &self.records
     }
 
+    /// The records of the segment that time `t` is in, made now if they are not the
+    /// current ones (the state is kept: the next step makes its own segment again).
+    pub fn records_at(&mut self, t: f64) -> Result<&ForceRecords> {
+        self.ensure_segment(t)?;
+        Ok(&self.records)
+    }
+
     /// The frequency grid of the records (one block's span long).
     pub fn grid(&self) -> &FrequencyGrid {
         self.plan.grid()

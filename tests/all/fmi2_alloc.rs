@@ -1,42 +1,12 @@
 //! `fmi2SetReal` (inputs), `fmi2DoStep` and `fmi2GetReal` (outputs) allocate nothing in the
-//! simulation loop: a counting allocator wraps the system allocator in this test binary and
-//! counts this thread's allocations around the loop. (Debug logging is off: with `logAll`
+//! simulation loop: the binary's counting allocator (`counting`) counts this thread's
+//! allocations around the loop. (Debug logging is off: with `logAll`
 //! on, every call formats a log line.)
 
+use crate::counting::allocations;
 use crate::fmu::*;
 use slowdrift::fmi2::model_description::vr;
 use slowdrift::fmi2::types::fmi2Status;
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::cell::Cell;
-
-struct Counting;
-
-thread_local! {
-    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
-}
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        ALLOCATIONS.with(|n| n.set(n.get() + 1));
-        unsafe { System.alloc(layout) }
-    }
-
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        unsafe { System.dealloc(ptr, layout) }
-    }
-
-    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        ALLOCATIONS.with(|n| n.set(n.get() + 1));
-        unsafe { System.realloc(ptr, layout, new_size) }
-    }
-}
-
-#[global_allocator]
-static COUNTING: Counting = Counting;
-
-fn allocations() -> usize {
-    ALLOCATIONS.with(Cell::get)
-}
 
 #[test]
 fn the_simulation_loop_does_not_allocate() {

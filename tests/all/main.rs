@@ -2,6 +2,7 @@
 //! builders in `common` and the in-process FMI master in `fmu`).
 
 mod common;
+mod counting;
 mod fmu;
 
 mod architecture;
@@ -20,6 +21,7 @@ mod newman;
 mod oscillator;
 mod sea_state;
 mod simulation;
+mod stream;
 mod studies;
 mod wamit;
 mod yaw_following;

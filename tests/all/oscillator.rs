@@ -27,9 +27,11 @@ fn damping() -> f64 {
     2.0 * ZETA * MASS * 2.0 * PI / PERIOD
 }
 
-/// Runs one seed and returns the surge record at every step after `transient`.
-fn surge_record(duration: f64, h: f64, seed: u64, transient: f64) -> Vec<f64> {
-    let config = base_config(duration, h, seed);
+/// Runs one seed with records in blocks of `block` s and returns the surge record at every
+/// step after `transient`.
+fn surge_record(duration: f64, h: f64, seed: u64, transient: f64, block: f64) -> Vec<f64> {
+    let mut config = base_config(duration, h, seed);
+    config.run.block_duration = block;
     let mut sim = Simulation::new(config).unwrap();
     let steps = (duration / h).round() as usize;
     let mut out = Vec::with_capacity(steps);
@@ -44,12 +46,24 @@ fn surge_record(duration: f64, h: f64, seed: u64, transient: f64) -> Vec<f64> {
 
 #[test]
 fn motion_variance_matches_the_frequency_domain_integral() {
+    motion_variance_check(slowdrift::scenario::DEFAULT_BLOCK_DURATION);
+}
+
+/// The same check with the records in blocks of 2048 s: 16 joins per seed (the cross-fade
+/// of the linear signals, `forces::stream`), so a join that changed the force's
+/// statistics would show here.
+#[test]
+fn motion_variance_across_many_joins_matches_the_frequency_domain_integral() {
+    motion_variance_check(2048.0);
+}
+
+fn motion_variance_check(block: f64) {
     let expected = oscillator_surge_variance(&base_config(1.0, 1.0, 0));
 
     let (duration, transient, seeds) = (32_768.0, 1_000.0, 8);
     let mut mean_variance = 0.0;
     for seed in 0..seeds {
-        let x = surge_record(duration, 1.0, 100 + seed, transient);
+        let x = surge_record(duration, 1.0, 100 + seed, transient, block);
         let n = x.len() as f64;
         let mean = x.iter().sum::<f64>() / n;
         mean_variance += x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / n / seeds as f64;
