@@ -213,7 +213,6 @@ impl RecordInputs {
                 gravity: self.gravity,
                 fft,
             },
-            None,
         )
     }
 

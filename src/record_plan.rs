@@ -16,15 +16,15 @@
 
 use crate::error::{Error, Result};
 use crate::forces::{
-    add_cross_terms, direction_pairs, plan_inverse_fft, transfers_on_grid, DirectionTransfer,
-    ForceRecords, GridQtf, InverseFft, Join, QtfFactorisation, RecordOptions, Segments,
-    YawFollowingRecords, YawGrid,
+    direction_pairs, plan_inverse_fft, transfers_on_grid, yaw_transfers, DirectionTransfer,
+    ForceRecords, GridQtf, InverseFft, Join, QtfFactorisation, RecordOptions, RecordWork, Segments,
+    Synthesizer, YawGrid,
 };
 use crate::hydro::aranha::aranha_damping;
 use crate::hydro::bidirectional::DirectionPairs;
-use crate::hydro::DriftTable;
 use crate::model::{
-    Cylinder, Dof, DriftDamping, Environment, Interaction, SecondOrder, HEADING_MATCH_TOLERANCE,
+    Cylinder, Dof, DriftDamping, Environment, Interaction, SecondOrder, YawFollowing,
+    HEADING_MATCH_TOLERANCE,
 };
 use crate::problem::{Hydro, Problem};
 use crate::sea_state::{Direction, FrequencyGrid, Spreading, WaveComponents};
@@ -52,7 +52,7 @@ pub struct PlanKey {
     qtf_tolerance: f64,
     interaction: Interaction,
     drift_damping: DriftDamping,
-    yaw_following: bool,
+    yaw_following: Option<YawFollowing>,
 }
 
 impl PlanKey {
@@ -73,7 +73,7 @@ impl PlanKey {
             qtf_tolerance: problem.model.qtf_tolerance,
             interaction: problem.model.interaction,
             drift_damping: problem.model.drift_damping,
-            yaw_following: problem.model.yaw_following.is_some(),
+            yaw_following: problem.model.yaw_following.clone(),
         }
     }
 }
@@ -88,13 +88,13 @@ pub struct RecordPlan {
     /// The stream's segments on this grid.
     segments: Segments,
     fft: InverseFft,
-    /// The wave-drift damping coefficients (`None` when the damping is off).
-    damping_table: Option<DriftTable>,
     /// Per direction: the coefficients of the mean-position records (none with yaw
     /// following, whose records carry the force and damping).
     transfers: Vec<DirectionTransfer>,
     /// Cross-direction terms of a spread sea (`None`: long-crested or interaction "none").
     pairs: Option<DirectionPairs>,
+    /// The yaw-following grid and the coefficients of every yaw and direction.
+    yaw: Option<(YawGrid, Vec<Vec<DirectionTransfer>>)>,
     /// The full QTF of every direction and DOF on the grid (second_order = "full-qtf").
     full_qtf: Option<DirectionQtfs>,
     ranks: Vec<QtfRank>,
@@ -172,6 +172,20 @@ impl RecordPlan {
             )?,
             Some(_) => vec![DirectionTransfer::none(grid.count); directions.len()],
         };
+        let yaw = match &config.model.yaw_following {
+            None => None,
+            Some(options) => {
+                let yaw_grid = YawGrid::new(options);
+                let transfers = yaw_transfers(
+                    damping_table.as_ref().unwrap_or(&config.hydro.drift),
+                    &grid,
+                    &directions,
+                    &yaw_grid,
+                    damping_table.is_some(),
+                )?;
+                Some((yaw_grid, transfers))
+            }
+        };
         let (full_qtf, ranks) = match config.model.second_order {
             SecondOrder::Newman => (None, Vec::new()),
             SecondOrder::FullQtf => {
@@ -184,9 +198,9 @@ impl RecordPlan {
             segments,
             fft: plan_inverse_fft(&grid),
             grid,
-            damping_table,
             transfers,
             pairs,
+            yaw,
             full_qtf,
             ranks,
         })
@@ -212,36 +226,55 @@ impl RecordPlan {
         &self.ranks
     }
 
-    /// The records of segment `k` of `config` (which the plan serves), joined to block
-    /// k - 1's by `join` when `after_previous` (its tails are block k - 1's: segment k - 1
-    /// was the last one it built); see `forces::stream`.
-    pub(crate) fn build_segment(
-        &self,
-        config: &Problem,
-        k: u64,
-        join: &mut Join,
-        after_previous: bool,
-    ) -> Result<ForceRecords> {
-        join.begin(k, after_previous);
-        let components = WaveComponents::generate_block(&config.sea, self.grid.clone(), k);
-        let yaw_following = match &config.model.yaw_following {
-            None => None,
-            Some(options) => Some(YawFollowingRecords::build(
-                &components,
-                YawGrid::new(options),
-                self.damping_table.as_ref().unwrap_or(&config.hydro.drift),
-                self.damping_table.is_some(),
-                config.model.newman,
-                &self.fft,
-                Some(&mut *join),
-            )?),
+    /// The first segment of `config`'s records (which the plan serves), with the buffers the
+    /// next segments are made in.
+    pub(crate) fn first_segment(&self, config: &Problem) -> Segment {
+        let synth =
+            Synthesizer::with_fft(&self.grid, self.fft.clone()).with_join(Join::new(self.segments));
+        let mut segment = Segment {
+            index: 0,
+            records: ForceRecords::empty(),
+            work: RecordWork::new(synth, &self.grid),
+            components: WaveComponents::generate_block(&config.sea, self.grid.clone(), 0),
         };
+        self.build(config, &mut segment, 0, true);
+        segment
+    }
+
+    /// Moves `segment` to segment `k` of `config`'s records: the next one from the current
+    /// one's tails; any other after making its predecessor for its tails. Writes into the
+    /// segment's buffers: once the first segment is made, this allocates nothing.
+    pub(crate) fn move_segment(&self, config: &Problem, segment: &mut Segment, k: u64) {
+        if k == segment.index {
+            return;
+        }
+        if k != segment.index + 1 && k > 0 {
+            self.build(config, segment, k - 1, false);
+        }
+        self.build(config, segment, k, true);
+        segment.index = k;
+    }
+
+    /// Builds segment `k` into `segment`, joined to block k - 1's tails when
+    /// `after_previous` (forces::stream).
+    fn build(&self, config: &Problem, segment: &mut Segment, k: u64, after_previous: bool) {
+        let Segment {
+            records,
+            work,
+            components,
+            ..
+        } = segment;
+        work.synth()
+            .join_mut()
+            .expect("a segment's synthesizer is joined")
+            .begin(k, after_previous);
+        components.regenerate(&config.sea, k);
         let drag_columns = match config.model.drag {
             crate::model::DragModel::Off => &[][..],
             _ => &config.platform.columns[..],
         };
-        let mut records = ForceRecords::build(
-            &components,
+        records.rebuild(
+            components,
             &self.transfers,
             &RecordOptions {
                 newman: config.model.newman,
@@ -251,20 +284,32 @@ impl RecordPlan {
                 gravity: config.environment.gravity,
                 fft: Some(&self.fft),
             },
-            Some(&mut *join),
+            work,
         );
         if let Some(pairs) = &self.pairs {
-            add_cross_terms(
-                &mut records,
-                &components,
-                pairs,
-                &self.fft,
-                Some(&mut *join),
-            );
+            work.cross_terms(records, components, pairs);
         }
-        records.yaw_following = yaw_following;
-        Ok(records)
+        match &self.yaw {
+            Some((grid, transfers)) => work.yaw_following(
+                &mut records.yaw_following,
+                components,
+                grid,
+                transfers,
+                config.model.newman,
+            ),
+            None => records.yaw_following = None,
+        }
     }
+}
+
+/// The records of a stream's current segment, and what the next segment is made with.
+#[derive(Clone)]
+pub(crate) struct Segment {
+    /// The segment's index k.
+    pub index: u64,
+    pub records: ForceRecords,
+    work: RecordWork,
+    components: WaveComponents,
 }
 
 /// The segments of a stream with blocks of `block_duration` seconds sampled at `dt`: B =

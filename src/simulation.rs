@@ -7,10 +7,9 @@
 
 use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};
 use crate::error::{Error, Result};
-use crate::forces::ForceRecords;
-use crate::forces::{Join, Segments};
+use crate::forces::{ForceRecords, Segments};
 use crate::problem::Problem;
-use crate::record_plan::{QtfRank, RecordPlan};
+use crate::record_plan::{QtfRank, RecordPlan, Segment};
 use crate::sea_state::FrequencyGrid;
 use std::sync::Arc;
 
@@ -117,17 +116,15 @@ pub struct Simulation {
     problem: Problem,
     model: SlowDriftModel,
     plan: Arc<RecordPlan>,
-    join: Join,
-    /// The records of segment `segment`.
-    records: ForceRecords,
-    segment: u64,
+    /// The current segment of the records, and the buffers the next one is made in.
+    segment: Segment,
     state: Snapshot,
 }
 
 impl std::fmt::Debug for Simulation {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Simulation")
-            .field("segment", &self.segment)
+            .field("segment", &self.segment.index)
             .field("state", &self.state)
             .finish_non_exhaustive()
     }
@@ -161,16 +158,13 @@ impl Simulation {
     /// The simulation of a checked problem from a plan that serves it.
     fn built(problem: Problem, plan: &Arc<RecordPlan>) -> Result<Self> {
         let model = SlowDriftModel::new(&problem)?;
-        let mut join = Join::new(plan.segments());
-        let records = plan.build_segment(&problem, 0, &mut join, true)?;
+        let segment = plan.first_segment(&problem);
         let state = initial_state(&problem);
         Ok(Simulation {
             problem,
             model,
             plan: Arc::clone(plan),
-            join,
-            records,
-            segment: 0,
+            segment,
             state,
         })
     }
@@ -192,21 +186,10 @@ impl Simulation {
     }
 
     /// Makes the records of the segment that time `t` is in, if they are not the current
-    /// ones: the next segment from the current one's tails; any other after building its
-    /// predecessor for its tails.
+    /// ones ([`RecordPlan::move_segment`]: no allocation).
     fn ensure_segment(&mut self, t: f64) -> Result<()> {
         let k = self.segment_of(t)?;
-        if k == self.segment {
-            return Ok(());
-        }
-        if k != self.segment + 1 && k > 0 {
-            self.plan
-                .build_segment(&self.problem, k - 1, &mut self.join, false)?;
-        }
-        self.records = self
-            .plan
-            .build_segment(&self.problem, k, &mut self.join, true)?;
-        self.segment = k;
+        self.plan.move_segment(&self.problem, &mut self.segment, k);
         Ok(())
     }
 
@@ -217,14 +200,14 @@ impl Simulation {
 
     /// The records of the current segment.
     pub fn records(&self) -> &ForceRecords {
-        &self.records
+        &self.segment.records
     }
 
     /// The records of the segment that time `t` is in, made now if they are not the
     /// current ones (the state is kept: the next step makes its own segment again).
     pub fn records_at(&mut self, t: f64) -> Result<&ForceRecords> {
         self.ensure_segment(t)?;
-        Ok(&self.records)
+        Ok(&self.segment.records)
     }
 
     /// The frequency grid of the records (one block's span long).
@@ -239,7 +222,7 @@ impl Simulation {
 
     /// The index of the current segment of the records.
     pub fn segment(&self) -> u64 {
-        self.segment
+        self.segment.index
     }
 
     /// The rank kept for every full-QTF block (empty under Newman's approximation).
@@ -330,7 +313,7 @@ impl Simulation {
             s.velocity[1],
             s.velocity[2],
         ];
-        let (model, records) = (&self.model, &self.records);
+        let (model, records) = (&self.model, &self.segment.records);
         let next = rk4_step(t, &y, h, |time, y| {
             let at = records.clock.locate(time)?;
             let yaw = records.locate_yaw(time, y[2])?;
@@ -353,10 +336,10 @@ impl Simulation {
     /// Outputs at the current time.
     pub fn outputs(&self) -> Result<Outputs> {
         let t = self.time();
-        let at = self.records.clock.locate(t)?;
-        let yaw = self.records.locate_yaw(t, self.state.position[2])?;
+        let at = self.segment.records.clock.locate(t)?;
+        let yaw = self.segment.records.locate_yaw(t, self.state.position[2])?;
         let forces = self.model.forces(
-            &self.records,
+            &self.segment.records,
             &at,
             &yaw,
             &self.state.position,
@@ -366,7 +349,7 @@ impl Simulation {
             time: t,
             position: self.state.position,
             velocity: self.state.velocity,
-            wave_elevation: self.records.elevation.at(&at),
+            wave_elevation: self.segment.records.elevation.at(&at),
             forces,
             external_force: self.state.external_force,
         })
@@ -402,8 +385,9 @@ impl Simulation {
             ));
         }
         self.ensure_segment(snapshot.time())?;
-        self.records.clock.locate(snapshot.time())?;
-        self.records
+        self.segment.records.clock.locate(snapshot.time())?;
+        self.segment
+            .records
             .locate_yaw(snapshot.time(), snapshot.position[2])?;
         self.state = snapshot.clone();
         Ok(())

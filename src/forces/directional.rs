@@ -46,7 +46,6 @@
 //! uni-directional drift table (`hydro::bidirectional::mean_direction_pairs`). The
 //! wave-drift damping records keep no cross terms (no bi-directional damping data exists).
 
-use super::stream::Join;
 use super::synthesis::{InverseFft, Synthesizer};
 use super::{ForceRecords, Record};
 use crate::error::{Error, Result};
@@ -87,73 +86,108 @@ pub fn direction_pairs(
 }
 
 /// The cross-direction force F_cross (surge, sway, yaw; module doc), one vector of record
-/// samples per DOF (empty where every T_kl, k != l, of that DOF is zero).
-/// `fft` is the grid's planned inverse transform.
+/// samples per DOF (empty where every T_kl, k != l, of that DOF is zero), over the grid's
+/// period. `fft` is the grid's planned inverse transform.
 pub fn cross_direction_force(
     components: &WaveComponents,
     pairs: &DirectionPairs,
     fft: &InverseFft,
-    join: Option<&mut Join>,
 ) -> [Vec<f64>; 3] {
-    let grid = &components.grid;
-    let nd = components.directions.len();
-    debug_assert_eq!(pairs.directions, nd);
-    let mut synth = Synthesizer::with_fft(grid, fft.clone()).joined(join);
-    let len = synth.output_len();
-    let brackets = frequency_brackets(pairs, components);
-    let active: [bool; 3] = std::array::from_fn(|dof| {
-        pairs.values.chunks(nd * nd).any(|block| {
-            (0..nd)
-                .any(|k| (0..nd).any(|l| k != l && block[k * nd + l][dof] != Complex64::default()))
-        })
-    });
-    let mut force: [Vec<f64>; 3] = Default::default();
-    let mut eta = vec![Complex64::default(); len];
-    let mut series = vec![Complex64::default(); len];
-    let mut coefficients = vec![Complex64::default(); grid.count];
-    for l in 0..nd {
-        synth.complex_series(components.of_direction(l), &mut eta);
-        for (dof, out) in force.iter_mut().enumerate() {
-            if !active[dof] {
-                continue;
-            }
-            for (i, (c, &(n, n_hi, f))) in coefficients.iter_mut().zip(&brackets).enumerate() {
-                let mut sum = Complex64::default();
-                for k in (0..nd).filter(|&k| k != l) {
-                    let lo = pairs.get(n, k, l)[dof];
-                    let hi = pairs.get(n_hi, k, l)[dof];
-                    sum += components.of_direction(k)[i] * (lo + (hi - lo) * f);
-                }
-                *c = sum;
-            }
-            synth.complex_series(&coefficients, &mut series);
-            out.resize(len, 0.0);
-            for ((o, p), e) in out.iter_mut().zip(&series).zip(&eta) {
-                *o += (p * e.conj()).re;
-            }
-        }
-    }
-    force
+    let mut synth = Synthesizer::with_fft(&components.grid, fft.clone());
+    let mut work = CrossWork::default();
+    work.force(components, pairs, &mut synth);
+    work.cross
 }
 
-/// Adds the cross-direction force to the records' wave force.
+/// Adds the cross-direction force to the records' wave force (`synth` writes the records'
+/// series: a grid's period or a stream's segment).
 pub fn add_cross_terms(
     records: &mut ForceRecords,
     components: &WaveComponents,
     pairs: &DirectionPairs,
-    fft: &InverseFft,
-    join: Option<&mut Join>,
+    synth: &mut Synthesizer,
+    work: &mut CrossWork,
 ) {
-    let cross = cross_direction_force(components, pairs, fft, join);
-    for (record, extra) in records.wave_force.iter_mut().zip(cross) {
+    work.force(components, pairs, synth);
+    for (record, extra) in records.wave_force.iter_mut().zip(&mut work.cross) {
         if extra.is_empty() {
             continue;
         }
-        let mut samples = extra;
-        for (s, v) in samples.iter_mut().zip(record.samples()) {
-            *s += v;
+        let mut samples = std::mem::take(record).into_samples();
+        if samples.is_empty() {
+            samples.extend_from_slice(extra);
+        } else {
+            for (s, v) in samples.iter_mut().zip(extra.iter()) {
+                *s += v;
+            }
         }
         *record = Record::new(samples);
+    }
+}
+
+/// The buffers of the cross-direction force, kept from one build to the next (a stream's
+/// segments): a build of the same shape allocates nothing.
+#[derive(Default, Clone)]
+pub struct CrossWork {
+    brackets: Vec<(usize, usize, f64)>,
+    eta: Vec<Complex64>,
+    series: Vec<Complex64>,
+    coefficients: Vec<Complex64>,
+    /// The cross-direction force of the last build, per DOF (empty: zero).
+    cross: [Vec<f64>; 3],
+}
+
+impl CrossWork {
+    /// The cross-direction force into `self.cross`: per direction l, the transform of
+    /// eta_l and of P_l = sum_{k != l} a_k T_kl, and Re P_l eta_l* summed (module doc).
+    fn force(
+        &mut self,
+        components: &WaveComponents,
+        pairs: &DirectionPairs,
+        synth: &mut Synthesizer,
+    ) {
+        let grid = &components.grid;
+        let nd = components.directions.len();
+        debug_assert_eq!(pairs.directions, nd);
+        let len = synth.output_len();
+        frequency_brackets(pairs, components, &mut self.brackets);
+        let active: [bool; 3] = std::array::from_fn(|dof| {
+            pairs.values.chunks(nd * nd).any(|block| {
+                (0..nd).any(|k| {
+                    (0..nd).any(|l| k != l && block[k * nd + l][dof] != Complex64::default())
+                })
+            })
+        });
+        for v in &mut self.cross {
+            v.clear();
+        }
+        self.eta.resize(len, Complex64::default());
+        self.series.resize(len, Complex64::default());
+        self.coefficients.resize(grid.count, Complex64::default());
+        for l in 0..nd {
+            synth.complex_series(components.of_direction(l), &mut self.eta);
+            for (dof, out) in self.cross.iter_mut().enumerate() {
+                if !active[dof] {
+                    continue;
+                }
+                for (i, (c, &(n, n_hi, f))) in
+                    self.coefficients.iter_mut().zip(&self.brackets).enumerate()
+                {
+                    let mut sum = Complex64::default();
+                    for k in (0..nd).filter(|&k| k != l) {
+                        let lo = pairs.get(n, k, l)[dof];
+                        let hi = pairs.get(n_hi, k, l)[dof];
+                        sum += components.of_direction(k)[i] * (lo + (hi - lo) * f);
+                    }
+                    *c = sum;
+                }
+                synth.complex_series(&self.coefficients, &mut self.series);
+                out.resize(len, 0.0);
+                for ((o, p), e) in out.iter_mut().zip(&self.series).zip(&self.eta) {
+                    *o += (p * e.conj()).re;
+                }
+            }
+        }
     }
 }
 
@@ -162,18 +196,18 @@ pub fn add_cross_terms(
 fn frequency_brackets(
     pairs: &DirectionPairs,
     components: &WaveComponents,
-) -> Vec<(usize, usize, f64)> {
+    out: &mut Vec<(usize, usize, f64)>,
+) {
     let w = &pairs.omegas;
     let last = w.len() - 1;
     let grid = &components.grid;
-    (0..grid.count)
-        .map(|i| {
-            let omega = grid.omega(i).clamp(w[0], w[last]);
-            if last == 0 {
-                return (0, 0, 0.0);
-            }
-            let n = w.partition_point(|&v| v <= omega).clamp(1, last) - 1;
-            (n, n + 1, (omega - w[n]) / (w[n + 1] - w[n]))
-        })
-        .collect()
+    out.clear();
+    out.extend((0..grid.count).map(|i| {
+        let omega = grid.omega(i).clamp(w[0], w[last]);
+        if last == 0 {
+            return (0, 0, 0.0);
+        }
+        let n = w.partition_point(|&v| v <= omega).clamp(1, last) - 1;
+        (n, n + 1, (omega - w[n]) / (w[n + 1] - w[n]))
+    }));
 }

@@ -105,91 +105,166 @@ impl ColumnState<'_> {
     }
 }
 
-/// Builds the kinematics records of every column with `strips` strips each.
-///
-/// The depth profile omega e^{k z} is real and the same for every direction, so each
-/// column's direction sums are taken once (A_x, A_y for the velocity, A for the elevation)
-/// and strip j's coefficients are omega_n e^{k_n z_j} (A_x, A_y)_n: one transform per strip
-/// gives u_x + i u_y ([`Synthesizer::append_two_real_series`]). The levels are equally spaced, so
-/// e^{k z_j} = e^{k z_0} (e^{k dz})^j: two exponentials per frequency and column, not one
-/// per strip.
-pub fn column_kinematics(
+/// [`KinematicsWork::build`] into new buffers (the tests' shorthand).
+#[cfg(test)]
+pub(crate) fn column_kinematics(
     components: &WaveComponents,
     columns: &[Cylinder],
     strips: usize,
     gravity: f64,
     synth: &mut Synthesizer,
 ) -> Vec<ColumnKinematics> {
-    if columns.is_empty() {
-        // No drag: no records, and no record-length scratch to allocate and fault in.
-        return Vec::new();
-    }
-    let grid = &components.grid;
-    let n = synth.output_len();
-    let wavenumbers: Vec<f64> = (0..grid.count)
-        .map(|j| grid.omega(j).powi(2) / gravity)
-        .collect();
-    let zero = vec![Complex64::default(); grid.count];
-    let (mut cx, mut cy) = (zero.clone(), zero.clone());
-    let mut profile = vec![0.0; grid.count];
-    let mut growth = vec![0.0; grid.count];
-    let mut built: Vec<(KinematicsKey, Arc<Vec<Complex32>>)> = Vec::new();
-    // One transform's output (reused: it stays in cache), and the series rounded to single
-    // precision one after the other, before the transpose into rows.
-    let mut output = Vec::with_capacity(n);
-    let mut series = Vec::with_capacity((1 + strips) * n);
-    let mut kinematics = Vec::with_capacity(columns.len());
-    for column in columns {
-        let key = KinematicsKey::of(components, column);
-        let rows = match built.iter().find(|(k, _)| *k == key) {
-            Some((_, rows)) => Arc::clone(rows),
-            None => {
-                let [ax, ay, a] = direction_sums(components, column, gravity);
-                series.clear();
-                let mut synthesize = |cx: &[Complex64], cy: &[Complex64]| {
-                    output.clear();
-                    synth.append_two_real_series(cx, cy, &mut output);
-                    series.extend(output.iter().map(|u| narrow(*u)));
-                };
-                synthesize(&a, &zero);
-                let dz = column.draft / strips as f64;
-                for (j, k) in wavenumbers.iter().enumerate() {
-                    profile[j] = grid.omega(j) * (k * (-column.draft + 0.5 * dz)).exp();
-                    growth[j] = (k * dz).exp();
-                }
-                for _ in 0..strips {
-                    for n in 0..grid.count {
-                        cx[n] = ax[n] * profile[n];
-                        cy[n] = ay[n] * profile[n];
-                        profile[n] *= growth[n];
-                    }
-                    synthesize(&cx, &cy);
-                }
-                let rows = Arc::new(transpose(&series, 1 + strips, n));
-                built.push((key, Arc::clone(&rows)));
-                rows
+    let mut out = Vec::new();
+    KinematicsWork::default().build(components, columns, strips, gravity, synth, &mut out);
+    out
+}
+
+/// The buffers of the kinematics records, kept from one build to the next (a stream's
+/// segments): a build into records of the same shape allocates nothing.
+#[derive(Default, Clone)]
+pub struct KinematicsWork {
+    wavenumbers: Vec<f64>,
+    zero: Vec<Complex64>,
+    cx: Vec<Complex64>,
+    cy: Vec<Complex64>,
+    profile: Vec<f64>,
+    growth: Vec<f64>,
+    sums: [Vec<Complex64>; 3],
+    /// One transform's output (reused: it stays in cache).
+    output: Vec<Complex64>,
+    /// The series rounded to single precision one after the other, before the transpose.
+    series: Vec<Complex32>,
+    tile: Vec<Complex32>,
+    /// The key of every column, and the rows of the previous build to write again.
+    keys: Vec<KinematicsKey>,
+    spare_rows: Vec<Vec<Complex32>>,
+}
+
+impl KinematicsWork {
+    /// The kinematics records of every column with `strips` strips each, into `out` (whose
+    /// previous records' buffers are reused).
+    ///
+    /// The depth profile omega e^{k z} is real and the same for every direction, so each
+    /// column's direction sums are taken once (A_x, A_y for the velocity, A for the
+    /// elevation) and strip j's coefficients are omega_n e^{k_n z_j} (A_x, A_y)_n: one
+    /// transform per strip gives u_x + i u_y ([`Synthesizer::append_two_real_series`]). The
+    /// levels are equally spaced, so e^{k z_j} = e^{k z_0} (e^{k dz})^j: two exponentials per
+    /// frequency and column, not one per strip.
+    pub fn build(
+        &mut self,
+        components: &WaveComponents,
+        columns: &[Cylinder],
+        strips: usize,
+        gravity: f64,
+        synth: &mut Synthesizer,
+        out: &mut Vec<ColumnKinematics>,
+    ) {
+        // The previous rows, one per group of columns that shared them.
+        for previous in out.drain(..) {
+            if let Ok(rows) = Arc::try_unwrap(previous.rows) {
+                self.spare_rows.push(rows);
             }
-        };
-        kinematics.push(ColumnKinematics {
-            column: column.clone(),
-            width: 1 + strips,
-            len: n,
-            rows,
-        });
+        }
+        if columns.is_empty() {
+            // No drag: no records, and no record-length scratch to allocate and fault in.
+            return;
+        }
+        let grid = &components.grid;
+        let n = synth.output_len();
+        let count = grid.count;
+        refill(
+            &mut self.wavenumbers,
+            (0..count).map(|j| grid.omega(j).powi(2) / gravity),
+        );
+        for v in [&mut self.zero, &mut self.cx, &mut self.cy] {
+            refill(v, std::iter::repeat_n(Complex64::default(), count));
+        }
+        refill(&mut self.profile, std::iter::repeat_n(0.0, count));
+        refill(&mut self.growth, std::iter::repeat_n(0.0, count));
+        if self.keys.len() != columns.len() {
+            self.keys = columns
+                .iter()
+                .map(|c| KinematicsKey::of(components, c))
+                .collect();
+        }
+        for (c, column) in columns.iter().enumerate() {
+            let shared = (0..c).find(|&d| self.keys[d] == self.keys[c]);
+            let rows = match shared {
+                Some(d) => Arc::clone(&out[d].rows),
+                None => Arc::new(self.rows(components, column, strips, gravity, n, synth)),
+            };
+            out.push(ColumnKinematics {
+                column: column.clone(),
+                width: 1 + strips,
+                len: n,
+                rows,
+            });
+        }
     }
-    kinematics
+
+    /// The rows of one column.
+    fn rows(
+        &mut self,
+        components: &WaveComponents,
+        column: &Cylinder,
+        strips: usize,
+        gravity: f64,
+        n: usize,
+        synth: &mut Synthesizer,
+    ) -> Vec<Complex32> {
+        let grid = &components.grid;
+        direction_sums(components, column, gravity, &mut self.sums);
+        let [ax, ay, a] = &self.sums;
+        self.series.clear();
+        let (output, series) = (&mut self.output, &mut self.series);
+        let mut synthesize = |cx: &[Complex64], cy: &[Complex64]| {
+            output.clear();
+            synth.append_two_real_series(cx, cy, output);
+            series.extend(output.iter().map(|u| narrow(*u)));
+        };
+        synthesize(a, &self.zero);
+        let dz = column.draft / strips as f64;
+        for (j, k) in self.wavenumbers.iter().enumerate() {
+            self.profile[j] = grid.omega(j) * (k * (-column.draft + 0.5 * dz)).exp();
+            self.growth[j] = (k * dz).exp();
+        }
+        for _ in 0..strips {
+            for j in 0..grid.count {
+                self.cx[j] = ax[j] * self.profile[j];
+                self.cy[j] = ay[j] * self.profile[j];
+                self.profile[j] *= self.growth[j];
+            }
+            synthesize(&self.cx, &self.cy);
+        }
+        let mut rows = self.spare_rows.pop().unwrap_or_default();
+        transpose(&self.series, 1 + strips, n, &mut self.tile, &mut rows);
+        rows
+    }
+}
+
+/// Clears `v` and fills it from `values` (its capacity kept).
+fn refill<T>(v: &mut Vec<T>, values: impl Iterator<Item = T>) {
+    v.clear();
+    v.extend(values);
 }
 
 /// Samples per tile of [`transpose`]: a tile's rows (21 series x 16 B x 64 = 21 kB for 20
 /// strips) and its stretch of every series stay in the first-level cache.
 const TILE: usize = 64;
 
-/// `width` series of `len` samples each, one after the other, as rows of `width` samples:
-/// done tile by tile in a small buffer so that reads and writes stay in cache, and the
-/// result is written once, in order.
-fn transpose(series: &[Complex32], width: usize, len: usize) -> Vec<Complex32> {
-    let mut rows = Vec::with_capacity(width * len);
-    let mut tile = vec![Complex32::default(); width * TILE];
+/// `width` series of `len` samples each, one after the other, as rows of `width` samples
+/// into `rows`: done tile by tile in a small buffer so that reads and writes stay in cache,
+/// and the result is written once, in order.
+fn transpose(
+    series: &[Complex32],
+    width: usize,
+    len: usize,
+    tile: &mut Vec<Complex32>,
+    rows: &mut Vec<Complex32>,
+) {
+    rows.clear();
+    rows.reserve(width * len);
+    tile.resize(width * TILE, Complex32::default());
     for first in (0..len).step_by(TILE) {
         let span = first..(first + TILE).min(len);
         let tile = &mut tile[..width * span.len()];
@@ -200,7 +275,6 @@ fn transpose(series: &[Complex32], width: usize, len: usize) -> Vec<Complex32> {
         }
         rows.extend_from_slice(tile);
     }
-    rows
 }
 
 /// A sample rounded to single precision for storage (to nearest).
@@ -219,7 +293,7 @@ fn widen(v: Complex32) -> Complex64 {
 /// direction, the distance of its centre along that direction. Two columns with equal keys
 /// (say the two front columns of a square platform in head seas) have the same records,
 /// bit for bit, and share one copy.
-#[derive(Debug, PartialEq)]
+#[derive(Debug, PartialEq, Clone)]
 struct KinematicsKey {
     draft: f64,
     along: Vec<f64>,
@@ -245,15 +319,17 @@ fn along(column: &Cylinder, heading: f64) -> f64 {
 }
 
 /// sum over directions of the amplitudes with the phase of the column centre, times
-/// (cos b, sin b, 1).
+/// (cos b, sin b, 1), into `sums`.
 fn direction_sums(
     components: &WaveComponents,
     column: &Cylinder,
     gravity: f64,
-) -> [Vec<Complex64>; 3] {
+    sums: &mut [Vec<Complex64>; 3],
+) {
     let grid = &components.grid;
-    let mut sums: [Vec<Complex64>; 3] =
-        std::array::from_fn(|_| vec![Complex64::default(); grid.count]);
+    for s in sums.iter_mut() {
+        refill(s, std::iter::repeat_n(Complex64::default(), grid.count));
+    }
     for (k, dir) in components.directions.iter().enumerate() {
         let (sin, cos) = dir.heading.sin_cos();
         let along = along(column, dir.heading);
@@ -265,7 +341,6 @@ fn direction_sums(
             sums[2][j] += phased;
         }
     }
-    sums
 }
 
 #[cfg(test)]

@@ -13,8 +13,8 @@ mod transfer;
 mod viscous;
 mod yaw_following;
 
-pub use directional::{add_cross_terms, cross_direction_force, direction_pairs};
-pub use kinematics::ColumnKinematics;
+pub use directional::{add_cross_terms, cross_direction_force, direction_pairs, CrossWork};
+pub use kinematics::{ColumnKinematics, KinematicsWork};
 pub use newman::NewmanBuilder;
 pub use qtf::{GridQtf, QtfFactorisation};
 pub use record::{Record, RecordClock, SamplePoint};
@@ -22,10 +22,12 @@ pub use stream::{Join, Segments};
 pub use synthesis::{plan_inverse_fft, InverseFft, Synthesizer};
 pub use transfer::{transfers_on_grid, DirectionTransfer};
 pub use viscous::drag_force;
-pub use yaw_following::{SlowRecords, YawFollowingRecords, YawGrid, YawPoint};
+pub use yaw_following::{
+    yaw_transfers, SlowRecords, YawFollowingRecords, YawGrid, YawPoint, YawWork,
+};
 
 use crate::model::{Cylinder, NewmanForm};
-use crate::sea_state::WaveComponents;
+use crate::sea_state::{FrequencyGrid, WaveComponents};
 use rustfft::num_complex::Complex64;
 
 /// What to precompute besides the elevation and the wave force.
@@ -60,25 +62,136 @@ pub struct ForceRecords {
     pub yaw_following: Option<YawFollowingRecords>,
 }
 
+/// The buffers of a build of records, kept from one build to the next: the records of a
+/// stream's next segment are written into those of the previous one with these, and
+/// allocate nothing once the first segment is made.
+#[derive(Clone)]
+pub struct RecordWork {
+    synth: Synthesizer,
+    newman: NewmanBuilder,
+    /// The arithmetic form's complex elevation series of one direction.
+    eta_c: Vec<Complex64>,
+    elevation_coefficients: Vec<Complex64>,
+    /// Scratch of the full-QTF synthesis.
+    qtf_coefficients: Vec<Complex64>,
+    qtf_series: Vec<Complex64>,
+    kinematics: KinematicsWork,
+    /// Scratch of the cross-direction terms (`forces::directional`).
+    cross: CrossWork,
+    /// Scratch of the yaw-following records.
+    yaw: YawWork,
+}
+
+impl RecordWork {
+    /// The buffers of builds through `synth` on `grid`.
+    pub fn new(synth: Synthesizer, grid: &FrequencyGrid) -> Self {
+        let n = synth.output_len();
+        RecordWork {
+            synth,
+            newman: NewmanBuilder::new(grid.count, n),
+            eta_c: Vec::new(),
+            elevation_coefficients: Vec::new(),
+            qtf_coefficients: Vec::new(),
+            qtf_series: Vec::new(),
+            kinematics: KinematicsWork::default(),
+            cross: CrossWork::default(),
+            yaw: YawWork::default(),
+        }
+    }
+
+    /// The synthesizer the builds write through (a stream's segments when joined).
+    pub fn synth(&mut self) -> &mut Synthesizer {
+        &mut self.synth
+    }
+
+    /// The yaw-following records of `grid` into `records` (their buffers reused), from the
+    /// transfers of every yaw ([`yaw_following::yaw_transfers`]).
+    pub fn yaw_following(
+        &mut self,
+        records: &mut Option<YawFollowingRecords>,
+        components: &WaveComponents,
+        grid: &YawGrid,
+        transfers: &[Vec<DirectionTransfer>],
+        form: NewmanForm,
+    ) {
+        let records = records.get_or_insert_with(|| YawFollowingRecords {
+            grid: *grid,
+            sets: Vec::new(),
+        });
+        records.rebuild(
+            components,
+            transfers,
+            form,
+            &mut self.synth,
+            &mut self.newman,
+            &mut self.yaw,
+        );
+    }
+
+    /// Adds the cross-direction terms of a spread sea to the records' wave force.
+    pub fn cross_terms(
+        &mut self,
+        records: &mut ForceRecords,
+        components: &WaveComponents,
+        pairs: &crate::hydro::bidirectional::DirectionPairs,
+    ) {
+        add_cross_terms(records, components, pairs, &mut self.synth, &mut self.cross);
+    }
+}
+
 impl ForceRecords {
     /// Builds every record from the wave components and the per-direction coefficients
-    /// (from [`transfers_on_grid`]). Cost: one FFT per direction for the elevation, one or
-    /// two per non-zero coefficient record and direction (with the full QTF: one per
-    /// retained term, DOF and direction instead, for the force), one per strip and column
-    /// (columns with the same phases share theirs). `options.full_qtf`, when given, holds one
-    /// entry per direction of `components`.
-    ///
-    /// With a `join`, the records are those of the stream segment it is building
-    /// (`forces::stream`): the joined series of the segment's record length, on the segment's
-    /// clock. Without, the N samples of the grid's periodic records.
+    /// (from [`transfers_on_grid`]), over the grid's period (N samples). Cost: one FFT per
+    /// direction for the elevation, one or two per non-zero coefficient record and direction
+    /// (with the full QTF: one per retained term, DOF and direction instead, for the force),
+    /// one per strip and column (columns with the same phases share theirs).
+    /// `options.full_qtf`, when given, holds one entry per direction of `components`.
     pub fn build(
         components: &WaveComponents,
         transfers: &[DirectionTransfer],
         options: &RecordOptions,
-        join: Option<&mut Join>,
     ) -> Self {
         let grid = &components.grid;
-        let clock = match &join {
+        let synth = match options.fft {
+            Some(fft) => Synthesizer::with_fft(grid, fft.clone()),
+            None => Synthesizer::new(grid),
+        };
+        let mut work = RecordWork::new(synth, grid);
+        let mut records = ForceRecords::empty();
+        records.rebuild(components, transfers, options, &mut work);
+        records
+    }
+
+    /// Records with no samples, to be written by [`ForceRecords::rebuild`].
+    pub fn empty() -> Self {
+        ForceRecords {
+            clock: RecordClock {
+                start_time: 0.0,
+                dt: 1.0,
+                len: 0,
+            },
+            elevation: Record::zero(),
+            wave_force: Default::default(),
+            damping: None,
+            kinematics: Vec::new(),
+            yaw_following: None,
+        }
+    }
+
+    /// [`ForceRecords::build`] into these records, reusing their buffers and `work`'s:
+    /// through a joined synthesizer, the records of the stream segment its join is building
+    /// (`forces::stream`: the segment's record length, on the segment's clock). The
+    /// yaw-following records are left as they are.
+    pub fn rebuild(
+        &mut self,
+        components: &WaveComponents,
+        transfers: &[DirectionTransfer],
+        options: &RecordOptions,
+        work: &mut RecordWork,
+    ) {
+        let grid = &components.grid;
+        let synth = &mut work.synth;
+        self.clock = match synth.join() {
             Some(join) => join.segments().clock(grid, join.segment()),
             None => RecordClock {
                 start_time: grid.start_time,
@@ -86,94 +199,100 @@ impl ForceRecords {
                 len: grid.len,
             },
         };
-        let mut synth = match options.fft {
-            Some(fft) => Synthesizer::with_fft(grid, fft.clone()),
-            None => Synthesizer::new(grid),
-        }
-        .joined(join);
         let n = synth.output_len();
-        let mut builder = NewmanBuilder::new(grid.count, n);
-        // The arithmetic form needs each direction's complex elevation series.
-        let mut eta_c = match options.newman {
-            NewmanForm::Arithmetic => vec![Complex64::default(); n],
-            NewmanForm::Geometric => Vec::new(),
+        let eta_c = &mut work.eta_c;
+        eta_c.resize(
+            match options.newman {
+                NewmanForm::Arithmetic => n,
+                NewmanForm::Geometric => 0,
+            },
+            Complex64::default(),
+        );
+        let coefficients = &mut work.elevation_coefficients;
+        coefficients.clear();
+        coefficients.resize(grid.count, Complex64::default());
+        if options.full_qtf.is_some() {
+            work.qtf_coefficients
+                .resize(grid.count, Complex64::default());
+            work.qtf_series.resize(n, Complex64::default());
+        }
+        // The previous records' buffers, emptied: records are filled by the first direction
+        // that adds to them.
+        let mut force: [Vec<f64>; 3] =
+            std::array::from_fn(|i| take_samples(&mut self.wave_force[i]));
+        let mut damping: [[Vec<f64>; 3]; 3] = match &mut self.damping {
+            Some(d) => std::array::from_fn(|i| std::array::from_fn(|j| take_samples(&mut d[i][j]))),
+            None => Default::default(),
         };
-        let mut elevation_coefficients = vec![Complex64::default(); grid.count];
-        // Scratch of the full-QTF synthesis.
-        let (mut qtf_coefficients, mut qtf_series) = match options.full_qtf {
-            Some(_) => (
-                vec![Complex64::default(); grid.count],
-                vec![Complex64::default(); n],
-            ),
-            None => (Vec::new(), Vec::new()),
-        };
-        // Records are allocated by the first direction that adds to them.
-        let mut force: [Vec<f64>; 3] = Default::default();
-        let mut damping: [[Vec<f64>; 3]; 3] = Default::default();
+        let builder = &mut work.newman;
         for (k, transfer) in transfers.iter().enumerate() {
             let amplitudes = components.of_direction(k);
-            for (sum, a) in elevation_coefficients.iter_mut().zip(amplitudes) {
+            for (sum, a) in coefficients.iter_mut().zip(amplitudes) {
                 *sum += a;
             }
             if options.newman == NewmanForm::Arithmetic {
-                synth.complex_series(amplitudes, &mut eta_c);
+                synth.complex_series(amplitudes, eta_c);
             }
             match options.full_qtf {
                 Some(qtf) => {
                     for (out, t) in force.iter_mut().zip(&qtf[k]) {
                         t.accumulate(
-                            &mut synth,
+                            synth,
                             amplitudes,
-                            &mut qtf_coefficients,
-                            &mut qtf_series,
+                            &mut work.qtf_coefficients,
+                            &mut work.qtf_series,
                             out,
                         );
                     }
                 }
                 None => builder.accumulate_force(
-                    &mut synth,
+                    synth,
                     options.newman,
                     amplitudes,
-                    &eta_c,
+                    eta_c,
                     transfer,
                     &mut force,
                 ),
             }
             builder.accumulate_damping(
-                &mut synth,
+                synth,
                 options.newman,
                 amplitudes,
-                &eta_c,
+                eta_c,
                 transfer,
                 &mut damping,
             );
         }
-        let elevation = builder.real_series(&mut synth, &elevation_coefficients);
+        let mut elevation = take_samples(&mut self.elevation);
+        builder.real_series(synth, coefficients, &mut elevation);
+        self.elevation = Record::new(elevation);
         let with_damping = transfers.iter().any(|t| t.damping.is_some());
-        let kinematics = kinematics::column_kinematics(
+        work.kinematics.build(
             components,
             options.drag_columns,
             options.strips_per_column,
             options.gravity,
-            &mut synth,
+            synth,
+            &mut self.kinematics,
         );
-        ForceRecords {
-            clock,
-            elevation: Record::new(elevation),
-            wave_force: force.map(record_or_zero),
-            damping: with_damping.then(|| damping.map(|row| row.map(record_or_zero))),
-            kinematics,
-            yaw_following: None,
-        }
+        self.wave_force = force.map(record_or_zero);
+        self.damping = with_damping.then(|| damping.map(|row| row.map(record_or_zero)));
     }
+}
+
+/// The samples' buffer of `record`, emptied (its capacity kept), the record left zero.
+fn take_samples(record: &mut Record) -> Vec<f64> {
+    let mut samples = std::mem::take(record).into_samples();
+    samples.clear();
+    samples
 }
 
 /// A record, or the empty zero record when no direction added to it or every sample is
 /// exactly zero.
-fn record_or_zero(samples: Vec<f64>) -> Record {
+fn record_or_zero(mut samples: Vec<f64>) -> Record {
     if samples.iter().all(|&v| v == 0.0) {
-        Record::zero()
-    } else {
-        Record::new(samples)
+        // Zero, keeping the buffer for the next segment.
+        samples.clear();
     }
+    Record::new(samples)
 }

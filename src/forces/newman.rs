@@ -20,6 +20,7 @@ use crate::model::NewmanForm;
 use rustfft::num_complex::Complex64;
 
 /// Scratch buffers for building slowly varying records, reused for every record.
+#[derive(Clone)]
 pub struct NewmanBuilder {
     coefficients: Vec<Complex64>,
     series: Vec<Complex64>,
@@ -110,10 +111,17 @@ impl NewmanBuilder {
         }
     }
 
-    /// The real series Re sum_j c_j e^{i omega_j t_m} at every sample (e.g. the elevation).
-    pub fn real_series(&mut self, synth: &mut Synthesizer, coefficients: &[Complex64]) -> Vec<f64> {
+    /// The real series Re sum_j c_j e^{i omega_j t_m} at every sample (e.g. the elevation),
+    /// into `out`.
+    pub fn real_series(
+        &mut self,
+        synth: &mut Synthesizer,
+        coefficients: &[Complex64],
+        out: &mut Vec<f64>,
+    ) {
         synth.complex_series(coefficients, &mut self.series);
-        self.series.iter().map(|c| c.re).collect()
+        out.clear();
+        out.extend(self.series.iter().map(|c| c.re));
     }
 
     /// Coefficients a_i sqrt(sign T_i) where sign T_i > 0, else 0; false if all are zero.

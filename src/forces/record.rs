@@ -107,7 +107,7 @@ fn lagrange_weights(s: f64) -> [f64; 4] {
 
 /// A sampled real record on a [`RecordClock`]. The samples come from an FFT and are
 /// periodic with period N dt, so the stencil wraps at sample 0.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct Record {
     samples: Vec<f64>,
 }
@@ -128,6 +128,11 @@ impl Record {
     /// The samples (empty for a zero record).
     pub fn samples(&self) -> &[f64] {
         &self.samples
+    }
+
+    /// The samples' buffer, to be written again (a stream's next segment).
+    pub fn into_samples(self) -> Vec<f64> {
+        self.samples
     }
 
     /// Value at a located time.

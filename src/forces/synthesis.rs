@@ -24,16 +24,17 @@ pub fn plan_inverse_fft(grid: &FrequencyGrid) -> InverseFft {
 
 /// An inverse FFT for the record length, with its scratch space, and optionally the join
 /// of a stream's segments.
-pub struct Synthesizer<'a> {
+#[derive(Clone)]
+pub struct Synthesizer {
     fft: InverseFft,
     scratch: Vec<Complex64>,
     first: usize,
     count: usize,
     /// The stream's join, and the block's full transform before it is joined.
-    join: Option<(&'a mut Join, Vec<Complex64>)>,
+    join: Option<(Join, Vec<Complex64>)>,
 }
 
-impl<'a> Synthesizer<'a> {
+impl Synthesizer {
     /// Plans the transform for the grid's record length.
     pub fn new(grid: &FrequencyGrid) -> Self {
         Self::with_fft(grid, plan_inverse_fft(grid))
@@ -52,10 +53,21 @@ impl<'a> Synthesizer<'a> {
         }
     }
 
-    /// The same transform writing the joined series of the segment `join` is building.
-    pub fn joined(mut self, join: Option<&'a mut Join>) -> Self {
-        self.join = join.map(|j| (j, vec![Complex64::default(); self.fft.len()]));
+    /// The same transform writing the joined series of a stream's segments (`join`
+    /// chooses the segment: [`Synthesizer::join_mut`]).
+    pub fn with_join(mut self, join: Join) -> Self {
+        self.join = Some((join, vec![Complex64::default(); self.fft.len()]));
         self
+    }
+
+    /// The join of the segments, when this synthesizer writes a stream.
+    pub fn join_mut(&mut self) -> Option<&mut Join> {
+        self.join.as_mut().map(|(join, _)| join)
+    }
+
+    /// The join of the segments, when this synthesizer writes a stream.
+    pub fn join(&self) -> Option<&Join> {
+        self.join.as_ref().map(|(join, _)| join)
     }
 
     /// Samples of every series written: N, or a segment's record length when joined.

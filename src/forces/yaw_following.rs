@@ -26,14 +26,14 @@
 //! The elevation and the drag columns' kinematics stay at the mean position and zero yaw.
 
 use super::newman::NewmanBuilder;
-use super::stream::Join;
 use super::synthesis::{InverseFft, Synthesizer};
 use super::transfer::transfers_on_grid;
-use super::{record_or_zero, ForceRecords, Record, SamplePoint};
+use super::transfer::DirectionTransfer;
+use super::{record_or_zero, take_samples, ForceRecords, Record, SamplePoint};
 use crate::error::{Error, Result};
 use crate::hydro::DriftTable;
 use crate::model::{NewmanForm, YawFollowing};
-use crate::sea_state::{Direction, WaveComponents};
+use crate::sea_state::{Direction, FrequencyGrid, WaveComponents};
 use rustfft::num_complex::Complex64;
 use std::f64::consts::PI;
 
@@ -163,12 +163,12 @@ pub struct YawFollowingRecords {
 }
 
 impl YawFollowingRecords {
-    /// Builds the records at every theta_j: for each, the table interpolated at the
-    /// relative headings beta_k - theta_j of every wave direction k, then Newman's
-    /// construction in `form` (the same as [`ForceRecords::build`] at zero yaw). `table`
-    /// holds the damping when `with_damping`. A table whose headings do not cover every
-    /// relative heading is refused, naming the gap. Cost: per yaw, one or two FFTs per
-    /// non-zero coefficient record and direction.
+    /// Builds the records at every theta_j over the grid's period: for each, the table
+    /// interpolated at the relative headings beta_k - theta_j of every wave direction k
+    /// ([`yaw_transfers`]), then Newman's construction in `form` (the same as
+    /// [`ForceRecords::build`] at zero yaw). `table` holds the damping when `with_damping`.
+    /// A table whose headings do not cover every relative heading is refused, naming the
+    /// gap. Cost: per yaw, one or two FFTs per non-zero coefficient record and direction.
     pub fn build(
         components: &WaveComponents,
         grid: YawGrid,
@@ -176,50 +176,79 @@ impl YawFollowingRecords {
         with_damping: bool,
         form: NewmanForm,
         fft: &InverseFft,
-        join: Option<&mut Join>,
     ) -> Result<Self> {
-        check_relative_headings(table, &components.directions, &grid)?;
-        let freq = &components.grid;
-        let mut synth = Synthesizer::with_fft(freq, fft.clone()).joined(join);
-        let len = synth.output_len();
-        let mut builder = NewmanBuilder::new(freq.count, len);
-        // The arithmetic form's complex elevation series: per direction, independent of yaw.
-        let eta_c: Vec<Vec<Complex64>> = match form {
-            NewmanForm::Geometric => vec![Vec::new(); components.directions.len()],
-            NewmanForm::Arithmetic => (0..components.directions.len())
-                .map(|k| {
-                    let mut series = vec![Complex64::default(); len];
-                    synth.complex_series(components.of_direction(k), &mut series);
-                    series
-                })
-                .collect(),
+        let transfers = yaw_transfers(
+            table,
+            &components.grid,
+            &components.directions,
+            &grid,
+            with_damping,
+        )?;
+        let mut synth = Synthesizer::with_fft(&components.grid, fft.clone());
+        let mut builder = NewmanBuilder::new(components.grid.count, synth.output_len());
+        let mut records = YawFollowingRecords {
+            grid,
+            sets: Vec::new(),
         };
-        let mut sets = Vec::with_capacity(grid.len());
-        for j in 0..grid.len() {
-            let theta = grid.yaw(j);
-            let relative: Vec<Direction> = components
-                .directions
-                .iter()
-                .map(|d| Direction {
-                    heading: d.heading - theta,
-                    weight: d.weight,
-                })
-                .collect();
-            let transfers = transfers_on_grid(table, freq, &relative, with_damping)?;
-            let mut force: [Vec<f64>; 3] = Default::default();
-            let mut damping: [[Vec<f64>; 3]; 3] = Default::default();
+        records.rebuild(
+            components,
+            &transfers,
+            form,
+            &mut synth,
+            &mut builder,
+            &mut YawWork::default(),
+        );
+        Ok(records)
+    }
+
+    /// [`YawFollowingRecords::build`] into these records (their buffers reused), from the
+    /// transfers of every yaw ([`yaw_transfers`]), through `synth` (a stream's segment when
+    /// joined).
+    pub fn rebuild(
+        &mut self,
+        components: &WaveComponents,
+        transfers: &[Vec<DirectionTransfer>],
+        form: NewmanForm,
+        synth: &mut Synthesizer,
+        builder: &mut NewmanBuilder,
+        work: &mut YawWork,
+    ) {
+        let len = synth.output_len();
+        let directions = components.directions.len();
+        // The arithmetic form's complex elevation series: per direction, independent of yaw.
+        work.eta_c.resize_with(directions, Vec::new);
+        for (k, series) in work.eta_c.iter_mut().enumerate() {
+            match form {
+                NewmanForm::Geometric => series.clear(),
+                NewmanForm::Arithmetic => {
+                    series.resize(len, Complex64::default());
+                    synth.complex_series(components.of_direction(k), series);
+                }
+            }
+        }
+        self.sets.resize_with(transfers.len(), || SlowRecords {
+            wave_force: Default::default(),
+            damping: None,
+        });
+        for (set, transfers) in self.sets.iter_mut().zip(transfers) {
+            let with_damping = transfers.iter().any(|t| t.damping.is_some());
+            let mut force: [Vec<f64>; 3] =
+                std::array::from_fn(|i| take_samples(&mut set.wave_force[i]));
+            let mut damping: [[Vec<f64>; 3]; 3] = match &mut set.damping {
+                Some(d) => {
+                    std::array::from_fn(|i| std::array::from_fn(|j| take_samples(&mut d[i][j])))
+                }
+                None => Default::default(),
+            };
             for (k, transfer) in transfers.iter().enumerate() {
                 let amplitudes = components.of_direction(k);
-                let (s, e) = (&mut synth, &eta_c[k]);
-                builder.accumulate_force(s, form, amplitudes, e, transfer, &mut force);
-                builder.accumulate_damping(s, form, amplitudes, e, transfer, &mut damping);
+                let e = &work.eta_c[k];
+                builder.accumulate_force(synth, form, amplitudes, e, transfer, &mut force);
+                builder.accumulate_damping(synth, form, amplitudes, e, transfer, &mut damping);
             }
-            sets.push(SlowRecords {
-                wave_force: force.map(record_or_zero),
-                damping: with_damping.then(|| damping.map(|row| row.map(record_or_zero))),
-            });
+            set.wave_force = force.map(record_or_zero);
+            set.damping = with_damping.then(|| damping.map(|row| row.map(record_or_zero)));
         }
-        Ok(YawFollowingRecords { grid, sets })
     }
 
     /// Bytes held by the samples of every record.
@@ -234,6 +263,39 @@ impl YawFollowingRecords {
             .map(|r| std::mem::size_of_val(r.samples()))
             .sum()
     }
+}
+
+/// The buffers of yaw-following builds, kept from one build to the next (a stream's
+/// segments).
+#[derive(Default, Clone)]
+pub struct YawWork {
+    eta_c: Vec<Vec<Complex64>>,
+}
+
+/// The coefficients of every yaw theta_j of `grid` and every wave direction k, at the
+/// relative headings beta_k - theta_j (seed-independent: made once per plan). A table
+/// whose headings do not cover every relative heading is refused, naming the gap.
+pub fn yaw_transfers(
+    table: &DriftTable,
+    freq: &FrequencyGrid,
+    directions: &[Direction],
+    grid: &YawGrid,
+    with_damping: bool,
+) -> Result<Vec<Vec<DirectionTransfer>>> {
+    check_relative_headings(table, directions, grid)?;
+    (0..grid.len())
+        .map(|j| {
+            let theta = grid.yaw(j);
+            let relative: Vec<Direction> = directions
+                .iter()
+                .map(|d| Direction {
+                    heading: d.heading - theta,
+                    weight: d.weight,
+                })
+                .collect();
+            transfers_on_grid(table, freq, &relative, with_damping)
+        })
+        .collect()
 }
 
 /// Refuses a table that lacks a relative heading beta_k - theta_j, naming the uncovered

@@ -144,24 +144,33 @@ impl WaveComponents {
     /// independent of every other's and depend only on (seed, k). Block 0 is
     /// [`WaveComponents::generate`].
     pub fn generate_block(sea: &SeaState, grid: FrequencyGrid, k: u64) -> Self {
-        let directions = sea.directions();
+        let mut components = WaveComponents {
+            directions: sea.directions(),
+            grid,
+            amplitudes: Vec::new(),
+        };
+        components.regenerate(sea, k);
+        components
+    }
+
+    /// These components redrawn as block `k`'s of `sea` (the sea these were made for: same
+    /// directions and grid), in place: [`WaveComponents::generate_block`] without
+    /// allocating.
+    pub fn regenerate(&mut self, sea: &SeaState, k: u64) {
         let mut rng = Xoshiro256PlusPlus::seed_from_u64(sea.seed);
         for _ in 0..k {
             rng.jump();
         }
-        let mut amplitudes = Vec::with_capacity(directions.len() * grid.count);
-        for dir in &directions {
+        let grid = &self.grid;
+        self.amplitudes.clear();
+        for dir in &self.directions {
             for j in 0..grid.count {
                 let scale =
                     (sea.spectrum.density(grid.omega(j)) * dir.weight * grid.d_omega).sqrt();
                 let (xi, xi_prime) = standard_normal_pair(&mut rng);
-                amplitudes.push(Complex64::new(scale * xi, scale * xi_prime));
+                self.amplitudes
+                    .push(Complex64::new(scale * xi, scale * xi_prime));
             }
-        }
-        WaveComponents {
-            grid,
-            directions,
-            amplitudes,
         }
     }
 

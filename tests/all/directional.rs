@@ -71,12 +71,7 @@ fn cross_terms_by_fft_equal_the_direct_double_sum() {
     let n = 3;
     let comps = components(5, n, 150.0);
     let grid = &comps.grid;
-    let force = cross_direction_force(
-        &comps,
-        &linear_pairs(n),
-        &plan_inverse_fft(&comps.grid),
-        None,
-    );
+    let force = cross_direction_force(&comps, &linear_pairs(n), &plan_inverse_fft(&comps.grid));
     for (dof, record) in force.iter().enumerate() {
         assert_eq!(record.len(), grid.len);
         let scale = record.iter().fold(0.0f64, |m, v| m.max(v.abs()));
@@ -168,7 +163,7 @@ fn mean_force_is_the_diagonal_integral() {
         let band = (grid.omega(0), grid.omega(grid.count - 1));
         let heads: Vec<f64> = comps.directions.iter().map(|d| d.heading).collect();
         let pairs = source.pairs(&env, band, &heads).unwrap();
-        let f = &cross_direction_force(&comps, &pairs, &plan_inverse_fft(&comps.grid), None)[0];
+        let f = &cross_direction_force(&comps, &pairs, &plan_inverse_fft(&comps.grid))[0];
         let mean_cross = f.iter().sum::<f64>() / f.len() as f64;
         let var = f.iter().map(|v| (v - mean_cross).powi(2)).sum::<f64>() / f.len() as f64;
         cross_std = cross_std.max(var.sqrt());
@@ -245,7 +240,9 @@ fn none_and_one_direction_leave_the_records_unchanged() {
     // The first segment of the stream, as the simulation makes it.
     let mut join = slowdrift::forces::Join::new(sim.segments());
     join.begin(0, true);
-    let plain = ForceRecords::build(
+    let synth = slowdrift::forces::Synthesizer::new(&comps.grid).with_join(join);
+    let mut plain = ForceRecords::empty();
+    plain.rebuild(
         &comps,
         &transfers,
         &RecordOptions {
@@ -256,7 +253,7 @@ fn none_and_one_direction_leave_the_records_unchanged() {
             gravity: GRAVITY,
             fft: None,
         },
-        Some(&mut join),
+        &mut slowdrift::forces::RecordWork::new(synth, &comps.grid),
     );
     assert_eq!(sim.records(), &plain);
     assert!(direction_pairs(&config, &comps.grid, &comps.directions)

@@ -218,7 +218,6 @@ fn records(
             gravity: GRAVITY,
             fft: None,
         },
-        None,
     )
 }
 

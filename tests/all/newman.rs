@@ -112,7 +112,6 @@ fn build(
             gravity: GRAVITY,
             fft: None,
         },
-        None,
     );
     (components, transfers, records)
 }
@@ -213,7 +212,6 @@ fn mean_force_is_twice_the_integral_of_spectrum_times_drift() {
                 gravity: GRAVITY,
                 fft: None,
             },
-            None,
         );
         let f = records.wave_force[0].samples();
         mean_of_means += f.iter().sum::<f64>() / f.len() as f64 / seeds as f64;

@@ -132,7 +132,7 @@ fn steady_state_error(h: f64) -> f64 {
         gravity: config.environment.gravity,
         fft: None,
     };
-    let periodic = ForceRecords::build(&components, &transfers, &options, None);
+    let periodic = ForceRecords::build(&components, &transfers, &options);
     let exact = periodic_steady_state(periodic.wave_force[0].samples(), periodic.clock.dt);
     let steps = (duration / h).round() as usize;
     let (mut diff, mut norm) = (0.0, 0.0);

@@ -27,7 +27,7 @@ fn elevation(sea: &SeaState, duration: f64, dt: f64) -> (Vec<f64>, FrequencyGrid
         gravity: GRAVITY,
         fft: None,
     };
-    let records = ForceRecords::build(&components, &transfers, &options, None);
+    let records = ForceRecords::build(&components, &transfers, &options);
     (records.elevation.samples().to_vec(), grid)
 }
 

@@ -339,7 +339,6 @@ fn record_means_are_the_drift_at_the_relative_heading() {
         false,
         c.model.newman,
         &plan_inverse_fft(&grid),
-        None,
     )
     .unwrap();
     let segment = &sim.records().yaw_following.as_ref().unwrap().sets;
