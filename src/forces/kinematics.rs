@@ -137,7 +137,8 @@ pub struct KinematicsWork {
     tile: Vec<Complex32>,
     /// The key of every column, and the rows of the previous build to write again.
     keys: Vec<KinematicsKey>,
-    spare_rows: Vec<Vec<Complex32>>,
+    /// (Each held once; written in place when no other records hold it.)
+    spare_rows: Vec<Arc<Vec<Complex32>>>,
 }
 
 impl KinematicsWork {
@@ -161,8 +162,12 @@ impl KinematicsWork {
     ) {
         // The previous rows, one per group of columns that shared them.
         for previous in out.drain(..) {
-            if let Ok(rows) = Arc::try_unwrap(previous.rows) {
-                self.spare_rows.push(rows);
+            if !self
+                .spare_rows
+                .iter()
+                .any(|r| Arc::ptr_eq(r, &previous.rows))
+            {
+                self.spare_rows.push(previous.rows);
             }
         }
         if columns.is_empty() {
@@ -191,7 +196,7 @@ impl KinematicsWork {
             let shared = (0..c).find(|&d| self.keys[d] == self.keys[c]);
             let rows = match shared {
                 Some(d) => Arc::clone(&out[d].rows),
-                None => Arc::new(self.rows(components, column, strips, gravity, n, synth)),
+                None => self.rows(components, column, strips, gravity, n, synth),
             };
             out.push(ColumnKinematics {
                 column: column.clone(),
@@ -200,6 +205,8 @@ impl KinematicsWork {
                 rows,
             });
         }
+        // Room for these rows when the next build takes them back.
+        self.spare_rows.reserve(columns.len());
     }
 
     /// The rows of one column.
@@ -211,7 +218,7 @@ impl KinematicsWork {
         gravity: f64,
         n: usize,
         synth: &mut Synthesizer,
-    ) -> Vec<Complex32> {
+    ) -> Arc<Vec<Complex32>> {
         let grid = &components.grid;
         direction_sums(components, column, gravity, &mut self.sums);
         let [ax, ay, a] = &self.sums;
@@ -237,7 +244,12 @@ impl KinematicsWork {
             synthesize(&self.cx, &self.cy);
         }
         let mut rows = self.spare_rows.pop().unwrap_or_default();
-        transpose(&self.series, 1 + strips, n, &mut self.tile, &mut rows);
+        if Arc::get_mut(&mut rows).is_none() {
+            // Still held by records cloned from these (a cloned simulation): new rows.
+            rows = Arc::default();
+        }
+        let buffer = Arc::get_mut(&mut rows).expect("rows held only here");
+        transpose(&self.series, 1 + strips, n, &mut self.tile, buffer);
         rows
     }
 }

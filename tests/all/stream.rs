@@ -5,7 +5,7 @@
 //! increments.
 
 use crate::common::*;
-use crate::counting::live_bytes;
+use crate::counting::{allocations, live_bytes};
 use rustfft::num_complex::Complex64;
 use slowdrift::forces::{ForceRecords, Record};
 use slowdrift::hydro::qtf::{Qtf, QtfBlock};
@@ -147,6 +147,27 @@ fn any_segment_is_rebuilt_bit_for_bit_for_every_feature() {
 
         a.reset().unwrap();
         assert_eq!(trajectory(&mut a, 50), first, "{name}: reset");
+    }
+}
+
+/// Crossing a join allocates nothing, for every feature: the next segment is written into
+/// the buffers of the current one, and so is a segment made out of sequence on restore.
+#[test]
+fn segments_are_made_without_allocating() {
+    for (name, problem) in features() {
+        let mut sim = Simulation::new(problem).unwrap();
+        let snapshot = sim.snapshot();
+        let before = allocations();
+        for _ in 0..3000 {
+            sim.step([1.0e5, 0.0, 0.0]).unwrap();
+        }
+        sim.restore(&snapshot).unwrap();
+        let during = allocations() - before;
+        assert_eq!(sim.segment(), 0, "{name}");
+        assert_eq!(
+            during, 0,
+            "{name}: allocations over nine joins and a restore"
+        );
     }
 }
 
