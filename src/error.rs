@@ -29,7 +29,7 @@ pub enum Error {
     },
     /// An input handed to a running simulation is NaN or infinite.
     NonFiniteInput { field: String, value: f64 },
-    /// The simulation was asked to go past the end of its precomputed records.
+    /// A time past the last sample of a set of records (a segment read outside its span).
     BeyondRecord { time: f64, record_end: f64 },
     /// A time before the run's start, where there are no records.
     BeforeStart { time: f64, start: f64 },
@@ -60,8 +60,15 @@ impl Error {
     }
 }
 
-impl fmt::Display for Error {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+impl Error {
+    /// The message, with the setting whose change avoids the error (the errors of a running
+    /// simulation) named by `name` from its configuration-file key: `Display` names the key,
+    /// the FMU its parameter.
+    pub fn describe(
+        &self,
+        f: &mut fmt::Formatter<'_>,
+        name: &dyn Fn(&'static str) -> String,
+    ) -> fmt::Result {
         match self {
             Error::InvalidValue {
                 field,
@@ -95,8 +102,7 @@ impl fmt::Display for Error {
             }
             Error::BeyondRecord { time, record_end } => write!(
                 f,
-                "time {time} s is past the end of the precomputed records ({record_end} s); \
-                 increase run.duration"
+                "time {time} s is past the end of the records ({record_end} s)"
             ),
             Error::BeforeStart { time, start } => write!(
                 f,
@@ -104,17 +110,28 @@ impl fmt::Display for Error {
             ),
             Error::Diverged { time } => write!(
                 f,
-                "the state became non-finite at t = {time} s; reduce run.time_step"
+                "the state became non-finite at t = {time} s; reduce {}",
+                name("run.time_step")
             ),
             Error::YawOutsideRecords { time, yaw, covered } => write!(
                 f,
-                "yaw {:.4} deg at t = {time} s is outside the yaw-following records' range \
-                 [{:.4}, {:.4}] deg (never extrapolated); widen model.yaw_following.range_deg",
+                "yaw {yaw:.6} rad ({:.4} deg) at t = {time} s is outside the yaw-following \
+                 records' range [{:.6}, {:.6}] rad ([{:.4}, {:.4}] deg; never extrapolated); \
+                 widen {}",
                 yaw.to_degrees(),
+                covered.0,
+                covered.1,
                 covered.0.to_degrees(),
-                covered.1.to_degrees()
+                covered.1.to_degrees(),
+                name("model.yaw_following.range_deg")
             ),
         }
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        self.describe(f, &|key| key.to_string())
     }
 }
 

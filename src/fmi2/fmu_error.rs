@@ -3,6 +3,7 @@
 use super::machine::{Call, MachineState};
 use super::types::fmi2Status;
 use crate::error::Error;
+use crate::scenario::overrides;
 use std::fmt;
 
 /// Why a call failed; [`FmuError::status`] is the one place that picks the `fmi2Status`.
@@ -20,7 +21,8 @@ pub enum FmuError {
     /// required which cannot be retrieved by the slave it returns fmi2Discard"); the
     /// instance's state does not change.
     StatusUnavailable(String),
-    /// The step cannot be completed but the instance stays usable (end of the records).
+    /// The step cannot be completed but the instance stays usable (the yaw left the
+    /// yaw-following records).
     Discard(Error),
     /// A panic caught at the boundary.
     Panic(String),
@@ -51,11 +53,48 @@ impl fmt::Display for FmuError {
                 call.name()
             ),
             FmuError::Argument(m) => f.write_str(m),
-            FmuError::Core(e) => write!(f, "{e}"),
+            FmuError::Core(e) => e.describe(f, &fmu_name),
             FmuError::Unsupported(why) => write!(f, "not supported: {why}"),
             FmuError::StatusUnavailable(why) => write!(f, "status not available: {why}"),
-            FmuError::Discard(e) => write!(f, "step discarded: {e}"),
+            FmuError::Discard(e) => {
+                f.write_str("step discarded: ")?;
+                e.describe(f, &fmu_name)
+            }
             FmuError::Panic(m) => write!(f, "internal error (panic caught): {m}"),
         }
+    }
+}
+
+/// A setting as the FMU's user sets it: its parameter, else its configuration key (set in
+/// the `hydroDatabase` file).
+fn fmu_name(key: &'static str) -> String {
+    match overrides::by_key(key).and_then(|s| s.fmu) {
+        Some(parameter) => format!("the parameter {parameter}"),
+        None => format!("{key} (hydroDatabase file)"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A runtime error names its remedy by the FMU parameter; `Display` by the key.
+    #[test]
+    fn remedies_are_named_as_the_fmu_user_sets_them() {
+        let diverged = Error::Diverged { time: 3.0 };
+        assert!(diverged.to_string().ends_with("reduce run.time_step"));
+        let text = FmuError::Core(diverged).to_string();
+        assert!(text.ends_with("reduce the parameter stepSize"), "{text}");
+        let yaw = FmuError::Discard(Error::YawOutsideRecords {
+            time: 10.0,
+            yaw: 0.3,
+            covered: (-0.2, 0.2),
+        })
+        .to_string();
+        assert!(
+            yaw.starts_with("step discarded: yaw 0.300000 rad")
+                && yaw.ends_with("widen the parameter yawFollowingRange"),
+            "{yaw}"
+        );
     }
 }

@@ -148,6 +148,11 @@ pub fn by_fmu(name: &str) -> Option<&'static Setting> {
     SETTINGS.iter().find(|s| s.fmu == Some(name))
 }
 
+/// The setting with configuration-file key `key`.
+pub fn by_key(key: &str) -> Option<&'static Setting> {
+    SETTINGS.iter().find(|s| s.key == key)
+}
+
 /// The setting of case-table column `name`.
 pub fn by_column(name: &str) -> Option<&'static Setting> {
     SETTINGS.iter().find(|s| s.column == Some(name))
