@@ -16,6 +16,9 @@
 5. getFMUstate / setFMUstate: roll back and re-step gives identical outputs;
    serializeFMUstate / deSerializeFMUstate into a fresh instance continues identically.
 6. fmi2Reset reproduces the first run.
+7. An open-ended run: 48 h without a stop time (set_stop_time=False) runs past ten joins of
+   the record stream and equals, bit for bit, the same 48 h with the stop time set (the
+   records do not depend on the run's duration).
 """
 
 import concurrent.futures
@@ -114,6 +117,26 @@ def test_simulate_fmu_with_inputs(fmu, interval):
     # The oblique sea moves all three DOF.
     for name in ("X", "Y", "theta"):
         assert np.max(np.abs(res[name])) > 0.0, name
+
+
+def test_open_ended_run_equals_the_bounded_one(fmu):
+    hours = 48.0
+    stop = hours * 3600.0
+    zero = np.zeros(2, dtype=[("time", np.float64)] + [(n, np.float64) for n in INPUTS])
+    zero["time"] = [0.0, stop]
+    # Output every 60 s: each communication step is 60 whole RK4 steps of 1 s.
+    bounded = simulate(fmu, 60.0, dict(PARAMETERS), zero, stop=stop)
+    open_ended = simulate(fmu, 60.0, dict(PARAMETERS), zero, stop=stop, set_stop_time=False)
+    assert open_ended["time"][-1] == stop
+    for name in OUTPUTS:
+        assert np.all(np.isfinite(open_ended[name])), name
+        assert np.array_equal(open_ended[name], bounded[name]), name
+    # The platform keeps moving after the first join (16384 s) as before it.
+    late = open_ended["time"] > 16384.0
+    for name in ("X", "Y", "theta"):
+        early_std = np.std(open_ended[name][~late])
+        late_std = np.std(open_ended[name][late])
+        assert 0.3 < late_std / early_std < 3.0, (name, early_std, late_std)
 
 
 def test_constant_sway_force_offsets_by_f_over_k(fmu):

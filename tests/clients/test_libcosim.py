@@ -14,10 +14,10 @@ communicationStepSize 1.0 (both exact in binary), and the FMU's own time check
 
 What libcosim does differently from fmpy, found here (outside our control, libcosim 0.0.6's
 libcosimc):
-- it calls fmi2SetupExperiment without a stop time, so the FMU precomputes its records for
-  its documented six-hour maximum (README, "Time"); the fmpy reference therefore also runs
-  with set_stop_time=False. (With a stop time the records are shorter, the FFT length and so
-  the wave realisation differ: a different but equally valid sea.)
+- it calls fmi2SetupExperiment without a stop time: the run is open-ended (the FMU's
+  records stream without end) and the records are the same as with one, so the fmpy
+  reference sets its stop time. test_libcosim_two_days runs 48 h (past ten joins of the
+  record stream) and compares every minute with fmpy's 48 h.
 - it ignores Enumeration variables ("FMI 2.0 Enumeration variable type not supported,
   variable with name dragModel will be ignored", the same for driftDamping): those two
   parameters cannot be set from libcosim and keep their start values (combined drag, table
@@ -102,7 +102,7 @@ def test_libcosim_run_equals_fmpy(fmu, md):
     assert status.error_code == 0
 
     reference = simulate_fmu(fmu, start_time=0.0, stop_time=float(N_STEPS), output_interval=1.0,
-                             start_values=PARAMETERS, output=list(OUTPUTS), set_stop_time=False)
+                             start_values=PARAMETERS, output=list(OUTPUTS))
     assert np.array_equal(reference["time"], np.arange(N_STEPS + 1, dtype=float))
 
     for name in OBSERVED:
@@ -119,3 +119,34 @@ def test_libcosim_run_equals_fmpy(fmu, md):
     # A real run: the oblique sea moved the platform in all three DOF.
     for name in ("X", "Y", "theta"):
         assert np.max(np.abs(reference[name])) > 0.0, name
+
+
+def test_libcosim_two_days(fmu, md):
+    """48 h in libcosim (no stop time, 172800 steps of 1 s) equal fmpy's 48 h with a stop
+    time, sampled every minute, bit for bit."""
+    from fmpy import simulate_fmu
+    from libcosimpy.CosimEnums import CosimVariableType
+    from libcosimpy.CosimObserver import CosimObserver
+
+    steps = 48 * 3600
+    vr = {v.name: v for v in md.modelVariables}
+    ex, _slave, index = execution(fmu, md)
+    for name, value in PARAMETERS.items():
+        v = vr[name]
+        if v.type == "Real":
+            assert ex.real_initial_value(index, v.valueReference, float(value)), name
+        else:
+            assert ex.integer_initial_value(index, v.valueReference, int(value)), name
+    series = CosimObserver.create_time_series(buffer_size=steps + 1)
+    assert ex.add_observer(observer=series)
+    assert series.start_time_series(index, vr["X"].valueReference, CosimVariableType.REAL)
+    assert ex.simulate_until(target_time=steps * STEP_NS)
+    assert ex.status().error_code == 0
+
+    reference = simulate_fmu(fmu, start_time=0.0, stop_time=float(steps), output_interval=60.0,
+                             start_values=PARAMETERS, output=["X"])
+    _times, numbers, values = series.time_series_real_samples(
+        index, vr["X"].valueReference, from_step=1, sample_count=steps)
+    assert list(numbers[59::60]) == list(range(60, steps + 1, 60))
+    assert np.array_equal(np.array(values)[59::60], reference["X"][1:])
+    assert np.max(np.abs(reference["X"][reference["time"] > 16384.0])) > 0.0
