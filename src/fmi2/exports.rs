@@ -495,7 +495,7 @@ pub unsafe extern "C" fn fmi2SerializeFMUstate(
 ) -> fmi2Status {
     unsafe {
         with_instance(c, Call::SerializeFMUstate, |_| {
-            let bytes = fmu_state(FMUstate)?.to_bytes();
+            let bytes = fmu_state(FMUstate)?.to_bytes()?;
             if size < bytes.len() {
                 return Err(FmuError::Argument(format!(
                     "size = {size} is smaller than the state's {} bytes \

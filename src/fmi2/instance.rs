@@ -10,15 +10,15 @@
 use super::fmu_error::FmuError;
 use super::logger::{c_text, Logger};
 use super::machine::{Call, MachineState};
-use super::parameters::{Experiment, Parameters};
-use super::state::{fingerprint, mismatch, FmuState};
+use super::parameters::{Experiment, Parameters, MAX_STRING_BYTES};
+use super::state::{fingerprint, FmuState};
 use super::types::fmi2Status;
 use crate::error::Error;
 use crate::fmi2::model_description::{find, log_category, vr, Causality, VariableType, VARIABLES};
 use crate::problem::{resolve, Problem};
 use crate::simulation::{Outputs, Simulation};
 use std::ffi::CString;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Relative tolerance of the communication point against the internal time (and of the
 /// stop time), times max(1, |t|).
@@ -168,25 +168,19 @@ impl Instance {
         Ok(())
     }
 
-    /// The problem of the current parameters and experiment: the base scenario with the
-    /// parameters applied, resolved (its database read or its solver run).
+    /// The problem of the current parameters and experiment.
     fn problem(&self) -> Result<Problem, FmuError> {
-        let scenario = self
-            .parameters
-            .to_scenario(self.resources.as_deref(), &self.experiment)?;
-        Ok(resolve(&scenario)?)
+        Ok(problem_of(
+            &self.parameters,
+            self.resources.as_deref(),
+            &self.experiment,
+        )?)
     }
 
     /// The simulation, built now if needed.
     fn simulation(&mut self) -> Result<&mut Simulation, FmuError> {
         if self.built.is_none() {
-            let config = self.problem()?;
-            let fingerprint = fingerprint(&config);
-            let simulation = Simulation::new(config)?;
-            self.built = Some(Built {
-                simulation,
-                fingerprint,
-            });
+            self.built = Some(Built::new(self.problem()?)?);
         }
         Ok(&mut self.built.as_mut().expect("built above").simulation)
     }
@@ -407,10 +401,19 @@ impl Instance {
         Ok(&self.strings)
     }
 
+    /// `fmi2SetString`: a value longer than [`MAX_STRING_BYTES`] is refused (a saved state
+    /// could not carry it).
     pub fn set_string(&mut self, vrs: &[u32], values: &[&str]) -> Result<(), FmuError> {
-        for &vr in vrs {
+        for (&vr, value) in vrs.iter().zip(values) {
             let causality = self.variable(VariableType::String, vr)?;
             self.settable(causality, vr)?;
+            if value.len() > MAX_STRING_BYTES {
+                return Err(FmuError::Argument(format!(
+                    "{} is {} bytes long: at most {MAX_STRING_BYTES} bytes are accepted",
+                    name_of(VariableType::String, vr),
+                    value.len()
+                )));
+            }
         }
         for (&vr, &value) in vrs.iter().zip(values) {
             let p = self.parameters.string_mut(vr).expect("a String parameter");
@@ -439,6 +442,8 @@ impl Instance {
         };
         let state = FmuState {
             fingerprint: self.current_fingerprint()?,
+            parameters: self.parameters.clone(),
+            experiment: self.experiment,
             machine: self.state,
             terminated: self.terminated,
             last_successful_time: self.last_successful_time,
@@ -449,36 +454,87 @@ impl Instance {
         Ok(state)
     }
 
-    /// `fmi2SetFMUstate`: refused unless this instance's configuration is the state's.
+    /// `fmi2SetFMUstate`, in any instance (freshly instantiated, configured otherwise, in
+    /// Error): the state's parameters and experiment become the instance's (FMI 2.0.4
+    /// section 2.1.8: they are part of the FMU state). The records are this instance's when
+    /// they were built from the state's problem (same fingerprint: a rollback), else they
+    /// are rebuilt from the state's parameters, and the problem is refused, naming its base
+    /// (`hydroDatabase`, resources or the embedded default), when it is not the saved one
+    /// or cannot be built. Nothing changes before every check has passed.
     pub fn set_fmu_state(&mut self, state: &FmuState) -> Result<(), FmuError> {
-        let expected = self.current_fingerprint()?;
-        if state.fingerprint != expected {
-            return Err(mismatch(state.fingerprint, expected).into());
-        }
-        match &state.snapshot {
+        let reuse = self
+            .built
+            .as_ref()
+            .is_some_and(|b| b.fingerprint == state.fingerprint);
+        let (mut rebuilt, event) = if reuse {
+            (None, "state restored".to_string())
+        } else {
+            let resources = self.resources.as_deref();
+            let base = state.parameters.base(resources);
+            let problem = problem_of(&state.parameters, resources, &state.experiment);
+            let problem = state.check_problem(&base, problem)?;
+            let built = Built {
+                simulation: Simulation::new(problem)?,
+                fingerprint: state.fingerprint,
+            };
+            let event =
+                format!("state restored: records rebuilt from the state's parameters and {base}");
+            (Some(built), event)
+        };
+        let simulation = match &mut rebuilt {
+            Some(b) => &mut b.simulation,
+            None => &mut self.built.as_mut().expect("reused above").simulation,
+        };
+        let outputs = match &state.snapshot {
             Some(snapshot) => {
-                self.simulation()?.restore(snapshot)?;
-                self.refresh_outputs()?;
+                simulation.restore(snapshot)?;
+                Some(simulation.outputs()?)
             }
             None => {
-                if let Some(b) = &mut self.built {
-                    b.simulation.reset()?;
-                }
-                self.outputs = None;
+                simulation.reset()?;
+                None
             }
+        };
+        if rebuilt.is_some() {
+            self.built = rebuilt;
         }
+        self.outputs = outputs;
+        self.parameters = state.parameters.clone();
+        self.experiment = state.experiment;
         self.state = state.machine;
         self.terminated = state.terminated;
         self.last_successful_time = state.last_successful_time;
         self.inputs = state.inputs;
-        self.event("state restored");
+        self.event(&event);
         Ok(())
     }
 
-    /// `fmi2DeSerializeFMUstate`: checks the bytes against this instance's configuration.
+    /// `fmi2DeSerializeFMUstate`: reads and checks the bytes; whether the state's problem
+    /// can be rebuilt here is `fmi2SetFMUstate`'s check (see [`crate::fmi2::state`]).
     pub fn deserialize(&self, bytes: &[u8]) -> Result<FmuState, FmuError> {
-        Ok(FmuState::from_bytes(bytes, self.current_fingerprint()?)?)
+        Ok(FmuState::from_bytes(bytes)?)
     }
+}
+
+impl Built {
+    /// The simulation of `problem` (its records precomputed) and its fingerprint.
+    fn new(problem: Problem) -> Result<Built, FmuError> {
+        let fingerprint = fingerprint(&problem);
+        Ok(Built {
+            simulation: Simulation::new(problem)?,
+            fingerprint,
+        })
+    }
+}
+
+/// The problem of `parameters` and `experiment`: the base scenario with the parameters
+/// applied, resolved (its database read or its solver run).
+fn problem_of(
+    parameters: &Parameters,
+    resources: Option<&Path>,
+    experiment: &Experiment,
+) -> crate::error::Result<Problem> {
+    resolve(&parameters.to_scenario(resources, experiment)?)
 }
 
 fn start_inputs() -> [f64; 3] {

@@ -28,6 +28,11 @@ use std::path::{Path, PathBuf};
 /// The FMU parameter that names the base configuration file (not a setting of the table).
 pub const HYDRO_DATABASE: &str = "hydroDatabase";
 
+/// The longest String parameter value, in bytes of UTF-8: `fmi2SetString` refuses a longer
+/// one, and a saved state's bytes may not claim a longer one (so a damaged length is refused
+/// before anything is allocated). Far above any path a file system opens (Linux: 4096).
+pub const MAX_STRING_BYTES: usize = 65_536;
+
 /// The value of one FMU parameter.
 #[derive(Debug, Clone, PartialEq)]
 pub enum FmuValue {
@@ -67,6 +72,11 @@ impl Default for Parameters {
 }
 
 impl Parameters {
+    /// The parameters of modelDescription.xml, in its order (the order of [`Parameters::iter`]).
+    pub fn variables() -> impl Iterator<Item = &'static VariableInfo> {
+        parameter_variables()
+    }
+
     fn index(&self, ty: VariableType, vr: u32) -> Option<usize> {
         parameter_variables()
             .position(|v| v.var_type.access_type() == ty && v.value_reference == vr)
@@ -205,25 +215,64 @@ impl Parameters {
         Ok(c)
     }
 
-    fn base_scenario(&self, resources: Option<&Path>) -> Result<Scenario> {
+    /// Where the base scenario of these parameters comes from (see the module documentation).
+    pub fn base(&self, resources: Option<&Path>) -> Base<'_> {
         let named = self.hydro_database();
         if !named.is_empty() {
-            let path = if named.starts_with("file:") {
-                file_uri_to_path(named).ok_or_else(|| {
-                    Error::invalid(HYDRO_DATABASE, named, "is not a local file URI")
-                })?
-            } else {
-                PathBuf::from(named)
-            };
-            return file::load(&path);
+            return Base::Database(named);
         }
-        if let Some(path) = resources
+        match resources
             .map(|r| r.join(RESOURCE_CONFIG))
             .filter(|p| p.is_file())
         {
-            return file::load(&path);
+            Some(path) => Base::Resources(path),
+            None => Base::Embedded,
         }
-        default::default_scenario()
+    }
+
+    fn base_scenario(&self, resources: Option<&Path>) -> Result<Scenario> {
+        match self.base(resources) {
+            Base::Database(named) => {
+                let path = if named.starts_with("file:") {
+                    file_uri_to_path(named).ok_or_else(|| {
+                        Error::invalid(HYDRO_DATABASE, named, "is not a local file URI")
+                    })?
+                } else {
+                    PathBuf::from(named)
+                };
+                file::load(&path)
+            }
+            Base::Resources(path) => file::load(&path),
+            Base::Embedded => default::default_scenario(),
+        }
+    }
+}
+
+/// Where the base scenario comes from, in the order of preference of the module
+/// documentation; its `Display` names it for messages.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Base<'a> {
+    /// `hydroDatabase`, as the master wrote it (a path or a `file:` URI).
+    Database(&'a str),
+    /// `platform.toml` in the FMU's `resources` folder.
+    Resources(PathBuf),
+    /// The embedded default platform.
+    Embedded,
+}
+
+impl std::fmt::Display for Base<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Base::Database(named) => write!(f, "{HYDRO_DATABASE} = {named}"),
+            Base::Resources(path) => {
+                write!(
+                    f,
+                    "the FMU's resources/{RESOURCE_CONFIG} ({})",
+                    path.display()
+                )
+            }
+            Base::Embedded => f.write_str("the embedded default platform"),
+        }
     }
 }
 

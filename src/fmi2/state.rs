@@ -1,25 +1,49 @@
 //! Saved FMU states (`fmi2GetFMUstate`) and their byte format (`fmi2SerializeFMUstate`).
 //!
+//! A state stands alone (FMI 2.0.4 section 2.1.8 counts the parameter values as part of the
+//! FMU state): it carries every parameter's value and the experiment, so that it restores
+//! in an instance straight after `fmi2Instantiate`, before any `fmi2Set*`, as fmusim
+//! restores one (`--initial-fmu-state-file`), or in an instance configured otherwise; the
+//! instance takes the state's parameters and experiment as its own.
+//!
 //! Bytes, all little-endian, no padding, nothing position-dependent:
 //!
 //! | bytes | field |
 //! |---|---|
 //! | 4 | magic `SDFS` |
 //! | 4 | format version (u32, [`FORMAT_VERSION`]) |
-//! | 8 | fingerprint of the configuration (u64, [`fingerprint`]) |
-//! | 1 | instance state ([`MachineState::code`]) |
+//! | 8 | fingerprint of the resolved problem (u64, [`fingerprint`]) |
+//! | 1 | instance state ([`MachineState::code`]; never Error) |
 //! | 1 | terminated flag (0 or 1) |
-//! | 1 | 1 when a simulation snapshot follows, else 0 |
-//! | 8 | last successful time (f64) |
-//! | 24 | inputs Fx_ext, Fy_ext, Mz_ext (3 f64) |
+//! | 1 | 1 when a simulation snapshot follows the parameters, else 0 |
+//! | 8 | last successful time (f64, finite) |
+//! | 24 | inputs Fx_ext, Fy_ext, Mz_ext (3 f64, finite) |
+//! | 8 | experiment start time (f64, finite) |
+//! | 1 | 1 when the experiment has a stop time, else 0 |
+//! | 8 | stop time (f64, finite and after the start time; all bits 0 without a stop time) |
+//! | 4 | number of parameters (u32): modelDescription.xml's, which the reader requires |
+//! | ... | each parameter in the XML's order: its value reference (u32), its type (one byte: `R` Real, `I` Integer or Enumeration, `S` String), its value: Real 8 bytes (f64, finite), Integer 4 bytes (i32), String a length (u32, at most [`MAX_STRING_BYTES`]) and that many bytes of UTF-8 without NUL |
 //! | 96 | the snapshot, when present ([`Snapshot::to_bytes`]) |
+//! | 8 | checksum: FNV-1a (u64) of every byte before it |
 //!
-//! The records are not saved: they are a pure function of the configuration, which the
-//! restoring instance rebuilds from its own parameters. The fingerprint makes sure these are
-//! the same: a state from a differently configured instance is refused.
+//! The records are not saved: they are a pure function of the parameters, the experiment
+//! and the base configuration they name (`hydroDatabase`, the FMU's resources or the
+//! embedded default). The restoring instance rebuilds them (`fmi2SetFMUstate`; unless the
+//! records it has were built from the same problem) and compares the fingerprint of the
+//! problem it resolves with the saved one. The fingerprint covers the data read from the
+//! files, not their paths, so a `hydroDatabase` file whose content changed since the save,
+//! or that cannot be read, refuses the state, and the message says which file.
+//!
+//! `fmi2DeSerializeFMUstate` only reads and checks the bytes ([`FmuState::from_bytes`]: the
+//! magic, the version, the checksum, every length and flag, finite values where the table
+//! says so, the parameters against modelDescription.xml); resolving the problem (reading
+//! files, running solvers) is deferred to `fmi2SetFMUstate`, which fmusim and fmpy call
+//! right after, so that it happens once.
 
 use super::machine::MachineState;
+use super::parameters::{Base, Experiment, FmuValue, Parameters, MAX_STRING_BYTES};
 use crate::error::{Error, Result};
+use crate::fmi2::model_description::VariableType;
 use crate::problem::Problem;
 use crate::simulation::Snapshot;
 
@@ -27,14 +51,25 @@ use crate::simulation::Snapshot;
 pub const MAGIC: [u8; 4] = *b"SDFS";
 /// Version of the byte format; a state of any other version is refused. Version 2: the
 /// fingerprint is the serde-JSON FNV-1a of the problem (version 1 hashed its `Debug` text).
-pub const FORMAT_VERSION: u32 = 2;
-/// Bytes before the optional snapshot.
-const HEADER_BYTES: usize = 4 + 4 + 8 + 3 + 8 + 24;
+/// Version 3: the state carries the parameters and the experiment, and a checksum.
+pub const FORMAT_VERSION: u32 = 3;
+/// Bytes of the fixed fields before the parameters (magic to the parameter count).
+const FIXED_BYTES: usize = 4 + 4 + 8 + 3 + 8 + 24 + 8 + 1 + 8 + 4;
+/// Bytes of the checksum at the end.
+const CHECKSUM_BYTES: usize = 8;
+
+/// Type bytes of the parameters.
+const REAL: u8 = b'R';
+const INTEGER: u8 = b'I';
+const STRING: u8 = b'S';
 
 /// Everything an instance needs to continue from a saved point.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FmuState {
+    /// Of the problem the parameters and the experiment resolved to when saved.
     pub fingerprint: u64,
+    pub parameters: Parameters,
+    pub experiment: Experiment,
     pub machine: MachineState,
     pub terminated: bool,
     pub last_successful_time: f64,
@@ -46,11 +81,27 @@ pub struct FmuState {
 impl FmuState {
     /// Length of [`FmuState::to_bytes`].
     pub fn byte_len(&self) -> usize {
-        HEADER_BYTES + self.snapshot.as_ref().map_or(0, |_| Snapshot::BYTES)
+        let parameters: usize = self
+            .parameters
+            .iter()
+            .map(|(_, value)| {
+                4 + 1
+                    + match value {
+                        FmuValue::Real(_) => 8,
+                        FmuValue::Integer(_) => 4,
+                        FmuValue::String(s) => 4 + s.len(),
+                    }
+            })
+            .sum();
+        FIXED_BYTES
+            + parameters
+            + self.snapshot.as_ref().map_or(0, |_| Snapshot::BYTES)
+            + CHECKSUM_BYTES
     }
 
-    /// The byte format of the module documentation.
-    pub fn to_bytes(&self) -> Vec<u8> {
+    /// The byte format of the module documentation. Errors for a String parameter longer
+    /// than [`MAX_STRING_BYTES`] (which `fmi2SetString` does not let in).
+    pub fn to_bytes(&self) -> Result<Vec<u8>> {
         let mut out = Vec::with_capacity(self.byte_len());
         out.extend_from_slice(&MAGIC);
         out.extend_from_slice(&FORMAT_VERSION.to_le_bytes());
@@ -62,66 +113,142 @@ impl FmuState {
         for v in self.inputs {
             out.extend_from_slice(&v.to_le_bytes());
         }
+        out.extend_from_slice(&self.experiment.start_time.to_le_bytes());
+        out.push(u8::from(self.experiment.stop_time.is_some()));
+        out.extend_from_slice(&self.experiment.stop_time.unwrap_or(0.0).to_le_bytes());
+        let count = u32::try_from(Parameters::variables().count()).expect("a few parameters");
+        out.extend_from_slice(&count.to_le_bytes());
+        for (info, value) in self.parameters.iter() {
+            out.extend_from_slice(&info.value_reference.to_le_bytes());
+            match value {
+                FmuValue::Real(x) => {
+                    out.push(REAL);
+                    out.extend_from_slice(&x.to_le_bytes());
+                }
+                FmuValue::Integer(i) => {
+                    out.push(INTEGER);
+                    out.extend_from_slice(&i.to_le_bytes());
+                }
+                FmuValue::String(s) => {
+                    if s.len() > MAX_STRING_BYTES {
+                        return Err(Error::invalid(
+                            format!("FMU parameter {}", info.name),
+                            format!("a text of {} bytes", s.len()),
+                            format!("is longer than {MAX_STRING_BYTES} bytes"),
+                        ));
+                    }
+                    out.push(STRING);
+                    let len = u32::try_from(s.len()).expect("bounded above");
+                    out.extend_from_slice(&len.to_le_bytes());
+                    out.extend_from_slice(s.as_bytes());
+                }
+            }
+        }
         if let Some(s) = &self.snapshot {
             out.extend_from_slice(&s.to_bytes());
         }
-        out
+        let checksum = crate::fingerprint::of_bytes(&out);
+        out.extend_from_slice(&checksum.to_le_bytes());
+        debug_assert_eq!(out.len(), self.byte_len());
+        Ok(out)
     }
 
-    /// Reads [`FmuState::to_bytes`]; refuses a wrong magic, version or length, or a
-    /// fingerprint other than `expected_fingerprint` (the restoring instance's).
-    pub fn from_bytes(bytes: &[u8], expected_fingerprint: u64) -> Result<FmuState> {
-        let refuse = |value: String, reason: &str| Error::invalid("FMU state", value, reason);
-        if bytes.len() < HEADER_BYTES {
+    /// Reads [`FmuState::to_bytes`], checking everything the bytes alone can tell: the magic,
+    /// the version, the checksum, each flag, length and type, finite values where the
+    /// format says so, the experiment's rules, and the parameters' value references and
+    /// types against modelDescription.xml. Whether the parameters still resolve to the
+    /// saved problem is [`FmuState::check_problem`]'s question.
+    pub fn from_bytes(bytes: &[u8]) -> Result<FmuState> {
+        if bytes.len() < 8 {
             return Err(refuse(
                 format!("{} bytes", bytes.len()),
-                "is truncated: shorter than the header",
+                "is truncated: shorter than its magic and version",
             ));
         }
-        let (header, rest) = bytes.split_at(HEADER_BYTES);
-        if header[..4] != MAGIC {
+        if bytes[..4] != MAGIC {
             return Err(refuse(
-                format!("{:?}", &header[..4]),
+                format!("{:?}", &bytes[..4]),
                 "does not start with SDFS: not a SlowDrift state",
             ));
         }
-        let version = u32::from_le_bytes(header[4..8].try_into().expect("4 bytes"));
+        let version = u32::from_le_bytes(bytes[4..8].try_into().expect("4 bytes"));
         if version != FORMAT_VERSION {
             return Err(refuse(
                 format!("format version {version}"),
                 &format!("is not this library's format version {FORMAT_VERSION}"),
             ));
         }
-        let fingerprint = u64::from_le_bytes(header[8..16].try_into().expect("8 bytes"));
-        if fingerprint != expected_fingerprint {
-            return Err(mismatch(fingerprint, expected_fingerprint));
+        if bytes.len() < FIXED_BYTES + CHECKSUM_BYTES {
+            return Err(refuse(
+                format!("{} bytes", bytes.len()),
+                &format!(
+                    "is truncated: shorter than its fixed fields and checksum ({} bytes)",
+                    FIXED_BYTES + CHECKSUM_BYTES
+                ),
+            ));
         }
-        let machine = MachineState::from_code(header[16])
-            .ok_or_else(|| refuse(format!("state code {}", header[16]), "is unknown"))?;
-        let flag = |b: u8, name: &str| match b {
-            0 => Ok(false),
-            1 => Ok(true),
-            other => Err(refuse(format!("{name} = {other}"), "must be 0 or 1")),
+        let (body, checksum) = bytes.split_at(bytes.len() - CHECKSUM_BYTES);
+        let saved = u64::from_le_bytes(checksum.try_into().expect("8 bytes"));
+        let computed = crate::fingerprint::of_bytes(body);
+        if saved != computed {
+            return Err(refuse(
+                format!("checksum {saved:016x}"),
+                &format!(
+                    "does not match its {} bytes (checksum {computed:016x}): the state was \
+                     altered, truncated or extended",
+                    bytes.len()
+                ),
+            ));
+        }
+        let mut r = Reader { bytes: body, at: 8 };
+        let fingerprint = r.u64("fingerprint")?;
+        let code = r.u8("instance state")?;
+        let machine = MachineState::from_code(code)
+            .ok_or_else(|| refuse(format!("instance state code {code}"), "is unknown"))?;
+        let terminated = r.flag("terminated flag")?;
+        let has_snapshot = r.flag("snapshot flag")?;
+        let last_successful_time = r.finite("last successful time")?;
+        let inputs = [
+            r.finite("input Fx_ext")?,
+            r.finite("input Fy_ext")?,
+            r.finite("input Mz_ext")?,
+        ];
+        let start_time = r.finite("startTime")?;
+        let has_stop = r.flag("stop time flag")?;
+        let stop_at = r.at;
+        let stop_bits = r.u64("stopTime")?;
+        let stop_time = if has_stop {
+            Some(f64::from_bits(stop_bits))
+        } else if stop_bits != 0 {
+            return Err(refuse(
+                format!("stopTime bits {stop_bits:016x} at byte {stop_at}"),
+                "must be 0 when the stop time flag is 0",
+            ));
+        } else {
+            None
         };
-        let terminated = flag(header[17], "terminated")?;
-        let has_snapshot = flag(header[18], "snapshot flag")?;
-        let real = |at: usize| f64::from_le_bytes(header[at..at + 8].try_into().expect("8"));
-        let last_successful_time = real(19);
-        let inputs = [real(27), real(35), real(43)];
-        let snapshot = match (has_snapshot, rest.len()) {
-            (false, 0) => None,
-            (true, Snapshot::BYTES) => Some(Snapshot::from_bytes(rest)?),
-            (_, n) => {
-                return Err(refuse(
-                    format!("{} bytes", bytes.len()),
-                    &format!(
-                        "has {n} bytes after the header, which does not match its snapshot flag"
-                    ),
-                ))
-            }
+        let experiment = Experiment::new(start_time, stop_time)
+            .map_err(|e| refuse("its experiment".to_string(), &e.to_string()))?;
+        let parameters = r.parameters()?;
+        let snapshot = if has_snapshot {
+            Some(Snapshot::from_bytes(r.take(Snapshot::BYTES, "snapshot")?)?)
+        } else {
+            None
         };
+        if r.at != body.len() {
+            return Err(refuse(
+                format!("{} bytes", bytes.len()),
+                &format!(
+                    "has {} bytes between its last field (ending at byte {}) and its checksum",
+                    body.len() - r.at,
+                    r.at
+                ),
+            ));
+        }
         Ok(FmuState {
             fingerprint,
+            parameters,
+            experiment,
             machine,
             terminated,
             last_successful_time,
@@ -129,18 +256,190 @@ impl FmuState {
             snapshot,
         })
     }
+
+    /// Checks that `problem`, built now from this state's parameters and experiment on
+    /// `base`, is the one the state was saved with; `problem` is `Err` when it could not be
+    /// built (a file that cannot be read now). The error names `base`.
+    pub fn check_problem(&self, base: &Base, problem: Result<Problem>) -> Result<Problem> {
+        let saved = self.fingerprint;
+        let problem = problem.map_err(|e| {
+            let why = match &e {
+                Error::Io { .. } => "which cannot be read now",
+                _ => "which no longer gives a valid configuration with the state's parameters",
+            };
+            refuse(
+                format!("fingerprint {saved:016x}"),
+                &format!("was saved with {base}, {why}: {e}"),
+            )
+        })?;
+        let now = fingerprint(&problem);
+        if now == saved {
+            return Ok(problem);
+        }
+        let reason = match base {
+            Base::Database(_) => format!(
+                "was saved with {base} whose content at the save differs from what that file \
+                 holds now (fingerprint {now:016x}); restore it where that file holds the data \
+                 it was saved with"
+            ),
+            Base::Resources(_) => format!(
+                "was saved with another configuration than what {base} gives with the state's \
+                 parameters (fingerprint {now:016x}): the state comes from another FMU or \
+                 another build of SlowDrift"
+            ),
+            Base::Embedded => format!(
+                "was saved with another configuration than what {base} gives with the state's \
+                 parameters (fingerprint {now:016x}): this instance has no resources/\
+                 platform.toml, or the state comes from another build of SlowDrift"
+            ),
+        };
+        Err(refuse(format!("fingerprint {saved:016x}"), &reason))
+    }
 }
 
-/// The error for a state taken with another configuration.
-pub fn mismatch(found: u64, expected: u64) -> Error {
-    Error::invalid(
-        "FMU state fingerprint",
-        format!("{found:016x}"),
-        format!(
-            "was saved with another configuration (this instance: {expected:016x}); \
-             set the same parameters and hydroDatabase first"
-        ),
-    )
+/// The error for a state's bytes or content.
+fn refuse(value: String, reason: &str) -> Error {
+    Error::invalid("FMU state", value, reason)
+}
+
+/// Reads the fields of the state's bytes in order; every read names its field and offset.
+struct Reader<'a> {
+    bytes: &'a [u8],
+    at: usize,
+}
+
+impl<'a> Reader<'a> {
+    fn take(&mut self, n: usize, what: &str) -> Result<&'a [u8]> {
+        let left = self.bytes.len() - self.at;
+        if n > left {
+            return Err(refuse(
+                format!("{what} at byte {}", self.at),
+                &format!("needs {n} bytes but only {left} are left before the checksum"),
+            ));
+        }
+        let field = &self.bytes[self.at..self.at + n];
+        self.at += n;
+        Ok(field)
+    }
+
+    fn array<const N: usize>(&mut self, what: &str) -> Result<[u8; N]> {
+        Ok(self.take(N, what)?.try_into().expect("N bytes"))
+    }
+
+    fn u8(&mut self, what: &str) -> Result<u8> {
+        Ok(self.array::<1>(what)?[0])
+    }
+
+    fn u32(&mut self, what: &str) -> Result<u32> {
+        Ok(u32::from_le_bytes(self.array(what)?))
+    }
+
+    fn u64(&mut self, what: &str) -> Result<u64> {
+        Ok(u64::from_le_bytes(self.array(what)?))
+    }
+
+    fn flag(&mut self, what: &str) -> Result<bool> {
+        let at = self.at;
+        match self.u8(what)? {
+            0 => Ok(false),
+            1 => Ok(true),
+            other => Err(refuse(
+                format!("{what} = {other} at byte {at}"),
+                "must be 0 or 1",
+            )),
+        }
+    }
+
+    fn finite(&mut self, what: &str) -> Result<f64> {
+        let at = self.at;
+        let x = f64::from_le_bytes(self.array(what)?);
+        if x.is_finite() {
+            Ok(x)
+        } else {
+            Err(refuse(
+                format!("{what} = {x} at byte {at}"),
+                "must be a finite number",
+            ))
+        }
+    }
+
+    /// The parameters, checked against modelDescription.xml's.
+    fn parameters(&mut self) -> Result<Parameters> {
+        let expected = Parameters::variables().count();
+        let at = self.at;
+        let count = self.u32("number of parameters")?;
+        if usize::try_from(count).ok() != Some(expected) {
+            return Err(refuse(
+                format!("{count} parameters at byte {at}"),
+                &format!("must be this FMU's {expected}: the state comes from another FMU"),
+            ));
+        }
+        let mut parameters = Parameters::default();
+        for info in Parameters::variables() {
+            let name = info.name;
+            let at = self.at;
+            let vr = self.u32(&format!("value reference of {name}"))?;
+            if vr != info.value_reference {
+                return Err(refuse(
+                    format!("value reference {vr} at byte {at}"),
+                    &format!(
+                        "must be {name}'s {}: the state comes from another FMU",
+                        info.value_reference
+                    ),
+                ));
+            }
+            let at = self.at;
+            let tag = self.u8(&format!("type of {name}"))?;
+            let wanted = match info.var_type.access_type() {
+                VariableType::Real => REAL,
+                VariableType::String => STRING,
+                _ => INTEGER,
+            };
+            if tag != wanted {
+                return Err(refuse(
+                    format!("type byte {tag} of {name} at byte {at}"),
+                    &format!("must be {wanted} ({})", char::from(wanted)),
+                ));
+            }
+            let value = match tag {
+                REAL => FmuValue::Real(self.finite(name)?),
+                INTEGER => FmuValue::Integer(i32::from_le_bytes(self.array(name)?)),
+                _ => FmuValue::String(self.text(name)?),
+            };
+            assert!(parameters.set(name, value), "the type was checked");
+        }
+        Ok(parameters)
+    }
+
+    /// A length-prefixed UTF-8 text: the length is bounded before anything is allocated.
+    fn text(&mut self, name: &str) -> Result<String> {
+        let at = self.at;
+        let len = self.u32(&format!("length of {name}"))?;
+        let len = usize::try_from(len)
+            .ok()
+            .filter(|&n| n <= MAX_STRING_BYTES)
+            .ok_or_else(|| {
+                refuse(
+                    format!("length {len} of {name} at byte {at}"),
+                    &format!("is more than {MAX_STRING_BYTES} bytes"),
+                )
+            })?;
+        let at = self.at;
+        let raw = self.take(len, name)?;
+        let text = std::str::from_utf8(raw).map_err(|e| {
+            refuse(
+                format!("{name} at byte {at}"),
+                &format!("is not UTF-8: {e}"),
+            )
+        })?;
+        if text.contains('\0') {
+            return Err(refuse(
+                format!("{name} at byte {at}"),
+                "contains a NUL character, which no C string can",
+            ));
+        }
+        Ok(text.to_string())
+    }
 }
 
 /// The [`crate::fingerprint`] of the problem: any change to anything that determines the
@@ -158,8 +457,15 @@ mod tests {
     use crate::scenario::default::default_scenario;
 
     fn state(snapshot: bool) -> FmuState {
+        let mut parameters = Parameters::default();
+        assert!(parameters.set("Hs", FmuValue::Real(5.25)));
+        assert!(parameters.set("seed", FmuValue::Integer(-7)));
+        assert!(parameters.set("dragModel", FmuValue::Integer(1)));
+        assert!(parameters.set("hydroDatabase", FmuValue::String("/tmp/é x.toml".into())));
         FmuState {
             fingerprint: 0x0123_4567_89ab_cdef,
+            parameters,
+            experiment: Experiment::new(-3.0, Some(1e4)).unwrap(),
             machine: MachineState::StepComplete,
             terminated: true,
             last_successful_time: 12.5,
@@ -168,45 +474,210 @@ mod tests {
         }
     }
 
+    /// Recomputes the checksum after a change of `bytes`, so that a test reaches the check
+    /// behind it.
+    fn reseal(bytes: &mut [u8]) {
+        let n = bytes.len() - CHECKSUM_BYTES;
+        let sum = crate::fingerprint::of_bytes(&bytes[..n]);
+        bytes[n..].copy_from_slice(&sum.to_le_bytes());
+    }
+
+    /// Offset of the first byte of parameter `name`'s value (after its reference and type).
+    fn value_offset(s: &FmuState, name: &str) -> usize {
+        let mut at = FIXED_BYTES;
+        for (info, value) in s.parameters.iter() {
+            at += 5;
+            if info.name == name {
+                return at;
+            }
+            at += match value {
+                FmuValue::Real(_) => 8,
+                FmuValue::Integer(_) => 4,
+                FmuValue::String(t) => 4 + t.len(),
+            };
+        }
+        panic!("no parameter {name}");
+    }
+
     #[test]
-    fn bytes_round_trip_with_and_without_snapshot() {
+    fn bytes_round_trip_with_and_without_snapshot_and_stop_time() {
         for with in [false, true] {
-            let s = state(with);
-            let bytes = s.to_bytes();
-            assert_eq!(bytes.len(), s.byte_len());
-            assert_eq!(&bytes[..4], b"SDFS");
-            assert_eq!(FmuState::from_bytes(&bytes, s.fingerprint).unwrap(), s);
+            for stop in [None, Some(7.5)] {
+                let mut s = state(with);
+                s.experiment = Experiment::new(-3.0, stop).unwrap();
+                let bytes = s.to_bytes().unwrap();
+                assert_eq!(bytes.len(), s.byte_len());
+                assert_eq!(&bytes[..4], b"SDFS");
+                assert_eq!(&bytes[4..8], &FORMAT_VERSION.to_le_bytes());
+                let back = FmuState::from_bytes(&bytes).unwrap();
+                assert_eq!(back, s);
+                assert_eq!(back.parameters.hydro_database(), "/tmp/é x.toml");
+            }
+        }
+    }
+
+    /// The documented layout, field by field, at the documented offsets.
+    #[test]
+    fn layout_is_the_documented_one() {
+        let s = state(true);
+        let b = s.to_bytes().unwrap();
+        let u64_at = |at: usize| u64::from_le_bytes(b[at..at + 8].try_into().unwrap());
+        let f64_at = |at: usize| f64::from_bits(u64_at(at));
+        assert_eq!(u64_at(8), s.fingerprint);
+        assert_eq!(
+            (b[16], b[17], b[18]),
+            (MachineState::StepComplete.code(), 1, 1)
+        );
+        assert_eq!(f64_at(19), 12.5);
+        assert_eq!([f64_at(27), f64_at(35), f64_at(43)], s.inputs);
+        assert_eq!((f64_at(51), b[59], f64_at(60)), (-3.0, 1, 1e4));
+        let count = u32::from_le_bytes(b[68..72].try_into().unwrap()) as usize;
+        assert_eq!(count, Parameters::variables().count());
+        let first = Parameters::variables().next().unwrap();
+        assert_eq!(
+            u32::from_le_bytes(b[72..76].try_into().unwrap()),
+            first.value_reference
+        );
+        let hs = value_offset(&s, "Hs");
+        assert_eq!((b[hs - 1], f64_at(hs)), (REAL, 5.25));
+        let seed = value_offset(&s, "seed");
+        assert_eq!(b[seed - 1], INTEGER);
+        assert_eq!(
+            i32::from_le_bytes(b[seed..seed + 4].try_into().unwrap()),
+            -7
+        );
+        let db = value_offset(&s, "hydroDatabase");
+        let len = u32::from_le_bytes(b[db..db + 4].try_into().unwrap()) as usize;
+        assert_eq!((b[db - 1], len), (STRING, "/tmp/é x.toml".len()));
+        assert_eq!(&b[db + 4..db + 4 + len], "/tmp/é x.toml".as_bytes());
+        let n = b.len();
+        assert_eq!(
+            &b[n - 8 - Snapshot::BYTES..n - 8],
+            &s.snapshot.as_ref().unwrap().to_bytes()
+        );
+        assert_eq!(u64_at(n - 8), crate::fingerprint::of_bytes(&b[..n - 8]));
+    }
+
+    #[test]
+    fn damaged_bytes_are_refused_naming_the_field() {
+        let s = state(true);
+        let good = s.to_bytes().unwrap();
+        let mut cases: Vec<(Vec<u8>, &str)> = vec![
+            (good[..good.len() - 1].to_vec(), "checksum"),
+            (good[..6].to_vec(), "truncated"),
+            (good[..20].to_vec(), "truncated"),
+            ([good.clone(), vec![0]].concat(), "checksum"),
+            (Vec::new(), "truncated"),
+        ];
+        // Changed and resealed: the check behind the checksum answers.
+        let mut patch = |at: usize, value: &[u8], needle: &'static str| {
+            let mut b = good.clone();
+            b[at..at + value.len()].copy_from_slice(value);
+            if at >= 8 {
+                reseal(&mut b);
+            }
+            cases.push((b, needle));
+        };
+        patch(0, b"X", "SDFS");
+        patch(4, &(FORMAT_VERSION + 1).to_le_bytes(), "format version 4");
+        patch(4, &2u32.to_le_bytes(), "format version 2");
+        patch(16, &[99], "instance state code 99");
+        patch(16, &[MachineState::Error.code()], "instance state code");
+        patch(17, &[2], "terminated flag = 2");
+        patch(18, &[0], "between its last field");
+        patch(19, &f64::NAN.to_le_bytes(), "last successful time");
+        patch(35, &f64::INFINITY.to_le_bytes(), "input Fy_ext");
+        patch(51, &f64::NAN.to_le_bytes(), "startTime");
+        patch(59, &[0], "stopTime bits");
+        patch(60, &(-4.0f64).to_le_bytes(), "stopTime");
+        patch(68, &3u32.to_le_bytes(), "3 parameters");
+        patch(72, &99_999u32.to_le_bytes(), "value reference 99999");
+        let hs = value_offset(&s, "Hs");
+        patch(hs - 1, b"I", "type byte");
+        patch(hs, &f64::NEG_INFINITY.to_le_bytes(), "Hs");
+        let db = value_offset(&s, "hydroDatabase");
+        patch(
+            db,
+            &u32::MAX.to_le_bytes(),
+            "length 4294967295 of hydroDatabase",
+        );
+        patch(
+            db,
+            &(MAX_STRING_BYTES as u32 + 1).to_le_bytes(),
+            "is more than 65536 bytes",
+        );
+        patch(db, &60_000u32.to_le_bytes(), "only");
+        patch(db + 4, &[0xff], "is not UTF-8");
+        patch(db + 4, &[0], "NUL");
+        for (bytes, needle) in cases {
+            let message = FmuState::from_bytes(&bytes).unwrap_err().to_string();
+            assert!(message.contains(needle), "{needle}: {message}");
+            assert!(message.contains("FMU state"), "{message}");
+        }
+    }
+
+    /// Every single bit flipped anywhere is refused, by the checksum or by the check in
+    /// front of it; none panics.
+    #[test]
+    fn every_bit_flip_is_refused() {
+        for with in [false, true] {
+            let good = state(with).to_bytes().unwrap();
+            for i in 0..good.len() * 8 {
+                let mut b = good.clone();
+                b[i / 8] ^= 1 << (i % 8);
+                assert!(FmuState::from_bytes(&b).is_err(), "bit {i}");
+            }
         }
     }
 
     #[test]
-    fn damaged_bytes_are_refused() {
-        let s = state(true);
-        let good = s.to_bytes();
-        let f = s.fingerprint;
-        let mut cases: Vec<(Vec<u8>, &str)> = vec![
-            (good[..good.len() - 1].to_vec(), "truncated snapshot"),
-            (good[..10].to_vec(), "truncated header"),
-            ([good.clone(), vec![0]].concat(), "trailing byte"),
-        ];
-        let mut patch = |at: usize, value: u8, what: &'static str| {
-            let mut b = good.clone();
-            b[at] = value;
-            cases.push((b, what));
-        };
-        patch(0, b'X', "magic");
-        patch(4, FORMAT_VERSION as u8 + 1, "version");
-        patch(8, 0xee, "fingerprint");
-        patch(16, 99, "machine state");
-        patch(17, 2, "terminated flag");
-        patch(18, 0, "snapshot flag");
-        for (bytes, what) in cases {
-            assert!(FmuState::from_bytes(&bytes, f).is_err(), "{what}");
-        }
-        assert!(
-            FmuState::from_bytes(&good, f ^ 1).is_err(),
-            "other instance"
+    fn a_string_longer_than_the_bound_is_not_written() {
+        let mut s = state(false);
+        assert!(s.parameters.set(
+            "hydroDatabase",
+            FmuValue::String("x".repeat(MAX_STRING_BYTES + 1))
+        ));
+        assert!(s
+            .to_bytes()
+            .unwrap_err()
+            .to_string()
+            .contains("hydroDatabase"));
+        assert!(s.parameters.set(
+            "hydroDatabase",
+            FmuValue::String("x".repeat(MAX_STRING_BYTES))
+        ));
+        let bytes = s.to_bytes().unwrap();
+        assert_eq!(FmuState::from_bytes(&bytes).unwrap(), s);
+    }
+
+    #[test]
+    fn check_problem_names_the_base() {
+        let problem = resolve(&default_scenario().unwrap()).unwrap();
+        let mut s = state(false);
+        s.fingerprint = fingerprint(&problem);
+        assert_eq!(
+            s.check_problem(&Base::Embedded, Ok(problem.clone()))
+                .unwrap(),
+            problem
         );
+        let mut other = problem.clone();
+        other.platform.mass *= 2.0;
+        let base = Base::Database("/data/platform.toml");
+        let message = s.check_problem(&base, Ok(other)).unwrap_err().to_string();
+        assert!(
+            message.contains("hydroDatabase = /data/platform.toml whose content"),
+            "{message}"
+        );
+        let missing = Error::Io {
+            path: "/data/platform.toml".into(),
+            message: "No such file or directory".into(),
+        };
+        let message = s
+            .check_problem(&base, Err(missing))
+            .unwrap_err()
+            .to_string();
+        assert!(message.contains("cannot be read now"), "{message}");
+        assert!(message.contains("No such file"), "{message}");
     }
 
     #[test]

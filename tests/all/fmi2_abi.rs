@@ -190,43 +190,6 @@ fn reset_replays_bit_for_bit() {
     );
 }
 
-fn get_state(fmu: &Fmu) -> fmi2FMUstate {
-    let mut state: fmi2FMUstate = ptr::null_mut();
-    assert_eq!(
-        unsafe { fmi2GetFMUstate(fmu.c, &mut state) },
-        fmi2Status::fmi2OK
-    );
-    assert!(!state.is_null());
-    state
-}
-
-fn free_state(fmu: &Fmu, mut state: fmi2FMUstate) {
-    assert_eq!(
-        unsafe { fmi2FreeFMUstate(fmu.c, &mut state) },
-        fmi2Status::fmi2OK
-    );
-    assert!(state.is_null(), "FreeFMUstate sets the pointer to NULL");
-}
-
-fn serialize(fmu: &Fmu, state: fmi2FMUstate) -> Vec<u8> {
-    let mut size = 0usize;
-    assert_eq!(
-        unsafe { fmi2SerializedFMUstateSize(fmu.c, state, &mut size) },
-        fmi2Status::fmi2OK
-    );
-    let mut bytes = vec![0u8; size];
-    let status = unsafe { fmi2SerializeFMUstate(fmu.c, state, bytes.as_mut_ptr().cast(), size) };
-    assert_eq!(status, fmi2Status::fmi2OK);
-    bytes
-}
-
-fn deserialize(fmu: &Fmu, bytes: &[u8]) -> (fmi2Status, fmi2FMUstate) {
-    let mut state: fmi2FMUstate = ptr::null_mut();
-    let s =
-        unsafe { fmi2DeSerializeFMUstate(fmu.c, bytes.as_ptr().cast(), bytes.len(), &mut state) };
-    (s, state)
-}
-
 /// Get the state, run on, set it back, run again: the same trajectory bit for bit; the
 /// restored inputs are those at the save.
 #[test]
@@ -288,46 +251,24 @@ fn serialized_state_continues_in_a_fresh_instance() {
     );
 }
 
-/// Bytes from a differently configured instance, of another version, truncated or with
-/// trailing bytes are refused with a log line; a good state still restores afterwards.
+/// Bytes of another version, truncated, with trailing bytes or with a bit flipped are
+/// refused with a log line; a good state still restores afterwards. (A state from a
+/// differently configured instance restores: `fmi2_state`.)
 #[test]
-fn foreign_or_damaged_state_bytes_are_refused() {
+fn damaged_state_bytes_are_refused() {
     let a = Fmu::running("a", 17, 0.0, START, Some(STOP));
     run(&a, 0, 10);
     let state = get_state(&a);
     let good = serialize(&a, state);
     free_state(&a, state);
 
-    let other_seed = Fmu::running("other", 18, 0.0, START, Some(STOP));
-    let (s, p) = deserialize(&other_seed, &good);
-    assert_eq!((s, p.is_null()), (fmi2Status::fmi2Error, true));
-    assert!(
-        other_seed
-            .last_message()
-            .message
-            .contains("another configuration"),
-        "{}",
-        other_seed.messages()
-    );
-    let other_stop = Fmu::running("stop", 17, 0.0, START, Some(STOP + 1.0));
-    assert_eq!(deserialize(&other_stop, &good).0, fmi2Status::fmi2Error);
-    // The same check for a state handed over in memory.
-    let state = get_state(&a);
-    let other = Fmu::running("other in memory", 18, 0.0, START, Some(STOP));
-    assert_eq!(
-        unsafe { fmi2SetFMUstate(other.c, state) },
-        fmi2Status::fmi2Error
-    );
-    assert!(other
-        .last_message()
-        .message
-        .contains("another configuration"));
-    free_state(&a, state);
-
     let mut version = good.clone();
     version[4] += 1;
-    let cases: [(&str, Vec<u8>); 4] = [
+    let mut flipped = good.clone();
+    flipped[good.len() / 2] ^= 0x10;
+    let cases: [(&str, Vec<u8>); 5] = [
         ("version", version),
+        ("bit flipped", flipped),
         ("truncated", good[..good.len() - 3].to_vec()),
         ("trailing", [good.clone(), vec![0]].concat()),
         ("empty", Vec::new()),

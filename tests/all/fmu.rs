@@ -302,6 +302,47 @@ impl Fmu {
     }
 }
 
+/// `fmi2GetFMUstate`; panics unless fmi2OK.
+pub fn get_state(fmu: &Fmu) -> fmi2FMUstate {
+    let mut state: fmi2FMUstate = ptr::null_mut();
+    assert_eq!(
+        unsafe { fmi2GetFMUstate(fmu.c, &mut state) },
+        fmi2Status::fmi2OK
+    );
+    assert!(!state.is_null());
+    state
+}
+
+/// `fmi2FreeFMUstate`; panics unless fmi2OK and the pointer is NULL after.
+pub fn free_state(fmu: &Fmu, mut state: fmi2FMUstate) {
+    assert_eq!(
+        unsafe { fmi2FreeFMUstate(fmu.c, &mut state) },
+        fmi2Status::fmi2OK
+    );
+    assert!(state.is_null(), "FreeFMUstate sets the pointer to NULL");
+}
+
+/// `fmi2SerializedFMUstateSize` and `fmi2SerializeFMUstate`; panics unless fmi2OK.
+pub fn serialize(fmu: &Fmu, state: fmi2FMUstate) -> Vec<u8> {
+    let mut size = 0usize;
+    assert_eq!(
+        unsafe { fmi2SerializedFMUstateSize(fmu.c, state, &mut size) },
+        fmi2Status::fmi2OK
+    );
+    let mut bytes = vec![0u8; size];
+    let status = unsafe { fmi2SerializeFMUstate(fmu.c, state, bytes.as_mut_ptr().cast(), size) };
+    assert_eq!(status, fmi2Status::fmi2OK);
+    bytes
+}
+
+/// `fmi2DeSerializeFMUstate`: the status and the state (NULL unless fmi2OK).
+pub fn deserialize(fmu: &Fmu, bytes: &[u8]) -> (fmi2Status, fmi2FMUstate) {
+    let mut state: fmi2FMUstate = ptr::null_mut();
+    let s =
+        unsafe { fmi2DeSerializeFMUstate(fmu.c, bytes.as_ptr().cast(), bytes.len(), &mut state) };
+    (s, state)
+}
+
 impl Drop for Fmu {
     fn drop(&mut self) {
         unsafe { fmi2FreeInstance(self.c) };

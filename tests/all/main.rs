@@ -14,6 +14,7 @@ mod dynamics;
 mod fmi2_abi;
 mod fmi2_alloc;
 mod fmi2_misuse;
+mod fmi2_state;
 mod fmi2_symbols;
 mod full_qtf;
 mod montecarlo;

@@ -12,6 +12,7 @@ import math
 import os
 import shutil
 import subprocess
+import threading
 
 import numpy as np
 
@@ -100,6 +101,13 @@ def set_parameters(slave, md, parameters):
             raise TypeError(f"{name}: type {v.type} not handled")
 
 
+# fmpy's FMU2Slave constructor changes the process's working directory to the FMU's binaries
+# folder and back around loading the library; two threads constructing at once can leave it
+# in that folder (the second one saves the first one's chdir as "back"), which the fixture
+# then deletes, and every later test that calls os.getcwd() fails. Construct one at a time.
+_CONSTRUCT = threading.Lock()
+
+
 class Slave:
     """One FMU2Slave instance initialised with parameters; outputs read by name."""
 
@@ -112,9 +120,10 @@ class Slave:
         self.in_vr = [self.vr[n] for n in INPUTS]
         self.parameters = parameters
         self.stop_time = stop_time
-        self.fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzipdir,
-                             modelIdentifier=md.coSimulation.modelIdentifier,
-                             instanceName=name)
+        with _CONSTRUCT:
+            self.fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzipdir,
+                                 modelIdentifier=md.coSimulation.modelIdentifier,
+                                 instanceName=name)
         self.fmu.instantiate()
         self.initialise()
 
