@@ -160,8 +160,12 @@ def test_state_file_restores_before_any_set(md, unzipdir, saved):
 def test_simulate_fmu_from_a_serialized_state(fmu, md, saved):
     from fmpy import simulate_fmu
 
-    signal = np.zeros(2, dtype=[("time", np.float64)] + [(n, np.float64) for n in INPUTS])
-    signal["time"] = [float(SAVE), STOP]
+    # One row per step: fmpy interpolates between rows as w0 v0 + (1 - w0) v1, which is not
+    # exactly v for a constant v at every time (1115 s gives 50000.00000000001 between rows
+    # at 600 s and 1200 s); at a row's own time it is v1 exactly.
+    times = np.arange(SAVE, int(STOP) + 1, dtype=np.float64)
+    signal = np.zeros(len(times), dtype=[("time", np.float64)] + [(n, np.float64) for n in INPUTS])
+    signal["time"] = times
     for name, value in zip(INPUTS, AFTER):
         signal[name] = value
     res = simulate_fmu(fmu, start_time=float(SAVE), stop_time=STOP, output_interval=1.0,
