@@ -8,7 +8,7 @@
 use super::{Direction, SeaState};
 use crate::error::{Error, Result};
 use rand_xoshiro::rand_core::{Rng, SeedableRng};
-use rand_xoshiro::Xoshiro256PlusPlus;
+use rand_xoshiro::{SplitMix64, Xoshiro256PlusPlus};
 use rustfft::num_complex::Complex64;
 use std::f64::consts::PI;
 
@@ -106,6 +106,31 @@ impl FrequencyGrid {
 }
 
 /// Smallest integer >= n whose only prime factors are 2, 3, 5 and 7.
+/// The generator of block `k` of the sea with seed `seed`. Block 0: xoshiro256++ seeded
+/// from `seed` (its four state words are SplitMix64's first four outputs from `seed`).
+/// Block k >= 1: the state (first two SplitMix64 outputs from `seed`, first two from k),
+/// one state per (seed, k) (SplitMix64's output is a bijection of its state), set in O(1)
+/// for any k. Distinct states lie on xoshiro256++'s one cycle of 2^256 - 1, so the draws of
+/// a block (a few 10^5) overlap another block's with probability of order 10^-60.
+fn block_generator(seed: u64, k: u64) -> Xoshiro256PlusPlus {
+    if k == 0 {
+        return Xoshiro256PlusPlus::seed_from_u64(seed);
+    }
+    let mut of_seed = SplitMix64::seed_from_u64(seed);
+    let mut of_block = SplitMix64::seed_from_u64(k);
+    let words = [
+        of_seed.next_u64(),
+        of_seed.next_u64(),
+        of_block.next_u64(),
+        of_block.next_u64(),
+    ];
+    let mut state = [0u8; 32];
+    for (chunk, word) in state.chunks_exact_mut(8).zip(words) {
+        chunk.copy_from_slice(&word.to_le_bytes());
+    }
+    Xoshiro256PlusPlus::from_seed(state)
+}
+
 fn smooth_length_at_least(n: usize) -> usize {
     (n.max(1)..)
         .find(|&m| {
@@ -139,9 +164,9 @@ impl WaveComponents {
     }
 
     /// The amplitudes of block `k` of a stream of records (`forces::stream`): as
-    /// [`WaveComponents::generate`], from the stream seeded by `sea.seed` advanced by k
-    /// jumps of 2^128 draws (xoshiro256++'s `jump`), so that every block's draws are
-    /// independent of every other's and depend only on (seed, k). Block 0 is
+    /// [`WaveComponents::generate`], from the generator of (`sea.seed`, k)
+    /// ([`block_generator`]), so that every block's draws depend only on (seed, k), cost
+    /// the same for any k, and are independent of every other block's. Block 0 is
     /// [`WaveComponents::generate`].
     pub fn generate_block(sea: &SeaState, grid: FrequencyGrid, k: u64) -> Self {
         let mut components = WaveComponents {
@@ -157,10 +182,7 @@ impl WaveComponents {
     /// directions and grid), in place: [`WaveComponents::generate_block`] without
     /// allocating.
     pub fn regenerate(&mut self, sea: &SeaState, k: u64) {
-        let mut rng = Xoshiro256PlusPlus::seed_from_u64(sea.seed);
-        for _ in 0..k {
-            rng.jump();
-        }
+        let mut rng = block_generator(sea.seed, k);
         let grid = &self.grid;
         self.amplitudes.clear();
         for dir in &self.directions {
@@ -201,6 +223,37 @@ mod tests {
         assert_eq!(smooth_length_at_least(11), 12);
         assert_eq!(smooth_length_at_least(43203), 43218);
         assert_eq!(smooth_length_at_least(1024), 1024);
+    }
+
+    /// Block 0's generator is the seed's (its state: SplitMix64's first four outputs, as
+    /// block_generator's doc says); blocks differ from each other and from other seeds'
+    /// blocks, and any block, however far, is made at once.
+    #[test]
+    fn block_generators() {
+        let first = |mut g: Xoshiro256PlusPlus| [g.next_u64(), g.next_u64(), g.next_u64()];
+        let mut sm = SplitMix64::seed_from_u64(7);
+        let mut state = [0u8; 32];
+        for chunk in state.chunks_exact_mut(8) {
+            chunk.copy_from_slice(&sm.next_u64().to_le_bytes());
+        }
+        assert_eq!(
+            first(Xoshiro256PlusPlus::from_seed(state)),
+            first(Xoshiro256PlusPlus::seed_from_u64(7))
+        );
+        assert_eq!(
+            first(block_generator(7, 0)),
+            first(Xoshiro256PlusPlus::seed_from_u64(7))
+        );
+        let mut seen = Vec::new();
+        for seed in 0..20 {
+            for k in [0, 1, 2, 3, 1 << 40, u64::MAX] {
+                seen.push(first(block_generator(seed, k)));
+            }
+        }
+        let n = seen.len();
+        seen.sort();
+        seen.dedup();
+        assert_eq!(seen.len(), n, "every (seed, block) has its own draws");
     }
 
     #[test]

@@ -150,6 +150,28 @@ fn any_segment_is_rebuilt_bit_for_bit_for_every_feature() {
     }
 }
 
+/// A segment however far into the stream (30 years at 300-s blocks: segment 3.2 million) is
+/// made directly from (seed, k): the restore there gives finite records and steps on.
+#[test]
+fn a_far_segment_is_made_directly() {
+    let (_, problem) = features().remove(0);
+    let mut sim = Simulation::new(problem).unwrap();
+    let mut bytes = sim.snapshot().to_bytes();
+    let steps: u64 = 30 * 365 * 86_400;
+    bytes[8..16].copy_from_slice(&steps.to_le_bytes());
+    sim.restore(&slowdrift::Snapshot::from_bytes(&bytes).unwrap())
+        .unwrap();
+    assert_eq!(sim.segment(), steps / 300);
+    trajectory(&mut sim, 400);
+    assert!(sim
+        .records()
+        .elevation
+        .samples()
+        .iter()
+        .all(|v| v.is_finite()));
+    assert!(sim.position().iter().all(|v| v.is_finite()));
+}
+
 /// Crossing a join allocates nothing, for every feature: the next segment is written into
 /// the buffers of the current one, and so is a segment made out of sequence on restore.
 #[test]
