@@ -47,8 +47,6 @@ pub struct Instance {
     built: Option<Built>,
     /// Outputs at the current time (no allocation when refreshed after a step).
     outputs: Option<Outputs>,
-    /// Set when a step was discarded at the end of the records.
-    terminated: bool,
     last_successful_time: f64,
     /// The strings last returned by `fmi2GetString`; valid until the next call.
     strings: Vec<CString>,
@@ -67,7 +65,6 @@ impl Instance {
             state: MachineState::Instantiated,
             built: None,
             outputs: None,
-            terminated: false,
             last_successful_time: experiment.start_time,
             strings: Vec::new(),
         }
@@ -247,10 +244,11 @@ impl Instance {
         }
     }
 
-    /// `fmi2GetBooleanStatus`.
+    /// `fmi2GetBooleanStatus`: fmi2Terminated is always false, the FMU never ends a run
+    /// itself (its records stream without end; a discarded step can be rolled back).
     pub fn boolean_status(&self, terminated: bool) -> Result<bool, FmuError> {
         if terminated {
-            Ok(self.terminated)
+            Ok(false)
         } else {
             Err(FmuError::StatusUnavailable(
                 "fmi2GetBooleanStatus answers fmi2Terminated only".into(),
@@ -445,7 +443,6 @@ impl Instance {
             parameters: self.parameters.clone(),
             experiment: self.experiment,
             machine: self.state,
-            terminated: self.terminated,
             last_successful_time: self.last_successful_time,
             inputs: self.inputs,
             snapshot,
@@ -502,7 +499,6 @@ impl Instance {
         self.parameters = state.parameters.clone();
         self.experiment = state.experiment;
         self.state = state.machine;
-        self.terminated = state.terminated;
         self.last_successful_time = state.last_successful_time;
         self.inputs = state.inputs;
         self.event(&event);

@@ -14,7 +14,6 @@
 //! | 4 | format version (u32, [`FORMAT_VERSION`]) |
 //! | 8 | fingerprint of the resolved problem (u64, [`fingerprint`]) |
 //! | 1 | instance state ([`MachineState::code`]; never Error) |
-//! | 1 | terminated flag (0 or 1) |
 //! | 1 | 1 when a simulation snapshot follows the parameters, else 0 |
 //! | 8 | last successful time (f64, finite) |
 //! | 24 | inputs Fx_ext, Fy_ext, Mz_ext (3 f64, finite) |
@@ -51,10 +50,11 @@ use crate::simulation::Snapshot;
 pub const MAGIC: [u8; 4] = *b"SDFS";
 /// Version of the byte format; a state of any other version is refused. Version 2: the
 /// fingerprint is the serde-JSON FNV-1a of the problem (version 1 hashed its `Debug` text).
-/// Version 3: the state carries the parameters and the experiment, and a checksum.
+/// Version 3: the state carries the parameters and the experiment, and a checksum (and no
+/// terminated flag: the FMU never ends a run itself).
 pub const FORMAT_VERSION: u32 = 3;
 /// Bytes of the fixed fields before the parameters (magic to the parameter count).
-const FIXED_BYTES: usize = 4 + 4 + 8 + 3 + 8 + 24 + 8 + 1 + 8 + 4;
+const FIXED_BYTES: usize = 4 + 4 + 8 + 2 + 8 + 24 + 8 + 1 + 8 + 4;
 /// Bytes of the checksum at the end.
 const CHECKSUM_BYTES: usize = 8;
 
@@ -71,7 +71,6 @@ pub struct FmuState {
     pub parameters: Parameters,
     pub experiment: Experiment,
     pub machine: MachineState,
-    pub terminated: bool,
     pub last_successful_time: f64,
     pub inputs: [f64; 3],
     /// `None` before initialisation (no simulation yet).
@@ -107,7 +106,6 @@ impl FmuState {
         out.extend_from_slice(&FORMAT_VERSION.to_le_bytes());
         out.extend_from_slice(&self.fingerprint.to_le_bytes());
         out.push(self.machine.code());
-        out.push(u8::from(self.terminated));
         out.push(u8::from(self.snapshot.is_some()));
         out.extend_from_slice(&self.last_successful_time.to_le_bytes());
         for v in self.inputs {
@@ -205,7 +203,6 @@ impl FmuState {
         let code = r.u8("instance state")?;
         let machine = MachineState::from_code(code)
             .ok_or_else(|| refuse(format!("instance state code {code}"), "is unknown"))?;
-        let terminated = r.flag("terminated flag")?;
         let has_snapshot = r.flag("snapshot flag")?;
         let last_successful_time = r.finite("last successful time")?;
         let inputs = [
@@ -250,7 +247,6 @@ impl FmuState {
             parameters,
             experiment,
             machine,
-            terminated,
             last_successful_time,
             inputs,
             snapshot,
@@ -467,7 +463,6 @@ mod tests {
             parameters,
             experiment: Experiment::new(-3.0, Some(1e4)).unwrap(),
             machine: MachineState::StepComplete,
-            terminated: true,
             last_successful_time: 12.5,
             inputs: [1.0, -2.0, 3e9],
             snapshot: snapshot.then(|| Snapshot::from_bytes(&[7u8; Snapshot::BYTES]).unwrap()),
@@ -524,18 +519,15 @@ mod tests {
         let u64_at = |at: usize| u64::from_le_bytes(b[at..at + 8].try_into().unwrap());
         let f64_at = |at: usize| f64::from_bits(u64_at(at));
         assert_eq!(u64_at(8), s.fingerprint);
-        assert_eq!(
-            (b[16], b[17], b[18]),
-            (MachineState::StepComplete.code(), 1, 1)
-        );
-        assert_eq!(f64_at(19), 12.5);
-        assert_eq!([f64_at(27), f64_at(35), f64_at(43)], s.inputs);
-        assert_eq!((f64_at(51), b[59], f64_at(60)), (-3.0, 1, 1e4));
-        let count = u32::from_le_bytes(b[68..72].try_into().unwrap()) as usize;
+        assert_eq!((b[16], b[17]), (MachineState::StepComplete.code(), 1));
+        assert_eq!(f64_at(18), 12.5);
+        assert_eq!([f64_at(26), f64_at(34), f64_at(42)], s.inputs);
+        assert_eq!((f64_at(50), b[58], f64_at(59)), (-3.0, 1, 1e4));
+        let count = u32::from_le_bytes(b[67..71].try_into().unwrap()) as usize;
         assert_eq!(count, Parameters::variables().count());
         let first = Parameters::variables().next().unwrap();
         assert_eq!(
-            u32::from_le_bytes(b[72..76].try_into().unwrap()),
+            u32::from_le_bytes(b[71..75].try_into().unwrap()),
             first.value_reference
         );
         let hs = value_offset(&s, "Hs");
@@ -583,15 +575,15 @@ mod tests {
         patch(4, &2u32.to_le_bytes(), "format version 2");
         patch(16, &[99], "instance state code 99");
         patch(16, &[MachineState::Error.code()], "instance state code");
-        patch(17, &[2], "terminated flag = 2");
-        patch(18, &[0], "between its last field");
-        patch(19, &f64::NAN.to_le_bytes(), "last successful time");
-        patch(35, &f64::INFINITY.to_le_bytes(), "input Fy_ext");
-        patch(51, &f64::NAN.to_le_bytes(), "startTime");
-        patch(59, &[0], "stopTime bits");
-        patch(60, &(-4.0f64).to_le_bytes(), "stopTime");
-        patch(68, &3u32.to_le_bytes(), "3 parameters");
-        patch(72, &99_999u32.to_le_bytes(), "value reference 99999");
+        patch(17, &[2], "snapshot flag = 2");
+        patch(17, &[0], "between its last field");
+        patch(18, &f64::NAN.to_le_bytes(), "last successful time");
+        patch(34, &f64::INFINITY.to_le_bytes(), "input Fy_ext");
+        patch(50, &f64::NAN.to_le_bytes(), "startTime");
+        patch(58, &[0], "stopTime bits");
+        patch(59, &(-4.0f64).to_le_bytes(), "stopTime");
+        patch(67, &3u32.to_le_bytes(), "3 parameters");
+        patch(71, &99_999u32.to_le_bytes(), "value reference 99999");
         let hs = value_offset(&s, "Hs");
         patch(hs - 1, b"I", "type byte");
         patch(hs, &f64::NEG_INFINITY.to_le_bytes(), "Hs");
