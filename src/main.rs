@@ -156,9 +156,11 @@ fn simulate(args: SimulateArgs) -> Result<(), String> {
 }
 
 fn run_to_end(sim: &mut Simulation) -> Result<Vec<Outputs>, String> {
-    let run = sim.problem().run.clone();
-    let steps = (run.duration / run.time_step).round() as usize;
-    let mut outputs = Vec::with_capacity(steps + 1);
+    let mut outputs = Vec::new();
+    let steps = sim
+        .problem()
+        .reserve_recorded(&mut outputs)
+        .map_err(|e| e.to_string())?;
     outputs.push(sim.outputs().map_err(|e| e.to_string())?);
     for _ in 0..steps {
         sim.step([0.0; 3]).map_err(|e| e.to_string())?;

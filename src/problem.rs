@@ -176,6 +176,36 @@ fn grid_nodes(grid: &ColumnGrid) -> (Vec<f64>, Vec<f64>) {
 }
 
 impl Problem {
+    /// The steps of a run that keeps every step's output (the CLI's time series, a Monte
+    /// Carlo run's statistics), round(duration / time_step), with a buffer for them
+    /// reserved in `buffer` (one entry per sample: the steps and the initial state).
+    /// Refused, located where the user wrote the duration, for an open-ended run (that is
+    /// the FMU's) and for one whose samples cannot be allocated.
+    pub fn reserve_recorded<T>(&self, buffer: &mut Vec<T>) -> Result<usize> {
+        let run = &self.run;
+        let refuse = |reason: String| {
+            self.origins
+                .locate(Error::invalid("run.duration", run.duration, reason))
+        };
+        if !run.duration.is_finite() {
+            return Err(refuse(
+                "is not finite: a run that records every step has an end (the FMU runs \
+                 without one)"
+                    .into(),
+            ));
+        }
+        let steps = (run.duration / run.time_step).round();
+        let samples = steps as usize + 1;
+        if steps >= usize::MAX as f64 || buffer.try_reserve_exact(samples).is_err() {
+            return Err(refuse(format!(
+                "needs {steps} steps of {} s whose {} bytes of output cannot be allocated",
+                run.time_step,
+                steps * std::mem::size_of::<T>() as f64
+            )));
+        }
+        Ok(steps as usize)
+    }
+
     /// [`Problem::validate`], the error located where the user wrote the value.
     pub fn check(&self) -> Result<()> {
         self.validate().map_err(|e| self.origins.locate(e))

@@ -56,7 +56,12 @@ fn case_json(case: &Case, base: &Problem, hydro_database: &str) -> Json {
         "steps": steps as u64,
         "fmu": fmu,
     });
-    if let Err(e) = case.problem.check() {
+    // A case runs if its problem is valid and its run has an end (every step is recorded).
+    let runs = case
+        .problem
+        .check()
+        .and_then(|_| case.problem.reserve_recorded(&mut Vec::<()>::new()));
+    if let Err(e) = runs {
         document["refused"] = json!(e.to_string());
     }
     document
@@ -247,6 +252,17 @@ mod tests {
         let doc = plan("duration\n600.6\n", &base);
         let reason = doc["cases"][0]["fmu"]["unavailable"].as_str().unwrap();
         assert!(reason.contains("not a whole number of steps"), "{reason}");
+        // A base without end (the case table refuses an infinite duration itself): every
+        // run of its cases records every step, so they are refused.
+        let mut open = base.clone();
+        open.run.duration = f64::INFINITY;
+        let doc = plan("hs\n5\n", &open);
+        let refused = doc["cases"][0]["refused"].as_str().unwrap();
+        assert!(
+            refused.contains("example.toml:")
+                && refused.contains(": invalid [run] duration = inf: is not finite"),
+            "{refused}"
+        );
         // A Pierson-Moskowitz base: Hs and Tp write its own spectrum (it stays PM).
         base.sea.spectrum = Spectrum::PiersonMoskowitz { hs: 3.0, tp: 9.0 };
         let doc = plan("hs\n5\n", &base);

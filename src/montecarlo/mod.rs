@@ -117,10 +117,11 @@ pub fn simulate_positions(config: Problem) -> Result<[Vec<f64>; 3]> {
 
 /// The positions of [`simulate_positions`] for a simulation at its start.
 fn positions(mut sim: Simulation) -> Result<[Vec<f64>; 3]> {
-    let run = &sim.problem().run;
-    let (duration, dt) = (run.duration, run.time_step);
-    let steps = (duration / dt).round() as usize;
-    let mut records: [Vec<f64>; 3] = std::array::from_fn(|_| Vec::with_capacity(steps + 1));
+    let mut records: [Vec<f64>; 3] = Default::default();
+    let mut steps = 0;
+    for record in &mut records {
+        steps = sim.problem().reserve_recorded(record)?;
+    }
     let mut push = |q: [f64; 3]| records.iter_mut().zip(q).for_each(|(r, v)| r.push(v));
     push(sim.position());
     for _ in 0..steps {

@@ -40,6 +40,37 @@ fn hydro_columns_writes_the_configuration_drift_table() {
     );
 }
 
+/// `simulate` records every step, so it needs an end: an infinite duration (which the
+/// FMU's open-ended run has) and one whose samples cannot be allocated are refused with the
+/// file, line, key and value, not by an abort.
+#[test]
+fn simulate_refuses_a_run_without_end_or_too_long_to_record() {
+    let example = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/example.toml");
+    let text = std::fs::read_to_string(example).unwrap();
+    let line = text
+        .lines()
+        .position(|l| l.starts_with("duration = 10800.0"))
+        .expect("example.toml's duration")
+        + 1;
+    for (value, reason) in [("inf", "is not finite"), ("1e15", "cannot be allocated")] {
+        let edited = text.replacen("duration = 10800.0", &format!("duration = {value}"), 1);
+        let path = std::env::temp_dir().join(format!(
+            "slowdrift-cli-duration-{value}-{}.toml",
+            std::process::id()
+        ));
+        std::fs::write(&path, edited).unwrap();
+        let run = slowdrift(&["simulate", "--config", path.to_str().unwrap()]);
+        std::fs::remove_file(&path).ok();
+        let stderr = String::from_utf8_lossy(&run.stderr);
+        assert_eq!(run.status.code(), Some(1), "{stderr}");
+        let expected = format!("{}:{line}: invalid [run] duration = ", path.display());
+        assert!(
+            stderr.contains(&expected) && stderr.contains(reason),
+            "{value}: {stderr}"
+        );
+    }
+}
+
 /// `simulate` with a configuration prints the three DOFs and writes the CSV it announces.
 #[test]
 fn simulate_prints_the_summary_and_writes_the_series() {
