@@ -7,8 +7,8 @@ The campaign: tests/data/example.toml (inline drift table, four columns with dra
 separate drag, and a case the model refuses (Hs = -1).
 
 1. FMU backend: both result files equal the native tool's byte for byte (runs compared as a
-   set of lines: they are written in finishing order). The FMU runs the same record length
-   as the native run (stopTime = the case's duration, so the same N and wave realisation:
+   set of lines: they are written in finishing order). The FMU runs the same records as
+   the native run (they do not depend on the stop time, which is the case's end:
    src/fmi2/campaign.rs) and is read at t = 0 and after each of the same steps, so every
    statistic must agree bit for bit; the refused case fails on both with the same message,
    the others complete, the exit status is 1. Every worker made at most one FMU instance
