@@ -40,6 +40,45 @@ fn hydro_columns_writes_the_configuration_drift_table() {
     );
 }
 
+/// The CLI's run does not depend on its duration: 20 000 s (past the first join of the
+/// records, at 16 384 s) and 40 000 s write the same samples over the common span, bit for
+/// bit (17 significant digits).
+#[test]
+fn simulate_gives_the_same_series_for_any_duration() {
+    let example = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/example.toml");
+    let text = std::fs::read_to_string(example).unwrap();
+    let series = |duration: &str| -> Vec<String> {
+        let tag = format!("{duration}-{}", std::process::id());
+        let config = std::env::temp_dir().join(format!("slowdrift-cli-span-{tag}.toml"));
+        let out = std::env::temp_dir().join(format!("slowdrift-cli-span-{tag}.csv"));
+        std::fs::write(
+            &config,
+            text.replacen("duration = 10800.0", &format!("duration = {duration}"), 1),
+        )
+        .unwrap();
+        let run = slowdrift(&[
+            "simulate",
+            "--config",
+            config.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(
+            run.status.success(),
+            "{}",
+            String::from_utf8_lossy(&run.stderr)
+        );
+        let csv = std::fs::read_to_string(&out).unwrap();
+        std::fs::remove_file(&config).ok();
+        std::fs::remove_file(&out).ok();
+        csv.lines().map(str::to_string).collect()
+    };
+    let (short, long) = (series("20000.0"), series("40000.0"));
+    // The header and the samples at 0, 1, ..., 20 000 s.
+    assert_eq!(short.len(), 1 + 20_001);
+    assert_eq!(short[..], long[..short.len()]);
+}
+
 /// `simulate` records every step, so it needs an end: an infinite duration (which the
 /// FMU's open-ended run has) and one whose samples cannot be allocated are refused with the
 /// file, line, key and value, not by an abort.

@@ -373,6 +373,61 @@ fn runs_without_a_stop_time_have_no_end() {
     assert_eq!(unsafe { fmi2Terminate(yawing.c) }, fmi2Status::fmi2OK);
 }
 
+/// Across the first join of the record stream (16384 s): a state saved before the join and
+/// restored after it (rollback), a state serialized after the join into a fresh instance
+/// (which makes that segment straight away) and a reset after the join all replay the
+/// uninterrupted run bit for bit.
+#[test]
+fn states_and_reset_replay_across_a_join() {
+    let hour = 3600.0;
+    let outputs_after = |fmu: &Fmu, from: f64, steps: usize| -> Vec<Vec<u64>> {
+        (0..steps)
+            .map(|k| {
+                fmu.step_with(from + k as f64 * 600.0, 600.0, [2.0e5, 0.0, 0.0]);
+                bits(&fmu.outputs())
+            })
+            .collect()
+    };
+    let a = Fmu::running("a", 9, 0.4, 0.0, None);
+    a.step_with(0.0, 4.0 * hour, [0.0; 3]);
+    let before_join = get_state(&a);
+    let crossing = outputs_after(&a, 4.0 * hour, 6);
+    let after_join = get_state(&a);
+    let bytes = serialize(&a, after_join);
+    let ahead = outputs_after(&a, 5.0 * hour, 6);
+
+    assert_eq!(
+        unsafe { fmi2SetFMUstate(a.c, before_join) },
+        fmi2Status::fmi2OK
+    );
+    assert_eq!(
+        outputs_after(&a, 4.0 * hour, 6),
+        crossing,
+        "rollback across the join"
+    );
+
+    let b = Fmu::new("b");
+    let (s, state) = deserialize(&b, &bytes);
+    assert_eq!(s, fmi2Status::fmi2OK, "{}", b.messages());
+    assert_eq!(unsafe { fmi2SetFMUstate(b.c, state) }, fmi2Status::fmi2OK);
+    free_state(&b, state);
+    assert_eq!(
+        outputs_after(&b, 5.0 * hour, 6),
+        ahead,
+        "fresh instance after the join"
+    );
+
+    free_state(&a, before_join);
+    free_state(&a, after_join);
+    let first = outputs_after(&Fmu::running("c", 9, 0.4, 0.0, None), 0.0, 3);
+    assert_eq!(unsafe { fmi2Reset(b.c) }, fmi2Status::fmi2OK);
+    assert_eq!(b.setup(0.0, None), fmi2Status::fmi2OK);
+    assert_eq!(b.set_int(vr::SEED, 9), fmi2Status::fmi2OK);
+    assert_eq!(b.set_real(vr::WAVE_DIRECTION, 0.4), fmi2Status::fmi2OK);
+    assert_eq!(b.init(), fmi2Status::fmi2OK);
+    assert_eq!(outputs_after(&b, 0.0, 3), first, "reset after the join");
+}
+
 /// Instances in parallel threads: the same seed gives identical outputs, another seed
 /// different ones.
 #[test]

@@ -126,6 +126,28 @@ fn the_same_seed_gives_the_same_run_whatever_its_duration() {
     }
 }
 
+/// A plan serves every seed and every case of its key through the joins: a simulation of
+/// another seed and wave height from the plan of the first is, through ten joins, the
+/// simulation made alone, for every feature.
+#[test]
+fn a_shared_plan_makes_the_same_segments() {
+    for (name, problem) in features() {
+        let plan = std::sync::Arc::new(slowdrift::RecordPlan::new(&problem).unwrap());
+        let mut other = problem.clone();
+        other.sea.seed += 100;
+        if let Spectrum::Jonswap { hs, .. } = &mut other.sea.spectrum {
+            *hs *= 1.3;
+        }
+        let mut shared = Simulation::with_plan(other.clone(), &plan).unwrap();
+        let mut alone = Simulation::new(other).unwrap();
+        assert!(
+            trajectory(&mut shared, 3000) == trajectory(&mut alone, 3000),
+            "{name}"
+        );
+        assert_eq!(shared.segment(), 9, "{name}");
+    }
+}
+
 /// A snapshot restored in a fresh simulation, in a segment it never made in sequence,
 /// gives that segment's records and the continuation bit for bit; a reset after crossing
 /// blocks replays the start.
