@@ -40,34 +40,50 @@ fn hydro_columns_writes_the_configuration_drift_table() {
     );
 }
 
+/// `simulate --config config --out out`, which must succeed.
+fn simulate_to(config: &Path, out: &Path) -> std::process::Output {
+    let run = slowdrift(&[
+        "simulate",
+        "--config",
+        config.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    run
+}
+
+/// tests/data/example.toml with `duration = value` written to a temporary file, and the
+/// line of that key.
+fn example_with_duration(value: &str) -> (std::path::PathBuf, usize) {
+    let example = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/example.toml");
+    let text = std::fs::read_to_string(example).unwrap();
+    let key = "duration = 10800.0";
+    let line = 1 + text
+        .lines()
+        .position(|l| l.starts_with(key))
+        .expect("example.toml's duration");
+    let path = std::env::temp_dir().join(format!(
+        "slowdrift-cli-duration-{value}-{}.toml",
+        std::process::id()
+    ));
+    std::fs::write(&path, text.replacen(key, &format!("duration = {value}"), 1)).unwrap();
+    (path, line)
+}
+
 /// The CLI's run does not depend on its duration: 20 000 s (past the first join of the
 /// records, at 16 384 s) and 40 000 s write the same samples over the common span, bit for
 /// bit (17 significant digits).
 #[test]
 fn simulate_gives_the_same_series_for_any_duration() {
-    let example = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/example.toml");
-    let text = std::fs::read_to_string(example).unwrap();
     let series = |duration: &str| -> Vec<String> {
-        let tag = format!("{duration}-{}", std::process::id());
-        let config = std::env::temp_dir().join(format!("slowdrift-cli-span-{tag}.toml"));
-        let out = std::env::temp_dir().join(format!("slowdrift-cli-span-{tag}.csv"));
-        std::fs::write(
-            &config,
-            text.replacen("duration = 10800.0", &format!("duration = {duration}"), 1),
-        )
-        .unwrap();
-        let run = slowdrift(&[
-            "simulate",
-            "--config",
-            config.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ]);
-        assert!(
-            run.status.success(),
-            "{}",
-            String::from_utf8_lossy(&run.stderr)
-        );
+        let (config, _) = example_with_duration(duration);
+        let out = config.with_extension("csv");
+        simulate_to(&config, &out);
         let csv = std::fs::read_to_string(&out).unwrap();
         std::fs::remove_file(&config).ok();
         std::fs::remove_file(&out).ok();
@@ -84,20 +100,8 @@ fn simulate_gives_the_same_series_for_any_duration() {
 /// file, line, key and value, not by an abort.
 #[test]
 fn simulate_refuses_a_run_without_end_or_too_long_to_record() {
-    let example = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/example.toml");
-    let text = std::fs::read_to_string(example).unwrap();
-    let line = text
-        .lines()
-        .position(|l| l.starts_with("duration = 10800.0"))
-        .expect("example.toml's duration")
-        + 1;
     for (value, reason) in [("inf", "is not finite"), ("1e15", "cannot be allocated")] {
-        let edited = text.replacen("duration = 10800.0", &format!("duration = {value}"), 1);
-        let path = std::env::temp_dir().join(format!(
-            "slowdrift-cli-duration-{value}-{}.toml",
-            std::process::id()
-        ));
-        std::fs::write(&path, edited).unwrap();
+        let (path, line) = example_with_duration(value);
         let run = slowdrift(&["simulate", "--config", path.to_str().unwrap()]);
         std::fs::remove_file(&path).ok();
         let stderr = String::from_utf8_lossy(&run.stderr);
@@ -116,18 +120,7 @@ fn simulate_prints_the_summary_and_writes_the_series() {
     let config = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/example.toml");
     let out =
         std::env::temp_dir().join(format!("slowdrift-cli-simulate-{}.csv", std::process::id()));
-    let run = slowdrift(&[
-        "simulate",
-        "--config",
-        config.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(
-        run.status.success(),
-        "{}",
-        String::from_utf8_lossy(&run.stderr)
-    );
+    let run = simulate_to(&config, &out);
     let text = String::from_utf8_lossy(&run.stdout);
     for dof in ["surge [m]", "sway [m]", "yaw [deg]"] {
         assert!(text.contains(dof), "{text}");

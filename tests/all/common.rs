@@ -148,23 +148,75 @@ pub fn oscillator_surge_variance(config: &Problem) -> f64 {
     );
     let transfer_squared =
         |mu: f64| 1.0 / ((stiffness - mass * mu * mu).powi(2) + (damping * mu).powi(2));
-    let drift = |w: f64| smooth_drift(w, 0.0)[0];
-    let spectrum = &config.sea.spectrum;
     let (lo, hi) = config.sea.band();
-    let force_spectrum = |mu: f64| {
-        8.0 * simpson(
-            |w| spectrum.density(w) * spectrum.density(w + mu) * drift(w) * drift(w + mu),
-            lo,
-            hi - mu,
-            2000,
-        )
-    };
+    let force_spectrum = surge_force_spectrum(config);
     simpson(
         |mu| force_spectrum(mu) * transfer_squared(mu),
         0.0,
         hi - lo,
         4000,
     )
+}
+
+/// The one-sided spectrum of the slowly varying surge force of `smooth_drift` (Newman,
+/// geometric, positive T) in `config`'s sea: S_F(mu) = 8 integral S(w) S(w + mu) T(w)
+/// T(w + mu) dw over the simulated band (physics.md section 8).
+pub fn surge_force_spectrum(config: &Problem) -> impl Fn(f64) -> f64 + '_ {
+    let drift = |w: f64| smooth_drift(w, 0.0)[0];
+    let spectrum = &config.sea.spectrum;
+    let (lo, hi) = config.sea.band();
+    move |mu: f64| {
+        8.0 * simpson(
+            |w| spectrum.density(w) * spectrum.density(w + mu) * drift(w) * drift(w + mu),
+            lo,
+            hi - mu,
+            2000,
+        )
+    }
+}
+
+/// Compares the Welch estimate of `record` (sampled at `dt`; Hann segments of `segment`
+/// samples, 50 % overlap) with the true one-sided spectrum, in bands of `band_bins` bins
+/// (from bin 1) whose centre lies in `centres`: each band's integral within 5 sigma +
+/// `slack` of `expected(a, b)`, the true spectrum's integral over the band [a, b]
+/// (sigma = sqrt(1.06 x 1.94 / (segments x bins)), Welch's variance for Hann with 50 %
+/// overlap). Returns the bands checked and the worst error in sigma.
+pub fn welch_bands_match(
+    record: &[f64],
+    dt: f64,
+    segment: usize,
+    band_bins: usize,
+    centres: (f64, f64),
+    slack: f64,
+    expected: impl Fn(f64, f64) -> f64,
+) -> (usize, f64) {
+    let estimate = slowdrift::stats::welch_spectrum(record, dt, segment).unwrap();
+    let segments = (2 * record.len() / segment - 1) as f64;
+    let d_omega = estimate.omega[1];
+    let rel_sigma = (1.06 * 1.94 / (segments * band_bins as f64)).sqrt();
+    let (mut checked, mut worst) = (0, 0.0f64);
+    for start in (1..estimate.omega.len() - band_bins).step_by(band_bins) {
+        let centre = estimate.omega[start + band_bins / 2];
+        if centre < centres.0 || centre > centres.1 {
+            continue;
+        }
+        let measured: f64 = estimate.density[start..start + band_bins]
+            .iter()
+            .sum::<f64>()
+            * d_omega;
+        let true_integral = expected(
+            estimate.omega[start] - 0.5 * d_omega,
+            estimate.omega[start + band_bins - 1] + 0.5 * d_omega,
+        );
+        let error = measured / true_integral - 1.0;
+        assert!(
+            error.abs() < 5.0 * rel_sigma + slack,
+            "omega {centre}: {measured} vs {true_integral}"
+        );
+        worst = worst.max(error.abs() / rel_sigma);
+        checked += 1;
+    }
+    (checked, worst)
 }
 
 /// The shared data directory: `$SLOWDRIFT_DATA` if set, else `../shared/data` next to the

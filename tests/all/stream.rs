@@ -13,7 +13,6 @@ use slowdrift::model::{
     Dof, DragModel, DriftDamping, Interaction, NewmanForm, SecondOrder, YawFollowing,
 };
 use slowdrift::sea_state::{Spectrum, Spreading};
-use slowdrift::stats::welch_spectrum;
 use slowdrift::{Problem, Simulation};
 use std::f64::consts::PI;
 
@@ -285,36 +284,11 @@ fn the_joined_elevation_has_the_input_spectrum() {
         (variance - m0).abs() < 5.0 * sigma,
         "variance {variance} vs {m0} (sigma {sigma})"
     );
-    let estimate = welch_spectrum(&eta, dt, 1024).unwrap();
-    let mut worst: f64 = 0.0;
-    let segments = (2 * eta.len() / 1024 - 1) as f64;
     let wp = 2.0 * PI / 10.0;
-    let band_bins = 4;
-    let d_omega = estimate.omega[1];
-    let mut checked = 0;
-    for start in (0..estimate.omega.len() - band_bins).step_by(band_bins) {
-        let centre = estimate.omega[start + band_bins / 2];
-        if centre < 0.8 * wp || centre > 2.0 * wp {
-            continue;
-        }
-        let measured: f64 = estimate.density[start..start + band_bins]
-            .iter()
-            .sum::<f64>()
-            * d_omega;
-        let expected = simpson(
-            |w| spectrum.density(w),
-            estimate.omega[start] - 0.5 * d_omega,
-            estimate.omega[start + band_bins - 1] + 0.5 * d_omega,
-            200,
-        );
-        let rel_sigma = (1.06 * 1.94 / (segments * band_bins as f64)).sqrt();
-        assert!(
-            (measured / expected - 1.0).abs() < 5.0 * rel_sigma + 0.03,
-            "omega {centre}: {measured} vs {expected}"
-        );
-        worst = worst.max((measured / expected - 1.0).abs() / rel_sigma);
-        checked += 1;
-    }
+    let (checked, worst) =
+        welch_bands_match(&eta, dt, 1024, 4, (0.8 * wp, 2.0 * wp), 0.03, |a, b| {
+            simpson(|w| spectrum.density(w), a, b, 200)
+        });
     println!("joined elevation: Welch spectrum in {checked} bands, worst {worst:.2} sigma");
     assert!(checked >= 10, "checked {checked} bands");
 }
@@ -332,14 +306,7 @@ fn the_force_across_joins_has_the_frequency_domain_mean_and_spectrum() {
     let length = force.len() as f64 * dt;
     let (lo, hi) = problem.sea.band();
     let drift = |w: f64| smooth_drift(w, 0.0)[0];
-    let force_spectrum = |mu: f64| {
-        8.0 * simpson(
-            |w| spectrum.density(w) * spectrum.density(w + mu) * drift(w) * drift(w + mu),
-            lo,
-            hi - mu,
-            2000,
-        )
-    };
+    let force_spectrum = surge_force_spectrum(&problem);
     let n = force.len() as f64;
     let mean = force.iter().sum::<f64>() / n;
     let expected_mean = 2.0 * simpson(|w| spectrum.density(w) * drift(w), lo, hi, 20000);
@@ -355,34 +322,9 @@ fn the_force_across_joins_has_the_frequency_domain_mean_and_spectrum() {
         "mean {mean} vs {expected_mean} (sigma {sigma})"
     );
     let centred: Vec<f64> = force.iter().map(|f| f - mean).collect();
-    let segment = 2048;
-    let estimate = welch_spectrum(&centred, dt, segment).unwrap();
-    let segments = (2 * centred.len() / segment - 1) as f64;
-    let band_bins = 6;
-    let d_mu = estimate.omega[1];
-    let mut checked = 0;
-    let mut worst: f64 = 0.0;
-    for start in (1..estimate.omega.len() - band_bins).step_by(band_bins) {
-        let (a, b) = (
-            estimate.omega[start] - 0.5 * d_mu,
-            estimate.omega[start + band_bins - 1] + 0.5 * d_mu,
-        );
-        if b > 0.4 {
-            break;
-        }
-        let measured: f64 = estimate.density[start..start + band_bins]
-            .iter()
-            .sum::<f64>()
-            * d_mu;
-        let expected = simpson(force_spectrum, a, b, 40);
-        let rel_sigma = (1.06 * 1.94 / (segments * band_bins as f64)).sqrt();
-        assert!(
-            (measured / expected - 1.0).abs() < 5.0 * rel_sigma + 0.05,
-            "mu {a:.3} .. {b:.3}: {measured} vs {expected}"
-        );
-        worst = worst.max((measured / expected - 1.0).abs() / rel_sigma);
-        checked += 1;
-    }
+    let (checked, worst) = welch_bands_match(&centred, dt, 2048, 6, (0.0, 0.4), 0.05, |a, b| {
+        simpson(&force_spectrum, a, b, 40)
+    });
     println!("Newman force across joins: spectrum in {checked} bands below 0.4 rad/s, worst {worst:.2} sigma");
     assert!(checked >= 6, "checked {checked} bands");
 }

@@ -1,6 +1,7 @@
 """Shared fixtures of the Python client tests (run them with tests/clients/run_clients.sh)."""
 
 import os
+import shutil
 import sys
 
 import pytest
@@ -31,3 +32,21 @@ def fmu():
             pytest.fail(msg)
         pytest.skip(msg)
     return path
+
+
+@pytest.fixture(scope="module")
+def md(fmu):
+    """The FMU's model description, read by fmpy."""
+    from fmpy import read_model_description
+
+    return read_model_description(fmu)
+
+
+@pytest.fixture(scope="module")
+def unzipdir(fmu):
+    """The FMU extracted by fmpy into a temporary directory, removed after the module."""
+    from fmpy import extract
+
+    d = extract(fmu)
+    yield d
+    shutil.rmtree(d, ignore_errors=True)

@@ -36,22 +36,6 @@ STOP = 1800.0  # s: 30 min runs, long enough for several 200 s surge periods
 
 
 @pytest.fixture(scope="module")
-def md(fmu):
-    from fmpy import read_model_description
-
-    return read_model_description(fmu)
-
-
-@pytest.fixture(scope="module")
-def unzipdir(fmu):
-    from fmpy import extract
-
-    d = extract(fmu)
-    yield d
-    shutil.rmtree(d, ignore_errors=True)
-
-
-@pytest.fixture(scope="module")
 def workdir():
     d = tempfile.mkdtemp(prefix="slowdrift-fmpy-")
     yield d

@@ -36,22 +36,6 @@ BEFORE = (3.0e4, -2.0e4, 1.0e7)  # N, N, N m: external force before the save
 AFTER = (-1.0e4, 5.0e4, 0.0)  # and after
 
 
-@pytest.fixture(scope="module")
-def md(fmu):
-    from fmpy import read_model_description
-
-    return read_model_description(fmu)
-
-
-@pytest.fixture(scope="module")
-def unzipdir(fmu):
-    from fmpy import extract
-
-    d = extract(fmu)
-    yield d
-    shutil.rmtree(d, ignore_errors=True)
-
-
 class Logged:
     """An FMU2Slave instantiated with a logger that keeps every message (the FMU passes the
     message as its printf format, every % doubled, and no further arguments)."""

@@ -41,13 +41,6 @@ N_STEPS = 600
 OBSERVED = ("X", "Y", "theta", "Xdot", "Ydot", "thetadot")
 
 
-@pytest.fixture(scope="module")
-def md(fmu):
-    from fmpy import read_model_description
-
-    return read_model_description(fmu)
-
-
 def execution(fmu, md):
     from libcosimpy.CosimExecution import CosimExecution
     from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
@@ -63,6 +56,16 @@ def execution(fmu, md):
     index = ex.add_local_slave(local_slave=slave)
     assert index >= 0, "libcosim could not load the FMU"
     return ex, slave, index
+
+
+def set_parameters(ex, index, vr):
+    """routes.PARAMETERS as the slave's initial values."""
+    for name, value in PARAMETERS.items():
+        v = vr[name]
+        if v.type == "Real":
+            assert ex.real_initial_value(index, v.valueReference, float(value)), name
+        else:
+            assert ex.integer_initial_value(index, v.valueReference, int(value)), name
 
 
 def test_libcosim_variables(fmu, md):
@@ -83,12 +86,7 @@ def test_libcosim_run_equals_fmpy(fmu, md):
 
     vr = {v.name: v for v in md.modelVariables}
     ex, _slave, index = execution(fmu, md)
-    for name, value in PARAMETERS.items():
-        v = vr[name]
-        if v.type == "Real":
-            assert ex.real_initial_value(index, v.valueReference, float(value)), name
-        else:
-            assert ex.integer_initial_value(index, v.valueReference, int(value)), name
+    set_parameters(ex, index, vr)
     series = CosimObserver.create_time_series()
     last = CosimObserver.create_last_value()
     assert ex.add_observer(observer=series)
@@ -131,12 +129,7 @@ def test_libcosim_two_days(fmu, md):
     steps = 48 * 3600
     vr = {v.name: v for v in md.modelVariables}
     ex, _slave, index = execution(fmu, md)
-    for name, value in PARAMETERS.items():
-        v = vr[name]
-        if v.type == "Real":
-            assert ex.real_initial_value(index, v.valueReference, float(value)), name
-        else:
-            assert ex.integer_initial_value(index, v.valueReference, int(value)), name
+    set_parameters(ex, index, vr)
     series = CosimObserver.create_time_series(buffer_size=steps + 1)
     assert ex.add_observer(observer=series)
     assert series.start_time_series(index, vr["X"].valueReference, CosimVariableType.REAL)
