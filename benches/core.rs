@@ -8,7 +8,12 @@
 //! 2. `step/rk4_step_no_drag`, `step/rk4_step_drag_4x20`: one `Simulation::step`.
 //! 3. `run/run_3h_1s_stepping`, `run/run_3h_1s_new_and_stepping`: a 3-hour run at h = 1 s
 //!    without drag (Aranha damping on), stepping only, and `Simulation::new` + stepping.
-//! 4. Record memory for 1 h, 3 h and 6 h (printed, not timed).
+//!    `Simulation::new` makes the first segment of the record stream: one block of
+//!    `run.block_duration` (16384 s) plus halos and the join's ramp, whatever the run's
+//!    duration, so this is one block's records, not a 3-hour record.
+//! 4. Record memory of a Simulation (its current segment) for runs of 1, 3, 6 and 100 h and
+//!    open-ended, at blocks of 4096 s and 16384 s (printed, not timed): the same for every
+//!    run length, proportional to the block.
 //! 5. `hydro/read_oc4_12d`: reading the OC4 semisubmersible's WAMIT QTF file
 //!    (`marin_semi.12d`, 1.2 MB, 9576 lines) from the shared data directory
 //!    (`$SLOWDRIFT_DATA` or `../shared/data`); skipped with a notice if it is absent.
@@ -23,9 +28,16 @@
 //!    time domain (timed per sample, extrapolated to the record) and binned by difference
 //!    frequency with one inverse FFT. Target (issue #5): >= 100x faster than the direct
 //!    double sum at a relative error < 1e-6, memory linear in N_omega x rank.
+//! 8. `segment/cross_join_default`: the cost of making the next segment, on the default
+//!    problem (combined drag on 4 columns x 20 strips, Aranha damping, h = 1 s) run
+//!    open-ended: restored at 16383 s and stepped to 16384 s untimed, then the one step that
+//!    starts in segment 1 and makes it from segment 0's tails, timed. Printed against
+//!    stepping one block (16384 steps) and `Simulation::new` for runs of 1 h, 6 h, 100 h and
+//!    open-ended (flat: the records do not depend on the duration).
 //!
 //! Targets (issue): records <= 30 FFTs, step < 1 us (no drag) and < 10 us (drag 4 x 20),
-//! 3-hour run at 1 s < 50 ms, memory linear in the record length, OC4 .12d read < 100 ms.
+//! 3-hour run at 1 s < 50 ms, OC4 .12d read < 100 ms. Record memory: bounded by one block
+//! (the same for every run length, open-ended included).
 //!
 //! Profile of `records_3h` (perf, 2-core VM): the build does 11 FFTs (1 elevation, 3 force,
 //! 7 non-zero damping records) plus one plan (~3 FFTs of twiddles) and transfers_on_grid
@@ -470,9 +482,12 @@ fn bench_run(c: &mut Criterion, report: &mut Vec<String>) {
     });
     report.push(format!(
         "run_3h_1s: stepping {:.2} ms, new + stepping {:.2} ms (10800 steps, Aranha damping, \
-         no drag); target < 50 ms: stepping {}, new + stepping {}",
+         no drag; new makes one block of {} s, FFT N = {}, not a 3-hour record); target < 50 \
+         ms: stepping {}, new + stepping {}",
         stepping.as_secs_f64() * 1e3,
         whole.as_secs_f64() * 1e3,
+        cfg.run.block_duration,
+        sim.grid().len,
         if stepping.as_secs_f64() < 0.05 {
             "met"
         } else {
@@ -507,19 +522,167 @@ fn record_bytes(records: &ForceRecords) -> usize {
     bytes
 }
 
+/// Record memory of a Simulation (its current segment, `record_bytes`) for runs of 1, 3, 6
+/// and 100 hours and open-ended, at blocks of 4096 s and 16384 s; the open-ended run again
+/// in a late segment (restored at 1000 h). Printed, not timed.
 fn memory(report: &mut Vec<String>) {
-    report
-        .push("record memory (h = 0.5 s, records at 0.25 s, force + 3x3 damping, no drag):".into());
-    for hours in [1.0, 3.0, 6.0] {
-        let sim = Simulation::new(config(hours * 3600.0, 0.5, DragModel::Off)).unwrap();
-        let bytes = record_bytes(sim.records());
+    report.push(
+        "record memory of a Simulation, its current segment (h = 0.5 s, records at 0.25 s, \
+         force + 3x3 damping = 11 records, no drag):"
+            .into(),
+    );
+    for block in [4096.0, DEFAULT_BLOCK_DURATION] {
+        let mut sizes = Vec::new();
+        for hours in [1.0, 3.0, 6.0, 100.0, f64::INFINITY] {
+            let mut problem = config(hours * 3600.0, 0.5, DragModel::Off);
+            problem.run.block_duration = block;
+            let sim = Simulation::new(problem).unwrap();
+            let bytes = record_bytes(sim.records());
+            let run = if hours.is_finite() {
+                format!("{hours} h")
+            } else {
+                "open-ended".into()
+            };
+            report.push(format!(
+                "  block {block} s, run {run}: {} samples per record (FFT N = {}), {bytes} bytes \
+                 = {:.3} MB",
+                sim.records().clock.len,
+                sim.grid().len,
+                bytes as f64 / 1e6
+            ));
+            sizes.push(bytes);
+            if !hours.is_finite() {
+                // The same simulation in a late segment: restored at 1000 h.
+                let mut sim = sim;
+                let mut state = sim.snapshot().to_bytes();
+                let steps = (1000.0 * 3600.0 / 0.5) as u64;
+                state[8..16].copy_from_slice(&steps.to_le_bytes());
+                sim.restore(&slowdrift::Snapshot::from_bytes(&state).unwrap())
+                    .unwrap();
+                let late = record_bytes(sim.records());
+                report.push(format!(
+                    "  block {block} s, open-ended, restored at 1000 h (segment {}): {late} bytes",
+                    sim.segment()
+                ));
+                sizes.push(late);
+            }
+        }
+        let same = sizes.iter().all(|&b| b == sizes[0]);
         report.push(format!(
-            "  {hours} h: {} samples per record, {bytes} bytes = {:.2} MB, {:.3} MB per hour",
-            sim.records().clock.len,
-            bytes as f64 / 1e6,
-            bytes as f64 / 1e6 / hours
+            "  block {block} s: {} for every run length ({:.3} MB per block, {:.3} MB per hour \
+             of block)",
+            if same { "the same" } else { "NOT the same" },
+            sizes[0] as f64 / 1e6,
+            sizes[0] as f64 / 1e6 / (block / 3600.0)
         ));
     }
+}
+
+// ---------------------------------------------------------------- 8. open-ended records
+
+/// The default problem (combined drag on 4 columns x 20 strips, Aranha damping, h = 1 s)
+/// with run duration `duration`.
+fn default_with_duration(duration: f64) -> Problem {
+    let mut problem = slowdrift::problem::default_problem().expect("the default problem");
+    problem.run.duration = duration;
+    problem
+}
+
+/// The cost of making the next segment: an open-ended run of the default problem restored
+/// (untimed) at 16383 s, one untimed step to 16384 s (still in segment 0), then the timed
+/// step that starts at 16384 s in segment 1 and makes it from segment 0's tails. Against
+/// stepping one block (16384 steps inside segment 0) and `Simulation::new` (the plan and the
+/// first segment) for runs of 1 h, 6 h, 100 h and open-ended.
+fn bench_segments(c: &mut Criterion, report: &mut Vec<String>) {
+    let problem = default_with_duration(f64::INFINITY);
+    let mut sim = Simulation::new(problem.clone()).unwrap();
+    let h = problem.run.time_step;
+    let block_steps = (problem.run.block_duration / h).round() as u64;
+    for _ in 0..block_steps - 1 {
+        sim.step([0.0; 3]).unwrap();
+    }
+    let before_join = sim.snapshot();
+    assert_eq!(before_join.time(), problem.run.block_duration - h);
+    // One crossing, untimed: restore (rebuilds segment 0), a step inside it, the crossing.
+    let cross = |sim: &mut Simulation| -> Duration {
+        sim.restore(&before_join).unwrap();
+        sim.step(black_box([0.0; 3])).unwrap();
+        assert_eq!(sim.segment(), 0);
+        let start = std::time::Instant::now();
+        sim.step(black_box([0.0; 3])).unwrap();
+        let elapsed = start.elapsed();
+        assert_eq!(sim.segment(), 1);
+        elapsed
+    };
+    let mut group = c.benchmark_group("segment");
+    group
+        .sample_size(20)
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(5));
+    group.bench_function("cross_join_default", |b| {
+        b.iter_custom(|n| (0..n).map(|_| cross(&mut sim)).sum())
+    });
+    group.finish();
+
+    let mut crossings: Vec<Duration> = (0..31).map(|_| cross(&mut sim)).collect();
+    crossings.sort();
+    let crossing = crossings[crossings.len() / 2];
+    // Stepping one block inside segment 0 (reset: back to segment 0, outside the timing).
+    let block = {
+        let mut times: Vec<Duration> = (0..7)
+            .map(|_| {
+                sim.reset().unwrap();
+                let start = std::time::Instant::now();
+                for _ in 0..block_steps {
+                    sim.step(black_box([0.0; 3])).unwrap();
+                }
+                let elapsed = start.elapsed();
+                assert_eq!(sim.segment(), 0);
+                elapsed
+            })
+            .collect();
+        times.sort();
+        times[times.len() / 2]
+    };
+    let per_step = block.as_secs_f64() / block_steps as f64;
+    let ms = |d: Duration| d.as_secs_f64() * 1e3;
+    report.push(format!(
+        "open-ended records, default problem (combined drag 4 x 20, Aranha, h = 1 s, block \
+         {} s, FFT N = {}):",
+        problem.run.block_duration,
+        sim.grid().len
+    ));
+    report.push(format!(
+        "  the step that crosses into segment 1 (makes it from segment 0's tails): {:.2} ms \
+         median of 31 (range {:.2}-{:.2} ms) = {:.0} ordinary steps",
+        ms(crossing),
+        ms(crossings[0]),
+        ms(crossings[crossings.len() - 1]),
+        crossing.as_secs_f64() / per_step
+    ));
+    report.push(format!(
+        "  stepping one block ({block_steps} steps inside segment 0): {:.1} ms median of 7 \
+         ({:.3} us per step); the segment adds {:.3} us per step amortised ({:.1} %)",
+        ms(block),
+        per_step * 1e6,
+        crossing.as_secs_f64() / block_steps as f64 * 1e6,
+        100.0 * crossing.as_secs_f64() / block.as_secs_f64()
+    ));
+    let mut line = String::from("  Simulation::new (plan + first segment):");
+    for hours in [1.0, 6.0, 100.0, f64::INFINITY] {
+        let p = default_with_duration(hours * 3600.0);
+        let t = median_time(11, || {
+            black_box(Simulation::new(black_box(p.clone())).unwrap());
+        });
+        let run = if hours.is_finite() {
+            format!("{hours} h")
+        } else {
+            "open-ended".into()
+        };
+        line.push_str(&format!(" {run} {:.1} ms;", ms(t)));
+    }
+    line.pop();
+    report.push(line + " (medians of 11)");
 }
 
 // ---------------------------------------------------------------- 5. WAMIT import
@@ -787,6 +950,7 @@ fn main() {
     bench_steps(&mut c, &mut report);
     bench_run(&mut c, &mut report);
     memory(&mut report);
+    bench_segments(&mut c, &mut report);
     bench_wamit(&mut c, &mut report);
     bench_columns(&mut c, &mut report);
     bench_full_qtf(&mut c, &mut report);

@@ -23,11 +23,20 @@
 //! When a run reaches the end of the records both sides roll back to t = 0 outside the timed
 //! region (`Simulation::restore`, `fmi2SetFMUstate`). The summary at the end times
 //! interleaved three-hour runs of both sides with `Instant` and prints the medians and the
-//! per-step overhead.
+//! per-step overhead. (Three hours stay inside the first segment of the records, a block of
+//! 16384 s: no join is crossed in these runs.)
+//!
+//! Last, the FMU's initialisation (fmi2Instantiate + fmi2SetupExperiment + enter and exit
+//! initialisation mode; fmi2FreeInstance outside the timing) for stop times of 1 h, 6 h and
+//! 100 h and none (stopTimeDefined = fmi2False): flat, since the records are made one block
+//! at a time whatever the stop time. Timed with the packed FMU's resources (the default
+//! platform's drift precomputed, written by `write_resources` into a temporary folder) and
+//! without (no fmuResourceLocation: the embedded default, whose column solver runs then).
 
 use criterion::Criterion;
 use slowdrift::fmi2::exports::*;
 use slowdrift::fmi2::model_description::{vr, GUID};
+use slowdrift::fmi2::resources::write_resources;
 use slowdrift::fmi2::types::*;
 use slowdrift::problem::default_problem;
 use slowdrift::{Outputs, Simulation};
@@ -225,6 +234,51 @@ fn check_same_run(core: &mut Core, fmu: &mut Fmu) {
     fmu.rewind();
 }
 
+/// Seconds of one FMU initialisation of the default platform with stop time `stop`
+/// (`None`: stopTimeDefined = fmi2False), and of its part in fmi2ExitInitializationMode
+/// (the simulation and its first segment of records). `resources`: the fmuResourceLocation
+/// (a `file:` URI of a folder written by `write_resources`, as in the packed FMU), or none
+/// (the embedded default: the column solver runs at initialisation). Timed:
+/// fmi2Instantiate, fmi2SetupExperiment, fmi2EnterInitializationMode and
+/// fmi2ExitInitializationMode; fmi2FreeInstance after the timing.
+fn initialisation(stop: Option<f64>, resources: Option<&CString>) -> (f64, f64) {
+    let name = CString::new("init").unwrap();
+    let guid = CString::new(GUID).unwrap();
+    let (defined, stop_time) = match stop {
+        Some(t) => (fmi2True, t),
+        None => (fmi2False, 0.0),
+    };
+    let location = resources.map_or(ptr::null(), |r| r.as_ptr());
+    let start = Instant::now();
+    let c = unsafe {
+        fmi2Instantiate(
+            name.as_ptr(),
+            fmi2Type::fmi2CoSimulation,
+            guid.as_ptr(),
+            location,
+            ptr::null(),
+            fmi2False,
+            fmi2False,
+        )
+    };
+    assert!(!c.is_null(), "fmi2Instantiate");
+    let exit;
+    unsafe {
+        ok(
+            fmi2SetupExperiment(c, fmi2False, 0.0, 0.0, defined, stop_time),
+            "fmi2SetupExperiment",
+        );
+        ok(fmi2EnterInitializationMode(c), "enter");
+        let before_exit = Instant::now();
+        ok(fmi2ExitInitializationMode(c), "exit");
+        exit = before_exit.elapsed();
+    }
+    let total = start.elapsed();
+    black_box(c);
+    unsafe { fmi2FreeInstance(c) };
+    (total.as_secs_f64(), exit.as_secs_f64())
+}
+
 fn median(mut v: Vec<f64>) -> f64 {
     v.sort_by(f64::total_cmp);
     v[v.len() / 2]
@@ -329,4 +383,50 @@ fn main() {
         }
     );
     println!("whole master step (set inputs, step, get outputs) - (advance + outputs): {over_cycle:.0} ns");
+
+    // FMU initialisation for several stop times, interleaved rounds, medians: with the
+    // packed FMU's resources (the drift precomputed) and without (the embedded default).
+    let dir = std::env::temp_dir().join(format!("slowdrift-fmu-bench-{}", std::process::id()));
+    write_resources(&dir).expect("resources");
+    let uri = CString::new(format!("file://{}", dir.display())).unwrap();
+    let stops: [(&str, Option<f64>); 4] = [
+        ("stopTime = 1 h", Some(3600.0)),
+        ("stopTime = 6 h", Some(6.0 * 3600.0)),
+        ("stopTime = 100 h", Some(100.0 * 3600.0)),
+        ("no stopTime", None),
+    ];
+    for (what, resources, rounds) in [
+        (
+            "with the packed FMU's resources (drift precomputed)",
+            Some(&uri),
+            15,
+        ),
+        (
+            "without resources (embedded default: the column solver runs)",
+            None,
+            5,
+        ),
+    ] {
+        initialisation(None, resources); // warm-up
+        let mut init: Vec<(Vec<f64>, Vec<f64>)> = vec![Default::default(); stops.len()];
+        for _ in 0..rounds {
+            for ((_, stop), (total, exit)) in stops.iter().zip(&mut init) {
+                let (t, e) = initialisation(*stop, resources);
+                total.push(t);
+                exit.push(e);
+            }
+        }
+        println!(
+            "\nFMU initialisation {what}: fmi2Instantiate + fmi2SetupExperiment + enter/exit \
+             initialisation mode (fmi2FreeInstance untimed), medians of {rounds} interleaved rounds:"
+        );
+        for ((what, _), (total, exit)) in stops.iter().zip(init) {
+            println!(
+                "{what:<18} {:7.1} ms (of which fmi2ExitInitializationMode {:.1} ms)",
+                median(total) * 1e3,
+                median(exit) * 1e3
+            );
+        }
+    }
+    std::fs::remove_dir_all(&dir).ok();
 }

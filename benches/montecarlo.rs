@@ -3,7 +3,9 @@
 //! Default platform (column-solver drift and damping, computed once), long-crested head
 //! seas, Newman geometric, table drift damping, combined drag on 4 columns x 20 strips,
 //! 2^14 s at h = 1 s, transient 10 surge periods; one run = `Simulation::new` + 16384 RK4
-//! steps + the statistics ([`run_seed`]).
+//! steps + the statistics ([`run_seed`]). A run of 2^14 s is one block of the record stream
+//! (`run.block_duration` = 2^14 s): its records are one segment, made once, whose transforms
+//! span the block plus the halo and the join's ramp (printed as N); no join is crossed.
 //!
 //! 1. `montecarlo/fig10_one_run` (criterion): one run on one thread.
 //! 2. The workload itself, 1000 runs through [`run_jobs`] on all cores, is too long for
@@ -22,6 +24,7 @@ use slowdrift::hydro::io::database::HydroDatabase;
 use slowdrift::montecarlo::{run_jobs, run_seed, Case, Job};
 use slowdrift::problem::default_problem;
 use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
+use slowdrift::RecordPlan;
 use std::hint::black_box;
 use std::path::Path;
 use std::process::Command;
@@ -138,6 +141,14 @@ fn main() {
         "one run on one thread: {:.1} ms ({:.2} runs/s)",
         1e3 * single,
         1.0 / single
+    );
+    let plan = RecordPlan::new(&case.problem).expect("the plan");
+    println!(
+        "records per run: one segment of {} samples, transforms of N = {} (block {} s at {} s)",
+        plan.segments().record_len(),
+        plan.grid().len,
+        case.problem.run.block_duration,
+        plan.grid().dt
     );
     match numpy_seconds(&case) {
         Ok((numpy, line)) => println!(
