@@ -130,8 +130,6 @@ pub struct KinematicsWork {
     profile: Vec<f64>,
     growth: Vec<f64>,
     sums: [Vec<Complex64>; 3],
-    /// One transform's output (reused: it stays in cache).
-    output: Vec<Complex64>,
     /// The series rounded to single precision one after the other, before the transpose.
     series: Vec<Complex32>,
     tile: Vec<Complex32>,
@@ -223,11 +221,9 @@ impl KinematicsWork {
         direction_sums(components, column, gravity, &mut self.sums);
         let [ax, ay, a] = &self.sums;
         self.series.clear();
-        let (output, series) = (&mut self.output, &mut self.series);
+        let mut series = Narrowing(&mut self.series);
         let mut synthesize = |cx: &[Complex64], cy: &[Complex64]| {
-            output.clear();
-            synth.append_two_real_series(cx, cy, output);
-            series.extend(output.iter().map(|u| narrow(*u)));
+            synth.append_two_real_series(cx, cy, &mut series);
         };
         synthesize(a, &self.zero);
         let dz = column.draft / strips as f64;
@@ -286,6 +282,15 @@ fn transpose(
             }
         }
         rows.extend_from_slice(tile);
+    }
+}
+
+/// A sink that stores the samples it takes in single precision ([`narrow`]).
+struct Narrowing<'a>(&'a mut Vec<Complex32>);
+
+impl Extend<Complex64> for Narrowing<'_> {
+    fn extend<I: IntoIterator<Item = Complex64>>(&mut self, values: I) {
+        self.0.extend(values.into_iter().map(narrow));
     }
 }
 

@@ -153,13 +153,12 @@ impl Join {
     }
 
     /// The next linear series of this segment, from block k's FFT output `block` (N
-    /// samples, index = global sample - kB): writes the joined series (record length) into
+    /// samples, index = global sample - kB): appends the joined series (record length) to
     /// `out` and keeps block k's tail for segment k + 1.
-    pub fn series(&mut self, block: &[Complex64], out: &mut [Complex64]) {
+    pub fn series(&mut self, block: &[Complex64], out: &mut impl Extend<Complex64>) {
         let Segments { block: b, ramp: r } = self.segments;
         let n = block.len();
         debug_assert!(n >= self.segments.span());
-        debug_assert_eq!(out.len(), self.segments.record_len());
         let index = self.calls;
         self.calls += 1;
         if self.tails.len() <= index {
@@ -167,28 +166,27 @@ impl Join {
                 .push(vec![Complex64::default(); self.segments.tail_len()]);
         }
         let tail = &mut self.tails[index];
-        // out[l] is global sample kB - 1 + l, the block's index l - 1 (wrapping to N - 1).
-        let at = |l: usize| block[(l + n - HALO_BEFORE) % n];
+        // Sample l of the series is global sample kB - 1 + l: the block's index l - 1
+        // (HALO_BEFORE = 1), and for l = 0 index N - 1 (the transform is periodic). No
+        // index arithmetic per sample: slices shifted by one.
+        let len = self.segments.record_len();
+        let h = HALO_BEFORE;
         if self.joined {
             // [kB - 1, kB + H): the previous block alone; its tail starts at kB - 1.
             let alone = HALO_BEFORE + HALO_AFTER;
-            out[..alone].copy_from_slice(&tail[..alone]);
-            for (j, &(c, s)) in self.weights.iter().enumerate() {
-                let l = alone + j;
-                out[l] = tail[l] * c + at(l) * s;
-            }
-            for (l, o) in out.iter_mut().enumerate().skip(alone + r) {
-                *o = at(l);
-            }
+            out.extend(tail[..alone].iter().copied());
+            let pairs = self.weights.iter().zip(&tail[alone..]);
+            let ramp = pairs.zip(&block[alone - h..]);
+            out.extend(ramp.map(|((&(c, s), &previous), &next)| previous * c + next * s));
+            out.extend(block[alone + r - h..len - h].iter().copied());
         } else {
-            for (l, o) in out.iter_mut().enumerate() {
-                *o = at(l);
-            }
+            out.extend(block[n - h..].iter().copied());
+            out.extend(block[..len - h].iter().copied());
         }
         // The tail of block k: global samples [(k+1)B - 1, (k+1)B + H + R), block index
         // B - 1 onwards.
-        let len = tail.len();
-        tail.copy_from_slice(&block[b - HALO_BEFORE..b - HALO_BEFORE + len]);
+        let tail_len = tail.len();
+        tail.copy_from_slice(&block[b - h..b - h + tail_len]);
     }
 }
 
@@ -227,11 +225,13 @@ mod tests {
             })
             .collect();
         let mut join = Join::new(segments);
-        let mut out = vec![Complex64::default(); segments.record_len()];
+        let mut out = Vec::new();
         let (b, h, r) = (40usize, HALO_AFTER, 8usize);
         for k in 0..3u64 {
             join.begin(k, true);
+            out.clear();
             join.series(&blocks[k as usize], &mut out);
+            assert_eq!(out.len(), segments.record_len());
             for (l, got) in out.iter().enumerate() {
                 let m = (k as usize * b + l) as i64 - 1;
                 let own = |block: usize| {
@@ -278,10 +278,11 @@ mod tests {
             })
             .collect();
         let mut in_sequence = Join::new(segments);
-        let mut out = vec![Complex64::default(); segments.record_len()];
+        let mut out = Vec::new();
         let mut third = Vec::new();
         for k in 0..4u64 {
             in_sequence.begin(k, true);
+            out.clear();
             in_sequence.series(&blocks[k as usize], &mut out);
             if k == 3 {
                 third = out.clone();
@@ -289,8 +290,10 @@ mod tests {
         }
         let mut jump = Join::new(segments);
         jump.begin(2, false);
+        out.clear();
         jump.series(&blocks[2], &mut out);
         jump.begin(3, true);
+        out.clear();
         jump.series(&blocks[3], &mut out);
         assert_eq!(out, third);
     }

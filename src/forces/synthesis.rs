@@ -32,6 +32,8 @@ pub struct Synthesizer {
     count: usize,
     /// The stream's join, and the block's full transform before it is joined.
     join: Option<(Join, Vec<Complex64>)>,
+    /// The transform of [`Synthesizer::append_two_real_series`] without a join.
+    pair_block: Vec<Complex64>,
 }
 
 impl Synthesizer {
@@ -50,6 +52,7 @@ impl Synthesizer {
             first: grid.first,
             count: grid.count,
             join: None,
+            pair_block: Vec::new(),
         }
     }
 
@@ -94,7 +97,7 @@ impl Synthesizer {
                     coefficients,
                     block,
                 );
-                join.series(block, out);
+                join.series(block, &mut Fill(out));
             }
         }
     }
@@ -104,22 +107,40 @@ impl Synthesizer {
     /// x_m + i y_m with x_m = Re sum_j cx_j e^{i omega_j t_m} and
     /// y_m = Re sum_j cy_j e^{i omega_j t_m}. Uses the Hermitian pairs n and N - n, so the
     /// band must lie below the Nyquist index (guaranteed by [`FrequencyGrid::new`]). Every
-    /// input sample is written once: the band's pairs and the zeros around them.
+    /// input sample is written once: the band's pairs and the zeros around them. `out` is
+    /// any sink (the drag kinematics narrow the samples as they take them); the transform
+    /// runs in the synthesizer's own buffer, whose capacity later calls reuse.
     pub fn append_two_real_series(
         &mut self,
         cx: &[Complex64],
         cy: &[Complex64],
-        out: &mut Vec<Complex64>,
+        out: &mut impl Extend<Complex64>,
     ) {
-        if let Some((join, block)) = &mut self.join {
-            block.clear();
-            pair_transform(&self.fft, &mut self.scratch, self.first, cx, cy, block);
-            let start = out.len();
-            out.resize(start + join.len(), Complex64::default());
-            join.series(block, &mut out[start..]);
-            return;
+        let (join, block) = match &mut self.join {
+            Some((join, block)) => (Some(join), block),
+            None => (None, &mut self.pair_block),
+        };
+        block.clear();
+        pair_transform(&self.fft, &mut self.scratch, self.first, cx, cy, block);
+        match join {
+            Some(join) => join.series(block, out),
+            None => out.extend(block.iter().copied()),
         }
-        pair_transform(&self.fft, &mut self.scratch, self.first, cx, cy, out);
+    }
+}
+
+/// A sink that writes into a slice from its start, in order.
+struct Fill<'a>(&'a mut [Complex64]);
+
+impl Extend<Complex64> for Fill<'_> {
+    fn extend<I: IntoIterator<Item = Complex64>>(&mut self, values: I) {
+        let rest = std::mem::take(&mut self.0);
+        let mut written = 0;
+        for (slot, value) in rest.iter_mut().zip(values) {
+            *slot = value;
+            written += 1;
+        }
+        self.0 = &mut rest[written..];
     }
 }
 
