@@ -15,21 +15,30 @@ pub struct ElevationRecord {
     pub samples: Vec<f64>,
 }
 
-/// The elevation record of `config`'s sea (its seed) over `length` seconds: the record that
-/// [`Simulation::new`] synthesises by one inverse FFT (E&S 6) for a run of that length,
-/// its first `length / dt` samples. The drag kinematics are not built (they do not change
-/// the elevation). Errors: `length` not positive, or what [`Simulation::new`] refuses.
+/// The elevation record of `config`'s sea (its seed) over `length` seconds: the elevation
+/// records that [`Simulation::new`] synthesises (E&S 6: one inverse FFT per block of the
+/// record stream, consecutive blocks joined by the cross-fade of `forces::stream`), taken
+/// segment by segment, the first `length / dt` samples from t = 0. The drag kinematics are
+/// not built (they do not change the elevation). Errors: `length` not positive, or what
+/// [`Simulation::new`] refuses.
 pub fn elevation_record(config: &Problem, length: f64) -> Result<ElevationRecord> {
     require_positive("study.record_length", length)?;
     let mut config = config.clone();
     config.run.duration = length;
     config.model.drag = DragModel::Off;
-    let sim = Simulation::new(config)?;
-    let records = sim.records();
-    let dt = records.clock.dt;
-    let count = ((length / dt).round() as usize).min(records.elevation.samples().len());
-    Ok(ElevationRecord {
-        dt,
-        samples: records.elevation.samples()[..count].to_vec(),
-    })
+    let mut sim = Simulation::new(config)?;
+    let block = sim.segments().block;
+    let (start_time, dt) = (sim.grid().start_time, sim.grid().dt);
+    let count = (length / dt).round() as usize;
+    let mut samples = Vec::new();
+    while samples.len() < count {
+        // Global sample m = kB + j lies in segment k; its records start a halo earlier.
+        let m = samples.len();
+        let t = start_time + (m - m % block) as f64 * dt;
+        let records = sim.records_at(t)?;
+        let first = ((t - records.clock.start_time) / dt).round() as usize;
+        let take = (count - m).min(block);
+        samples.extend_from_slice(&records.elevation.samples()[first..first + take]);
+    }
+    Ok(ElevationRecord { dt, samples })
 }

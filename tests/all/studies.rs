@@ -13,6 +13,33 @@ use slowdrift::studies::parallel_map;
 use slowdrift::studies::waves::elevation_record;
 use std::f64::consts::PI;
 
+/// A record longer than a block (four blocks of 2048 s): as many samples as its length
+/// asks for, each equal to the elevation a simulation reports when it is stepped to that
+/// time through the joins (the interpolation at a record node is the node's sample), and
+/// its first block the same as a one-block record's (the sea does not depend on the length).
+#[test]
+fn an_elevation_record_longer_than_a_block_follows_the_stream() {
+    let (block, length) = (2048.0, 8192.0);
+    let mut config = base_config(length, 1.0, 3);
+    config.run.block_duration = block;
+    let record = elevation_record(&config, length).unwrap();
+    assert_eq!(record.samples.len(), 16384, "8192 s at dt = h/2 = 0.5 s");
+    let short = elevation_record(&config, block).unwrap();
+    assert_eq!(record.samples[..4096], short.samples[..]);
+    let mut stepped = config.clone();
+    stepped.model.drag = slowdrift::model::DragModel::Off;
+    let mut sim = slowdrift::Simulation::new(stepped).unwrap();
+    for step in 1..8192 {
+        sim.step([0.0; 3]).unwrap();
+        let eta = sim.outputs().unwrap().wave_elevation;
+        let sample = record.samples[2 * step];
+        assert!(
+            (eta - sample).abs() <= 1e-12 * (1.0 + sample.abs()),
+            "t = {step} s: stepped {eta} vs record {sample}"
+        );
+    }
+}
+
 /// Elevation of a 2^14 s record (Hs 6 m, JONSWAP gamma 3.3): its histogram density
 /// integrates to 1 over +-8 sigma (every sample inside), and the histogram's variance
 /// (with Sheppard's correction w^2/12 for the binning) matches Hs^2/16 within five
