@@ -35,6 +35,9 @@
 //!    stepping one block (16384 steps) and `Simulation::new` for runs of 1 h, 6 h, 100 h and
 //!    open-ended (flat: the records do not depend on the duration).
 //!
+//! 9. The depth kernel's rank (issue #16) for the default platform and a deep-draft spar
+//!    (printed).
+//!
 //! Targets (issue): records <= 30 FFTs, step < 1 us (no drag) and < 10 us (drag 4 x 20),
 //! 3-hour run at 1 s < 50 ms, OC4 .12d read < 100 ms. Record memory: bounded by one block
 //! (the same for every run length, open-ended included).
@@ -56,8 +59,8 @@ use criterion::Criterion;
 use rustfft::num_complex::Complex64;
 use rustfft::FftPlanner;
 use slowdrift::forces::{
-    plan_inverse_fft, transfers_on_grid, DirectionTransfer, ForceRecords, InverseFft,
-    QtfFactorisation, RecordOptions, Synthesizer,
+    plan_inverse_fft, transfers_on_grid, DepthBasis, DirectionTransfer, ForceRecords, InverseFft,
+    QtfFactorisation, RecordOptions, Synthesizer, KINEMATICS_TOLERANCE,
 };
 use slowdrift::hydro::aranha::aranha_damping;
 use slowdrift::hydro::column_drift::isolated_columns_table;
@@ -685,6 +688,37 @@ fn bench_segments(c: &mut Criterion, report: &mut Vec<String>) {
     report.push(line + " (medians of 11)");
 }
 
+/// The rank of the drag kinematics' depth kernel (`forces::depth_basis`) on the default
+/// sea's block grid, for the default platform's columns (draft 30 m, 20 strips) and a
+/// deep-draft spar's (120 m, as the OC3 Hywind, at 20 and 40 strips), and the time to
+/// make one basis. Printed, not timed by criterion.
+fn depth_ranks(report: &mut Vec<String>) {
+    let problem = default_with_duration(f64::INFINITY);
+    let sim = Simulation::new(problem.clone()).unwrap();
+    let components = WaveComponents::generate(&problem.sea, sim.grid().clone());
+    let gravity = problem.environment.gravity;
+    report.push(format!(
+        "drag kinematics' depth kernel on the default sea (N_omega = {}), tolerance {:e} \
+         (relative rms velocity):",
+        components.grid.count, KINEMATICS_TOLERANCE
+    ));
+    for (draft, strips) in [(30.0, 20), (120.0, 20), (120.0, 40)] {
+        let basis = DepthBasis::new(&components, draft, strips, gravity);
+        let t = median_time(11, || {
+            black_box(DepthBasis::new(&components, draft, strips, gravity));
+        });
+        report.push(format!(
+            "  draft {draft} m, {strips} strips: rank {} (expected relative rms error {:.1e}): \
+             {} transforms per column group instead of {}; basis made in {:.2} ms",
+            basis.rank(),
+            basis.discarded(),
+            1 + basis.rank(),
+            1 + strips,
+            t.as_secs_f64() * 1e3
+        ));
+    }
+}
+
 // ---------------------------------------------------------------- 5. WAMIT import
 
 fn bench_wamit(c: &mut Criterion, report: &mut Vec<String>) {
@@ -951,6 +985,7 @@ fn main() {
     bench_run(&mut c, &mut report);
     memory(&mut report);
     bench_segments(&mut c, &mut report);
+    depth_ranks(&mut report);
     bench_wamit(&mut c, &mut report);
     bench_columns(&mut c, &mut report);
     bench_full_qtf(&mut c, &mut report);

@@ -2,6 +2,7 @@
 //! its mean position and zero yaw (E&S section 2): the wave elevation, the slowly varying
 //! wave force D(t), the wave-drift damping B(t), and the columns' fast kinematics.
 
+mod depth_basis;
 mod directional;
 mod kinematics;
 mod newman;
@@ -13,6 +14,7 @@ mod transfer;
 mod viscous;
 mod yaw_following;
 
+pub use depth_basis::{DepthBasis, KINEMATICS_TOLERANCE};
 pub use directional::{add_cross_terms, cross_direction_force, direction_pairs, CrossWork};
 pub use kinematics::{ColumnKinematics, KinematicsWork};
 pub use newman::NewmanBuilder;

@@ -152,6 +152,9 @@ pub struct WaveComponents {
     pub directions: Vec<Direction>,
     /// Direction-major: `amplitudes[k * grid.count + j]` is a_{first + j, k}, m.
     amplitudes: Vec<Complex64>,
+    /// E sum_k |a_{first + j, k}|^2 = 2 S(omega_j) d_omega sum_k w_k, m^2: the same for
+    /// every block.
+    power: Vec<f64>,
 }
 
 impl WaveComponents {
@@ -173,6 +176,7 @@ impl WaveComponents {
             directions: sea.directions(),
             grid,
             amplitudes: Vec::new(),
+            power: Vec::new(),
         };
         components.regenerate(sea, k);
         components
@@ -185,15 +189,24 @@ impl WaveComponents {
         let mut rng = block_generator(sea.seed, k);
         let grid = &self.grid;
         self.amplitudes.clear();
+        self.power.clear();
+        self.power.resize(grid.count, 0.0);
         for dir in &self.directions {
             for j in 0..grid.count {
-                let scale =
-                    (sea.spectrum.density(grid.omega(j)) * dir.weight * grid.d_omega).sqrt();
+                let variance = sea.spectrum.density(grid.omega(j)) * dir.weight * grid.d_omega;
+                let scale = variance.sqrt();
                 let (xi, xi_prime) = standard_normal_pair(&mut rng);
                 self.amplitudes
                     .push(Complex64::new(scale * xi, scale * xi_prime));
+                self.power[j] += 2.0 * variance;
             }
         }
+    }
+
+    /// The expected power of component j summed over the directions, E sum_k |a_{j,k}|^2
+    /// (m^2), indexed by component j: the same for every block and seed.
+    pub fn expected_power(&self) -> &[f64] {
+        &self.power
     }
 
     /// Amplitudes of direction k, indexed by component j.
