@@ -187,19 +187,23 @@ pub fn require_non_negative(field: &str, value: f64) -> Result<()> {
 }
 
 /// Checks that `value` is neither NaN nor infinite.
-pub fn require_finite(field: &str, value: f64) -> Result<()> {
+pub fn require_finite(field: impl fmt::Display, value: f64) -> Result<()> {
     if value.is_finite() {
         Ok(())
     } else {
-        Err(Error::invalid(field, value, "must be a finite number"))
+        Err(Error::invalid(
+            field.to_string(),
+            value,
+            "must be a finite number",
+        ))
     }
 }
 
 /// Checks every entry of a 3x3 matrix for finiteness, naming the entry on failure.
-pub fn require_finite_matrix(field: &str, m: &[[f64; 3]; 3]) -> Result<()> {
+pub fn require_finite_matrix(field: impl fmt::Display, m: &[[f64; 3]; 3]) -> Result<()> {
     for (i, row) in m.iter().enumerate() {
         for (j, v) in row.iter().enumerate() {
-            require_finite(&format!("{field}[{i}][{j}]"), *v)?;
+            require_finite(format_args!("{field}[{i}][{j}]"), *v)?;
         }
     }
     Ok(())

@@ -435,8 +435,8 @@ impl Problem {
         require_finite_matrix("platform.linear_damping", &p.linear_damping)?;
         require_finite_matrix("platform.quadratic_damping", &p.quadratic_damping)?;
         for (k, c) in p.columns.iter().enumerate() {
-            require_finite(&format!("platform.columns[{k}].x"), c.x)?;
-            require_finite(&format!("platform.columns[{k}].y"), c.y)?;
+            require_finite(format_args!("platform.columns[{k}].x"), c.x)?;
+            require_finite(format_args!("platform.columns[{k}].y"), c.y)?;
             require_positive(&format!("platform.columns[{k}].diameter"), c.diameter)?;
             require_positive(&format!("platform.columns[{k}].draft"), c.draft)?;
         }

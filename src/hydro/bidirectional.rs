@@ -190,7 +190,7 @@ impl BidirectionalTable {
             }
         }
         for (p, &h) in self.headings.iter().enumerate() {
-            require_finite(&format!("{field}.headings[{p}]"), h)?;
+            require_finite(format_args!("{field}.headings[{p}]"), h)?;
             if p > 0 && h <= self.headings[p - 1] {
                 return Err(Error::invalid(
                     format!("{field}.headings[{p}]"),
@@ -222,7 +222,7 @@ impl BidirectionalTable {
                 for (p, r) in m.iter().enumerate() {
                     for (q, v) in r.iter().enumerate() {
                         for (i, x) in v.iter().enumerate() {
-                            require_finite(&format!("{field}.{part}[{n}][{p}][{q}][{i}]"), *x)?;
+                            require_finite(format_args!("{field}.{part}[{n}][{p}][{q}][{i}]"), *x)?;
                         }
                     }
                 }

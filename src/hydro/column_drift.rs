@@ -197,8 +197,8 @@ fn validate_inputs(
         ));
     }
     for (i, c) in columns.iter().enumerate() {
-        require_finite(&format!("platform.columns[{i}].x"), c.x)?;
-        require_finite(&format!("platform.columns[{i}].y"), c.y)?;
+        require_finite(format_args!("platform.columns[{i}].x"), c.x)?;
+        require_finite(format_args!("platform.columns[{i}].y"), c.y)?;
         require_positive(&format!("platform.columns[{i}].diameter"), c.diameter)?;
     }
     validate_grid(environment, omegas, headings)
@@ -223,7 +223,7 @@ pub(crate) fn validate_grid(
         return Err(Error::invalid("drift.headings", "[]", "no headings"));
     }
     for (i, &h) in headings.iter().enumerate() {
-        require_finite(&format!("drift.headings[{i}]"), h)?;
+        require_finite(format_args!("drift.headings[{i}]"), h)?;
     }
     Ok(())
 }

@@ -389,7 +389,7 @@ fn unflatten(v: &[f64; 9]) -> [[f64; 3]; 3] {
 }
 
 fn validate_row(r: usize, row: &DriftRow, has_damping: bool) -> Result<()> {
-    require_finite(&format!("drift.rows[{r}].omega"), row.omega)?;
+    require_finite(format_args!("drift.rows[{r}].omega"), row.omega)?;
     if row.omega <= 0.0 {
         return Err(Error::invalid(
             format!("drift.rows[{r}].omega"),
@@ -397,15 +397,15 @@ fn validate_row(r: usize, row: &DriftRow, has_damping: bool) -> Result<()> {
             "must be greater than zero",
         ));
     }
-    require_finite(&format!("drift.rows[{r}].heading"), row.heading)?;
+    require_finite(format_args!("drift.rows[{r}].heading"), row.heading)?;
     for (i, v) in row.drift.iter().enumerate() {
-        require_finite(&format!("drift.rows[{r}].drift[{i}]"), *v)?;
+        require_finite(format_args!("drift.rows[{r}].drift[{i}]"), *v)?;
     }
     match (&row.damping, has_damping) {
         (Some(b), true) => {
             for (i, line) in b.iter().enumerate() {
                 for (j, v) in line.iter().enumerate() {
-                    require_finite(&format!("drift.rows[{r}].b{}{}", i + 1, j + 1), *v)?;
+                    require_finite(format_args!("drift.rows[{r}].b{}{}", i + 1, j + 1), *v)?;
                 }
             }
             Ok(())

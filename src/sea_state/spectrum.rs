@@ -136,7 +136,7 @@ fn validate_table(omega: &[f64], density: &[f64]) -> Result<()> {
     }
     for (i, (&w, &s)) in omega.iter().zip(density).enumerate() {
         require_positive(&format!("sea.omega[{i}]"), w)?;
-        require_finite(&format!("sea.density[{i}]"), s)?;
+        require_finite(format_args!("sea.density[{i}]"), s)?;
         if s < 0.0 {
             return Err(Error::invalid(
                 format!("sea.density[{i}]"),

@@ -153,8 +153,8 @@ impl ColumnArray {
             ));
         }
         for (i, c) in columns.iter().enumerate() {
-            require_finite(&format!("platform.columns[{i}].x"), c.x)?;
-            require_finite(&format!("platform.columns[{i}].y"), c.y)?;
+            require_finite(format_args!("platform.columns[{i}].x"), c.x)?;
+            require_finite(format_args!("platform.columns[{i}].y"), c.y)?;
             require_positive(&format!("platform.columns[{i}].diameter"), c.diameter)?;
         }
         for (j, cj) in columns.iter().enumerate() {

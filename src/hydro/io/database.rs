@@ -167,23 +167,32 @@ impl HydroDatabase {
             line: (e.line() > 0).then(|| e.line()),
             message: e.to_string(),
         };
-        let value: serde_json::Value = serde_json::from_str(&text).map_err(at)?;
-        let version = value
-            .get("format_version")
-            .and_then(serde_json::Value::as_u64);
-        if version != Some(u64::from(FORMAT_VERSION)) {
+        // The version first (every other field skipped), so that a file of another
+        // version is refused as such; then the file straight into its types (one pass,
+        // errors with their line).
+        #[derive(Deserialize)]
+        struct Version {
+            format_version: Option<serde_json::Value>,
+        }
+        let version: Version = serde_json::from_str(&text).map_err(at)?;
+        if version
+            .format_version
+            .as_ref()
+            .and_then(serde_json::Value::as_u64)
+            != Some(u64::from(FORMAT_VERSION))
+        {
             return Err(Error::Parse {
                 path: name,
                 line: None,
                 message: format!(
                     "format_version = {}: this program reads version {FORMAT_VERSION}",
-                    value
-                        .get("format_version")
+                    version
+                        .format_version
                         .map_or("(absent)".to_string(), |v| v.to_string())
                 ),
             });
         }
-        let database: HydroDatabase = serde_json::from_value(value).map_err(at)?;
+        let database: HydroDatabase = serde_json::from_str(&text).map_err(at)?;
         database.validate().map_err(|e| Error::Parse {
             path: name,
             line: None,
@@ -221,10 +230,10 @@ impl HydroDatabase {
                 ("sway", p.sway),
                 ("yaw", p.yaw),
             ] {
-                require_finite(&format!("database.drift[{k}].{name}"), v)?;
+                require_finite(format_args!("database.drift[{k}].{name}"), v)?;
             }
             if let Some(b) = &p.damping {
-                require_finite_matrix(&format!("database.drift[{k}].damping"), b)?;
+                require_finite_matrix(format_args!("database.drift[{k}].damping"), b)?;
             }
         }
         if let Some(q) = &self.qtf {
@@ -472,7 +481,7 @@ impl QtfData {
             }
         }
         for (k, b) in self.blocks.iter().enumerate() {
-            require_finite(&format!("database.qtf.blocks[{k}].heading"), b.heading)?;
+            require_finite(format_args!("database.qtf.blocks[{k}].heading"), b.heading)?;
             for (part, m) in [("re", &b.re), ("im", &b.im)] {
                 let field = format!("database.qtf.blocks[{k}].{part}");
                 if m.len() != n || m.iter().any(|row| row.len() != n) {
