@@ -136,8 +136,10 @@ pub struct KinematicsWork {
     terms: Vec<Complex32>,
     /// V_jq of the basis in single precision, term-major.
     mix: Vec<f32>,
-    /// One row's strip velocities, accumulated over the terms.
-    velocities: Vec<Complex32>,
+    /// One row's strip velocities u_x and u_y, each strip-contiguous, accumulated over the
+    /// terms.
+    velocity_x: Vec<f32>,
+    velocity_y: Vec<f32>,
     /// The key of every column, and the rows of the previous build to write again.
     keys: Vec<KinematicsKey>,
     /// (Each held once; written in place when no other records hold it.)
@@ -257,23 +259,29 @@ impl KinematicsWork {
         let buffer = Arc::get_mut(&mut rows).expect("rows held only here");
         buffer.clear();
         buffer.reserve((1 + strips) * n);
-        refill(
-            &mut self.velocities,
-            std::iter::repeat_n(Complex32::default(), strips),
-        );
+        refill(&mut self.velocity_x, std::iter::repeat_n(0.0, strips));
+        refill(&mut self.velocity_y, std::iter::repeat_n(0.0, strips));
         // Row m: the elevation, then u_j(m) = sum_q V_jq g_q(m) for every strip j, in
         // single precision (the terms' rounding and the sum's, a few 1e-8 relative, are
-        // below the storage's own and the truncation's 1e-6).
+        // below the storage's own and the truncation's 1e-6). x and y are summed apart, each
+        // over contiguous strips (packed without shuffles), and interleaved once per row.
+        let (ux, uy) = (&mut self.velocity_x, &mut self.velocity_y);
         for (m, &eta) in self.eta.iter().enumerate() {
             buffer.push(eta);
-            self.velocities.fill(Complex32::default());
+            ux.fill(0.0);
+            uy.fill(0.0);
             for (q, mix) in self.mix.chunks_exact(strips).enumerate() {
                 let g = self.terms[q * n + m];
-                for (u, &v) in self.velocities.iter_mut().zip(mix) {
-                    *u += g * v;
+                for ((x, y), &v) in ux.iter_mut().zip(uy.iter_mut()).zip(mix) {
+                    *x += g.re * v;
+                    *y += g.im * v;
                 }
             }
-            buffer.extend_from_slice(&self.velocities);
+            buffer.extend(
+                ux.iter()
+                    .zip(uy.iter())
+                    .map(|(&x, &y)| Complex32::new(x, y)),
+            );
         }
         rows
     }
