@@ -25,9 +25,11 @@ use std::sync::Arc;
 /// elevation at the column centre (m, the real part), series 1 + j the horizontal velocity
 /// at strip j's stretched level as u_x + i u_y (body frame, m/s).
 ///
-/// The rows are stored in single precision: computed in double precision, then rounded to
-/// 24 significant bits (relative 6e-8, a few 1e-7 m/s for these velocities), which halves
-/// the memory written at initialisation and read at every stage. The drag formulas work
+/// The rows are stored in single precision: the transforms run in double precision, their
+/// outputs are rounded to 24 significant bits (relative 6e-8, a few 1e-7 m/s for these
+/// velocities) and the strips' velocities are recombined from the depth terms in single
+/// precision ([`DepthBasis`], truncated at a relative rms error of 1e-6), which halves the
+/// memory written at initialisation and read at every stage. The drag formulas work
 /// in double precision on the stored values. The tests bound the difference from the
 /// double-precision sums.
 #[derive(Debug, Clone, PartialEq)]
