@@ -168,7 +168,7 @@ impl WaveComponents {
 
     /// The amplitudes of block `k` of a stream of records (`forces::stream`): as
     /// [`WaveComponents::generate`], from the generator of (`sea.seed`, k)
-    /// ([`block_generator`]), so that every block's draws depend only on (seed, k), cost
+    /// (`block_generator`), so that every block's draws depend only on (seed, k), cost
     /// the same for any k, and are independent of every other block's. Block 0 is
     /// [`WaveComponents::generate`].
     pub fn generate_block(sea: &SeaState, grid: FrequencyGrid, k: u64) -> Self {
