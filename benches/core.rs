@@ -52,7 +52,7 @@
 #[path = "../tests/all/common.rs"]
 mod common;
 
-use common::{four_columns, oscillator_platform};
+use common::{four_columns, oscillator_platform, snapshot_at_step};
 mod timing;
 
 use criterion::Criterion;
@@ -557,10 +557,8 @@ fn memory(report: &mut Vec<String>) {
             if !hours.is_finite() {
                 // The same simulation in a late segment: restored at 1000 h.
                 let mut sim = sim;
-                let mut state = sim.snapshot().to_bytes();
                 let steps = (1000.0 * 3600.0 / 0.5) as u64;
-                state[8..16].copy_from_slice(&steps.to_le_bytes());
-                sim.restore(&slowdrift::Snapshot::from_bytes(&state).unwrap())
+                sim.restore(&snapshot_at_step(&sim.snapshot(), steps))
                     .unwrap();
                 let late = record_bytes(sim.records());
                 report.push(format!(

@@ -171,12 +171,12 @@ impl Simulation {
 
     /// The segment of the records that time `t` is in: the one of the sample at or below t.
     fn segment_of(&self, t: f64) -> Result<u64> {
-        let grid_dt = 0.5 * self.problem.run.time_step;
-        let position = (t - self.problem.run.start_time) / grid_dt;
+        let grid = self.plan.grid();
+        let position = (t - grid.start_time) / grid.dt;
         if !(position >= -1e-9 && position.is_finite()) {
             return Err(Error::BeforeStart {
                 time: t,
-                start: self.problem.run.start_time,
+                start: grid.start_time,
             });
         }
         Ok(self
@@ -204,7 +204,8 @@ impl Simulation {
     }
 
     /// The records of the segment that time `t` is in, made now if they are not the
-    /// current ones (the state is kept: the next step makes its own segment again).
+    /// current ones (the state is kept: the next step or restore makes the state's segment
+    /// again; until then [`Simulation::outputs`] refuses a state outside these records).
     pub fn records_at(&mut self, t: f64) -> Result<&ForceRecords> {
         self.ensure_segment(t)?;
         Ok(&self.segment.records)

@@ -12,7 +12,7 @@ use slowdrift::scenario::{
     Current, InitialCondition, ModelOptions, Platform, Run, DEFAULT_BLOCK_DURATION,
 };
 use slowdrift::sea_state::{SeaState, Spectrum, Spreading};
-use slowdrift::Problem;
+use slowdrift::{Problem, Snapshot};
 use std::f64::consts::PI;
 
 pub const GRAVITY: f64 = 9.80665;
@@ -244,4 +244,13 @@ pub fn oc4_root_or_skip() -> Option<std::path::PathBuf> {
     }
     println!("skipped: data absent at {}", dir.display());
     None
+}
+
+/// `snapshot` moved to `steps` steps after its origin, the rest of it unchanged: a state
+/// however far into a run without stepping there (the step count is the second of
+/// [`Snapshot::to_bytes`]' little-endian words).
+pub fn snapshot_at_step(snapshot: &Snapshot, steps: u64) -> Snapshot {
+    let mut bytes = snapshot.to_bytes();
+    bytes[8..16].copy_from_slice(&steps.to_le_bytes());
+    Snapshot::from_bytes(&bytes).expect("a snapshot's own bytes")
 }

@@ -177,10 +177,8 @@ fn any_segment_is_rebuilt_bit_for_bit_for_every_feature() {
 fn a_far_segment_is_made_directly() {
     let (_, problem) = features().remove(0);
     let mut sim = Simulation::new(problem).unwrap();
-    let mut bytes = sim.snapshot().to_bytes();
     let steps: u64 = 30 * 365 * 86_400;
-    bytes[8..16].copy_from_slice(&steps.to_le_bytes());
-    sim.restore(&slowdrift::Snapshot::from_bytes(&bytes).unwrap())
+    sim.restore(&snapshot_at_step(&sim.snapshot(), steps))
         .unwrap();
     assert_eq!(sim.segment(), steps / 300);
     trajectory(&mut sim, 400);
@@ -226,10 +224,7 @@ fn memory_is_bounded_by_a_block() {
         p.model.drag = DragModel::Combined { cd: 0.6 };
         let before = live_bytes();
         let mut sim = Simulation::new(p).unwrap();
-        let mut bytes = sim.snapshot().to_bytes();
-        let steps = (at_hours * 3600.0) as u64;
-        bytes[8..16].copy_from_slice(&steps.to_le_bytes());
-        let late = slowdrift::Snapshot::from_bytes(&bytes).unwrap();
+        let late = snapshot_at_step(&sim.snapshot(), (at_hours * 3600.0) as u64);
         sim.restore(&late).unwrap();
         for _ in 0..200 {
             sim.step([0.0; 3]).unwrap();
