@@ -14,6 +14,7 @@ use crate::error::{
 use crate::hydro::bidirectional::BidirectionalSource;
 use crate::hydro::column_drift::isolated_columns_table;
 use crate::hydro::columns::ColumnArray;
+use crate::hydro::default_platform;
 use crate::hydro::io::{database::HydroDatabase, drift_csv};
 use crate::hydro::qtf::{check_tolerance, Qtf};
 use crate::hydro::DriftTable;
@@ -90,45 +91,29 @@ pub fn resolve_hydro(
         DriftSource::Database {
             path,
             bidirectional_from_columns,
-        } => {
-            let database = HydroDatabase::load(path)?;
-            let made_with = (database.water_density, database.gravity);
-            if made_with != (environment.water_density, environment.gravity) {
-                return Err(Error::invalid(
-                    "drift.file",
-                    path.display(),
-                    format!(
-                        "the database was made with water_density = {}, gravity = {}, but \
-                         [environment] has {}, {}: set [environment] to the database's values \
-                         or re-import with them",
-                        made_with.0, made_with.1, environment.water_density, environment.gravity
-                    ),
-                ));
-            }
-            let drift = database.to_drift_table()?;
-            let qtf = database.qtf.as_ref().map(|q| q.to_qtf());
-            let bidirectional = match (database.bidirectional_drift, bidirectional_from_columns) {
-                (own, false) => own.map(BidirectionalSource::Table),
-                (None, true) => Some(BidirectionalSource::ColumnArray {
-                    array: ColumnArray::new(platform.columns.clone(), None)?,
-                    omegas: drift.omegas().to_vec(),
-                }),
-                (Some(_), true) => {
-                    return Err(Error::invalid(
-                        "drift.bidirectional",
-                        "\"column-array\"",
-                        format!(
-                            "the database {} has its own bidirectional_drift table: use one of \
-                             them",
-                            path.display()
-                        ),
-                    ))
-                }
-            };
+        } => from_database(
+            HydroDatabase::load(path)?,
+            &path.display().to_string(),
+            *bidirectional_from_columns,
+            platform,
+            environment,
+        ),
+        DriftSource::DefaultPlatform => {
+            let database =
+                HydroDatabase::parse(default_platform::DATABASE, default_platform::DATABASE_NAME)?;
+            let hydro = from_database(
+                database,
+                default_platform::DATABASE_NAME,
+                false,
+                platform,
+                environment,
+            )?;
             Ok(Hydro {
-                drift,
-                qtf,
-                bidirectional,
+                bidirectional: Some(BidirectionalSource::Embedded {
+                    name: default_platform::BIDIRECTIONAL_NAME,
+                    json: default_platform::BIDIRECTIONAL,
+                }),
+                ..hydro
             })
         }
         DriftSource::IsolatedColumns(grid) => {
@@ -158,6 +143,54 @@ pub fn resolve_hydro(
             })
         }
     }
+}
+
+/// The data of a database (`name` says where it came from in errors): its drift table, QTF
+/// and bi-directional drift, or the column solver's bi-directional drift on the platform's
+/// columns at the database's frequencies when `bidirectional_from_columns`.
+fn from_database(
+    database: HydroDatabase,
+    name: &str,
+    bidirectional_from_columns: bool,
+    platform: &Platform,
+    environment: &Environment,
+) -> Result<Hydro> {
+    let made_with = (database.water_density, database.gravity);
+    if made_with != (environment.water_density, environment.gravity) {
+        return Err(Error::invalid(
+            "drift.file",
+            name,
+            format!(
+                "the database was made with water_density = {}, gravity = {}, but \
+                 [environment] has {}, {}: set [environment] to the database's values \
+                 or re-import with them",
+                made_with.0, made_with.1, environment.water_density, environment.gravity
+            ),
+        ));
+    }
+    let drift = database.to_drift_table()?;
+    let qtf = database.qtf.as_ref().map(|q| q.to_qtf());
+    let bidirectional = match (database.bidirectional_drift, bidirectional_from_columns) {
+        (own, false) => own.map(BidirectionalSource::Table),
+        (None, true) => Some(BidirectionalSource::ColumnArray {
+            array: ColumnArray::new(platform.columns.clone(), None)?,
+            omegas: drift.omegas().to_vec(),
+        }),
+        (Some(_), true) => {
+            return Err(Error::invalid(
+                "drift.bidirectional",
+                "\"column-array\"",
+                format!(
+                    "the database {name} has its own bidirectional_drift table: use one of them"
+                ),
+            ))
+        }
+    };
+    Ok(Hydro {
+        drift,
+        qtf,
+        bidirectional,
+    })
 }
 
 /// The frequencies (evenly spaced from min to max) and headings (every step from 0 up to,

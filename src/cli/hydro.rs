@@ -3,13 +3,20 @@
 //! exist into a native hydro database and prints what it found.
 //!
 //! `slowdrift hydro columns [--config FILE.toml] --out FILE.json`: writes the drift table
-//! (and wave-drift damping) of a configuration (default: the embedded default platform,
-//! whose `[drift]` is the column-array solver) as a native hydro database.
+//! (and wave-drift damping: the table's b_ij, or Aranha's when the configuration asks for
+//! them) of a configuration (default: the embedded default platform's database) as a native
+//! hydro database; with
+//! `--bidirectional`, also the bi-directional drift T(omega; beta_p, beta_q) of a column-array
+//! source on the same frequencies and headings (`tests/bem` joins it to the radiation-
+//! diffraction data above the frequencies where the pontoons and the draft still matter).
 
 use super::args::Checked;
 use clap::{Args, Subcommand};
+use slowdrift::hydro::aranha::aranha_damping;
+use slowdrift::hydro::bidirectional::{BidirectionalSource, BidirectionalTable};
 use slowdrift::hydro::io::database::HydroDatabase;
 use slowdrift::hydro::io::wamit::WamitOptions;
+use slowdrift::model::DriftDamping;
 use slowdrift::problem::{self, default_problem};
 use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
 use std::path::PathBuf;
@@ -59,13 +66,17 @@ struct WamitArgs {
 #[derive(Args)]
 #[command(args_override_self = true)]
 struct ColumnsArgs {
-    /// Configuration (TOML) whose [drift] is written [default: the embedded default platform,
-    /// whose [drift] is the column-array solver]
+    /// Configuration (TOML) whose [drift] is written [default: the embedded default
+    /// platform's database]
     #[arg(long, value_name = "FILE.toml", allow_hyphen_values = true)]
     config: Option<PathBuf>,
     /// The native hydro database to write (JSON)
     #[arg(long, value_name = "FILE.json", allow_hyphen_values = true)]
     out: PathBuf,
+    /// Also write the bi-directional drift of every pair of the table's headings at its
+    /// frequencies (needs a column-array [drift] source)
+    #[arg(long)]
+    bidirectional: bool,
 }
 
 /// `--ulen`, `--rho`, `--g`: a positive number.
@@ -88,6 +99,7 @@ fn columns(args: ColumnsArgs) -> Result<(), String> {
     let ColumnsArgs {
         config: config_path,
         out,
+        bidirectional,
     } = args;
     let (config, source) = match &config_path {
         Some(path) => (
@@ -99,13 +111,50 @@ fn columns(args: ColumnsArgs) -> Result<(), String> {
             DEFAULT_DRIFT_LABEL.to_string(),
         ),
     };
-    let table = &config.hydro.drift;
-    let database = HydroDatabase::from_drift_table("platform", &source, &config.environment, table);
+    // A configuration that takes Aranha's damping from a table without b_ij gets them
+    // written (on the table's nodes, as a run computes them).
+    let with_aranha;
+    let table = match config.model.drift_damping {
+        DriftDamping::Aranha if !config.hydro.drift.has_damping() => {
+            with_aranha = aranha_damping(
+                &config.hydro.drift,
+                config.environment.gravity,
+                &config.platform.columns,
+            )
+            .map_err(|e| e.to_string())?;
+            &with_aranha
+        }
+        _ => &config.hydro.drift,
+    };
+    let mut database =
+        HydroDatabase::from_drift_table("platform", &source, &config.environment, table);
+    if bidirectional {
+        let Some(BidirectionalSource::ColumnArray { array, .. }) = &config.hydro.bidirectional
+        else {
+            return Err(format!(
+                "--bidirectional: the [drift] of {source} is not the column-array solver"
+            ));
+        };
+        database.bidirectional_drift = Some(
+            BidirectionalTable::from_columns(
+                array,
+                &config.environment,
+                table.omegas(),
+                table.headings(),
+            )
+            .map_err(|e| e.to_string())?,
+        );
+    }
     database.save(&out).map_err(|e| e.to_string())?;
     println!(
-        "drift{} on {} frequencies x {} headings ({source}) written to {}",
+        "drift{}{} on {} frequencies x {} headings ({source}) written to {}",
         if table.has_damping() {
             " and damping"
+        } else {
+            ""
+        },
+        if bidirectional {
+            ", bi-directional drift"
         } else {
             ""
         },

@@ -709,7 +709,7 @@ mod tests {
         }
         assert_eq!(c.model.drag, DragModel::Combined { cd: start::CD });
         assert_eq!(start::DRAG_MODEL, 2, "2 = combined");
-        assert_eq!(c.model.drift_damping, DriftDamping::Table);
-        assert_eq!(start::DRIFT_DAMPING, 1, "1 = table");
+        assert_eq!(c.model.drift_damping, DriftDamping::Aranha);
+        assert_eq!(start::DRIFT_DAMPING, 2, "2 = aranha");
     }
 }

@@ -1,49 +1,46 @@
-//! The FMU's `resources/` folder: the default platform with its hydrodynamics precomputed,
-//! so that an instance reads them instead of running the column solver. `fmu-pack` writes
-//! it; `fmi2::parameters` reads [`RESOURCE_CONFIG`] from it.
+//! The FMU's `resources/` folder: the default platform's configuration and a copy of its
+//! hydro database, so that a user of the FMU can read, copy and change them. `fmu-pack`
+//! writes it; `fmi2::parameters` reads [`RESOURCE_CONFIG`] from it.
 
 use crate::error::{Error, Result};
+use crate::hydro::bidirectional::BidirectionalTable;
+use crate::hydro::default_platform;
 use crate::hydro::io::database::HydroDatabase;
-use crate::problem::resolve;
-use crate::scenario::default::{default_scenario, DEFAULT_CONFIG_TOML, DEFAULT_DRIFT_LABEL};
+use crate::scenario::default::DEFAULT_CONFIG_TOML;
 use std::path::Path;
 
 /// The configuration file an FMU carries in its `resources/` folder.
 pub const RESOURCE_CONFIG: &str = "platform.toml";
-/// The hydro database next to it, holding the default platform's precomputed drift.
+/// The hydro database next to it: the default platform's data, bi-directional drift
+/// included, as one native database file.
 pub const RESOURCE_DRIFT: &str = "platform_drift.json";
 
-/// Writes the default platform for an FMU's `resources/` folder: its drift table (the
-/// column solver's, computed here once) as the hydro database [`RESOURCE_DRIFT`], and the
-/// default configuration as [`RESOURCE_CONFIG`] with its `[drift]` section pointing at that
-/// database. The bi-directional drift of spread seas still comes from the column solver
-/// (`bidirectional = "column-array"`), at the sea's exact directions when the instance
-/// initialises, as in the native default.
+/// The default platform's data as one database: the embedded database with its embedded
+/// bi-directional table.
+pub fn default_platform_database() -> Result<HydroDatabase> {
+    let mut database =
+        HydroDatabase::parse(default_platform::DATABASE, default_platform::DATABASE_NAME)?;
+    database.bidirectional_drift = Some(BidirectionalTable::parse(
+        default_platform::BIDIRECTIONAL,
+        default_platform::BIDIRECTIONAL_NAME,
+    )?);
+    Ok(database)
+}
+
+/// Writes the default platform for an FMU's `resources/` folder: the default configuration
+/// as [`RESOURCE_CONFIG`], which reads the data compiled into the library (an instance then
+/// reads the 5.6 MB bi-directional table only for a spread sea), and the same data as one
+/// database file, [`RESOURCE_DRIFT`], that a configuration can name instead
+/// (`source = "database"`) to use a changed copy.
 pub fn write_resources(dir: &Path) -> Result<()> {
-    let problem = resolve(&default_scenario()?)?;
-    let database = HydroDatabase::from_drift_table(
-        "SlowDrift default platform",
-        DEFAULT_DRIFT_LABEL,
-        &problem.environment,
-        &problem.hydro.drift,
-    );
+    let database = default_platform_database()?;
     std::fs::create_dir_all(dir).map_err(|e| Error::Io {
         path: dir.display().to_string(),
         message: e.to_string(),
     })?;
     database.save(&dir.join(RESOURCE_DRIFT))?;
-    let drift_section = DEFAULT_CONFIG_TOML
-        .find("\n[drift]")
-        .expect("default.toml ends with its [drift] section");
-    let text = format!(
-        "{}\n[drift]\n# precomputed by fmu-pack from the default's column-array source\n\
-         source = \"database\"\nfile = \"{RESOURCE_DRIFT}\"\n\
-         # spread seas: bi-directional drift from the column solver at the sea's directions\n\
-         bidirectional = \"column-array\"\n",
-        &DEFAULT_CONFIG_TOML[..drift_section]
-    );
     let path = dir.join(RESOURCE_CONFIG);
-    std::fs::write(&path, text).map_err(|e| Error::Io {
+    std::fs::write(&path, DEFAULT_CONFIG_TOML).map_err(|e| Error::Io {
         path: path.display().to_string(),
         message: e.to_string(),
     })
@@ -52,16 +49,41 @@ pub fn write_resources(dir: &Path) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::problem::resolve;
+    use crate::scenario::default::default_scenario;
     use crate::scenario::file;
 
-    /// The resources an FMU carries describe exactly the default (the database keeps every
-    /// bit of the drift and damping).
+    /// The resources an FMU carries describe exactly the default: its configuration
+    /// resolves to the default problem, and the database file, used in its place, gives the
+    /// same drift table and every bit of the bi-directional table.
     #[test]
     fn resources_reproduce_the_default() {
         let dir = std::env::temp_dir().join(format!("slowdrift-resources-{}", std::process::id()));
         write_resources(&dir).unwrap();
+        let default = resolve(&default_scenario().unwrap()).unwrap();
         let loaded = resolve(&file::load(&dir.join(RESOURCE_CONFIG)).unwrap()).unwrap();
+        assert_eq!(loaded, default);
+        let copy = dir.join("copy.toml");
+        let text = DEFAULT_CONFIG_TOML.replace(
+            "source = \"default-platform\"",
+            &format!("source = \"database\"\nfile = \"{RESOURCE_DRIFT}\""),
+        );
+        assert_ne!(text, DEFAULT_CONFIG_TOML);
+        std::fs::write(&copy, text).unwrap();
+        let from_file = resolve(&file::load(&copy).unwrap()).unwrap();
         std::fs::remove_dir_all(&dir).ok();
-        assert_eq!(loaded, resolve(&default_scenario().unwrap()).unwrap());
+        assert_eq!(from_file.hydro.drift, default.hydro.drift);
+        let Some(crate::hydro::bidirectional::BidirectionalSource::Table(table)) =
+            &from_file.hydro.bidirectional
+        else {
+            panic!("the database file has its bi-directional table");
+        };
+        assert_eq!(
+            Some(table),
+            default_platform_database()
+                .unwrap()
+                .bidirectional_drift
+                .as_ref()
+        );
     }
 }

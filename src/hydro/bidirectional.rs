@@ -77,6 +77,15 @@ pub enum BidirectionalSource {
     },
     /// A table, interpolated.
     Table(BidirectionalTable),
+    /// A table compiled into the library as JSON (`hydro::default_platform`), read when a
+    /// spread sea first needs it (each [`BidirectionalSource::pairs`]); `name` says which in
+    /// errors and stands for it in fingerprints (the drift table beside it, fingerprinted in
+    /// full, changes whenever the data are made anew).
+    Embedded {
+        name: &'static str,
+        #[serde(skip)]
+        json: &'static str,
+    },
 }
 
 impl BidirectionalSource {
@@ -108,6 +117,9 @@ impl BidirectionalSource {
                 })
             }
             BidirectionalSource::Table(table) => table.pairs(band, headings),
+            BidirectionalSource::Embedded { name, json } => {
+                BidirectionalTable::parse(json, name)?.pairs(band, headings)
+            }
         }
     }
 }
@@ -167,6 +179,53 @@ fn covering_range(omegas: &[f64], band: (f64, f64), field: &str) -> Result<std::
 }
 
 impl BidirectionalTable {
+    /// A table from its JSON text (the database's `bidirectional_drift` value), validated;
+    /// `name` says where the text came from in errors.
+    pub fn parse(json: &str, name: &str) -> Result<Self> {
+        let table: BidirectionalTable = serde_json::from_str(json).map_err(|e| Error::Parse {
+            path: name.to_string(),
+            line: (e.line() > 0).then(|| e.line()),
+            message: e.to_string(),
+        })?;
+        table.validate().map_err(|e| Error::Parse {
+            path: name.to_string(),
+            line: None,
+            message: e.to_string(),
+        })?;
+        Ok(table)
+    }
+
+    /// The column-array solver's bi-directional drift at every frequency of `omegas` for
+    /// every pair of `headings`, as a table.
+    pub fn from_columns(
+        array: &ColumnArray,
+        environment: &Environment,
+        omegas: &[f64],
+        headings: &[f64],
+    ) -> Result<Self> {
+        let nh = headings.len();
+        let mut re = Vec::with_capacity(omegas.len());
+        let mut im = Vec::with_capacity(omegas.len());
+        for &omega in omegas {
+            let pairs = array.bidirectional_drift(environment, omega, headings)?;
+            let part = |f: fn(&Complex64) -> f64| -> Vec<Vec<[f64; 3]>> {
+                (0..nh)
+                    .map(|p| (0..nh).map(|q| pairs.get(p, q).map(|t| f(&t))).collect())
+                    .collect()
+            };
+            re.push(part(|t| t.re));
+            im.push(part(|t| t.im));
+        }
+        let table = BidirectionalTable {
+            omegas: omegas.to_vec(),
+            headings: headings.to_vec(),
+            re,
+            im,
+        };
+        table.validate()?;
+        Ok(table)
+    }
+
     /// Checks the shapes, grids, finiteness and the Hermitian symmetry in the heading pair;
     /// errors name the field (`database.bidirectional_drift...`).
     pub fn validate(&self) -> Result<()> {

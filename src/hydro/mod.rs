@@ -6,6 +6,7 @@ pub mod aranha;
 pub mod bidirectional;
 pub mod column_drift;
 pub mod columns;
+pub mod default_platform;
 mod drift_table;
 mod heading_grid;
 pub mod io;

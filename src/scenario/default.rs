@@ -2,8 +2,9 @@
 //! described by `default.toml` (compiled in; its comments document how every number was
 //! derived). What a new user simulates without giving any data.
 //!
-//! Reading it takes microseconds; resolving it runs the column solver (about a second; the
-//! packed FMU carries the result, `fmi2::resources`).
+//! Reading it takes microseconds; resolving it reads the embedded radiation-diffraction
+//! database (`hydro::default_platform`; no solver runs, and the packed FMU carries a copy,
+//! `fmi2::resources`).
 
 use super::{file, Scenario};
 use crate::error::Result;
@@ -13,11 +14,11 @@ use std::path::Path;
 pub const DEFAULT_CONFIG_TOML: &str = include_str!("default.toml");
 
 /// One line that says where the default platform's drift comes from.
-pub const DEFAULT_DRIFT_LABEL: &str = "the four columns as an interacting array (Linton & Evans \
-     1990; deep water, no pontoons), Aranha damping from the solver";
+pub const DEFAULT_DRIFT_LABEL: &str = "radiation-diffraction database of the columns on their \
+     pontoons, freely floating (Capytaine; the column solver above 1.6-2.0 rad/s), Aranha damping";
 
-/// The default scenario (parsed from [`DEFAULT_CONFIG_TOML`]; its column solver runs when
-/// it is resolved).
+/// The default scenario (parsed from [`DEFAULT_CONFIG_TOML`]; its database is read when it
+/// is resolved).
 pub fn default_scenario() -> Result<Scenario> {
     file::parse(DEFAULT_CONFIG_TOML, "embedded default.toml", Path::new("."))
 }
@@ -32,7 +33,7 @@ mod tests {
         let config = crate::problem::resolve(&default_scenario().unwrap()).unwrap();
         config.check().unwrap();
         assert_eq!(config.platform.columns.len(), 4);
-        // The column-array source brings the bi-directional drift, so `auto` uses it.
+        // The database brings the bi-directional drift, so `auto` uses it.
         assert_eq!(
             config.interaction(),
             crate::model::Interaction::Bidirectional
@@ -49,12 +50,14 @@ mod tests {
         assert!((yaw - 100.0).abs() < 0.5, "yaw period {yaw}");
     }
 
-    /// Mass equals rho times the displaced volume of the documented geometry.
+    /// Mass equals rho times the displaced volume of the documented geometry: the columns,
+    /// and the pontoons between column centres less the half columns inside them and less
+    /// the cusp that two pontoons share at each inner corner (r^2 - pi r^2 / 4).
     #[test]
     fn mass_is_the_displaced_water() {
         let p = default_scenario().unwrap().platform;
         let columns = 4.0 * PI * 10.0f64.powi(2) * 30.0;
-        let pontoons = 4.0 * (20.0 * 70.0 - PI * 100.0) * 14.0;
+        let pontoons = 4.0 * (20.0 * 70.0 - PI * 100.0 - (100.0 - PI * 25.0)) * 14.0;
         let mass = 1025.0 * (columns + pontoons);
         assert!((p.mass / mass - 1.0).abs() < 1e-3, "{} vs {mass}", p.mass);
     }

@@ -728,6 +728,10 @@ enum DriftFile {
         file: PathBuf,
         bidirectional: Option<BidirectionalFile>,
     },
+    /// The default platform's radiation-diffraction database compiled into the library
+    /// (`tests/bem`: the paper's columns on pontoons, freely floating): its mean and
+    /// bi-directional drift on its own grid.
+    DefaultPlatform {},
     /// The closed-form drift of the platform's columns, each treated as an isolated,
     /// infinitely deep column (no interaction; see `hydro::column_drift`), on `n_omega`
     /// frequencies from `omega_min` to `omega_max` (rad/s) and headings every
@@ -839,6 +843,7 @@ impl DriftFile {
                     Some(BidirectionalFile::ColumnArray)
                 ),
             },
+            DriftFile::DefaultPlatform {} => DriftSource::DefaultPlatform,
             DriftFile::Columns {
                 omega_min,
                 omega_max,

@@ -145,6 +145,9 @@ pub enum DriftSource {
         path: PathBuf,
         bidirectional_from_columns: bool,
     },
+    /// The default platform's radiation-diffraction database, compiled into the library
+    /// (`hydro::default_platform`, made by `tests/bem`).
+    DefaultPlatform,
     /// The closed-form drift of each column as an isolated, infinitely deep cylinder
     /// (`hydro::column_drift`; no interaction).
     IsolatedColumns(ColumnGrid),

@@ -8,6 +8,7 @@ mod fmu;
 mod architecture;
 mod bad_input;
 mod cli;
+mod default_platform;
 mod directional;
 mod drag_current;
 mod dynamics;

@@ -8,7 +8,7 @@ arrays, as a user without Numba or Cython would write it (each stage reads one s
 every record; records are sampled at h/2 so no interpolation is needed).
 
 Input: the drift and damping table as a SlowDrift hydro database (JSON), e.g.
-`slowdrift hydro columns --out platform.json` (the default platform's column solver).
+`slowdrift hydro columns --out platform.json` (the default platform's table, with Aranha's damping).
 Output: one JSON line with the seconds per run (records and stepping separately) and the
 surge mean and rms after the transient, for a plausibility check against the Rust tool.
 
@@ -23,9 +23,9 @@ import numpy as np
 
 G, RHO = 9.80665, 1025.0
 HS, TP, H = 7.0, 12.0, 1.0
-MASS, IZZ = 1.0097e8, 2.005e11
-ADDED = np.diag([6.389e7, 6.389e7, 1.052e11])
-STIFF = np.diag([1.627e5, 1.627e5, 1.207e9])
+MASS, IZZ = 9.9737e7, 1.8898e11
+ADDED = np.diag([6.0417e7, 6.0417e7, 6.4807e10])
+STIFF = np.diag([1.5807e5, 1.5807e5, 1.0019e9])
 COLUMNS = np.array([[35.0, 35.0], [-35.0, 35.0], [-35.0, -35.0], [35.0, -35.0]])
 DIAMETER, DRAFT, STRIPS, CD = 20.0, 30.0, 20, 0.6
 TRANSIENT_PERIODS = 10

@@ -63,7 +63,7 @@ def native_config(parameters, duration, step):
     text = _replace_once(text, "time_step = 1.0 ", f"time_step = {float(step)!r} ")
     text = _replace_once(
         text,
-        "stiffness = [[1.627e5, 0.0, 0.0], [0.0, 1.627e5, 0.0], [0.0, 0.0, 1.207e9]]",
+        "stiffness = [[1.5807e5, 0.0, 0.0], [0.0, 1.5807e5, 0.0], [0.0, 0.0, 1.0019e9]]",
         f"stiffness = [[{p['stiffnessSurge']!r}, 0.0, 0.0], [0.0, {p['stiffnessSway']!r}, 0.0], "
         f"[0.0, 0.0, {p['stiffnessYaw']!r}]]")
     return text

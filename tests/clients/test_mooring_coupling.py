@@ -9,8 +9,8 @@ import numpy as np
 from mooring_loop import run_loop
 
 # src/scenario/default.toml: mass + low-frequency added mass; yaw inertia + added inertia.
-M_SURGE = 1.0097e8 + 6.389e7
-I_YAW = 2.005e11 + 1.052e11
+M_SURGE = 9.9737e7 + 6.0417e7
+I_YAW = 1.8898e11 + 6.4807e10
 
 
 class RigidBody:

@@ -35,7 +35,7 @@ BOUND = 100.0  # m, |X| and |Y|: a physical bound (the 3-hour maximum is ~10-20 
 BOUND_YAW = 0.5  # rad
 ZETA = 0.05
 # src/scenario/default.toml: surge mass + low-frequency added mass (for w_n = sqrt(K / M)).
-M_SURGE = 1.0097e8 + 6.389e7
+M_SURGE = 9.9737e7 + 6.0417e7
 
 
 def default_experiment(path):

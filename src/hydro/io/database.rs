@@ -162,8 +162,13 @@ impl HydroDatabase {
             path: name.clone(),
             message: e.to_string(),
         })?;
+        Self::parse(&text, &name)
+    }
+
+    /// A database from its JSON text; `name` says where the text came from in errors.
+    pub fn parse(text: &str, name: &str) -> Result<Self> {
         let at = |e: serde_json::Error| Error::Parse {
-            path: name.clone(),
+            path: name.to_string(),
             line: (e.line() > 0).then(|| e.line()),
             message: e.to_string(),
         };
@@ -174,7 +179,7 @@ impl HydroDatabase {
         struct Version {
             format_version: Option<serde_json::Value>,
         }
-        let version: Version = serde_json::from_str(&text).map_err(at)?;
+        let version: Version = serde_json::from_str(text).map_err(at)?;
         if version
             .format_version
             .as_ref()
@@ -182,7 +187,7 @@ impl HydroDatabase {
             != Some(u64::from(FORMAT_VERSION))
         {
             return Err(Error::Parse {
-                path: name,
+                path: name.to_string(),
                 line: None,
                 message: format!(
                     "format_version = {}: this program reads version {FORMAT_VERSION}",
@@ -192,9 +197,9 @@ impl HydroDatabase {
                 ),
             });
         }
-        let database: HydroDatabase = serde_json::from_str(&text).map_err(at)?;
+        let database: HydroDatabase = serde_json::from_str(text).map_err(at)?;
         database.validate().map_err(|e| Error::Parse {
-            path: name,
+            path: name.to_string(),
             line: None,
             message: e.to_string(),
         })?;

@@ -1,0 +1,205 @@
+"""The default platform's hydro database from its radiation-diffraction solution (issue #14).
+
+    python tests/bem/make_database.py --bem target/bem/platform_2.0.npz \
+        --slowdrift target/release/slowdrift --out src/hydro/default_platform.json \
+        --model tests/bem/platform_model.json
+
+Reads Capytaine's raw results (solve_platform.py), adds the platform's mass, inertia and
+hydrostatics, the mooring's stiffness and a linear viscous damping in heave, roll and pitch,
+solves for the first-order motions, and computes the mean drift of every pair of headings
+from the far-field Kochin function (semi_bem.far_field_drift). Above JOIN_END the drift is
+the column solver's (`slowdrift hydro columns --bidirectional`): there the waves no longer
+reach the pontoons (e^{-2 k 16 m} < 3e-6 at 1.6 rad/s) nor the columns' bottom, the platform
+hardly moves (surge amplitude 0.01 m/m), and the column solver is exact for potential flow
+while the panels grow coarse against the wavelength; between JOIN_START and JOIN_END the two
+are blended linearly. Writes the native database (SlowDrift's conventions, see semi_bem) in
+two files, as the library embeds it (`hydro::default_platform`): OUT without its
+bi-directional drift, and that table alone in OUT with `_bidirectional` before `.json`.
+"""
+
+import argparse
+import json
+import pathlib
+import subprocess
+import tempfile
+
+import numpy as np
+
+import semi_bem
+import semi_mesh as geometry
+
+# The join of the radiation-diffraction data to the column solver's, rad/s.
+JOIN_START = 1.6
+JOIN_END = 2.0
+# The database's frequencies: the BEM grid continued to OMEGA_MAX every 0.02 rad/s.
+OMEGA_MAX = 3.0
+OMEGA_STEP = 0.02
+# The bi-directional table keeps every BIDIRECTIONAL_EVERY-th frequency (size).
+BIDIRECTIONAL_EVERY = 2
+# Digits kept in the file, against a discretisation error of about 1 %.
+SIGNIFICANT_DIGITS = 6
+# Mooring: the paper's natural periods in surge and sway (200 s) and yaw (100 s).
+SURGE_PERIOD = 200.0
+YAW_PERIOD = 100.0
+# Linear viscous damping in heave, roll and pitch, as a fraction of critical: stands in for
+# the drag of the pontoons and columns, which potential flow lacks, and bounds the motions at
+# the heave and pitch resonances (0.23-0.30 rad/s).
+VISCOUS_DAMPING_RATIO = 0.05
+# The frequency taken as omega -> 0 for the low-frequency added mass, rad/s.
+SLOW = 0.04
+SLOW_DOFS = [0, 1, 5]  # surge, sway, yaw among Capytaine's six
+
+
+def platform_matrices(bem):
+    """Inertia, stiffness (hydrostatic and mooring) and viscous damping, 6 x 6 about the
+    centre of gravity (on the z axis: yaw about it is yaw about the body origin)."""
+    props = semi_bem.mass_properties()
+    inertia, stiffness = semi_bem.rigid_body_matrices(props)
+    slow = int(np.argmin(np.abs(bem["omega"] - SLOW)))
+    added = bem["added_mass"][slow]
+    mooring = np.zeros((6, 6))
+    for dof, period in [(0, SURGE_PERIOD), (1, SURGE_PERIOD), (5, YAW_PERIOD)]:
+        mooring[dof, dof] = (inertia[dof, dof] + added[dof, dof]) * (2 * np.pi / period) ** 2
+    damping = np.zeros((6, 6))
+    natural = {}
+    for dof in (2, 3, 4):
+        # Natural frequency with the added mass at it: the fixed point of
+        # omega = sqrt(C / (M + A(omega))).
+        w = 0.25
+        for _ in range(50):
+            a = np.interp(w, bem["omega"], bem["added_mass"][:, dof, dof])
+            w = np.sqrt(stiffness[dof, dof] / (inertia[dof, dof] + a))
+        natural[dof] = w
+        damping[dof, dof] = 2 * VISCOUS_DAMPING_RATIO * np.sqrt(
+            stiffness[dof, dof] * (inertia[dof, dof] + a))
+    return props, inertia, stiffness + mooring, mooring, damping, added, natural
+
+
+def slowdrift_drift(bem, inertia, stiffness, damping):
+    """T[omega, p, q, (surge, sway, yaw)] of the freely floating platform in SlowDrift's
+    convention: Capytaine's conjugated (semi_bem's docstring)."""
+    x = semi_bem.motions(bem, inertia, stiffness, damping)
+    return np.conj(semi_bem.far_field_drift(bem, x))
+
+
+def column_solver(slowdrift, omegas, heading_step_deg):
+    """The column solver's drift and bi-directional drift (SlowDrift's convention) at
+    `omegas` (evenly spaced) for headings every heading_step_deg."""
+    default = (pathlib.Path(__file__).resolve().parents[2] / "src" / "scenario"
+               / "default.toml").read_text()
+    body = default[:default.index("\n[drift]")]
+    with tempfile.TemporaryDirectory() as tmp:
+        config = pathlib.Path(tmp) / "columns.toml"
+        config.write_text(
+            body + f"\n[drift]\nsource = \"column-array\"\nomega_min = {omegas[0]}\n"
+            f"omega_max = {omegas[-1]}\nn_omega = {len(omegas)}\n"
+            f"heading_step_deg = {heading_step_deg}\n")
+        out = pathlib.Path(tmp) / "columns.json"
+        subprocess.run([slowdrift, "hydro", "columns", "--config", str(config), "--bidirectional",
+                        "--out", str(out)], check=True, capture_output=True)
+        db = json.loads(out.read_text())
+    table = db["bidirectional_drift"]
+    t = np.array(table["re"]) + 1j * np.array(table["im"])  # (omega, p, q, dof)
+    return np.array(table["omegas"]), np.array(table["headings"]), t
+
+
+def rounded(values):
+    """Nested lists of `values` to SIGNIFICANT_DIGITS (the file's size; far below the
+    solution's own accuracy)."""
+    return np.vectorize(lambda v: float(f"{v:.{SIGNIFICANT_DIGITS}g}"), otypes=[float])(values).tolist()
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--bem", required=True, help="solve_platform.py's .npz")
+    parser.add_argument("--slowdrift", required=True, help="the slowdrift program")
+    parser.add_argument("--out", required=True,
+                        help="the database to write (JSON; its bi-directional table beside it)")
+    parser.add_argument("--model", required=True,
+                        help="where to write the platform's 6-DOF model (JSON)")
+    args = parser.parse_args()
+    bem = dict(np.load(args.bem))
+    props, inertia, stiffness, mooring, damping, added, natural = platform_matrices(bem)
+    model = {
+        "about": "The platform's 6-DOF model about its centre of gravity (SI units, DOFs surge, "
+                 "sway, heave, roll, pitch, yaw) that tests/bem/make_database.py solved the "
+                 "first-order motions with; test_bem.py reuses it.",
+        "mesh_size": float(bem["size"]), "panels": int(bem["panels"]),
+        "lid_panels": int(bem["lid_panels"]), "bem_seconds": float(bem["seconds"]),
+        "capytaine_version": str(bem["capytaine_version"]),
+        "centre_of_gravity_z": props["z_g"], "volume": props["volume"],
+        "inertia": inertia.tolist(), "stiffness": stiffness.tolist(),
+        "mooring_stiffness": mooring.tolist(), "viscous_damping": damping.tolist(),
+        "natural_frequencies": {"heave": natural[2], "roll": natural[3], "pitch": natural[4]},
+    }
+    pathlib.Path(args.model).write_text(json.dumps(model, indent=1) + "\n")
+    t_bem = slowdrift_drift(bem, inertia, stiffness, damping)
+    omega_bem, headings = bem["omega"], bem["heading"]
+
+    omegas = np.round(np.arange(omega_bem[0], OMEGA_MAX + 1e-9, OMEGA_STEP), 10)
+    join = omegas[omegas >= JOIN_START - 1e-9]
+    omega_col, headings_col, t_col = column_solver(args.slowdrift, join, 10.0)
+    if not np.allclose(headings_col, headings) or not np.allclose(omega_col, join):
+        raise SystemExit("the column solver's grid is not the BEM's")
+
+    t = np.empty((len(omegas),) + t_bem.shape[1:], complex)
+    for n, w in enumerate(omegas):
+        weight = np.clip((w - JOIN_START) / (JOIN_END - JOIN_START), 0.0, 1.0)
+        bem_part = t_bem[np.argmin(np.abs(omega_bem - w))] if w <= omega_bem[-1] + 1e-9 else 0
+        col_part = t_col[np.argmin(np.abs(omega_col - w))] if w >= JOIN_START - 1e-9 else 0
+        t[n] = (1 - weight) * bem_part + weight * col_part
+
+    overlap = [np.argmin(np.abs(omega_bem - w)) for w in join if w <= omega_bem[-1] + 1e-9]
+    diag = lambda a: np.einsum("nkkd->nkd", a).real
+    scale = np.abs(diag(t_col[: len(overlap)])[..., :2]).max()
+    diff = np.abs(diag(t_bem[overlap])[..., :2] - diag(t_col[: len(overlap)])[..., :2]).max()
+    print(f"overlap {JOIN_START}-{omega_bem[-1]} rad/s: largest difference of the drift force "
+          f"BEM - columns {diff:.4g} N/m^2 ({diff / scale:.2%} of the largest)")
+
+    drift = []
+    for ih, beta in enumerate(headings):
+        for n, w in enumerate(omegas):
+            f = t[n, ih, ih].real
+            f = rounded(f)
+            drift.append({"omega": float(w), "heading": float(beta), "surge": f[0],
+                          "sway": f[1], "yaw": f[2], "damping": None})
+    keep = np.arange(0, len(omegas), BIDIRECTIONAL_EVERY)
+    slow = [[added[i, j] for j in SLOW_DOFS] for i in SLOW_DOFS]
+    database = {
+        "format_version": 1,
+        "name": "SlowDrift default platform (radiation-diffraction)",
+        "source": (
+            f"Capytaine {bem['capytaine_version']} (tests/bem): the paper's four columns on "
+            f"pontoons, draft 30 m, deep water, {int(bem['panels'])} panels ({float(bem['size'])} m) "
+            f"and a lid; freely floating (mass, inertia and hydrostatics of a uniformly dense "
+            f"hull, mooring stiffness for natural periods of {SURGE_PERIOD:.0f} s and "
+            f"{YAW_PERIOD:.0f} s, {VISCOUS_DAMPING_RATIO:.0%} of critical viscous damping in "
+            f"heave, roll and pitch); far-field mean drift; above {JOIN_START}-{JOIN_END} rad/s "
+            f"(blended) the column solver's"),
+        "water_density": semi_bem.RHO,
+        "gravity": semi_bem.G,
+        "mass_properties": {"mass": props["mass"], "yaw_inertia": props["i_zz"]},
+        "low_frequency_added_mass": slow,
+        "stiffness": None,
+        "drift": drift,
+        "qtf": None,
+    }
+    bidirectional = {
+        "omegas": [float(w) for w in omegas[keep]],
+        "headings": [float(b) for b in headings],
+        "re": rounded(t[keep].real),
+        "im": rounded(t[keep].imag),
+    }
+    out = pathlib.Path(args.out)
+    out.write_text(json.dumps(database, separators=(",", ":")) + "\n")
+    out.with_name(out.stem + "_bidirectional.json").write_text(
+        json.dumps(bidirectional, separators=(",", ":")) + "\n")
+    print(f"{args.out}: {len(omegas)} frequencies x {len(headings)} headings; mass "
+          f"{props['mass']:.5g} kg, yaw inertia {props['i_zz']:.5g} kg m^2, low-frequency added "
+          f"mass {added[0, 0]:.5g} kg, {added[5, 5]:.5g} kg m^2; mooring "
+          f"{mooring[0, 0]:.5g} N/m, {mooring[5, 5]:.5g} N m/rad; natural frequencies heave "
+          f"{natural[2]:.4f}, roll/pitch {natural[3]:.4f} rad/s")
+
+
+if __name__ == "__main__":
+    main()
