@@ -29,9 +29,10 @@
 //! Last, the FMU's initialisation (fmi2Instantiate + fmi2SetupExperiment + enter and exit
 //! initialisation mode; fmi2FreeInstance outside the timing) for stop times of 1 h, 6 h and
 //! 100 h and none (stopTimeDefined = fmi2False): flat, since the records are made one block
-//! at a time whatever the stop time. Timed with the packed FMU's resources (the default
-//! platform's drift precomputed, written by `write_resources` into a temporary folder) and
-//! without (no fmuResourceLocation: the embedded default, whose column solver runs then).
+//! at a time whatever the stop time. Timed with the packed FMU's resources (its
+//! `platform.toml`, written by `write_resources` into a temporary folder) and without (no
+//! fmuResourceLocation: the embedded default); both read the default platform's data
+//! compiled into the library.
 
 use criterion::Criterion;
 use slowdrift::fmi2::exports::*;
@@ -238,7 +239,7 @@ fn check_same_run(core: &mut Core, fmu: &mut Fmu) {
 /// (`None`: stopTimeDefined = fmi2False), and of its part in fmi2ExitInitializationMode
 /// (the simulation and its first segment of records). `resources`: the fmuResourceLocation
 /// (a `file:` URI of a folder written by `write_resources`, as in the packed FMU), or none
-/// (the embedded default: the column solver runs at initialisation). Timed:
+/// (the embedded default). Timed:
 /// fmi2Instantiate, fmi2SetupExperiment, fmi2EnterInitializationMode and
 /// fmi2ExitInitializationMode; fmi2FreeInstance after the timing.
 fn initialisation(stop: Option<f64>, resources: Option<&CString>) -> (f64, f64) {
@@ -385,7 +386,7 @@ fn main() {
     println!("whole master step (set inputs, step, get outputs) - (advance + outputs): {over_cycle:.0} ns");
 
     // FMU initialisation for several stop times, interleaved rounds, medians: with the
-    // packed FMU's resources (the drift precomputed) and without (the embedded default).
+    // packed FMU's resources and without (the embedded default).
     let dir = std::env::temp_dir().join(format!("slowdrift-fmu-bench-{}", std::process::id()));
     write_resources(&dir).expect("resources");
     let uri = CString::new(format!("file://{}", dir.display())).unwrap();
@@ -396,16 +397,8 @@ fn main() {
         ("no stopTime", None),
     ];
     for (what, resources, rounds) in [
-        (
-            "with the packed FMU's resources (drift precomputed)",
-            Some(&uri),
-            15,
-        ),
-        (
-            "without resources (embedded default: the column solver runs)",
-            None,
-            5,
-        ),
+        ("with the packed FMU's resources", Some(&uri), 15),
+        ("without resources (the embedded default)", None, 5),
     ] {
         initialisation(None, resources); // warm-up
         let mut init: Vec<(Vec<f64>, Vec<f64>)> = vec![Default::default(); stops.len()];

@@ -136,7 +136,7 @@ fn columns(args: ColumnsArgs) -> Result<(), String> {
             ));
         };
         database.bidirectional_drift = Some(
-            BidirectionalTable::from_columns(
+            BidirectionalTable::from_column_array(
                 array,
                 &config.environment,
                 table.omegas(),

@@ -195,37 +195,6 @@ impl BidirectionalTable {
         Ok(table)
     }
 
-    /// The column-array solver's bi-directional drift at every frequency of `omegas` for
-    /// every pair of `headings`, as a table.
-    pub fn from_columns(
-        array: &ColumnArray,
-        environment: &Environment,
-        omegas: &[f64],
-        headings: &[f64],
-    ) -> Result<Self> {
-        let nh = headings.len();
-        let mut re = Vec::with_capacity(omegas.len());
-        let mut im = Vec::with_capacity(omegas.len());
-        for &omega in omegas {
-            let pairs = array.bidirectional_drift(environment, omega, headings)?;
-            let part = |f: fn(&Complex64) -> f64| -> Vec<Vec<[f64; 3]>> {
-                (0..nh)
-                    .map(|p| (0..nh).map(|q| pairs.get(p, q).map(|t| f(&t))).collect())
-                    .collect()
-            };
-            re.push(part(|t| t.re));
-            im.push(part(|t| t.im));
-        }
-        let table = BidirectionalTable {
-            omegas: omegas.to_vec(),
-            headings: headings.to_vec(),
-            re,
-            im,
-        };
-        table.validate()?;
-        Ok(table)
-    }
-
     /// Checks the shapes, grids, finiteness and the Hermitian symmetry in the heading pair;
     /// errors name the field (`database.bidirectional_drift...`).
     pub fn validate(&self) -> Result<()> {

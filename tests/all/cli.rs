@@ -1,6 +1,8 @@
 //! The command-line tool as a user runs it.
 
+use slowdrift::hydro::aranha::aranha_damping;
 use slowdrift::hydro::io::database::HydroDatabase;
+use slowdrift::model::DriftDamping;
 use slowdrift::problem;
 use std::path::Path;
 use std::process::Command;
@@ -13,7 +15,8 @@ fn slowdrift(args: &[&str]) -> std::process::Output {
 }
 
 /// `hydro columns` writes a configuration's drift table as a database that reads back as
-/// exactly the same table.
+/// exactly the same table, with the damping a run of it uses (here Aranha's, which the
+/// configuration asks for and its table does not hold).
 #[test]
 fn hydro_columns_writes_the_configuration_drift_table() {
     let config = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/example.toml");
@@ -34,9 +37,17 @@ fn hydro_columns_writes_the_configuration_drift_table() {
     );
     let database = HydroDatabase::load(&out).unwrap();
     std::fs::remove_file(&out).ok();
+    let problem = problem::load(&config).unwrap();
+    assert_eq!(problem.model.drift_damping, DriftDamping::Aranha);
+    assert!(!problem.hydro.drift.has_damping());
     assert_eq!(
         database.to_drift_table().unwrap(),
-        problem::load(&config).unwrap().hydro.drift
+        aranha_damping(
+            &problem.hydro.drift,
+            problem.environment.gravity,
+            &problem.platform.columns
+        )
+        .unwrap()
     );
 }
 

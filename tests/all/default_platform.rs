@@ -31,7 +31,7 @@ fn high_frequency_drift_is_the_column_solvers() {
     assert!((table.omegas[n + 1] - 1.6).abs() < 1e-9);
     let scenario = default_scenario().unwrap();
     let array = ColumnArray::new(scenario.platform.columns.clone(), None).unwrap();
-    let columns = BidirectionalTable::from_columns(
+    let columns = BidirectionalTable::from_column_array(
         &array,
         &scenario.environment,
         &table.omegas[n..n + 2],

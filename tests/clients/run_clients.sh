@@ -12,20 +12,9 @@ repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 cd "$repo"
 
 venv="$repo/target/client-venv"
-packages=(fmpy==0.3.32 fmu-manipulation-toolbox==2.0 libcosimpy==0.0.6 moordyn==2.7.2
-          dask==2026.8.0 distributed==2026.8.0 numpy pytest)
-stamp="$venv/.installed"
-
-if [[ ! -x "$venv/bin/python" ]]; then
-    echo "run_clients.sh: creating $venv" >&2
-    "${PYTHON:-python3}" -m venv "$venv"
-fi
-# Install (again) when the pinned list changes; the stamp holds the list that was installed.
-if [[ ! -f "$stamp" || "$(cat "$stamp")" != "${packages[*]}" ]]; then
-    echo "run_clients.sh: installing ${packages[*]}" >&2
-    "$venv/bin/python" -m pip install --quiet --disable-pip-version-check "${packages[@]}"
-    printf '%s' "${packages[*]}" > "$stamp"
-fi
+source "$repo/tests/venv.sh"
+ensure_venv "$venv" fmpy==0.3.32 fmu-manipulation-toolbox==2.0 libcosimpy==0.0.6 moordyn==2.7.2 \
+    dask==2026.8.0 distributed==2026.8.0 numpy pytest
 
 if [[ -z "${SLOWDRIFT_FMU:-}" ]]; then
     # Always pack the current sources (cargo only rebuilds what changed); fmu-pack checks
