@@ -443,6 +443,42 @@ fn assert_figure(dir: &Path, stem: &str) {
     );
 }
 
+/// `study drift` on the default platform: the CSV every 0.01 rad/s and the figure; where
+/// the default's table is the column solver's (above 2 rad/s) the two curves agree but for
+/// their grids, and near the sea's peak (0.5 rad/s) the pontoons and the motions make the
+/// radiation-diffraction drift several times the columns'.
+#[test]
+fn study_drift_compares_the_default_with_the_column_solver() {
+    let dir = temp_dir("drift");
+    let run = slowdrift(&["study", "drift", "--out", dir.to_str().unwrap()]);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let csv = std::fs::read_to_string(dir.join("drift_comparison.csv")).unwrap();
+    let rows: Vec<Vec<f64>> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 296, "0.05 .. 3.0 every 0.01");
+    let at = |omega: f64| {
+        rows.iter()
+            .find(|r| (r[0] - omega).abs() < 1e-9)
+            .unwrap()
+            .clone()
+    };
+    for omega in [2.2, 2.5, 2.8] {
+        let r = at(omega);
+        assert!((r[1] / r[2] - 1.0).abs() < 0.05, "{omega}: {r:?}");
+    }
+    let r = at(0.5);
+    assert!(r[1] > 5.0 * r[2], "{r:?}");
+    assert_figure(&dir, "drift_comparison");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 /// `study waves` on a configuration file: one CSV row per record length and both figures.
 #[test]
 fn study_waves_writes_data_and_figures() {

@@ -1,10 +1,11 @@
-//! `slowdrift study <waves|boxplots|transient|sensitivity>`: the paper's studies (E&S 1996
-//! Figs 7-15) for a platform, each written as data (CSV) and as a figure (PNG and SVG) in
+//! `slowdrift study <drift|waves|boxplots|transient|sensitivity>`: the paper's studies (E&S
+//! 1996 Figs 3-5 and 7-15) for a platform, each written as data (CSV) and as a figure (PNG and SVG) in
 //! `--out DIR`. The computations are [`slowdrift::studies`] and the Monte Carlo campaign
 //! of `slowdrift montecarlo` (resumable: the per-run files in DIR are read back and only
 //! missing runs are made); the drawing is [`crate::plot`].
 
 mod boxplots;
+mod drift;
 mod sensitivity;
 mod transient;
 mod waves;
@@ -23,7 +24,7 @@ use std::path::{Path, PathBuf};
 #[derive(Args)]
 #[command(
     subcommand_required = true,
-    subcommand_value_name = "waves|boxplots|transient|sensitivity"
+    subcommand_value_name = "drift|waves|boxplots|transient|sensitivity"
 )]
 pub struct StudyArgs {
     #[command(subcommand)]
@@ -32,6 +33,9 @@ pub struct StudyArgs {
 
 #[derive(Subcommand)]
 enum Study {
+    /// The configuration's mean drift and wave-drift damping against frequency beside the
+    /// column solver's on its columns (as E&S Figs 3-5)
+    Drift(DriftArgs),
     /// The elevation's pdf against the Gaussian and its spectrum against the input for record
     /// lengths 2^A .. 2^B s (E&S Figs 7, 8)
     Waves(WavesArgs),
@@ -44,6 +48,24 @@ enum Study {
     /// Surge mean and rms against a column of a case table (E&S Figs 12-15); resumable
     /// (DIR/CASES.runs.csv)
     Sensitivity(SensitivityArgs),
+}
+
+/// `study drift`.
+#[derive(Args)]
+struct DriftArgs {
+    /// Platform (TOML) [default: the embedded default platform]
+    #[arg(long, value_name = "FILE.toml", allow_hyphen_values = true)]
+    config: Option<PathBuf>,
+    /// Legend of the configuration's curves
+    #[arg(
+        long,
+        value_name = "TEXT",
+        default_value = "radiation-diffraction (default platform)"
+    )]
+    label: String,
+    /// Directory of the CSV and the figures (PNG and SVG), created if missing
+    #[arg(long, value_name = "DIR", allow_hyphen_values = true)]
+    out: PathBuf,
 }
 
 /// `study waves`.
@@ -160,6 +182,7 @@ struct Numbers(Vec<f64>);
 /// Runs `slowdrift study ...`.
 pub fn run(args: StudyArgs) -> Result<(), String> {
     let (config, out) = match &args.study {
+        Study::Drift(a) => (&a.config, &a.out),
         Study::Waves(a) => (&a.config, &a.out),
         Study::Boxplots(a) => (&a.config, &a.out),
         Study::Transient(a) => (&a.config, &a.out),
@@ -174,6 +197,7 @@ pub fn run(args: StudyArgs) -> Result<(), String> {
         }
     };
     match &args.study {
+        Study::Drift(a) => drift::drift(&base, a),
         Study::Waves(a) => waves::waves(&base, a),
         Study::Boxplots(a) => boxplots::boxplots(&base, a),
         Study::Transient(a) => transient::transient(&base, a),
