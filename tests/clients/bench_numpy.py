@@ -1,5 +1,5 @@
 """The paper's Fig. 10 run (default platform, long-crested head seas, Newman geometric,
-table drift damping, combined Morison drag on 4 columns x 20 strips, RK4 at 1 s) in pure
+tabulated drift damping (the Rust run's Aranha damping), combined Morison drag on 4 columns x 20 strips, RK4 at 1 s) in pure
 NumPy, written the way a user would: the speed reference of `cargo bench --bench montecarlo`.
 
 Fair to NumPy: every record is built vectorised (one batched inverse FFT for all 80 strip
