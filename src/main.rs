@@ -50,7 +50,8 @@ enum Command {
     Hydro(cli::hydro::HydroArgs),
     /// Many seeds of one case or of a table of cases on all cores, resumably
     Montecarlo(cli::montecarlo::MontecarloArgs),
-    /// The paper's studies (E&S 1996 Figs 7-15) as CSV and figures (PNG and SVG) in a directory
+    /// The paper's studies (E&S 1996 Figs 3-5 and 7-15) as CSV and figures (PNG and SVG) in a
+    /// directory
     Study(cli::study::StudyArgs),
 }
 

@@ -3,9 +3,7 @@
 //! writes it; `fmi2::parameters` reads [`RESOURCE_CONFIG`] from it.
 
 use crate::error::{Error, Result};
-use crate::hydro::bidirectional::BidirectionalTable;
 use crate::hydro::default_platform;
-use crate::hydro::io::database::HydroDatabase;
 use crate::scenario::default::DEFAULT_CONFIG_TOML;
 use std::path::Path;
 
@@ -15,25 +13,13 @@ pub const RESOURCE_CONFIG: &str = "platform.toml";
 /// included, as one native database file.
 pub const RESOURCE_DRIFT: &str = "platform_drift.json";
 
-/// The default platform's data as one database: the embedded database with its embedded
-/// bi-directional table.
-pub fn default_platform_database() -> Result<HydroDatabase> {
-    let mut database =
-        HydroDatabase::parse(default_platform::DATABASE, default_platform::DATABASE_NAME)?;
-    database.bidirectional_drift = Some(BidirectionalTable::parse(
-        default_platform::BIDIRECTIONAL,
-        default_platform::BIDIRECTIONAL_NAME,
-    )?);
-    Ok(database)
-}
-
 /// Writes the default platform for an FMU's `resources/` folder: the default configuration
 /// as [`RESOURCE_CONFIG`], which reads the data compiled into the library (an instance then
 /// reads the 5.6 MB bi-directional table only for a spread sea), and the same data as one
 /// database file, [`RESOURCE_DRIFT`], that a configuration can name instead
 /// (`source = "database"`) to use a changed copy.
 pub fn write_resources(dir: &Path) -> Result<()> {
-    let database = default_platform_database()?;
+    let database = default_platform::database()?;
     std::fs::create_dir_all(dir).map_err(|e| Error::Io {
         path: dir.display().to_string(),
         message: e.to_string(),
@@ -80,7 +66,7 @@ mod tests {
         };
         assert_eq!(
             Some(table),
-            default_platform_database()
+            default_platform::database()
                 .unwrap()
                 .bidirectional_drift
                 .as_ref()

@@ -5,6 +5,10 @@
 //! default is resolved, about 0.6 MB) and that table alone (about 5.6 MB, read only when a
 //! spread sea asks for it, see [`super::bidirectional::BidirectionalSource::Embedded`]).
 
+use super::bidirectional::BidirectionalTable;
+use super::io::database::HydroDatabase;
+use crate::error::Result;
+
 /// The database (drift table, mass properties, low-frequency added mass), without
 /// `bidirectional_drift`.
 pub const DATABASE: &str = include_str!("default_platform.json");
@@ -17,3 +21,15 @@ pub const DATABASE_NAME: &str = "the embedded default_platform.json";
 
 /// What errors and fingerprints call [`BIDIRECTIONAL`].
 pub const BIDIRECTIONAL_NAME: &str = "the embedded default_platform_bidirectional.json";
+
+/// The default platform's data as one database: [`DATABASE`] with [`BIDIRECTIONAL`] as its
+/// `bidirectional_drift` (what `fmu-pack` packs, and what a configuration naming that file
+/// reads).
+pub fn database() -> Result<HydroDatabase> {
+    let mut database = HydroDatabase::parse(DATABASE, DATABASE_NAME)?;
+    database.bidirectional_drift = Some(BidirectionalTable::parse(
+        BIDIRECTIONAL,
+        BIDIRECTIONAL_NAME,
+    )?);
+    Ok(database)
+}

@@ -273,7 +273,7 @@ fn help_lists_the_options_with_units_and_defaults() {
     assert_lists(
         &["study", "--help"],
         &[
-            "Usage: slowdrift study <waves|boxplots|transient|sensitivity>",
+            "Usage: slowdrift study <drift|waves|boxplots|transient|sensitivity>",
             "waves",
             "boxplots",
             "transient",
@@ -559,7 +559,7 @@ fn study_sensitivity_runs_plots_and_resumes() {
 fn study_refuses_bad_arguments() {
     let dir = temp_dir("bad");
     let out = dir.to_str().unwrap();
-    let kinds = "<waves|boxplots|transient|sensitivity>";
+    let kinds = "<drift|waves|boxplots|transient|sensitivity>";
     for (args, expected) in [
         (vec!["study"], vec![kinds]),
         (

@@ -2,15 +2,15 @@
 //! against independent routes: the column solver where the pontoons and the draft no longer
 //! matter, the platform's mass properties and the documented configuration.
 
-use slowdrift::fmi2::resources::default_platform_database;
 use slowdrift::hydro::bidirectional::BidirectionalTable;
 use slowdrift::hydro::columns::ColumnArray;
+use slowdrift::hydro::default_platform;
 use slowdrift::hydro::io::database::HydroDatabase;
 use slowdrift::problem::default_problem;
 use slowdrift::scenario::default::default_scenario;
 
 fn database() -> HydroDatabase {
-    default_platform_database().unwrap()
+    default_platform::database().unwrap()
 }
 
 /// At 1.56 and 1.6 rad/s, the top of the frequencies taken from the radiation-diffraction
