@@ -1,0 +1,155 @@
+//! How cost grows (issue #16, part 5): `cargo bench --bench scaling`.
+//!
+//! The default problem (combined drag, Aranha damping, h = 1 s, open-ended) with one
+//! parameter varied at a time: the block length (the records' FFT length), the number of
+//! directions of a cos^2 sea (with the bi-directional cross terms), the strips per column,
+//! and the number of columns (on a ring of the default's radius, each with its drag strips).
+//! For each: `Simulation::new` (plan and first segment, median of 5) and one RK4 step
+//! (median over 2000 steps, 5 rounds), and the exponent p of cost ~ x^p fitted by least
+//! squares on the logarithms. Printed; no criterion run (each point builds a new plan).
+
+mod timing;
+
+use slowdrift::model::{Cylinder, Interaction};
+use slowdrift::problem::default_problem;
+use slowdrift::sea_state::Spreading;
+use slowdrift::{Problem, Simulation};
+use std::hint::black_box;
+use timing::median_time;
+
+/// Steps per timed round of stepping.
+const STEPS: usize = 2000;
+
+/// (seconds of `Simulation::new`, seconds per step) of `problem`.
+fn cost(problem: &Problem) -> (f64, f64) {
+    let init = median_time(5, || {
+        black_box(Simulation::new(black_box(problem.clone())).unwrap());
+    });
+    let mut sim = Simulation::new(problem.clone()).unwrap();
+    let step = median_time(5, || {
+        for _ in 0..STEPS {
+            sim.step(black_box([0.0; 3])).unwrap();
+        }
+    });
+    (init.as_secs_f64(), step.as_secs_f64() / STEPS as f64)
+}
+
+/// The exponent p of y ~ x^p, least squares on (ln x, ln y).
+fn exponent(points: &[(f64, f64)]) -> f64 {
+    let n = points.len() as f64;
+    let (lx, ly): (Vec<f64>, Vec<f64>) = points.iter().map(|&(x, y)| (x.ln(), y.ln())).unzip();
+    let (mx, my) = (lx.iter().sum::<f64>() / n, ly.iter().sum::<f64>() / n);
+    let sxy: f64 = lx.iter().zip(&ly).map(|(x, y)| (x - mx) * (y - my)).sum();
+    let sxx: f64 = lx.iter().map(|x| (x - mx).powi(2)).sum();
+    sxy / sxx
+}
+
+/// (a, b) of y ~ a + b x, least squares.
+fn line(points: &[(f64, f64)]) -> (f64, f64) {
+    let n = points.len() as f64;
+    let (mx, my) = points
+        .iter()
+        .fold((0.0, 0.0), |(a, b), &(x, y)| (a + x / n, b + y / n));
+    let sxy: f64 = points.iter().map(|&(x, y)| (x - mx) * (y - my)).sum();
+    let sxx: f64 = points.iter().map(|&(x, _)| (x - mx).powi(2)).sum();
+    let b = sxy / sxx;
+    (my - b * mx, b)
+}
+
+/// One row of the table per value of `values`, then the fitted exponents and lines.
+fn sweep(name: &str, values: &[f64], make: impl Fn(f64) -> Problem) {
+    println!("{name}:");
+    let (mut init, mut step) = (Vec::new(), Vec::new());
+    for &x in values {
+        let (i, s) = cost(&make(x));
+        println!(
+            "  {x:>8}  Simulation::new {:>9.2} ms   step {:>7.3} us",
+            i * 1e3,
+            s * 1e6
+        );
+        init.push((x, i));
+        step.push((x, s));
+    }
+    let (ia, ib) = line(&init);
+    let (sa, sb) = line(&step);
+    println!(
+        "  fitted exponent: Simulation::new {:.2}, step {:.2}; lines: Simulation::new {:.2} + \
+         {:.4} x ms, step {:.3} + {:.4} x us",
+        exponent(&init),
+        exponent(&step),
+        ia * 1e3,
+        ib * 1e3,
+        sa * 1e6,
+        sb * 1e6
+    );
+}
+
+fn base() -> Problem {
+    let mut problem = default_problem().expect("the default problem");
+    problem.run.duration = f64::INFINITY;
+    problem
+}
+
+/// `count` columns of the default's diameter and draft on the default's ring (radius
+/// 35 sqrt 2 m), evenly spaced from 45 degrees (4: the default's columns).
+fn ring(count: usize) -> Vec<Cylinder> {
+    let radius = 35.0 * 2f64.sqrt();
+    (0..count)
+        .map(|k| {
+            let angle =
+                std::f64::consts::FRAC_PI_4 + 2.0 * std::f64::consts::PI * k as f64 / count as f64;
+            // Rounded to a nanometre, so that columns the ring puts at one x share it exactly
+            // (the kinematics groups columns that see the same wave phase in head seas).
+            let round = |v: f64| (v * 1e9).round() / 1e9;
+            Cylinder {
+                x: round(radius * angle.cos()),
+                y: round(radius * angle.sin()),
+                diameter: 20.0,
+                draft: 30.0,
+            }
+        })
+        .collect()
+}
+
+fn main() {
+    slowdrift::allocator::retain_freed_memory();
+    println!("cost against size, default problem (combined drag, Aranha, h = 1 s), this machine:");
+    sweep(
+        "block length [s] (records: FFT of 2 x block / h points)",
+        &[4096.0, 8192.0, 16384.0, 32768.0, 65536.0],
+        |x| {
+            let mut p = base();
+            p.run.block_duration = x;
+            p
+        },
+    );
+    sweep(
+        "directions of a cos^2 sea (bi-directional cross terms)",
+        &[3.0, 7.0, 15.0, 31.0],
+        |x| {
+            let mut p = base();
+            p.sea.spreading = Spreading::CosN { n: 2.0 };
+            p.sea.n_directions = x as usize;
+            p.model.interaction = Interaction::Bidirectional;
+            p
+        },
+    );
+    sweep(
+        "strips per column (4 columns)",
+        &[5.0, 10.0, 20.0, 40.0, 80.0],
+        |x| {
+            let mut p = base();
+            p.model.strips_per_column = x as usize;
+            p
+        },
+    );
+    sweep(
+        "columns (20 strips each)",
+        &[1.0, 2.0, 4.0, 8.0, 16.0],
+        |x| {
+            let mut p = base();
+            p.platform.columns = ring(x as usize);
+            p
+        },
+    );
+}
