@@ -3,15 +3,21 @@
 //! The default problem (combined drag, Aranha damping, h = 1 s, open-ended) with one
 //! parameter varied at a time: the block length (the records' FFT length), the number of
 //! directions of a cos^2 sea (with the bi-directional cross terms), the strips per column,
-//! and the number of columns (on a ring of the default's radius, each with its drag strips).
+//! and the number of columns (on a ring of the default's radius, each with its drag strips);
+//! and, on the OC4 semisubmersible's full QTF (`../shared/data`, or `$SLOWDRIFT_DATA`; the
+//! sweep says so and is left out when the data are absent), the QTF's retained rank through
+//! its truncation tolerance (drag off, Hs 6 m, Tp 10 s, head seas).
 //! For each: `Simulation::new` (plan and first segment, median of 5) and one RK4 step
 //! (median over 2000 steps, 5 rounds), and the exponent p of cost ~ x^p fitted by least
 //! squares on the logarithms. Printed; no criterion run (each point builds a new plan).
 
 mod timing;
 
-use slowdrift::model::{Cylinder, Interaction};
+use slowdrift::hydro::io::database::HydroDatabase;
+use slowdrift::hydro::io::wamit::WamitOptions;
+use slowdrift::model::{Cylinder, DragModel, DriftDamping, Interaction, SecondOrder};
 use slowdrift::problem::default_problem;
+use slowdrift::sea_state::Spectrum;
 use slowdrift::sea_state::Spreading;
 use slowdrift::{Problem, Simulation};
 use std::hint::black_box;
@@ -56,12 +62,24 @@ fn line(points: &[(f64, f64)]) -> (f64, f64) {
     (my - b * mx, b)
 }
 
-/// One row of the table per value of `values`, then the fitted exponents and lines.
+/// One row of the table per value of `values`, then the fitted exponents and lines; `x` of
+/// a row is `measure` of its problem (the value itself, or what it leads to).
 fn sweep(name: &str, values: &[f64], make: impl Fn(f64) -> Problem) {
+    sweep_measured(name, values, make, |x, _| x)
+}
+
+fn sweep_measured(
+    name: &str,
+    values: &[f64],
+    make: impl Fn(f64) -> Problem,
+    measure: impl Fn(f64, &Problem) -> f64,
+) {
     println!("{name}:");
     let (mut init, mut step) = (Vec::new(), Vec::new());
-    for &x in values {
-        let (i, s) = cost(&make(x));
+    for &value in values {
+        let problem = make(value);
+        let x = measure(value, &problem);
+        let (i, s) = cost(&problem);
         println!(
             "  {x:>8}  Simulation::new {:>9.2} ms   step {:>7.3} us",
             i * 1e3,
@@ -150,6 +168,46 @@ fn main() {
             let mut p = base();
             p.platform.columns = ring(x as usize);
             p
+        },
+    );
+    let data = std::env::var_os("SLOWDRIFT_DATA")
+        .map(std::path::PathBuf::from)
+        .unwrap_or_else(|| concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data").into())
+        .join("wamit/oc4-semi/marin_semi");
+    if !data.with_extension("12d").is_file() {
+        println!(
+            "full QTF rank: left out, the OC4 data are absent at {}",
+            data.display()
+        );
+        return;
+    }
+    let database = HydroDatabase::from_wamit(&data, &WamitOptions::default())
+        .expect("the OC4 files")
+        .database;
+    let oc4 = |tolerance: f64| {
+        let mut p = base();
+        p.sea.spectrum = Spectrum::Jonswap {
+            hs: 6.0,
+            tp: 10.0,
+            gamma: None,
+        };
+        p.hydro.drift = database.to_drift_table().unwrap();
+        p.hydro.qtf = database.qtf.as_ref().map(|q| q.to_qtf());
+        p.hydro.bidirectional = None;
+        p.model.second_order = SecondOrder::FullQtf;
+        p.model.qtf_tolerance = tolerance;
+        p.model.drift_damping = DriftDamping::Off;
+        p.model.drag = DragModel::Off;
+        p
+    };
+    sweep_measured(
+        "full QTF rank (OC4, head seas; x = the ranks retained over its surge, sway and yaw \
+         QTFs, at tolerances 0.3 .. 1e-6)",
+        &[0.3, 0.1, 0.03, 0.01, 1e-3, 1e-6],
+        oc4,
+        |_, p| {
+            let sim = Simulation::new(p.clone()).unwrap();
+            sim.qtf_ranks().iter().map(|r| r.rank).sum::<usize>() as f64
         },
     );
 }
