@@ -25,6 +25,7 @@
 pub mod allocator;
 pub mod dynamics;
 pub mod error;
+pub mod files;
 mod fingerprint;
 pub mod fmi2;
 pub mod forces;

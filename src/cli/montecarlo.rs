@@ -307,8 +307,7 @@ pub fn run_campaign(
     if let Some(e) = write_error {
         return Err(e);
     }
-    let text =
-        std::fs::read_to_string(runs_path).map_err(|e| format!("{}: {e}", runs_path.display()))?;
+    let text = slowdrift::files::read_text(runs_path).map_err(|e| e.to_string())?;
     runs_file::parse(&text, &runs_path.display().to_string()).map_err(|e| e.to_string())
 }
 

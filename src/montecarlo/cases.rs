@@ -16,7 +16,7 @@
 //! the table; its error names the row and column.
 
 use super::Case;
-use crate::error::{Error, Location, Result};
+use crate::error::{Location, Result};
 use crate::model::DragModel;
 use crate::scenario::overrides::{by_column, Refusal, Setting, Value, SETTINGS};
 use crate::scenario::Written;
@@ -54,10 +54,7 @@ fn columns() -> String {
 
 /// Reads a case table file.
 pub fn read_case_table(path: &Path) -> Result<Vec<CaseRow>> {
-    let text = std::fs::read_to_string(path).map_err(|e| Error::Io {
-        path: path.display().to_string(),
-        message: e.to_string(),
-    })?;
+    let text = crate::files::read_text(path)?;
     parse_case_table(&text, &path.display().to_string())
 }
 

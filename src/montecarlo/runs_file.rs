@@ -94,11 +94,7 @@ pub fn open(path: &Path) -> Result<(Vec<RunRow>, File)> {
         path: path.display().to_string(),
         message: e.to_string(),
     };
-    let text = match std::fs::read_to_string(path) {
-        Ok(text) => text,
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => String::new(),
-        Err(e) => return Err(io(e)),
-    };
+    let text = crate::files::read_text_if_exists(path)?.unwrap_or_default();
     let complete = text.rfind('\n').map_or(0, |i| i + 1);
     let runs = parse(&text[..complete], &path.display().to_string())?;
     let mut file = OpenOptions::new()

@@ -110,10 +110,7 @@ pub const DEFAULT_SEED: u64 = 1;
 /// Reads the configuration file at `path`. A CSV or database file it names is looked up
 /// relative to the directory of `path` (and read when the scenario is resolved).
 pub fn load(path: &Path) -> Result<Scenario> {
-    let text = std::fs::read_to_string(path).map_err(|e| Error::Io {
-        path: path.display().to_string(),
-        message: e.to_string(),
-    })?;
+    let text = crate::files::read_text(path)?;
     let base_dir = path.parent().unwrap_or_else(|| Path::new(""));
     parse(&text, &path.display().to_string(), base_dir)
 }

@@ -666,6 +666,43 @@ fn hydro_database_files() {
     });
     assert_error(&fmu, status, &["bad.toml:3"]);
 
+    // Files are files: a FIFO (which would block the read until a writer came), a
+    // character device (which /dev/zero would fill memory from) and a directory are refused
+    // by what they are, at once, and so is a database a configuration names.
+    let fifo = scratch.0.join("pipe.toml");
+    assert!(std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap()
+        .success());
+    let zero_database = scratch.write(
+        "zero.toml",
+        &DEFAULT_TOML.replace(
+            "source = \"default-platform\"",
+            "source = \"database\"\nfile = \"/dev/zero\"",
+        ),
+    );
+    for (reference, expected) in [
+        (fifo.clone(), "is a FIFO (named pipe), not a regular file"),
+        (
+            PathBuf::from("/dev/zero"),
+            "is a character device, not a regular file",
+        ),
+        (scratch.0.clone(), "is a directory, not a regular file"),
+        (zero_database, "/dev/zero: is a character device"),
+    ] {
+        let fmu = Fmu::new("not a file");
+        let start = std::time::Instant::now();
+        let (status, _) = fifty_steps(&fmu, |f| {
+            assert_eq!(
+                f.set_string(vr::HYDRO_DATABASE, reference.to_str().unwrap()),
+                fmi2Status::fmi2OK
+            )
+        });
+        assert!(start.elapsed() < std::time::Duration::from_secs(10));
+        assert_error(&fmu, status, &[expected]);
+    }
+
     let heavy = DEFAULT_TOML.replace("mass = 9.9737e7", "mass = 2.0e8");
     assert_ne!(heavy, DEFAULT_TOML);
     let good = scratch.write("heavy platform.toml", &heavy);

@@ -157,12 +157,8 @@ impl HydroDatabase {
     /// Reads and validates a database; refuses other format versions. Errors name the
     /// file (and the line, for JSON syntax).
     pub fn load(path: &Path) -> Result<Self> {
-        let name = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| Error::Io {
-            path: name.clone(),
-            message: e.to_string(),
-        })?;
-        Self::parse(&text, &name)
+        let text = crate::files::read_text(path)?;
+        Self::parse(&text, &path.display().to_string())
     }
 
     /// A database from its JSON text; `name` says where the text came from in errors.

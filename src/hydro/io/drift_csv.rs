@@ -139,13 +139,13 @@ pub fn read(path: &Path) -> Result<DriftTable> {
         },
         _ => at(e.position().map(csv::Position::line)).error(e.to_string()),
     };
+    let text = crate::files::read_text(path)?;
     let mut reader = csv::ReaderBuilder::new()
         .has_headers(true)
         .comment(Some(COMMENT))
         .trim(csv::Trim::All)
         .flexible(true)
-        .from_path(path)
-        .map_err(io)?;
+        .from_reader(text.as_bytes());
     let header = reader.headers().map_err(io)?.clone();
     let header_at = at(header.position().map(csv::Position::line));
     if header.is_empty() {

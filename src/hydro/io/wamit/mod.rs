@@ -151,10 +151,7 @@ impl NumericFile {
     /// every other line must hold one of `counts` numbers, laid out as `layout` says.
     fn read(path: &Path, counts: &[usize], layout: &str) -> Result<Self> {
         let name = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| Error::Io {
-            path: name.clone(),
-            message: e.to_string(),
-        })?;
+        let text = crate::files::read_text(path)?;
         let mut records = Vec::new();
         let mut seen_content = false;
         for (k, line) in text.lines().enumerate() {

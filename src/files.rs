@@ -1,0 +1,164 @@
+//! Reading the files a user names (configurations, case tables, runs files, hydro databases,
+//! WAMIT output): a path must name a regular file no larger than [`MAX_INPUT_BYTES`]. A FIFO,
+//! a device, a socket or a directory is refused by what it is before anything reads it (a
+//! FIFO would block the reader until a writer comes, `/dev/zero` would be read until memory
+//! runs out), and reading stops at the limit whatever the file does meanwhile.
+
+use crate::error::{Error, Result};
+use std::fs::{FileType, OpenOptions};
+use std::io::Read;
+use std::os::unix::fs::{FileTypeExt, OpenOptionsExt};
+use std::path::Path;
+
+/// The largest input file read, bytes (1 GiB: the largest WAMIT QTF files users bring are a
+/// few hundred MB).
+pub const MAX_INPUT_BYTES: u64 = 1 << 30;
+
+/// The text of the regular file at `path` (at most [`MAX_INPUT_BYTES`]); errors name the
+/// path and what is wrong.
+pub fn read_text(path: &Path) -> Result<String> {
+    read_text_within(path, MAX_INPUT_BYTES)?.ok_or_else(|| Error::Io {
+        path: path.display().to_string(),
+        message: "No such file or directory".into(),
+    })
+}
+
+/// As [`read_text`], but `None` when nothing exists at `path`.
+pub fn read_text_if_exists(path: &Path) -> Result<Option<String>> {
+    read_text_within(path, MAX_INPUT_BYTES)
+}
+
+/// What a file type that is not a regular file is, in words.
+fn kind(file_type: FileType) -> &'static str {
+    if file_type.is_dir() {
+        "a directory"
+    } else if file_type.is_fifo() {
+        "a FIFO (named pipe)"
+    } else if file_type.is_char_device() {
+        "a character device"
+    } else if file_type.is_block_device() {
+        "a block device"
+    } else if file_type.is_socket() {
+        "a socket"
+    } else {
+        "not a regular file"
+    }
+}
+
+fn read_text_within(path: &Path, limit: u64) -> Result<Option<String>> {
+    let io = |message: String| Error::Io {
+        path: path.display().to_string(),
+        message,
+    };
+    let refuse = |file_type: FileType| {
+        io(format!(
+            "is {}, not a regular file: give the path of a file",
+            kind(file_type)
+        ))
+    };
+    // The path's type first (stat does not block), then the opened file's own (the path may
+    // have changed between the two); O_NONBLOCK so that not even that open can wait.
+    let meta = match std::fs::metadata(path) {
+        Ok(meta) => meta,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
+        Err(e) => return Err(io(e.to_string())),
+    };
+    if !meta.is_file() {
+        return Err(refuse(meta.file_type()));
+    }
+    let file = OpenOptions::new()
+        .read(true)
+        .custom_flags(libc::O_NONBLOCK)
+        .open(path)
+        .map_err(|e| io(e.to_string()))?;
+    let meta = file.metadata().map_err(|e| io(e.to_string()))?;
+    if !meta.is_file() {
+        return Err(refuse(meta.file_type()));
+    }
+    let too_large = |size: u64| {
+        io(format!(
+            "is {size} bytes, more than the {limit} bytes an input file may have"
+        ))
+    };
+    if meta.len() > limit {
+        return Err(too_large(meta.len()));
+    }
+    let mut bytes = Vec::new();
+    bytes
+        .try_reserve_exact(meta.len() as usize)
+        .map_err(|_| io(format!("{} bytes cannot be allocated", meta.len())))?;
+    file.take(limit + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| io(e.to_string()))?;
+    if bytes.len() as u64 > limit {
+        return Err(too_large(bytes.len() as u64));
+    }
+    String::from_utf8(bytes).map(Some).map_err(|e| {
+        io(format!(
+            "is not UTF-8 text (byte {})",
+            e.utf8_error().valid_up_to()
+        ))
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::time::{Duration, Instant};
+
+    fn temp(name: &str) -> std::path::PathBuf {
+        std::env::temp_dir().join(format!("slowdrift-files-{}-{name}", std::process::id()))
+    }
+
+    fn message(result: Result<String>) -> String {
+        result.unwrap_err().to_string()
+    }
+
+    #[test]
+    fn a_regular_file_is_read_and_a_missing_one_named() {
+        let path = temp("regular.txt");
+        std::fs::write(&path, "a = 1\n").unwrap();
+        assert_eq!(read_text(&path).unwrap(), "a = 1\n");
+        std::fs::remove_file(&path).unwrap();
+        assert!(read_text_if_exists(&path).unwrap().is_none());
+        let m = message(read_text(&path));
+        assert!(m.contains(&path.display().to_string()), "{m}");
+    }
+
+    /// A FIFO with no writer is refused at once (opening it for reading would block), a
+    /// character device and a directory by what they are.
+    #[test]
+    fn fifos_devices_and_directories_are_refused_by_name() {
+        let fifo = temp("fifo");
+        let made = std::process::Command::new("mkfifo")
+            .arg(&fifo)
+            .status()
+            .unwrap();
+        assert!(made.success());
+        let start = Instant::now();
+        let m = message(read_text(&fifo));
+        assert!(start.elapsed() < Duration::from_secs(5));
+        std::fs::remove_file(&fifo).unwrap();
+        assert!(
+            m.contains("is a FIFO (named pipe), not a regular file"),
+            "{m}"
+        );
+        let m = message(read_text(Path::new("/dev/zero")));
+        assert!(m.contains("/dev/zero: is a character device"), "{m}");
+        let m = message(read_text(&std::env::temp_dir()));
+        assert!(m.contains("is a directory"), "{m}");
+    }
+
+    #[test]
+    fn a_file_over_the_limit_is_refused_with_its_size() {
+        let path = temp("large.txt");
+        std::fs::write(&path, "0123456789").unwrap();
+        let m = read_text_within(&path, 9).unwrap_err().to_string();
+        assert_eq!(read_text_within(&path, 10).unwrap().unwrap(), "0123456789");
+        std::fs::remove_file(&path).unwrap();
+        assert!(
+            m.contains("is 10 bytes, more than the 9 bytes an input file may have"),
+            "{m}"
+        );
+    }
+}
