@@ -20,9 +20,7 @@
 //! ([`slowdrift::allocator::retain_freed_memory`]).
 
 use criterion::Criterion;
-use slowdrift::hydro::aranha::aranha_damping;
 use slowdrift::hydro::io::database::HydroDatabase;
-use slowdrift::model::DriftDamping;
 use slowdrift::montecarlo::{run_jobs, run_seed, Case, Job};
 use slowdrift::problem::default_problem;
 use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
@@ -72,15 +70,10 @@ fn numpy_seconds(case: &Case) -> Result<(f64, String), String> {
     let database = dir.join("platform.json");
     // The damping the Rust run uses, tabulated for NumPy (Aranha's, from the drift table).
     let problem = &case.problem;
-    let table = match problem.model.drift_damping {
-        DriftDamping::Aranha => aranha_damping(
-            &problem.hydro.drift,
-            problem.environment.gravity,
-            &problem.platform.columns,
-        )
-        .map_err(|e| e.to_string())?,
-        _ => problem.hydro.drift.clone(),
-    };
+    let table = problem
+        .damping_table()
+        .map_err(|e| e.to_string())?
+        .ok_or("the Fig. 10 case has drift damping")?;
     HydroDatabase::from_drift_table(
         "platform",
         DEFAULT_DRIFT_LABEL,

@@ -11,6 +11,7 @@
 use crate::error::{
     require_finite, require_finite_matrix, require_non_negative, require_positive, Error, Result,
 };
+use crate::hydro::aranha::aranha_damping;
 use crate::hydro::bidirectional::BidirectionalSource;
 use crate::hydro::column_drift::isolated_columns_table;
 use crate::hydro::columns::ColumnArray;
@@ -209,6 +210,21 @@ fn grid_nodes(grid: &ColumnGrid) -> (Vec<f64>, Vec<f64>) {
 }
 
 impl Problem {
+    /// The drift table with the wave-drift damping a run of this problem uses: the table's
+    /// own b_ij (`drift_damping = "table"`), Aranha's on its nodes (`"aranha"`, whatever
+    /// b_ij the table holds), or `None` (`"off"`).
+    pub fn damping_table(&self) -> Result<Option<DriftTable>> {
+        Ok(match self.model.drift_damping {
+            DriftDamping::Off => None,
+            DriftDamping::Table => Some(self.hydro.drift.clone()),
+            DriftDamping::Aranha => Some(aranha_damping(
+                &self.hydro.drift,
+                self.environment.gravity,
+                &self.platform.columns,
+            )?),
+        })
+    }
+
     /// The steps of a run that keeps every step's output (the CLI's time series, a Monte
     /// Carlo run's statistics), round(duration / time_step), with a buffer for them
     /// reserved in `buffer` (one entry per sample: the steps and the initial state).

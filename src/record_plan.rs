@@ -20,7 +20,7 @@ use crate::forces::{
     ForceRecords, GridQtf, InverseFft, Join, QtfFactorisation, RecordOptions, RecordWork, Segments,
     Synthesizer, YawGrid,
 };
-use crate::hydro::aranha::aranha_damping;
+
 use crate::hydro::bidirectional::DirectionPairs;
 use crate::model::{
     Cylinder, Dof, DriftDamping, Environment, Interaction, SecondOrder, YawFollowing,
@@ -137,15 +137,7 @@ impl RecordPlan {
             sea.band(),
         )?;
         let directions = sea.directions();
-        let damping_table = match config.model.drift_damping {
-            DriftDamping::Off => None,
-            DriftDamping::Table => Some(config.hydro.drift.clone()),
-            DriftDamping::Aranha => Some(aranha_damping(
-                &config.hydro.drift,
-                config.environment.gravity,
-                &config.platform.columns,
-            )?),
-        };
+        let damping_table = config.damping_table()?;
         let pairs = direction_pairs(config, &grid, &directions)?;
         if let (Some(options), Some(_)) = (&config.model.yaw_following, &pairs) {
             return Err(Error::invalid(

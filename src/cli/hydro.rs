@@ -3,8 +3,8 @@
 //! exist into a native hydro database and prints what it found.
 //!
 //! `slowdrift hydro columns [--config FILE.toml] --out FILE.json`: writes the drift table
-//! (and wave-drift damping: the table's b_ij, or Aranha's when the configuration asks for
-//! them) of a configuration (default: the embedded default platform's database) as a native
+//! (and the wave-drift damping a run of it uses: the table's b_ij, or Aranha's) of a
+//! configuration (default: the embedded default platform's database) as a native
 //! hydro database; with
 //! `--bidirectional`, also the bi-directional drift T(omega; beta_p, beta_q) of a column-array
 //! source on the same frequencies and headings (`tests/bem` joins it to the radiation-
@@ -12,11 +12,9 @@
 
 use super::args::Checked;
 use clap::{Args, Subcommand};
-use slowdrift::hydro::aranha::aranha_damping;
 use slowdrift::hydro::bidirectional::{BidirectionalSource, BidirectionalTable};
 use slowdrift::hydro::io::database::HydroDatabase;
 use slowdrift::hydro::io::wamit::WamitOptions;
-use slowdrift::model::DriftDamping;
 use slowdrift::problem::{self, default_problem};
 use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
 use std::path::PathBuf;
@@ -111,21 +109,12 @@ fn columns(args: ColumnsArgs) -> Result<(), String> {
             DEFAULT_DRIFT_LABEL.to_string(),
         ),
     };
-    // A configuration that takes Aranha's damping from a table without b_ij gets them
-    // written (on the table's nodes, as a run computes them).
-    let with_aranha;
-    let table = match config.model.drift_damping {
-        DriftDamping::Aranha if !config.hydro.drift.has_damping() => {
-            with_aranha = aranha_damping(
-                &config.hydro.drift,
-                config.environment.gravity,
-                &config.platform.columns,
-            )
-            .map_err(|e| e.to_string())?;
-            &with_aranha
-        }
-        _ => &config.hydro.drift,
-    };
+    // The damping a run of the configuration uses, written with the table (Aranha's on its
+    // nodes when it asks for them; none when drift damping is off).
+    let table = &config
+        .damping_table()
+        .map_err(|e| e.to_string())?
+        .unwrap_or_else(|| config.hydro.drift.clone());
     let mut database =
         HydroDatabase::from_drift_table("platform", &source, &config.environment, table);
     if bidirectional {

@@ -5,9 +5,7 @@
 
 use super::{report, write_text, DriftArgs};
 use crate::plot::{padded_range, write_figure, Figure, LegendAt, Panel, Series, Style, Ticks};
-use slowdrift::hydro::aranha::aranha_damping;
 use slowdrift::hydro::DriftTable;
-use slowdrift::model::DriftDamping;
 use slowdrift::problem::resolve_hydro;
 use slowdrift::scenario::{ColumnGrid, DriftSource};
 use slowdrift::Problem;
@@ -27,17 +25,6 @@ const OMEGA_STEP: f64 = 0.01;
 /// The oblique heading of the yaw panels, rad (yaw drift vanishes in head seas and at 45
 /// degrees on a doubly symmetric platform).
 const OBLIQUE: f64 = std::f64::consts::PI / 6.0;
-
-/// A drift table with the damping a run of `config` uses (its own b_ij, or Aranha's).
-fn with_damping(config: &Problem, table: &DriftTable) -> Result<DriftTable, String> {
-    match config.model.drift_damping {
-        DriftDamping::Aranha if !table.has_damping() => {
-            aranha_damping(table, config.environment.gravity, &config.platform.columns)
-                .map_err(|e| e.to_string())
-        }
-        _ => Ok(table.clone()),
-    }
-}
 
 /// (surge drift at 0, b11 at 0, yaw drift at 30 deg, b66 at 0) of `table` at `omega`.
 fn quantities(table: &DriftTable, omega: f64) -> Result<[f64; 4], String> {
@@ -61,9 +48,14 @@ pub(super) fn drift(base: &Problem, args: &DriftArgs) -> Result<(), String> {
     let columns = resolve_hydro(&source, &base.platform, &base.environment)
         .map_err(|e| e.to_string())?
         .drift;
-    let own = with_damping(base, &base.hydro.drift)?;
-    let lo = own.omegas()[0].max(columns.omegas()[0]);
-    let hi = own.omegas()[own.omegas().len() - 1].min(columns.omegas()[columns.omegas().len() - 1]);
+    // The damping a run of the configuration uses (none drawn when it is off).
+    let own = base
+        .damping_table()
+        .map_err(|e| e.to_string())?
+        .unwrap_or_else(|| base.hydro.drift.clone());
+    let span = |t: &DriftTable| (t.omegas()[0], t.omegas()[t.omegas().len() - 1]);
+    let ((own_lo, own_hi), (col_lo, col_hi)) = (span(&own), span(&columns));
+    let (lo, hi) = (own_lo.max(col_lo), own_hi.min(col_hi));
     let count = ((hi - lo) / OMEGA_STEP).floor() as usize + 1;
     let mut csv = String::from(
         "omega_rad_s,surge_drift_n_m2,surge_drift_columns_n_m2,b11_n_s_m3,b11_columns_n_s_m3,\
