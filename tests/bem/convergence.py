@@ -13,13 +13,12 @@ import sys
 import numpy as np
 
 import make_database
-import semi_bem
 
 
 def quantities(path):
     bem = dict(np.load(path))
     _, inertia, stiffness, _, damping, _, _ = make_database.platform_matrices(bem)
-    t = np.conj(semi_bem.far_field_drift(bem, semi_bem.motions(bem, inertia, stiffness, damping)))
+    t = make_database.slowdrift_drift(bem, inertia, stiffness, damping)
     head = int(np.argmin(np.abs(bem["heading"])))
     oblique = int(np.argmin(np.abs(bem["heading"] - np.radians(30.0))))
     return bem, {

@@ -124,8 +124,17 @@ def _solve_frequencies(task):
     """solve() for a few frequencies, in this process."""
     import capytaine as cpt
     size, omegas, headings, n_theta = task
-    props = mass_properties()
-    body = floating_body(size, props)
+    body = floating_body(size, mass_properties())
+    out = solve_body(body, omegas, headings, n_theta)
+    out.update({"size": size, "panels": body.mesh.nb_faces,
+                "lid_panels": body.lid_mesh.nb_faces, "capytaine_version": cpt.__version__})
+    return out
+
+
+def solve_body(body, omegas, headings, n_theta):
+    """Capytaine's solution for `body` in deep water as plain arrays (solve()'s, without the
+    mesh's description), checked for the order of Capytaine's dimensions and coordinates."""
+    import capytaine as cpt
     theta = 2 * np.pi * np.arange(n_theta) / n_theta
     test_matrix = xr.Dataset(coords={
         "omega": np.asarray(omegas, float), "wave_direction": np.asarray(headings, float),
@@ -146,10 +155,9 @@ def _solve_frequencies(task):
             or not np.allclose(ds["omega"].values, omegas)):
         raise RuntimeError("Capytaine reordered the frequencies, DOFs, headings or angles")
     return {
-        "size": size, "panels": body.mesh.nb_faces, "lid_panels": body.lid_mesh.nb_faces,
-        "capytaine_version": cpt.__version__, "omega": np.asarray(omegas, float),
-        "wavenumber": ds["wavenumber"].values, "heading": np.asarray(headings, float),
-        "theta": theta, "dofs": np.array(list(body.dofs)),
+        "omega": np.asarray(omegas, float), "wavenumber": ds["wavenumber"].values,
+        "heading": np.asarray(headings, float), "theta": theta,
+        "dofs": np.array(list(body.dofs)),
         "added_mass": ds["added_mass"].values,
         "radiation_damping": ds["radiation_damping"].values,
         "excitation": ds["excitation_force"].values,

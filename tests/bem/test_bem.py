@@ -71,22 +71,12 @@ def cylinder_drift(xc, yc, omegas, headings):
     """Far-field drift pairs of a fixed vertical cylinder of radius 5 m and draft 60 m
     (deep enough to be infinitely deep at these frequencies) centred at (xc, yc)."""
     import capytaine as cpt
-    import xarray as xr
     mesh = cpt.mesh_vertical_cylinder(length=60.0, radius=5.0, center=(xc, yc, -30.0),
                                       resolution=(6, 48, 40)).immersed_part()
     body = cpt.FloatingBody(mesh=mesh, dofs=cpt.rigid_body_dofs(rotation_center=(xc, yc, -10.0)),
                             center_of_mass=(xc, yc, -10.0))
-    theta = 2 * np.pi * np.arange(144) / 144
-    ds = cpt.BEMSolver().fill_dataset(xr.Dataset(coords={
-        "omega": omegas, "wave_direction": headings, "radiating_dof": list(body.dofs),
-        "water_depth": [np.inf], "rho": [semi_bem.RHO], "g": [semi_bem.G], "theta": theta}),
-        body, progress_bar=False, hydrostatics=False)
-    bem = {"omega": ds["omega"].values, "wavenumber": ds["wavenumber"].values,
-           "heading": ds["wave_direction"].values, "theta": theta,
-           "kochin_diffraction": ds["kochin_diffraction"].values,
-           "kochin_radiation": ds["kochin_radiation"].values}
-    motions = np.zeros((len(omegas), len(headings), 6), complex)
-    return semi_bem.far_field_drift(bem, motions)
+    bem = semi_bem.solve_body(body, omegas, headings, 144)
+    return semi_bem.far_field_drift(bem, np.zeros_like(bem["excitation"]))
 
 
 def havelock(ka):
