@@ -11,6 +11,8 @@
 //! (median over 2000 steps, 5 rounds), and the exponent p of cost ~ x^p fitted by least
 //! squares on the logarithms. Printed; no criterion run (each point builds a new plan).
 
+#[path = "../tests/all/common.rs"]
+mod common;
 mod timing;
 
 use slowdrift::hydro::io::database::HydroDatabase;
@@ -170,10 +172,7 @@ fn main() {
             p
         },
     );
-    let data = std::env::var_os("SLOWDRIFT_DATA")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|| concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data").into())
-        .join("wamit/oc4-semi/marin_semi");
+    let data = common::shared_data_dir().join("wamit/oc4-semi/marin_semi");
     if !data.with_extension("12d").is_file() {
         println!(
             "full QTF rank: left out, the OC4 data are absent at {}",
