@@ -65,8 +65,12 @@ fn high_frequency_drift_is_the_column_solvers() {
     }
 }
 
-/// The configuration's mass and yaw inertia are the database's (one platform), and its
-/// added mass is the database's low-frequency added mass.
+/// A consistency check, not a physics one: the configuration's mass, yaw inertia and added
+/// mass are the numbers of the database they were copied from (one platform, not two that
+/// drifted apart). The numbers themselves are checked independently elsewhere: the mass
+/// against the closed-form volume (`scenario::default`), the section integrals behind the
+/// inertia against a grid integration and the added mass against a fresh Capytaine
+/// solution (`tests/bem/test_bem.py`).
 #[test]
 fn configuration_is_the_database_platform() {
     let db = database();
