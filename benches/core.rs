@@ -142,6 +142,7 @@ fn config(duration: f64, time_step: f64, drag: DragModel) -> Problem {
             time_step,
             start_time: 0.0,
             block_duration: DEFAULT_BLOCK_DURATION,
+            memory_limit: slowdrift::scenario::limits::DEFAULT_MEMORY_LIMIT,
         },
         platform: platform(),
         hydro: Hydro::from_drift(drift),

@@ -44,6 +44,6 @@ pub mod studies;
 
 pub use error::{Error, Result};
 pub use problem::Problem;
-pub use record_plan::{PlanKey, QtfRank, RecordPlan};
+pub use record_plan::{MemoryEstimate, PlanKey, QtfRank, RecordPlan, Term};
 pub use scenario::Scenario;
 pub use simulation::{Outputs, Simulation, Snapshot};

@@ -23,7 +23,7 @@ use crate::model::{
     Dof, DragModel, DriftDamping, Environment, Interaction, SecondOrder, HEADING_MATCH_TOLERANCE,
 };
 use crate::scenario::default::default_scenario;
-use crate::scenario::{file, ColumnGrid, DriftSource, Platform, Scenario};
+use crate::scenario::{file, limits, ColumnGrid, DriftSource, Platform, Scenario};
 use serde::Serialize;
 use std::path::Path;
 
@@ -65,6 +65,7 @@ pub type Problem = Scenario<Hydro>;
 /// Resolves the scenario's drift source into data: reads its file or runs its solver, once.
 /// (The problem is checked where the records are planned, [`Problem::check`].)
 pub fn resolve(scenario: &Scenario) -> Result<Problem> {
+    limits::check_sizes(scenario, Some(&scenario.hydro)).map_err(|e| scenario.origins.locate(e))?;
     let hydro = resolve_hydro(&scenario.hydro, &scenario.platform, &scenario.environment)
         .map_err(|e| scenario.origins.locate(e))?;
     Ok(scenario.clone().with_hydro(hydro))
@@ -244,6 +245,16 @@ impl Problem {
             ));
         }
         let steps = (run.duration / run.time_step).round();
+        let bytes = (steps + 1.0) * std::mem::size_of::<T>() as f64;
+        if bytes > run.memory_limit {
+            return Err(self.origins.locate(limits::over_budget(
+                "run.duration",
+                run.duration,
+                &format!("the output of {steps} steps of {} s", run.time_step),
+                bytes,
+                run,
+            )));
+        }
         let samples = steps as usize + 1;
         if steps >= usize::MAX as f64 || buffer.try_reserve_exact(samples).is_err() {
             return Err(refuse(format!(
@@ -263,6 +274,7 @@ impl Problem {
     /// Checks every field; the error names the first offending field (by its key path) and
     /// value.
     pub fn validate(&self) -> Result<()> {
+        limits::check_sizes(self, None)?;
         require_positive("environment.gravity", self.environment.gravity)?;
         require_positive("environment.water_density", self.environment.water_density)?;
         self.sea.validate()?;

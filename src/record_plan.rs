@@ -14,6 +14,10 @@
 //! seed, the wave height, the drag coefficients, the current, the mass or the mooring) share
 //! one plan.
 
+mod budget;
+
+pub use budget::{MemoryEstimate, Term};
+
 use crate::error::{Error, Result};
 use crate::forces::{
     direction_pairs, plan_inverse_fft, transfers_on_grid, yaw_transfers, DirectionTransfer,
@@ -125,8 +129,11 @@ impl RecordPlan {
         Self::of_checked(config)
     }
 
-    /// [`RecordPlan::new`] of a problem already checked.
+    /// [`RecordPlan::new`] of a problem already checked: refused before anything is
+    /// allocated when the records of one simulation would exceed the memory limit
+    /// ([`MemoryEstimate`]).
     pub(crate) fn of_checked(config: &Problem) -> Result<Self> {
+        MemoryEstimate::of(config)?.check(config, 1)?;
         let sea = &config.sea;
         let dt = 0.5 * config.run.time_step;
         let segments = segments_of(config.run.block_duration, dt);

@@ -16,7 +16,7 @@ use super::depth_basis::DepthBasis;
 use super::record::SamplePoint;
 use super::synthesis::Synthesizer;
 use crate::model::Cylinder;
-use crate::sea_state::WaveComponents;
+use crate::sea_state::{Direction, WaveComponents};
 use rustfft::num_complex::{Complex32, Complex64};
 use std::sync::Arc;
 
@@ -190,7 +190,7 @@ impl KinematicsWork {
         if self.keys.len() != columns.len() {
             self.keys = columns
                 .iter()
-                .map(|c| KinematicsKey::of(components, c))
+                .map(|c| KinematicsKey::of(&components.directions, c))
                 .collect();
         }
         for (c, column) in columns.iter().enumerate() {
@@ -327,16 +327,27 @@ struct KinematicsKey {
 }
 
 impl KinematicsKey {
-    fn of(components: &WaveComponents, column: &Cylinder) -> Self {
+    fn of(directions: &[Direction], column: &Cylinder) -> Self {
         KinematicsKey {
             draft: column.draft,
-            along: components
-                .directions
+            along: directions
                 .iter()
                 .map(|dir| along(column, dir.heading))
                 .collect(),
         }
     }
+}
+
+/// The number of distinct kinematics records of `columns` in a sea of `directions`: the
+/// columns whose keys are equal share one ([`KinematicsKey`]).
+pub fn distinct_kinematics(columns: &[Cylinder], directions: &[Direction]) -> usize {
+    let keys: Vec<KinematicsKey> = columns
+        .iter()
+        .map(|c| KinematicsKey::of(directions, c))
+        .collect();
+    (0..keys.len())
+        .filter(|&c| !keys[..c].contains(&keys[c]))
+        .count()
 }
 
 /// Distance of the column centre along a wave heading, m.

@@ -16,7 +16,7 @@ mod yaw_following;
 
 pub use depth_basis::{DepthBasis, KINEMATICS_TOLERANCE};
 pub use directional::{add_cross_terms, cross_direction_force, direction_pairs, CrossWork};
-pub use kinematics::{ColumnKinematics, KinematicsWork};
+pub use kinematics::{distinct_kinematics, ColumnKinematics, KinematicsWork};
 pub use newman::NewmanBuilder;
 pub use qtf::{GridQtf, QtfFactorisation};
 pub use record::{Record, RecordClock, SamplePoint};

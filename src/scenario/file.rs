@@ -36,6 +36,7 @@
 //! time_step = 1.0            # s (RK4 step)
 //! start_time = 0.0           # s
 //! block_duration = 16384.0   # s: records are made one block at a time (memory per block)
+//! memory_limit_gb = 4.0      # GB (1e9 bytes) the records may take; larger estimates refused
 //!
 //! [platform]                 # matrices are 3x3, rows and columns (surge, sway, yaw)
 //! mass = 1.2e7               # kg, required
@@ -84,8 +85,8 @@
 //! (rad/s), `beta_deg`, `surge`, `sway`, `yaw`, optionally all nine `b11` .. `b33`.
 
 use super::{
-    ColumnGrid, Current, DriftSource, InitialCondition, ModelOptions, Origins, Platform, Run,
-    Scenario, DEFAULT_BLOCK_DURATION, DEFAULT_N_DIRECTIONS,
+    limits, ColumnGrid, Current, DriftSource, InitialCondition, ModelOptions, Origins, Platform,
+    Run, Scenario, DEFAULT_BLOCK_DURATION, DEFAULT_N_DIRECTIONS,
 };
 use crate::error::{Error, Location, Result};
 use crate::hydro::io::drift_csv::DriftFields;
@@ -440,6 +441,9 @@ struct RunFile {
     /// s.
     #[serde(default = "default_block_duration")]
     block_duration: f64,
+    /// GB (1e9 bytes).
+    #[serde(default = "default_memory_limit_gb")]
+    memory_limit_gb: f64,
 }
 
 fn default_time_step() -> f64 {
@@ -450,6 +454,10 @@ fn default_block_duration() -> f64 {
     DEFAULT_BLOCK_DURATION
 }
 
+fn default_memory_limit_gb() -> f64 {
+    limits::DEFAULT_MEMORY_LIMIT / limits::BYTES_PER_GB
+}
+
 impl RunFile {
     fn into_core(self) -> Run {
         Run {
@@ -457,6 +465,7 @@ impl RunFile {
             time_step: self.time_step,
             start_time: self.start_time,
             block_duration: self.block_duration,
+            memory_limit: self.memory_limit_gb * limits::BYTES_PER_GB,
         }
     }
 }
@@ -1077,6 +1086,7 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
                 time_step: 0.5,
                 start_time: 10.0,
                 block_duration: DEFAULT_BLOCK_DURATION,
+                memory_limit: limits::DEFAULT_MEMORY_LIMIT,
             }
         );
         assert_eq!(

@@ -10,6 +10,7 @@
 
 pub mod default;
 pub mod file;
+pub mod limits;
 mod origin;
 pub mod overrides;
 
@@ -46,6 +47,12 @@ pub struct Run {
     /// Length of a block of the record stream, s: the records are synthesised and held one
     /// block at a time (`forces::stream`), so memory does not grow with the duration.
     pub block_duration: f64,
+    /// The memory the run's records may take, bytes (`run.memory_limit_gb`; default
+    /// [`limits::DEFAULT_MEMORY_LIMIT`]): a configuration whose estimate exceeds it is refused
+    /// before anything is allocated (`record_plan::budget`). A resource bound, not part of
+    /// what is simulated: not fingerprinted.
+    #[serde(skip)]
+    pub memory_limit: f64,
 }
 
 /// Default [`Run::block_duration`], s: 2^14 s (4.6 hours), so that runs of up to 2^14 s

@@ -218,7 +218,7 @@ const INTERACTION_WORDS: &[&str] = &[
 ];
 
 /// The table, in the order it is applied.
-pub static SETTINGS: [Setting; 22] = [
+pub static SETTINGS: [Setting; 23] = [
     Setting {
         key: "sea.spreading_exponent",
         fmu: Some("spreadingExponent"),
@@ -697,6 +697,18 @@ pub static SETTINGS: [Setting; 22] = [
             Ok(())
         },
         get: |s| Value::Number(s.run.duration),
+    },
+    Setting {
+        key: "run.memory_limit_gb",
+        fmu: Some("memoryLimit"),
+        column: None,
+        words: &[],
+        meaning: "memory the records may take, GB (1e9 bytes); larger estimates are refused",
+        apply: |s, v| {
+            s.run.memory_limit = number(v)? * super::limits::BYTES_PER_GB;
+            Ok(())
+        },
+        get: |s| Value::Number(s.run.memory_limit / super::limits::BYTES_PER_GB),
     },
 ];
 

@@ -107,6 +107,7 @@ pub fn base_config(duration: f64, time_step: f64, seed: u64) -> Problem {
             time_step,
             start_time: 0.0,
             block_duration: DEFAULT_BLOCK_DURATION,
+            memory_limit: slowdrift::scenario::limits::DEFAULT_MEMORY_LIMIT,
         },
         platform: oscillator_platform(1.0e7, 1.0e10, [60.0, 60.0, 40.0], 0.2),
         hydro: Hydro::from_drift(drift_table(smooth_drift)),

@@ -1,5 +1,5 @@
 //! The test binary's allocator: the system allocator, counting this thread's allocations
-//! and the bytes this thread holds (allocated minus freed), for the tests that check that
+//! the bytes this thread holds (allocated minus freed) and their peak, for the tests that check that
 //! the stepping loop allocates nothing and that memory does not grow with a run's length.
 
 use std::alloc::{GlobalAlloc, Layout, System};
@@ -10,10 +10,15 @@ struct Counting;
 thread_local! {
     static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
     static LIVE_BYTES: Cell<isize> = const { Cell::new(0) };
+    static PEAK_BYTES: Cell<isize> = const { Cell::new(0) };
 }
 
 fn held(delta: isize) {
-    LIVE_BYTES.with(|b| b.set(b.get() + delta));
+    LIVE_BYTES.with(|b| {
+        let live = b.get() + delta;
+        b.set(live);
+        PEAK_BYTES.with(|p| p.set(p.get().max(live)));
+    });
 }
 
 unsafe impl GlobalAlloc for Counting {
@@ -46,4 +51,14 @@ pub fn allocations() -> usize {
 /// Bytes allocated by this thread and not yet freed.
 pub fn live_bytes() -> isize {
     LIVE_BYTES.with(Cell::get)
+}
+
+/// Starts a new peak: from now, [`peak_bytes`] is the most this thread has held since.
+pub fn reset_peak() {
+    PEAK_BYTES.with(|p| p.set(live_bytes()));
+}
+
+/// The most bytes this thread has held at once since [`reset_peak`].
+pub fn peak_bytes() -> isize {
+    PEAK_BYTES.with(Cell::get)
 }

@@ -405,7 +405,11 @@ fn force_spectrum_matches_the_double_integral_of_the_spectrum_and_the_qtf() {
 /// 6.0e5 kg), the platform's yaw inertia 1.2264e10 kg m^2 (Robertson et al. 2014), the
 /// WAMIT zero-frequency added mass, mooring stiffness for 100 s periods in surge, sway and
 /// yaw and linear damping at 5 % of critical.
-fn oc4_config(database: &HydroDatabase, second_order: SecondOrder, seed: u64) -> Problem {
+pub(crate) fn oc4_config(
+    database: &HydroDatabase,
+    second_order: SecondOrder,
+    seed: u64,
+) -> Problem {
     let mut config = base_config(3.0 * 3600.0, 1.0, seed);
     let p = &mut config.platform;
     p.mass = 1.4073e7;

@@ -7,6 +7,7 @@ mod fmu;
 
 mod architecture;
 mod bad_input;
+mod budget;
 mod cli;
 mod default_platform;
 mod directional;

@@ -1,0 +1,278 @@
+//! The memory a problem's records take, estimated before any of it is allocated, against
+//! the run's memory limit (`run.memory_limit_gb`, [`crate::scenario::limits`]; issue #15).
+//!
+//! The estimate adds the buffers the plan and a simulation hold at their peak, from the
+//! sizes they are made with: L samples per record (the stream segment's span at h/2), G
+//! wave components (the band on the grid), D directions, Y yaw-following headings, C drag
+//! columns of S strips, the full QTF's n data frequencies. Each term is an upper bound of
+//! what the code allocates for it (f64 = 8 bytes, complex f64 = 16, the kinematics rows in
+//! single precision, 8 per complex sample); `tests/all/budget.rs` checks that the estimate
+//! bounds the peak the counting allocator measures while a simulation is made, and is
+//! within a small factor of it, over configurations that stress each term. The data the
+//! problem already holds (its drift table, QTF, bi-directional table) are not counted: they
+//! were bounded by the file-size limit when read.
+//!
+//! Once the estimate is within the limit, the memory is reserved and released again
+//! ([`MemoryEstimate::check`]): a process whose own limit (`setrlimit`, a container) leaves
+//! less room gets a typed error here instead of an allocation failure later, which would
+//! abort the process (and, in an FMU, the master with it).
+
+use crate::error::{Error, Result};
+use crate::forces::distinct_kinematics;
+use crate::hydro::bidirectional::BidirectionalSource;
+use crate::model::{DragModel, Interaction, NewmanForm, SecondOrder};
+use crate::problem::Problem;
+use crate::scenario::limits::{bytes_text, over_budget};
+use crate::sea_state::FrequencyGrid;
+
+const F64: f64 = 8.0;
+const C64: f64 = 16.0;
+/// Bytes of one sample of a kinematics row (single-precision complex).
+const C32: f64 = 8.0;
+/// Records of the force (3) and the damping (3 x 3) per set, and the elevation.
+const FORCE_AND_DAMPING: f64 = 12.0;
+
+/// Frequencies of the embedded default platform's bi-directional table (checked against
+/// the table by a test), which the estimate cannot read without parsing it.
+pub const EMBEDDED_BIDIRECTIONAL_OMEGAS: usize = 75;
+
+/// The estimated peak memory of a problem's records, bytes, by what drives it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MemoryEstimate {
+    /// The plan's share, held once for every simulation it serves.
+    pub plan: f64,
+    /// One simulation's records and buffers.
+    pub per_run: f64,
+    /// The largest term: the setting that drives it (its key and value) and what it is.
+    pub largest: Term,
+}
+
+/// One term of an estimate.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Term {
+    pub key: &'static str,
+    pub value: String,
+    pub what: String,
+    pub bytes: f64,
+}
+
+impl MemoryEstimate {
+    /// The estimate for a checked problem (its counts bounded, `Problem::check`).
+    pub fn of(problem: &Problem) -> Result<MemoryEstimate> {
+        let dt = 0.5 * problem.run.time_step;
+        let segments = super::segments_of(problem.run.block_duration, dt);
+        let grid = FrequencyGrid::new(
+            problem.run.start_time,
+            segments.span() as f64 * dt,
+            dt,
+            problem.sea.band(),
+        )?;
+        let l = grid.len as f64;
+        let g = grid.count as f64;
+        let directions = problem.sea.directions();
+        let d = directions.len() as f64;
+        let model = &problem.model;
+        let mut plan = Vec::new();
+        let mut run = Vec::new();
+        let block = || format!("{}", problem.run.block_duration);
+        // The planned transform (twiddles and its scratch) and the per-direction drift and
+        // damping coefficients on the grid.
+        plan.push(term(
+            "run.block_duration",
+            block(),
+            "the planned FFT",
+            2.0 * C64 * l,
+        ));
+        plan.push(term(
+            "sea.n_directions",
+            problem.sea.n_directions.to_string(),
+            format!("{d} directions' coefficients on {g} components"),
+            d * FORCE_AND_DAMPING * F64 * g,
+        ));
+        // The synthesizer's scratch, join and pair buffers, Newman's series and the
+        // arithmetic form's elevation series, the full QTF's series, the elevation and
+        // force and damping records, the wave components.
+        let series = 6.0 * C64 * l + (1.0 + FORCE_AND_DAMPING) * F64 * l + 4.0 * C64 * g;
+        run.push(term(
+            "run.block_duration",
+            block(),
+            "the records of one block",
+            series,
+        ));
+        run.push(term(
+            "sea.n_directions",
+            problem.sea.n_directions.to_string(),
+            format!("{d} directions' wave components"),
+            d * (C64 + F64) * g,
+        ));
+        if d >= 2.0 && problem.interaction() != Interaction::None {
+            let omegas = match &problem.hydro.bidirectional {
+                Some(source) if problem.interaction() == Interaction::Bidirectional => {
+                    bidirectional_omegas(source)
+                }
+                _ => problem.hydro.drift.omegas().len(),
+            } as f64;
+            plan.push(term(
+                "sea.n_directions",
+                problem.sea.n_directions.to_string(),
+                format!("the drift of {d} x {d} direction pairs at {omegas} frequencies"),
+                d * d * omegas * 3.0 * C64,
+            ));
+            if let Some(BidirectionalSource::Embedded { json, .. }) = &problem.hydro.bidirectional {
+                // The compiled-in table is parsed when the pairs are made (its numbers take
+                // fewer bytes parsed than as text).
+                plan.push(term(
+                    "sea.n_directions",
+                    problem.sea.n_directions.to_string(),
+                    "the embedded bi-directional table, parsed",
+                    json.len() as f64,
+                ));
+            }
+            run.push(term(
+                "sea.n_directions",
+                problem.sea.n_directions.to_string(),
+                "the cross-direction terms".to_string(),
+                3.0 * C64 * l + 3.0 * F64 * l + 2.0 * C64 * g,
+            ));
+        }
+        if let Some(yaw) = &model.yaw_following {
+            let y = yaw.headings as f64;
+            plan.push(term(
+                "model.yaw_following.headings",
+                yaw.headings.to_string(),
+                format!("the coefficients of {y} yaw angles"),
+                y * d * FORCE_AND_DAMPING * F64 * g,
+            ));
+            let eta = match model.newman {
+                NewmanForm::Arithmetic => d * C64 * l,
+                NewmanForm::Geometric => 0.0,
+            };
+            run.push(term(
+                "model.yaw_following.headings",
+                yaw.headings.to_string(),
+                format!("the records at {y} yaw angles"),
+                y * FORCE_AND_DAMPING * F64 * l + eta,
+            ));
+        }
+        if model.drag != DragModel::Off {
+            let c = distinct_kinematics(&problem.platform.columns, &directions) as f64;
+            let s = model.strips_per_column as f64;
+            // Per distinct column (`forces::distinct_kinematics`): its rows (the elevation and
+            // every strip); the depth terms' series (at most one per strip) and the depth
+            // kernel's matrices while its basis is made.
+            run.push(term(
+                "model.strips_per_column",
+                model.strips_per_column.to_string(),
+                format!("the kinematics of {c} distinct columns of {s} strips"),
+                c * (1.0 + s) * C32 * l
+                    + (1.0 + s) * C32 * l
+                    + c * ((s + 6.0) * C64 * g + 4.0 * s * s * F64),
+            ));
+        }
+        if model.second_order == SecondOrder::FullQtf {
+            if let Some(qtf) = &problem.hydro.qtf {
+                let n = qtf.omegas.len() as f64;
+                // Per direction and DOF: at most n factors on the grid, and the
+                // factorisation's matrices.
+                plan.push(term(
+                    "model.second_order",
+                    "full-qtf".to_string(),
+                    format!("the full QTF's factors ({n} frequencies) on the grid"),
+                    d * 3.0 * (n * C64 * g + 4.0 * n * n * C64),
+                ));
+            }
+        }
+        let largest = plan
+            .iter()
+            .chain(&run)
+            .max_by(|a, b| a.bytes.total_cmp(&b.bytes))
+            .cloned()
+            .expect("the records always have terms");
+        Ok(MemoryEstimate {
+            plan: plan.iter().map(|t| t.bytes).sum(),
+            per_run: run.iter().map(|t| t.bytes).sum(),
+            largest,
+        })
+    }
+
+    /// The memory of a plan serving `runs` simulations at once, bytes.
+    pub fn total(&self, runs: usize) -> f64 {
+        self.plan + runs as f64 * self.per_run
+    }
+
+    /// Refuses `runs` simulations at once beyond the problem's memory limit, naming the
+    /// setting of the largest term; then reserves the memory once and frees it, so that a
+    /// process that cannot hold it gets an error here rather than an abort later.
+    pub fn check(&self, problem: &Problem, runs: usize) -> Result<()> {
+        let total = self.total(runs);
+        let run = &problem.run;
+        if total > run.memory_limit {
+            let what = match runs {
+                1 => format!(
+                    "of which {}: {}",
+                    bytes_text(self.largest.bytes),
+                    self.largest.what
+                ),
+                n => format!(
+                    "{n} runs at once; of which {}: {}",
+                    bytes_text(self.largest.bytes),
+                    self.largest.what
+                ),
+            };
+            return Err(problem.origins.locate(over_budget(
+                self.largest.key,
+                &self.largest.value,
+                &what,
+                total,
+                run,
+            )));
+        }
+        if !crate::allocator::can_allocate(total as usize) {
+            return Err(Error::invalid(
+                "run.memory_limit_gb",
+                run.memory_limit / crate::scenario::limits::BYTES_PER_GB,
+                format!(
+                    "the records need {} and this process cannot allocate them (its memory \
+                     limit, or the machine's, is lower than run.memory_limit_gb)",
+                    bytes_text(total)
+                ),
+            ));
+        }
+        Ok(())
+    }
+}
+
+fn term(key: &'static str, value: String, what: impl Into<String>, bytes: f64) -> Term {
+    Term {
+        key,
+        value,
+        what: what.into(),
+        bytes,
+    }
+}
+
+/// The data frequencies a bi-directional source gives pairs at (at most).
+fn bidirectional_omegas(source: &BidirectionalSource) -> usize {
+    match source {
+        BidirectionalSource::ColumnArray { omegas, .. } => omegas.len(),
+        BidirectionalSource::Table(table) => table.omegas.len(),
+        BidirectionalSource::Embedded { .. } => EMBEDDED_BIDIRECTIONAL_OMEGAS,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::hydro::bidirectional::BidirectionalTable;
+    use crate::hydro::default_platform;
+
+    #[test]
+    fn the_embedded_table_has_the_frequencies_the_estimate_assumes() {
+        let table = BidirectionalTable::parse(
+            default_platform::BIDIRECTIONAL,
+            default_platform::BIDIRECTIONAL_NAME,
+        )
+        .unwrap();
+        assert_eq!(table.omegas.len(), EMBEDDED_BIDIRECTIONAL_OMEGAS);
+    }
+}
