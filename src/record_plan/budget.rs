@@ -72,6 +72,13 @@ impl MemoryEstimate {
         let directions = problem.sea.directions();
         let d = directions.len() as f64;
         let model = &problem.model;
+        // The stream's join (`forces::stream`) keeps the tail of every linear series of a
+        // segment for the next: each term below adds its series' tails.
+        let tail = segments.tail_len() as f64 * C64;
+        // Linear series per direction and set of records: Newman's P+ and P- of the force
+        // and damping records (the geometric form; the arithmetic form has one and the
+        // elevation).
+        let newman_series = 2.0 * FORCE_AND_DAMPING + 1.0;
         let mut plan = Vec::new();
         let mut run = Vec::new();
         let block = || format!("{}", problem.run.block_duration);
@@ -97,13 +104,13 @@ impl MemoryEstimate {
             "run.block_duration",
             block(),
             "the records of one block",
-            series,
+            series + tail,
         ));
         run.push(term(
             "sea.n_directions",
             problem.sea.n_directions.to_string(),
-            format!("{d} directions' wave components"),
-            d * (C64 + F64) * g,
+            format!("{d} directions' wave components and series"),
+            d * (C64 + F64) * g + d * newman_series * tail,
         ));
         if d >= 2.0 && problem.interaction() != Interaction::None {
             let omegas = match &problem.hydro.bidirectional {
@@ -132,7 +139,7 @@ impl MemoryEstimate {
                 "sea.n_directions",
                 problem.sea.n_directions.to_string(),
                 "the cross-direction terms".to_string(),
-                3.0 * C64 * l + 3.0 * F64 * l + 2.0 * C64 * g,
+                3.0 * C64 * l + 3.0 * F64 * l + 2.0 * C64 * g + 4.0 * d * tail,
             ));
         }
         if let Some(yaw) = &model.yaw_following {
@@ -151,7 +158,7 @@ impl MemoryEstimate {
                 "model.yaw_following.headings",
                 yaw.headings.to_string(),
                 format!("the records at {y} yaw angles"),
-                y * FORCE_AND_DAMPING * F64 * l + eta,
+                y * FORCE_AND_DAMPING * F64 * l + eta + y * d * newman_series * tail,
             ));
         }
         if model.drag != DragModel::Off {
@@ -166,7 +173,8 @@ impl MemoryEstimate {
                 format!("the kinematics of {c} distinct columns of {s} strips"),
                 c * (1.0 + s) * C32 * l
                     + (1.0 + s) * C32 * l
-                    + c * ((s + 6.0) * C64 * g + 4.0 * s * s * F64),
+                    + c * ((s + 6.0) * C64 * g + 4.0 * s * s * F64)
+                    + c * (1.0 + s) * tail,
             ));
         }
         if model.second_order == SecondOrder::FullQtf {
@@ -178,7 +186,7 @@ impl MemoryEstimate {
                     "model.second_order",
                     "full-qtf".to_string(),
                     format!("the full QTF's factors ({n} frequencies) on the grid"),
-                    d * 3.0 * (n * C64 * g + 4.0 * n * n * C64),
+                    d * 3.0 * (n * C64 * g + 4.0 * n * n * C64 + n * tail),
                 ));
             }
         }
