@@ -17,12 +17,12 @@
 //! less room gets a typed error here instead of an allocation failure later, which would
 //! abort the process (and, in an FMU, the master with it).
 
-use crate::error::{Error, Result};
+use crate::error::{bytes_text, Error, Result};
 use crate::forces::distinct_kinematics;
 use crate::hydro::bidirectional::BidirectionalSource;
 use crate::model::{DragModel, Interaction, NewmanForm, SecondOrder};
 use crate::problem::Problem;
-use crate::scenario::limits::{bytes_text, over_budget};
+use crate::scenario::limits::over_budget;
 use crate::sea_state::FrequencyGrid;
 
 const F64: f64 = 8.0;
@@ -203,30 +203,24 @@ impl MemoryEstimate {
         })
     }
 
-    /// The memory of a plan serving `runs` simulations at once, bytes.
-    pub fn total(&self, runs: usize) -> f64 {
-        self.plan + runs as f64 * self.per_run
+    /// The memory of one simulation and its plan, bytes.
+    pub fn total(&self) -> f64 {
+        self.plan + self.per_run
     }
 
-    /// Refuses `runs` simulations at once beyond the problem's memory limit, naming the
+    /// Refuses the records of one simulation beyond the problem's memory limit, naming the
     /// setting of the largest term; then reserves the memory once and frees it, so that a
-    /// process that cannot hold it gets an error here rather than an abort later.
-    pub fn check(&self, problem: &Problem, runs: usize) -> Result<()> {
-        let total = self.total(runs);
+    /// process that cannot hold it gets an error here rather than an abort later. (The
+    /// limit is per simulation: a campaign on T threads may hold T of them.)
+    pub fn check(&self, problem: &Problem) -> Result<()> {
+        let total = self.total();
         let run = &problem.run;
         if total > run.memory_limit {
-            let what = match runs {
-                1 => format!(
-                    "of which {}: {}",
-                    bytes_text(self.largest.bytes),
-                    self.largest.what
-                ),
-                n => format!(
-                    "{n} runs at once; of which {}: {}",
-                    bytes_text(self.largest.bytes),
-                    self.largest.what
-                ),
-            };
+            let what = format!(
+                "of which {}: {}",
+                bytes_text(self.largest.bytes),
+                self.largest.what
+            );
             return Err(problem.origins.locate(over_budget(
                 self.largest.key,
                 &self.largest.value,
@@ -236,15 +230,10 @@ impl MemoryEstimate {
             )));
         }
         if !crate::allocator::can_allocate(total as usize) {
-            return Err(Error::invalid(
-                "run.memory_limit_gb",
-                run.memory_limit / crate::scenario::limits::BYTES_PER_GB,
-                format!(
-                    "the records need {} and this process cannot allocate them (its memory \
-                     limit, or the machine's, is lower than run.memory_limit_gb)",
-                    bytes_text(total)
-                ),
-            ));
+            return Err(Error::OutOfMemory {
+                needs: total,
+                limit: run.memory_limit,
+            });
         }
         Ok(())
     }
