@@ -43,8 +43,14 @@ pub enum Error {
     BeyondRecord { time: f64, record_end: f64 },
     /// A time before the run's start, where there are no records.
     BeforeStart { time: f64, start: f64 },
-    /// The state became NaN or infinite (the step is too large for the system).
-    Diverged { time: f64 },
+    /// The state or an output became non-finite or left the bounds of a physical state
+    /// (`simulation::bounds`): `what` says which value, `cause` which force, input or
+    /// setting made it.
+    Unphysical {
+        time: f64,
+        what: String,
+        cause: Cause,
+    },
     /// The body's yaw left the range covered by the yaw-following records (rad); they are
     /// never extrapolated.
     YawOutsideRecords {
@@ -139,11 +145,10 @@ impl Error {
                 f,
                 "time {time} s is before the start of the run ({start} s)"
             ),
-            Error::Diverged { time } => write!(
-                f,
-                "the state became non-finite at t = {time} s; reduce {}",
-                name("run.time_step")
-            ),
+            Error::Unphysical { time, what, cause } => {
+                write!(f, "{what} at t = {time} s: ")?;
+                cause.describe(f, name)
+            }
             Error::YawOutsideRecords { time, yaw, covered } => write!(
                 f,
                 "yaw {yaw:.6} rad ({:.4} deg) at t = {time} s is outside the yaw-following \
@@ -214,6 +219,60 @@ impl Location {
             path: self.path.clone(),
             line: self.line,
             message: message.into(),
+        }
+    }
+}
+
+/// What made a state or an output unphysical ([`Error::Unphysical`]).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Cause {
+    /// A force at the step's start (inertial frame): not finite, or enough alone to change
+    /// the velocity beyond its bound within the step. `dof`: 0 X, 1 Y, 2 yaw; `settings`:
+    /// the configuration keys it grows with.
+    Force {
+        force: &'static str,
+        dof: usize,
+        value: f64,
+        settings: &'static [&'static str],
+    },
+    /// The external force input, likewise.
+    External { dof: usize, value: f64 },
+    /// Nothing at the step's start explains it: the step is too large for the system.
+    Step,
+}
+
+impl Cause {
+    fn describe(
+        &self,
+        f: &mut fmt::Formatter<'_>,
+        name: &dyn Fn(&'static str) -> String,
+    ) -> fmt::Result {
+        const DOF: [(&str, &str); 3] = [("X", "N"), ("Y", "N"), ("yaw", "N m")];
+        match self {
+            Cause::Force {
+                force,
+                dof,
+                value,
+                settings,
+            } => {
+                let (axis, unit) = DOF[*dof];
+                let names: Vec<String> = settings.iter().map(|key| name(key)).collect();
+                write!(
+                    f,
+                    "the {force} there is {value:e} {unit} in {axis}, enough alone to leave \
+                     the bounds within a step; it grows with {}",
+                    names.join(", ")
+                )
+            }
+            Cause::External { dof, value } => {
+                let (axis, unit) = DOF[*dof];
+                write!(
+                    f,
+                    "the external force input there is {value:e} {unit} in {axis}, enough \
+                     alone to leave the bounds within a step"
+                )
+            }
+            Cause::Step => write!(f, "reduce {}", name("run.time_step")),
         }
     }
 }

@@ -27,5 +27,6 @@ mod sea_state;
 mod simulation;
 mod stream;
 mod studies;
+mod unphysical;
 mod wamit;
 mod yaw_following;
