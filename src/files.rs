@@ -3,6 +3,16 @@
 //! a device, a socket or a directory is refused by what it is before anything reads it (a
 //! FIFO would block the reader until a writer comes, `/dev/zero` would be read until memory
 //! runs out), and reading stops at the limit whatever the file does meanwhile.
+//!
+//! The files a program writes again and again (a campaign's summary, a study's data and
+//! figures) are written anew atomically ([`replace`]: a temporary file renamed), and a
+//! campaign's runs file is kept off by a second process ([`lock`]).
+
+mod lock;
+mod replace;
+
+pub use lock::{lock, lock_path, Lock};
+pub use replace::replace;
 
 use crate::error::{Error, Result};
 use std::fs::{FileType, OpenOptions};

@@ -6,13 +6,20 @@
 //! configuration, skips the (case, seed) pairs already done and runs the rest (failed runs
 //! again). The summary `RESULTS.csv` is always recomputed from the per-run file, for the
 //! requested seeds in seed order, so it does not depend on the threads, the finishing
-//! order or the interruptions.
+//! order or the interruptions; it is written anew atomically.
+//!
+//! One process per runs file: a second one on the same `--out` is refused at once, naming
+//! the first ([`RunsFile::open`] locks it). SIGINT and SIGTERM stop a campaign cleanly
+//! ([`super::interrupt`]): the summary of the runs done is written and the command to
+//! resume printed.
 
 use super::args::{all_cores, seconds, whole};
+use super::interrupt::{this_command, Interrupts, Signal};
+use super::Failure;
 use clap::Args;
 use slowdrift::fmi2::campaign;
 use slowdrift::montecarlo::cases::{read_case_table, CaseRow};
-use slowdrift::montecarlo::runs_file::{self, RunRow};
+use slowdrift::montecarlo::runs_file::{self, RunRow, RunsFile};
 use slowdrift::montecarlo::{run_jobs, seed_statistics, Case, Job, DOFS, STATISTICS};
 use slowdrift::problem::{self, default_problem};
 use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
@@ -149,10 +156,10 @@ pub fn runs_path(out: &Path) -> PathBuf {
 }
 
 /// Runs `slowdrift montecarlo`.
-pub fn run(args: MontecarloArgs) -> Result<(), String> {
+pub fn run(args: MontecarloArgs) -> Result<(), Failure> {
     match command(args)? {
         Command::Run(options) => run_and_summarise(options),
-        Command::PrintCases(options) => print_cases(&options),
+        Command::PrintCases(options) => Ok(print_cases(&options)?),
     }
 }
 
@@ -213,7 +220,7 @@ fn print_cases(options: &Options) -> Result<(), String> {
     Ok(())
 }
 
-fn run_and_summarise(options: Options) -> Result<(), String> {
+fn run_and_summarise(options: Options) -> Result<(), Failure> {
     let (_, cases) = load_cases(&options, true)?;
     let runs_path = runs_path(&options.out);
     let seeds = options.first_seed..options.first_seed + options.seeds;
@@ -221,41 +228,82 @@ fn run_and_summarise(options: Options) -> Result<(), String> {
         .flat_map(|case| seeds.clone().map(move |seed| Job { case, seed }))
         .collect();
     println!("seeds {}..={} of every case", seeds.start, seeds.end - 1);
-    let runs = run_campaign(&cases, &wanted, options.threads, &runs_path)?;
+    let Campaign { runs, interrupted } =
+        run_campaign(&cases, &wanted, options.threads, &runs_path)?;
     let total = wanted.len();
     let summaries: Vec<CaseSummary> = cases
         .iter()
         .map(|case| CaseSummary::new(case, &runs, &seeds))
         .collect();
-    write_summary(&options.out, &summaries, options.seeds)
-        .map_err(|e| format!("{}: {e}", options.out.display()))?;
+    write_summary(&options.out, &summaries, options.seeds).map_err(|e| e.to_string())?;
     print_summary(&summaries, options.seeds);
     println!(
         "summary written to {}, runs to {}",
         options.out.display(),
         runs_path.display()
     );
+    if let Some(interrupted) = interrupted {
+        return Err(interrupted.failure(&runs_path, Some(&options.out)));
+    }
     let failed: usize = summaries.iter().map(|s| s.failed).sum();
     if failed > 0 {
         return Err(format!(
             "{failed} of {total} runs failed (their errors are in {} and the summary)",
             runs_path.display()
-        ));
+        )
+        .into());
     }
     Ok(())
+}
+
+/// What [`run_campaign`] leaves: every run the per-run file holds, and whether a signal
+/// stopped the campaign before every run was done.
+pub struct Campaign {
+    pub runs: Vec<RunRow>,
+    pub interrupted: Option<Interrupted>,
+}
+
+/// A campaign a signal stopped.
+pub struct Interrupted {
+    signal: Signal,
+    /// Runs done (in the per-run file) and not done, of those this call had to run.
+    done: usize,
+    not_done: usize,
+}
+
+impl Interrupted {
+    /// The failure the command ends with: what was kept, in which files, and how to resume.
+    pub fn failure(&self, runs_path: &Path, summary: Option<&Path>) -> Failure {
+        let summary = summary.map_or(String::new(), |path| {
+            format!("; the summary of the runs done is in {}", path.display())
+        });
+        Failure {
+            message: format!(
+                "stopped by {}: {} run(s) done and written to {}, {} not done (the runs in \
+                 flight abandoned){summary}. To resume, run the same command again:\n    {}",
+                self.signal.name(),
+                self.done,
+                runs_path.display(),
+                self.not_done,
+                this_command()
+            ),
+            status: self.signal.exit_status(),
+        }
+    }
 }
 
 /// Runs the `wanted` jobs of `cases` that the per-run file `runs_path` does not already
 /// hold as successful (resume; a case run before with another configuration is refused),
 /// appending each result to the file as it finishes, with a progress line on stderr;
-/// returns every run the file then holds.
+/// returns every run the file then holds. The file is locked meanwhile (another process
+/// on it is refused), and SIGINT or SIGTERM stops the campaign ([`super::interrupt`]).
 pub fn run_campaign(
     cases: &[Case],
     wanted: &[Job],
     threads: usize,
     runs_path: &Path,
-) -> Result<Vec<RunRow>, String> {
-    let (done, mut file) = runs_file::open(runs_path).map_err(|e| e.to_string())?;
+) -> Result<Campaign, String> {
+    let (done, mut file) = RunsFile::open(runs_path).map_err(|e| e.to_string())?;
     // Computed once per case: a fingerprint formats the whole configuration.
     let fingerprints: Vec<String> = cases.iter().map(Case::fingerprint).collect();
     check_fingerprints(cases, &fingerprints, &done, runs_path)?;
@@ -283,9 +331,10 @@ pub fn run_campaign(
         );
     }
 
+    let interrupts = Interrupts::install()?;
     let mut progress = Progress::new(jobs.len());
     let mut write_error = None;
-    run_jobs(cases, &jobs, threads, |event| {
+    run_jobs(cases, &jobs, threads, interrupts.stop(), |event| {
         if let Some(finished) = event {
             let job = jobs[finished.job];
             progress.failed += usize::from(finished.result.is_err());
@@ -295,20 +344,28 @@ pub fn run_campaign(
                 job.seed,
                 finished.result,
             );
-            let line = runs_file::format_row(&row);
-            if let Err(e) = file.write_all(line.as_bytes()).and_then(|()| file.flush()) {
-                write_error.get_or_insert(format!("{}: {e}", runs_path.display()));
+            if let Err(e) = file.append(&row) {
+                write_error.get_or_insert(e.to_string());
             }
             progress.done += 1;
         }
         progress.show(false);
     });
     progress.show(true);
+    let interrupted = interrupts
+        .received()
+        .filter(|_| progress.done < jobs.len())
+        .map(|signal| Interrupted {
+            signal,
+            done: progress.done,
+            not_done: jobs.len() - progress.done,
+        });
+    drop(interrupts);
     if let Some(e) = write_error {
         return Err(e);
     }
-    let text = slowdrift::files::read_text(runs_path).map_err(|e| e.to_string())?;
-    runs_file::parse(&text, &runs_path.display().to_string()).map_err(|e| e.to_string())
+    let runs = file.runs().map_err(|e| e.to_string())?;
+    Ok(Campaign { runs, interrupted })
 }
 
 fn check_fingerprints(
@@ -388,8 +445,16 @@ impl CaseSummary {
     }
 }
 
-fn write_summary(path: &Path, summaries: &[CaseSummary], requested: u64) -> std::io::Result<()> {
-    let mut w = std::io::BufWriter::new(std::fs::File::create(path)?);
+/// Writes the summary anew, atomically (a kill never leaves it cut: `files::replace`).
+fn write_summary(path: &Path, summaries: &[CaseSummary], requested: u64) -> slowdrift::Result<()> {
+    slowdrift::files::replace(path, |w| summary_text(w, summaries, requested))
+}
+
+fn summary_text(
+    w: &mut impl Write,
+    summaries: &[CaseSummary],
+    requested: u64,
+) -> std::io::Result<()> {
     let mut header = "case,dof,unit,seeds_requested,seeds_done,seeds_failed,status".to_string();
     for stat in STATISTICS {
         header += &format!(",{stat},{stat}_se");
@@ -424,7 +489,7 @@ fn write_summary(path: &Path, summaries: &[CaseSummary], requested: u64) -> std:
             }
         }
     }
-    w.flush()
+    Ok(())
 }
 
 fn print_summary(summaries: &[CaseSummary], requested: u64) {
