@@ -18,7 +18,7 @@ use super::interrupt::{this_command, Interrupts, Signal};
 use super::Failure;
 use clap::Args;
 use slowdrift::fmi2::campaign;
-use slowdrift::montecarlo::cases::{read_case_table, CaseRow};
+use slowdrift::montecarlo::cases::{open_case_table, CaseRow};
 use slowdrift::montecarlo::runs_file::{self, RunRow, RunsFile};
 use slowdrift::montecarlo::{run_jobs, seed_statistics, Case, Job, DOFS, STATISTICS};
 use slowdrift::problem::{self, default_problem};
@@ -163,10 +163,10 @@ pub fn run(args: MontecarloArgs) -> Result<(), Failure> {
     }
 }
 
-/// The base configuration (the file, else the embedded default with `--duration` applied)
-/// and the cases on top of it (all, or the one `--case` names).
-fn load_cases(options: &Options, announce: bool) -> Result<(Problem, Vec<Case>), String> {
-    let mut base = match &options.config {
+/// The base configuration as the file gives it (else the embedded default), and the one
+/// the cases are made on (with `--duration` applied).
+fn load_base(options: &Options, announce: bool) -> Result<(Problem, Problem), String> {
+    let file_base = match &options.config {
         Some(path) => problem::load(path).map_err(|e| e.to_string())?,
         None => {
             if announce {
@@ -175,39 +175,58 @@ fn load_cases(options: &Options, announce: bool) -> Result<(Problem, Vec<Case>),
             default_problem().map_err(|e| e.to_string())?
         }
     };
-    let file_base = base.clone();
+    let mut base = file_base.clone();
     if let Some(duration) = options.duration {
         base.run.duration = duration;
     }
-    let (rows, source) = match &options.cases {
-        Some(path) => (
-            read_case_table(path).map_err(|e| e.to_string())?,
-            path.display().to_string(),
-        ),
-        None => (vec![CaseRow::base()], String::new()),
-    };
-    let mut cases = rows
-        .iter()
-        .map(|row| row.case(&base, options.transient, &source))
-        .collect::<Result<Vec<Case>, _>>()
-        .map_err(|e| e.to_string())?;
-    if let Some(name) = &options.only {
-        if !cases.iter().any(|c| &c.name == name) {
-            let names: Vec<&str> = cases.iter().map(|c| c.name.as_str()).collect();
-            return Err(format!(
-                "--case {name}: no such case; the cases are {}",
-                names.join(", ")
-            ));
-        }
-        cases.retain(|c| &c.name == name);
-    }
-    Ok((file_base, cases))
+    Ok((file_base, base))
 }
 
-/// `--print-cases`: the cases as JSON on stdout, with the FMU's `hydroDatabase` = the
-/// absolute path of `--config` (empty: the FMU's packed default platform).
+/// Case-table rows as they are read.
+type Rows = Box<dyn Iterator<Item = slowdrift::Result<CaseRow>>>;
+
+/// The rows the options select, read as a stream, and the name of their table: every row
+/// of the table, or the one `--case` names (the table is read once before, to refuse an
+/// unknown name by listing the names); without a table the base alone, case 'base'.
+fn case_rows(options: &Options) -> Result<(Rows, String), String> {
+    let no_such_case = |name: &str, names: &[&str]| {
+        format!(
+            "--case {name}: no such case; the cases are {}",
+            names.join(", ")
+        )
+    };
+    let Some(path) = &options.cases else {
+        let base = CaseRow::base();
+        if let Some(name) = options.only.as_ref().filter(|name| **name != base.name) {
+            return Err(no_such_case(name, &[&base.name]));
+        }
+        return Ok((Box::new(std::iter::once(Ok(base))), String::new()));
+    };
+    let open = || open_case_table(path).map_err(|e| e.to_string());
+    let rows: Rows = match &options.only {
+        None => Box::new(open()?),
+        Some(name) => {
+            let mut table = open()?;
+            let mut found = false;
+            for row in &mut table {
+                found |= row.map_err(|e| e.to_string())?.name == *name;
+            }
+            if !found {
+                return Err(no_such_case(name, &table.names()));
+            }
+            let name = name.clone();
+            Box::new(open()?.filter(move |row| row.as_ref().map_or(true, |r| r.name == name)))
+        }
+    };
+    Ok((rows, path.display().to_string()))
+}
+
+/// `--print-cases`: the cases as JSON on stdout, each written as soon as it is made (the
+/// table read as a stream: memory independent of its number of rows), with the FMU's
+/// `hydroDatabase` = the absolute path of `--config` (empty: the FMU's packed default
+/// platform). An error stops the document unfinished.
 fn print_cases(options: &Options) -> Result<(), String> {
-    let (base, cases) = load_cases(options, false)?;
+    let (file_base, base) = load_base(options, false)?;
     let hydro_database = match &options.config {
         Some(path) => std::fs::canonicalize(path)
             .map_err(|e| format!("{}: {e}", path.display()))?
@@ -216,12 +235,26 @@ fn print_cases(options: &Options) -> Result<(), String> {
             .to_string(),
         None => String::new(),
     };
-    println!("{}", campaign::cases_json(&cases, &base, &hydro_database));
-    Ok(())
+    let (rows, source) = case_rows(options)?;
+    let cases = rows.map(|row| row.and_then(|row| row.case(&base, options.transient, &source)));
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    campaign::write_cases_json(
+        &mut out,
+        "standard output",
+        cases,
+        &file_base,
+        &hydro_database,
+    )
+    .map_err(|e| e.to_string())
 }
 
 fn run_and_summarise(options: Options) -> Result<(), Failure> {
-    let (_, cases) = load_cases(&options, true)?;
+    let (_, base) = load_base(&options, true)?;
+    let (rows, source) = case_rows(&options)?;
+    let cases = rows
+        .map(|row| row.and_then(|row| row.case(&base, options.transient, &source)))
+        .collect::<Result<Vec<Case>, _>>()
+        .map_err(|e| e.to_string())?;
     let runs_path = runs_path(&options.out);
     let seeds = options.first_seed..options.first_seed + options.seeds;
     let wanted: Vec<Job> = (0..cases.len())
