@@ -65,7 +65,7 @@ class FmuBody:
             kind = self.types[name]
             if kind == "Real":
                 self.fmu.setReal([self.vr[name]], [float(value)])
-            elif kind in ("Integer", "Enumeration"):
+            elif kind == "Integer":
                 self.fmu.setInteger([self.vr[name]], [int(value)])
             else:
                 raise TypeError(f"parameter {name} of type {kind} not supported here")
