@@ -19,6 +19,28 @@ pub enum Error {
         /// The file and line where the value was written, when known.
         at: Option<Location>,
     },
+    /// A size beyond the memory budget: the setting that drives the largest part of the
+    /// estimate (named and located as [`Error::InvalidValue`]'s), what the estimate holds,
+    /// and the limit (the setting [`MEMORY_LIMIT_KEY`]).
+    OverBudget {
+        field: String,
+        value: String,
+        at: Option<Location>,
+        /// The estimated memory, bytes.
+        needs: f64,
+        /// What the estimate is made of (its largest part).
+        what: String,
+        /// The memory limit, bytes.
+        limit: f64,
+    },
+    /// Memory within the budget that this process cannot allocate (its own limit, a
+    /// container's or the machine's is lower than the budget).
+    OutOfMemory {
+        /// Bytes, the estimate that could not be allocated.
+        needs: f64,
+        /// The memory limit, bytes.
+        limit: f64,
+    },
     /// A file could not be read or written.
     Io { path: String, message: String },
     /// A file could be read but not understood (`line` is 1-based when known).
@@ -76,16 +98,36 @@ impl Error {
                 reason,
                 at,
             } => {
-                match at {
-                    Some(Location {
-                        path,
-                        line: Some(line),
-                    }) => write!(f, "{path}:{line}: ")?,
-                    Some(Location { path, line: None }) => write!(f, "{path}: ")?,
-                    None => {}
-                }
+                write_location(f, at)?;
                 write!(f, "invalid {field} = {value}: {reason}")
             }
+            Error::OverBudget {
+                field,
+                value,
+                at,
+                needs,
+                what,
+                limit,
+            } => {
+                write_location(f, at)?;
+                write!(
+                    f,
+                    "invalid {field} = {value}: needs {} of memory ({what}); the limit is {} \
+                     ({} = {})",
+                    bytes_text(*needs),
+                    bytes_text(*limit),
+                    name(MEMORY_LIMIT_KEY),
+                    limit / BYTES_PER_GB
+                )
+            }
+            Error::OutOfMemory { needs, limit } => write!(
+                f,
+                "the records need {} and this process cannot allocate them: its own memory \
+                 limit (ulimit, a container) or the machine's is lower than {} = {} GB",
+                bytes_text(*needs),
+                name(MEMORY_LIMIT_KEY),
+                limit / BYTES_PER_GB
+            ),
             Error::Io { path, message } => write!(f, "{path}: {message}"),
             Error::Parse {
                 path,
@@ -126,6 +168,38 @@ impl Error {
                 name("model.yaw_following.range_deg")
             ),
         }
+    }
+}
+
+/// `path:line: `, `path: ` or nothing.
+fn write_location(f: &mut fmt::Formatter<'_>, at: &Option<Location>) -> fmt::Result {
+    match at {
+        Some(Location {
+            path,
+            line: Some(line),
+        }) => write!(f, "{path}:{line}: "),
+        Some(Location { path, line: None }) => write!(f, "{path}: "),
+        None => Ok(()),
+    }
+}
+
+/// The configuration key of the memory limit (`run.memory_limit_gb`, GB).
+pub const MEMORY_LIMIT_KEY: &str = "run.memory_limit_gb";
+
+/// Bytes in the unit of [`MEMORY_LIMIT_KEY`] (decimal gigabytes).
+pub const BYTES_PER_GB: f64 = 1.0e9;
+
+/// A memory size for a message: "302 GB", "12.500 MB".
+pub fn bytes_text(bytes: f64) -> String {
+    let (scale, unit) = [(1e12, "TB"), (1e9, "GB"), (1e6, "MB"), (1e3, "kB")]
+        .into_iter()
+        .find(|&(scale, _)| bytes >= scale)
+        .unwrap_or((1.0, "bytes"));
+    let value = bytes / scale;
+    if value >= 100.0 || scale == 1.0 {
+        format!("{value:.0} {unit}")
+    } else {
+        format!("{value:.3} {unit}")
     }
 }
 
@@ -207,4 +281,17 @@ pub fn require_finite_matrix(field: impl fmt::Display, m: &[[f64; 3]; 3]) -> Res
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes_read_in_their_units() {
+        assert_eq!(bytes_text(3.02e11), "302 GB");
+        assert_eq!(bytes_text(4.0e9), "4.000 GB");
+        assert_eq!(bytes_text(12.5e6), "12.500 MB");
+        assert_eq!(bytes_text(512.0), "512 bytes");
+    }
 }

@@ -731,10 +731,10 @@ pub static SETTINGS: [Setting; 23] = [
         words: &[],
         meaning: "memory the records may take, GB (1e9 bytes); larger estimates are refused",
         apply: |s, v| {
-            s.run.memory_limit = number(v)? * super::limits::BYTES_PER_GB;
+            s.run.memory_limit = number(v)? * crate::error::BYTES_PER_GB;
             Ok(())
         },
-        get: |s| Value::Number(s.run.memory_limit / super::limits::BYTES_PER_GB),
+        get: |s| Value::Number(s.run.memory_limit / crate::error::BYTES_PER_GB),
     },
 ];
 

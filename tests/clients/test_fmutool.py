@@ -30,7 +30,7 @@ def run_fmutool(path):
     return proc.returncode, lines, levels
 
 
-def test_fmutool_check(fmu, md):
+def test_fmutool_check(fmu):
     assert os.path.isfile(FMUTOOL), f"{FMUTOOL} missing (fmu-manipulation-toolbox not installed)"
     status, lines, levels = run_fmutool(fmu)
     text = "\n".join(lines)
@@ -40,12 +40,13 @@ def test_fmutool_check(fmu, md):
     assert status == 0, text
     assert "This FMU seems to be compliant with FMI-2.0." in text
     assert "No semantic error against the FMI-2 standard." in text
-    # The summary read the FMU: the ports of modelDescription.xml (as fmpy counts them).
-    count = {c: sum(v.causality == c for v in md.modelVariables)
-             for c in ("parameter", "input", "output")}
-    assert count["input"] == 3 and count["output"] == 16
-    for causality, n in count.items():
-        assert f"{causality} : {n}" in text, (causality, n)
+    # The summary read the FMU: the ports of its modelDescription.xml, counted here.
+    with zipfile.ZipFile(fmu) as archive:
+        xml = archive.read("modelDescription.xml").decode()
+    counts = {c: xml.count(f'causality="{c}"') for c in ("parameter", "input", "output")}
+    assert all(counts.values()), counts
+    for causality, count in counts.items():
+        assert f"{causality} : {count}" in text, (causality, count)
     assert set(levels) <= {"INFO"}, set(levels)
 
 
