@@ -19,20 +19,8 @@ pub enum Error {
         /// The file and line where the value was written, when known.
         at: Option<Location>,
     },
-    /// A size beyond the memory budget: the setting that drives the largest part of the
-    /// estimate (named and located as [`Error::InvalidValue`]'s), what the estimate holds,
-    /// and the limit (the setting [`MEMORY_LIMIT_KEY`]).
-    OverBudget {
-        field: String,
-        value: String,
-        at: Option<Location>,
-        /// The estimated memory, bytes.
-        needs: f64,
-        /// What the estimate is made of (its largest part).
-        what: String,
-        /// The memory limit, bytes.
-        limit: f64,
-    },
+    /// A size beyond the memory budget ([`OverBudget`]).
+    OverBudget(Box<OverBudget>),
     /// Memory within the budget that this process cannot allocate (its own limit, a
     /// container's or the machine's is lower than the budget).
     OutOfMemory {
@@ -101,14 +89,15 @@ impl Error {
                 write_location(f, at)?;
                 write!(f, "invalid {field} = {value}: {reason}")
             }
-            Error::OverBudget {
-                field,
-                value,
-                at,
-                needs,
-                what,
-                limit,
-            } => {
+            Error::OverBudget(excess) => {
+                let OverBudget {
+                    field,
+                    value,
+                    at,
+                    needs,
+                    what,
+                    limit,
+                } = excess.as_ref();
                 write_location(f, at)?;
                 write!(
                     f,
@@ -227,6 +216,22 @@ impl Location {
             message: message.into(),
         }
     }
+}
+
+/// A size beyond the memory budget: the setting that drives the largest part of the
+/// estimate (named and located as [`Error::InvalidValue`]'s), what the estimate holds, and
+/// the limit (the setting [`MEMORY_LIMIT_KEY`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct OverBudget {
+    pub field: String,
+    pub value: String,
+    pub at: Option<Location>,
+    /// The estimated memory, bytes.
+    pub needs: f64,
+    /// What the estimate is made of (its largest part).
+    pub what: String,
+    /// The memory limit, bytes.
+    pub limit: f64,
 }
 
 /// Result with the core's [`Error`].

@@ -8,7 +8,7 @@
 //! and no solver runs for hours before the memory budget is consulted.
 
 use super::{DriftSource, Run, Scenario};
-use crate::error::{Error, Result, BYTES_PER_GB, MEMORY_LIMIT_KEY};
+use crate::error::{Error, OverBudget, Result, BYTES_PER_GB, MEMORY_LIMIT_KEY};
 
 /// Default [`Run::memory_limit`]: 4 GB (4e9 bytes), for a workstation that runs a few
 /// simulations at once.
@@ -40,14 +40,14 @@ pub fn over_budget(
     bytes: f64,
     run: &Run,
 ) -> Error {
-    Error::OverBudget {
+    Error::OverBudget(Box::new(OverBudget {
         field: key.to_string(),
         value: value.to_string(),
         at: None,
         needs: bytes,
         what: what.to_string(),
         limit: run.memory_limit,
-    }
+    }))
 }
 
 /// Checks the memory limit itself and every count of `scenario` against its bound, and the

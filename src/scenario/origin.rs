@@ -7,7 +7,7 @@
 //! key path (`sea.hs`, `platform.columns[2].draft`, `current.direction_deg`, in the file's
 //! units); [`Origins::locate`] rewrites such an error for the place the value came from.
 
-use crate::error::{Error, Location};
+use crate::error::{Error, Location, OverBudget};
 use std::collections::BTreeMap;
 use std::ops::Range;
 
@@ -78,23 +78,18 @@ impl Origins {
                     at,
                 }
             }
-            Error::OverBudget {
-                field,
-                value,
-                at: None,
-                needs,
-                what,
-                limit,
-            } => {
-                let (field, value, at) = self.place(field, value);
-                Error::OverBudget {
+            Error::OverBudget(mut excess) if excess.at.is_none() => {
+                let (field, value, at) = self.place(
+                    std::mem::take(&mut excess.field),
+                    std::mem::take(&mut excess.value),
+                );
+                *excess = OverBudget {
                     field,
                     value,
                     at,
-                    needs,
-                    what,
-                    limit,
-                }
+                    ..*excess
+                };
+                Error::OverBudget(excess)
             }
             other => other,
         }
