@@ -8,7 +8,7 @@
 //! round(duration / time_step); the statistics use the samples at k time_step >= transient,
 //! k = 0 ..= steps), and `fmu`: either `{"start_time", "stop_time", "parameters": {FMU
 //! parameter name: value}}` (every parameter of modelDescription.xml except `seed`, which
-//! the master sets per run; Enumerations as their codes) that makes `SlowDrift.fmu` run this
+//! the master sets per run; modes as their Integer codes) that makes `SlowDrift.fmu` run this
 //! case exactly, or `{"unavailable": reason}`; and, for a case whose values the model
 //! refuses, `refused`: the message every run of the case fails with (as the native tool
 //! records it, naming the case-table cell or configuration key). Numbers are written in
@@ -121,15 +121,11 @@ pub fn parameters_for<H: Clone + PartialEq>(
                     }
                     FmuValue::Integer(x as i32)
                 }
-                (Value::Word(word), _) => {
-                    let code = variable
-                        .items
-                        .iter()
-                        .find(|(_, w)| *w == word)
-                        .map(|(code, _)| *code)
-                        .ok_or_else(|| format!("{name} has no item '{word}'"))?;
-                    FmuValue::Integer(code)
-                }
+                (Value::Word(word), _) => FmuValue::Integer(
+                    setting
+                        .code_of(word)
+                        .ok_or_else(|| format!("{name} has no code for '{word}'"))?,
+                ),
             }
         };
         parameters.set(name, value);
@@ -242,7 +238,7 @@ mod tests {
                 .filter(|v| v.causality == Causality::Parameter)
             {
                 let value = &fmu["parameters"][v.name];
-                let set = match v.var_type.access_type() {
+                let set = match v.var_type {
                     VariableType::Integer if v.name == "seed" => {
                         assert!(value.is_null());
                         true
