@@ -4,8 +4,9 @@
 //! need against it, `record_plan::budget`).
 //!
 //! The counts' bounds are far beyond what the physics needs (the paper uses 15 directions
-//! and 20 strips per column) and small enough that no size computed from them overflows
-//! and no solver runs for hours before the memory budget is consulted.
+//! and 20 strips per column) and small enough that no size computed from them overflows;
+//! the column-array solver's work is estimated and bounded too ([`MAX_SOLVER_MINUTES`]), so
+//! that no solve runs for hours.
 
 use super::{DriftSource, Run, Scenario};
 use crate::error::{Error, OverBudget, Result, BYTES_PER_GB, MEMORY_LIMIT_KEY};
@@ -14,12 +15,16 @@ use crate::error::{Error, OverBudget, Result, BYTES_PER_GB, MEMORY_LIMIT_KEY};
 /// simulations at once.
 pub const DEFAULT_MEMORY_LIMIT: f64 = 4.0e9;
 
-/// The largest number of discrete directions of a short-crested sea.
-pub const MAX_DIRECTIONS: usize = 1000;
+/// The largest number of discrete directions of a short-crested sea (half a degree apart
+/// over the half circle). The cross-direction terms cost D^2 per record component: 1000
+/// directions took 7 minutes per block of records on a 2-core machine, 360 take about one
+/// (the paper's Table 1 converges from 7).
+pub const MAX_DIRECTIONS: usize = 360;
 /// The largest number of Morison strips per column.
 pub const MAX_STRIPS: usize = 1000;
-/// The largest number of body yaw angles of yaw-following records.
-pub const MAX_YAW_HEADINGS: usize = 3600;
+/// The largest number of body yaw angles of yaw-following records (half a degree apart
+/// around the circle; the default is 36).
+pub const MAX_YAW_HEADINGS: usize = 720;
 /// The largest number of columns of a platform.
 pub const MAX_COLUMNS: usize = 100;
 /// The largest number of frequencies of a column-solver grid (`[drift] n_omega`).
@@ -120,6 +125,40 @@ pub fn check_sizes<H>(scenario: &Scenario<H>, source: Option<&DriftSource>) -> R
                 run,
             ));
         }
+        if let Some(DriftSource::ColumnArray { .. }) = source {
+            let columns = scenario.platform.columns.len();
+            let minutes = column_array_minutes(grid.n_omega, headings.round(), columns);
+            if minutes > MAX_SOLVER_MINUTES {
+                return Err(Error::invalid(
+                    "drift.n_omega",
+                    grid.n_omega,
+                    format!(
+                        "the column-array solver on {} frequencies x {headings:.0} headings x \
+                         {columns} columns would take about {minutes:.0} minutes; at most \
+                         {MAX_SOLVER_MINUTES} (fewer frequencies, headings or columns)",
+                        grid.n_omega
+                    ),
+                ));
+            }
+        }
     }
     Ok(())
+}
+
+/// The longest column-array solve accepted, minutes (estimated by
+/// [`column_array_minutes`]).
+pub const MAX_SOLVER_MINUTES: f64 = 10.0;
+
+/// Seconds per unit of the column-array solver's work n_omega C^2 (C + H/4) (C columns, H
+/// headings: a scattering system per frequency whose size grows with the columns, and the
+/// drift of every heading from it), measured on a 2-core machine: 0.75 s for 100
+/// frequencies x 36 headings x 4 columns, 4.0 s with 8 columns, 3.0 s with 400 frequencies,
+/// 2.0 s with 144 headings; 32 s with 16 columns, where the cubic term grows faster (the
+/// estimate says 23 s).
+const SOLVER_SECONDS_PER_UNIT: f64 = 3.6e-5;
+
+/// The estimated time of a column-array solve, minutes.
+pub fn column_array_minutes(n_omega: usize, headings: f64, columns: usize) -> f64 {
+    let c = columns as f64;
+    n_omega as f64 * c * c * (c + headings / 4.0) * SOLVER_SECONDS_PER_UNIT / 60.0
 }

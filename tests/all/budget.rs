@@ -96,11 +96,14 @@ fn the_estimate_bounds_the_peak_of_making_a_simulation() {
 #[test]
 fn over_the_limit_is_refused_naming_the_setting_and_the_limit() {
     let mut p = default_problem().unwrap();
-    spread(&mut p, 1000);
+    spread(&mut p, 360);
+    p.run.memory_limit = 3e8;
     let message = Simulation::new(p).unwrap_err().to_string();
+    // The largest part: 360^2 pairs x 75 frequencies x 3 DOFs x 16 bytes = 467 MB.
     assert!(
-        message.starts_with("embedded default.toml:31: invalid [sea] n_directions = 1000: needs ")
-            && message.contains("the limit is 4.000 GB (run.memory_limit_gb = 4)"),
+        message.starts_with("embedded default.toml:31: invalid [sea] n_directions = 360: needs ")
+            && message.contains("of which 467 MB: the drift of 360 x 360 direction pairs")
+            && message.contains("the limit is 300 MB (run.memory_limit_gb = 0.3)"),
         "{message}"
     );
     let mut p = default_problem().unwrap();
@@ -142,4 +145,28 @@ fn counts_beyond_their_bounds_are_refused() {
         },
         "model.yaw_following.headings",
     );
+}
+
+/// The column-array solver's work is bounded before it runs: 10 000 frequencies x 720
+/// headings x 4 columns (estimated at 18 minutes; 360 headings took 9 minutes here) is
+/// refused at once, naming the setting.
+#[test]
+fn a_column_array_solve_of_hours_is_refused_before_it_runs() {
+    let dir = std::env::temp_dir().join(format!("slowdrift-solver-work-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("long.toml");
+    let text = slowdrift::scenario::default::DEFAULT_CONFIG_TOML.replace(
+        "source = \"default-platform\"",
+        "source = \"column-array\"\nn_omega = 10000\nheading_step_deg = 0.5",
+    );
+    std::fs::write(&path, text).unwrap();
+    let start = std::time::Instant::now();
+    let message = slowdrift::problem::load(&path).unwrap_err().to_string();
+    assert!(start.elapsed().as_secs_f64() < 5.0);
+    assert!(
+        message.contains("invalid [drift] n_omega = 10000: the column-array solver on 10000 frequencies x 720 headings x 4 columns would take about")
+            && message.contains("at most 10"),
+        "{message}"
+    );
+    std::fs::remove_dir_all(dir).ok();
 }
