@@ -121,6 +121,13 @@ fn simulate(args: SimulateArgs) -> Result<(), String> {
         }
     };
     let transient = args.transient.unwrap_or_else(|| config.default_transient());
+    if let Some(trim) = config.band_trim() {
+        println!(
+            "wave band: the default {:.4} .. {:.4} rad/s limited to the hydrodynamic data's \
+             {:.4} .. {:.4} rad/s ({:.2e} of its variance left out; sea.band sets it)",
+            trim.default.0, trim.default.1, trim.band.0, trim.band.1, trim.variance_left_out
+        );
+    }
     let directions = config.sea.directions().len();
     if directions > 1 {
         println!(

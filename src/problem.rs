@@ -210,7 +210,89 @@ fn grid_nodes(grid: &ColumnGrid) -> (Vec<f64>, Vec<f64>) {
     (omegas, headings)
 }
 
+/// The largest share of the spectrum's variance that limiting the default band to the
+/// hydrodynamic data may leave out ([`Problem::band`]).
+pub const DEFAULT_BAND_TRIM_LIMIT: f64 = 0.01;
+
+/// The default band limited to the hydrodynamic data ([`Problem::band_trim`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BandTrim {
+    /// The spectrum's default band, rad/s.
+    pub default: (f64, f64),
+    /// The band simulated: the default band within the data's frequencies, rad/s.
+    pub band: (f64, f64),
+    /// The share of the default band's variance left out.
+    pub variance_left_out: f64,
+}
+
 impl Problem {
+    /// The simulated band (omega_min, omega_max), rad/s: `sea.band` when the user set it;
+    /// otherwise the spectrum's default band ([`crate::sea_state::SeaState::band`]), limited
+    /// to the frequencies the hydrodynamic data cover (the drift table, and the QTF under
+    /// `second_order = "full-qtf"`) when they stop inside it and what is left out holds at
+    /// most [`DEFAULT_BAND_TRIM_LIMIT`] of the default band's variance ([`Problem::band_trim`]).
+    /// A data file whose last frequency, computed from a printed period, is 2.4999 rad/s
+    /// thus serves the default band to 2.5133 rad/s of Tp = 10 s. Beyond the limit the
+    /// default band is kept and the coverage checks name the gap.
+    pub fn band(&self) -> (f64, f64) {
+        self.band_trim()
+            .map_or_else(|| self.sea.band(), |trim| trim.band)
+    }
+
+    /// How the default band was limited to the data ([`Problem::band`]), or `None` when it
+    /// was not (the user set `sea.band`, the data cover the default band, or limiting it
+    /// would leave out more than [`DEFAULT_BAND_TRIM_LIMIT`] of the variance).
+    pub fn band_trim(&self) -> Option<BandTrim> {
+        if self.sea.band.is_some() {
+            return None;
+        }
+        let default = self.sea.band();
+        let mut cover = {
+            let w = self.hydro.drift.omegas();
+            (w[0], w[w.len() - 1])
+        };
+        if let (SecondOrder::FullQtf, Some(q)) = (self.model.second_order, &self.hydro.qtf) {
+            if let (Some(&lo), Some(&hi)) = (q.omegas.first(), q.omegas.last()) {
+                cover = (cover.0.max(lo), cover.1.min(hi));
+            }
+        }
+        let tolerance = crate::model::FREQUENCY_MATCH_TOLERANCE;
+        let band = (
+            if default.0 < cover.0 * (1.0 - tolerance) {
+                cover.0
+            } else {
+                default.0
+            },
+            if default.1 > cover.1 * (1.0 + tolerance) {
+                cover.1
+            } else {
+                default.1
+            },
+        );
+        if band == default || band.0 >= band.1 {
+            return None;
+        }
+        let variance = |a: f64, b: f64| {
+            if b <= a {
+                return 0.0;
+            }
+            let panels = 400;
+            let h = (b - a) / panels as f64;
+            let density = |w: f64| self.sea.spectrum.density(w);
+            let inner: f64 = (1..panels)
+                .map(|i| if i % 2 == 1 { 4.0 } else { 2.0 } * density(a + i as f64 * h))
+                .sum();
+            (density(a) + inner + density(b)) * h / 3.0
+        };
+        let total = variance(default.0, default.1);
+        let left_out = (variance(default.0, band.0) + variance(band.1, default.1)) / total;
+        (left_out <= DEFAULT_BAND_TRIM_LIMIT).then_some(BandTrim {
+            default,
+            band,
+            variance_left_out: left_out,
+        })
+    }
+
     /// The drift table with the wave-drift damping a run of this problem uses: the table's
     /// own b_ij (`drift_damping = "table"`), Aranha's on its nodes (`"aranha"`, whatever
     /// b_ij the table holds), or `None` (`"off"`).
@@ -409,7 +491,7 @@ impl Problem {
                 ),
             ));
         }
-        crate::hydro::qtf::check_covers(&q.omegas, self.sea.band())
+        crate::hydro::qtf::check_covers(&q.omegas, self.band())
     }
 
     /// Yaw following: at least two headings, a finite increasing range that holds the

@@ -66,7 +66,7 @@ impl PlanKey {
             start_time: problem.run.start_time,
             block_duration: problem.run.block_duration,
             time_step: problem.run.time_step,
-            band: problem.sea.band(),
+            band: problem.band(),
             spreading: problem.sea.spreading.clone(),
             mean_direction: problem.sea.mean_direction,
             n_directions: problem.sea.n_directions,
@@ -141,7 +141,7 @@ impl RecordPlan {
             config.run.start_time,
             segments.span() as f64 * dt,
             dt,
-            sea.band(),
+            config.band(),
         )?;
         let directions = sea.directions();
         let damping_table = config.damping_table()?;

@@ -215,9 +215,11 @@ impl GridQtf {
     }
 }
 
-/// Lower node k and weight s of `w` in `omegas` (covered): w = (1 - s) w_k + s w_{k+1};
+/// Lower node k and weight s of `w` in `omegas` (covered, within the frequency match
+/// tolerance: a `w` just beyond an end takes the end's value): w = (1 - s) w_k + s w_{k+1};
 /// s is exactly 0 at a node.
 fn bracket(omegas: &[f64], w: f64) -> (usize, f64) {
+    let w = w.clamp(omegas[0], omegas[omegas.len() - 1]);
     let above = omegas.partition_point(|&o| o <= w);
     let k = above.saturating_sub(1).min(omegas.len() - 2);
     if omegas[k] == w {

@@ -5,7 +5,7 @@
 //! The database stores it as real and imaginary parts (`hydro::io::database`).
 
 use crate::error::{Error, Result};
-use crate::model::Dof;
+use crate::model::{Dof, FREQUENCY_MATCH_TOLERANCE};
 use rustfft::num_complex::Complex64;
 use serde::Serialize;
 use std::f64::consts::PI;
@@ -119,14 +119,15 @@ pub fn check_tolerance(tolerance: f64) -> Result<()> {
     }
 }
 
-/// Refuses a QTF grid that does not cover `band` (rad/s), naming the gap.
+/// Refuses a QTF grid that does not cover `band` (rad/s) within
+/// [`FREQUENCY_MATCH_TOLERANCE`], naming the gap.
 pub fn check_covers(omegas: &[f64], band: (f64, f64)) -> Result<()> {
     let (low, high) = (omegas[0], omegas[omegas.len() - 1]);
     let mut gaps = Vec::new();
-    if band.0 < low {
+    if band.0 < low * (1.0 - FREQUENCY_MATCH_TOLERANCE) {
         gaps.push(format!("{:.4} .. {low:.4} rad/s", band.0));
     }
-    if band.1 > high {
+    if band.1 > high * (1.0 + FREQUENCY_MATCH_TOLERANCE) {
         gaps.push(format!("{high:.4} .. {:.4} rad/s", band.1));
     }
     if gaps.is_empty() {

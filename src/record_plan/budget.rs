@@ -65,7 +65,7 @@ impl MemoryEstimate {
             problem.run.start_time,
             segments.span() as f64 * dt,
             dt,
-            problem.sea.band(),
+            problem.band(),
         )?;
         let l = grid.len as f64;
         let g = grid.count as f64;

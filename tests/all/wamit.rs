@@ -514,7 +514,7 @@ fn malformed_lines_name_the_file_and_line() {
             "PER1",
         ),
         (
-            format!("{good}  10.0  10.0  0.0  0.0  1  1.0 0.0  2.0  0.0\n"),
+            format!("{good}  10.0  10.0  0.0  0.0  1  2.0 0.0  2.0  0.0\n"),
             2,
             "line 1",
         ),
@@ -615,7 +615,7 @@ fn added_mass_damping_and_hydrostatics_scale_with_ulen() {
 fn mean_drift_file_gives_a_drift_table_and_lists_what_is_missing() {
     let dir = temp_dir("mean");
     // Momentum file: DOFs 1, 2, 6 at 0 and 90 deg, order shuffled, one bi-directional
-    // entry (skipped), a header line.
+    // block (kept apart from the drift table), a header line.
     let text = "WAMIT .8 test
   5.0  90.0  90.0  6  0 0  0.6  0.0
  10.0   0.0   0.0  1  0 0  1.0  0.0
@@ -630,6 +630,7 @@ fn mean_drift_file_gives_a_drift_table_and_lists_what_is_missing() {
   5.0  90.0  90.0  2  0 0  1.6  0.0
  10.0  90.0  90.0  6  0 0  0.5  0.0
  10.0   0.0  90.0  1  0 0  9.0  0.0
+  5.0   0.0  90.0  1  0 0  9.5  0.0
 ";
     let path = write(&dir, "m.8", text);
     let ulen = 2.0;
@@ -643,6 +644,8 @@ fn mean_drift_file_gives_a_drift_table_and_lists_what_is_missing() {
     .unwrap();
     let beam = 90f64.to_radians();
     assert_eq!(mean.headings(), [0.0, beam]);
+    assert_eq!(mean.pairs().len(), 1);
+    assert_eq!(mean.pairs()[0].headings, (0.0, beam));
     assert_eq!(
         mean.values(1, 0.0).unwrap(),
         [force_scale(ulen, 1), 1.5 * force_scale(ulen, 1)]

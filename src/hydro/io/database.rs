@@ -309,7 +309,9 @@ impl HydroDatabase {
     /// `.10d`) that exist, restricted to surge, sway and yaw (WAMIT DOFs 1, 2, 6):
     /// - `.1`: the PER = -1 (omega = 0) added mass;
     /// - `.hst`: the hydrostatic stiffness (zero in these DOFs for a floater);
-    /// - drift from `.8` (momentum), else `.9` (pressure), else the QTF diagonal;
+    /// - drift from `.8` (momentum), else `.9` (pressure), else the QTF diagonal; the
+    ///   bi-directional drift from the same file's beta1 != beta2 entries, on every pair of
+    ///   its headings (the error lists the pairs missing in both orders);
     /// - the QTF at its uni-directional headings (bi-directional pairs are not stored).
     ///
     /// At least one file must exist.
@@ -378,7 +380,7 @@ impl HydroDatabase {
                 .count();
             files.push(format!(
                 "{}: QTF, {} frequencies {:.4} .. {:.4} rad/s, headings {} deg, DOFs {:?} \
-                 (kept 1, 2, 6), {} values filled by Hermitian symmetry{}",
+                 (kept 1, 2, 6), {} values filled by Hermitian symmetry{}{}",
                 path.display(),
                 read.omegas().len(),
                 read.omegas()[0],
@@ -386,6 +388,13 @@ impl HydroDatabase {
                 degrees(&headings),
                 read.dofs(),
                 read.filled_by_symmetry(),
+                match read.filled_by_interpolation() {
+                    0 => String::new(),
+                    k => format!(
+                        "; warning: a sparse QTF, {k} values missing from the file filled by \
+                         linear interpolation along their difference-frequency lines"
+                    ),
+                },
                 if bidirectional > 0 {
                     format!("; {bidirectional} bi-directional blocks not stored")
                 } else {
@@ -403,6 +412,7 @@ impl HydroDatabase {
 
         let mut drift_from = "none";
         let mut drift = Vec::new();
+        let mut bidirectional_drift = None;
         for (ext, label) in [("8", ".8"), ("9", ".9")] {
             let path = file(ext);
             if !path.exists() {
@@ -412,11 +422,21 @@ impl HydroDatabase {
             let mean = read_mean_drift(&path, options)?;
             let headings = mean.headings();
             drift = drift_points(&mean.to_drift_table(&headings, SLOW_DOFS)?);
+            bidirectional_drift = mean.to_bidirectional_table(SLOW_DOFS)?;
             files.push(format!(
-                "{}: mean drift, {} frequencies, headings {} deg",
+                "{}: mean drift, {} frequencies, headings {} deg{}",
                 path.display(),
                 mean.omegas().len(),
-                degrees(&headings)
+                degrees(&headings),
+                match &bidirectional_drift {
+                    Some(t) => format!(
+                        "; bi-directional drift on every pair of the headings {} deg ({} blocks \
+                         given, the other order by Hermitian symmetry)",
+                        degrees(&t.headings),
+                        mean.pairs().len()
+                    ),
+                    None => "; no bi-directional entries (beta1 != beta2)".to_string(),
+                }
             ));
             drift_from = label;
             used.push(label);
@@ -459,7 +479,7 @@ impl HydroDatabase {
             stiffness,
             drift,
             qtf,
-            bidirectional_drift: None,
+            bidirectional_drift,
         };
         database.validate()?;
         Ok(WamitImport { database, files })

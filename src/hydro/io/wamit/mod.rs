@@ -35,11 +35,11 @@ mod qtf;
 
 pub use added_mass::{read_added_mass_damping, AddedMassDamping};
 pub use hydrostatics::{read_hydrostatics, Hydrostatics};
-pub use mean_drift::{read_mean_drift, DriftBlock, MeanDrift};
+pub use mean_drift::{read_mean_drift, DriftBlock, MeanDrift, PairBlock};
 pub use qtf::{read_difference_qtf, DifferenceQtf, QtfBlock};
 
 use crate::error::{require_positive, Error, Result};
-use crate::model::HEADING_MATCH_TOLERANCE;
+use crate::model::{FREQUENCY_MATCH_TOLERANCE, HEADING_MATCH_TOLERANCE};
 use std::f64::consts::PI;
 use std::path::Path;
 
@@ -50,9 +50,10 @@ pub const DEFAULT_RHO: f64 = 1025.0;
 /// Default acceleration of gravity, m/s^2 (physics.md section 1).
 pub const DEFAULT_GRAVITY: f64 = 9.80665;
 
-/// Frequencies within this relative distance are the same frequency (files print periods
-/// with five or more significant digits, the same text for the same period).
-pub const FREQUENCY_TOLERANCE: f64 = 1e-6;
+/// How closely a line's polar columns (abs(F), phase) must give its Cartesian ones (Re, Im),
+/// relative to the modulus: files print five to seven significant digits (the OC4 `.12d`
+/// agrees within 1.3e-5, the NEMOH OC3 QTF within 1.3e-6).
+pub const POLAR_TOLERANCE: f64 = 1e-3;
 
 /// The scales that make WAMIT's nondimensional numbers dimensional.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -109,8 +110,10 @@ fn omega_of_period(period: f64) -> f64 {
     2.0 * PI / period
 }
 
+/// Two frequencies of a file (or of two files) are one node within
+/// [`FREQUENCY_MATCH_TOLERANCE`]: the same period printed to different precision.
 fn same_frequency(a: f64, b: f64) -> bool {
-    (a - b).abs() <= FREQUENCY_TOLERANCE * a.abs().max(b.abs())
+    (a - b).abs() <= FREQUENCY_MATCH_TOLERANCE * a.abs().max(b.abs())
 }
 
 fn same_heading(a: f64, b: f64) -> bool {
@@ -231,6 +234,49 @@ impl NumericFile {
                 ),
             ))
         }
+    }
+
+    /// Checks that the polar columns `first`, `first + 1` (abs(F), phase in degrees) and the
+    /// Cartesian columns `first + 2`, `first + 3` (Re, Im) of `record` are the same complex
+    /// number, within [`POLAR_TOLERANCE`] of its modulus. A line whose polar form is the
+    /// conjugate of its Cartesian form mixes the time conventions e^{i omega t} and
+    /// e^{-i omega t} (a converter that flipped one pair and not the other) and is refused:
+    /// which of the two is meant cannot be told from the line. abs(F) = phase = 0 with a
+    /// non-zero Re, Im is taken as a file that leaves the polar form out.
+    fn check_polar(&self, record: &Record, first: usize) -> Result<()> {
+        let v = &record.values;
+        let (modulus, phase) = (v[first], v[first + 1]);
+        let cartesian = rustfft::num_complex::Complex64::new(v[first + 2], v[first + 3]);
+        if modulus == 0.0 && phase == 0.0 {
+            return Ok(());
+        }
+        let polar = rustfft::num_complex::Complex64::from_polar(modulus, phase.to_radians());
+        let scale = modulus.abs().max(cartesian.norm());
+        if (polar - cartesian).norm() <= POLAR_TOLERANCE * scale {
+            return Ok(());
+        }
+        let conjugate = (polar - cartesian.conj()).norm() <= POLAR_TOLERANCE * scale;
+        Err(self.error(
+            record.line,
+            if conjugate {
+                format!(
+                    "abs(F) = {modulus}, phase = {phase} deg is the conjugate of Re, Im = {}, {}: \
+                     the line mixes the time conventions e^(i w t) and e^(-i w t); convert the \
+                     file to one of them (WAMIT's is e^(i w t), Re + i Im = abs(F) e^(i phase))",
+                    v[first + 2],
+                    v[first + 3]
+                )
+            } else {
+                format!(
+                    "abs(F) = {modulus}, phase = {phase} deg and Re, Im = {}, {} are not the \
+                     same complex number (fields {} to {})",
+                    v[first + 2],
+                    v[first + 3],
+                    first + 1,
+                    first + 4
+                )
+            },
+        ))
     }
 
     /// Field `k` of `record` as a positive period, converted to omega = 2 pi / PER.

@@ -33,6 +33,7 @@ pub struct DifferenceQtf {
     omegas: Vec<f64>,
     blocks: Vec<QtfBlock>,
     filled_by_symmetry: usize,
+    filled_by_interpolation: usize,
 }
 
 /// One line of the file, scaled.
@@ -46,8 +47,16 @@ struct Entry {
 
 /// Reads a `.10d`, `.11d` or `.12d` file: lines `PER1 PER2 beta1 beta2 I |F| phase Re Im`,
 /// T = rho g L^k (Re + i Im), k = 1 forces, 2 moments, per unit amplitude squared. One
-/// triangle or both may be given, in any order; after the Hermitian fill every (DOF,
-/// heading pair) must cover all pairs of the file's frequencies, or the error lists holes.
+/// triangle or both may be given, in any order.
+///
+/// Sparse files (pairs missing off the diagonal, as in QTFs converted from other codes):
+/// after the Hermitian fill, a pair (i, j) still missing is filled by linear interpolation
+/// in the mean frequency (w_i + w_j)/2 along its difference-frequency line (the matrix diagonal j - i = const, constant
+/// w_i - w_j on a uniform grid) between the nearest given pairs of that line on either
+/// side, and counted ([`DifferenceQtf::filled_by_interpolation`], which the import reports
+/// as a warning). A pair with no given pair on one side of its line (beyond the largest
+/// difference frequency the file gives, or at the grid's ends) is not extrapolated: the
+/// error lists every such pair.
 pub fn read_difference_qtf(path: &Path, options: &WamitOptions) -> Result<DifferenceQtf> {
     options.validate()?;
     let file = NumericFile::read(path, &[9], "PER1 PER2 beta1 beta2 I |F| phase Re Im")?;
@@ -67,6 +76,7 @@ pub fn read_difference_qtf(path: &Path, options: &WamitOptions) -> Result<Differ
     let mut entries = Vec::with_capacity(file.records.len());
     for r in &file.records {
         let dof = file.dof(r, 4, "I")?;
+        file.check_polar(r, 5)?;
         let v = &r.values;
         entries.push(Entry {
             line: r.line,
@@ -118,30 +128,29 @@ pub fn read_difference_qtf(path: &Path, options: &WamitOptions) -> Result<Differ
     let mut keys: Vec<(usize, usize, usize)> = blocks.keys().copied().collect();
     keys.sort_unstable();
     let mut out = Vec::with_capacity(keys.len());
+    let mut filled_by_interpolation = 0;
     for key in keys {
-        let (values, lines) = blocks.remove(&key).expect("key listed");
-        let holes: Vec<usize> = (0..n * n).filter(|&k| lines[k].is_none()).collect();
-        if !holes.is_empty() {
-            let shown: Vec<String> = holes
-                .iter()
-                .take(5)
-                .map(|&k| format!("({:.6}, {:.6})", omegas[k / n], omegas[k % n]))
-                .collect();
+        let (mut values, lines) = blocks.remove(&key).expect("key listed");
+        let given: Vec<bool> = lines.iter().map(Option::is_some).collect();
+        let unfilled = fill_along_difference_lines(&omegas, &mut values, &given);
+        if !unfilled.is_empty() {
             return Err(Error::Parse {
                 path: file.path.clone(),
                 line: None,
                 message: format!(
                     "DOF {} at headings ({:.3}, {:.3}) deg: {} of {} frequency pairs missing \
-                     even with Hermitian symmetry, e.g. {} rad/s",
+                     even with Hermitian symmetry and not between two given pairs of their \
+                     difference-frequency line (nothing is extrapolated): {}",
                     key.0,
                     headings[key.1].to_degrees(),
                     headings[key.2].to_degrees(),
-                    holes.len(),
+                    unfilled.len(),
                     n * n,
-                    shown.join(", ")
+                    list_pairs(&omegas, &unfilled)
                 ),
             });
         }
+        filled_by_interpolation += given.iter().filter(|g| !**g).count();
         out.push(QtfBlock {
             dof: key.0,
             headings: (headings[key.1], headings[key.2]),
@@ -153,6 +162,7 @@ pub fn read_difference_qtf(path: &Path, options: &WamitOptions) -> Result<Differ
         omegas,
         blocks: out,
         filled_by_symmetry,
+        filled_by_interpolation,
     })
 }
 
@@ -195,6 +205,12 @@ impl DifferenceQtf {
     /// triangles).
     pub fn filled_by_symmetry(&self) -> usize {
         self.filled_by_symmetry
+    }
+
+    /// How many values were missing even with Hermitian symmetry and were filled by linear
+    /// interpolation along their difference-frequency line ([`read_difference_qtf`]).
+    pub fn filled_by_interpolation(&self) -> usize {
+        self.filled_by_interpolation
     }
 
     /// T(w_i, w_j) of `dof` for waves at `headings` = (beta1, beta2), rad.
@@ -259,4 +275,68 @@ impl DifferenceQtf {
             .collect();
         require_present(&self.path, dofs, headings, &present)
     }
+}
+
+/// Fills the values of an n x n block (row-major) that are not `given`, each by linear
+/// interpolation in the mean frequency (w_i + w_j)/2 between the nearest given values on
+/// either side along its diagonal (j - i constant); the mirror (j, i) of a cell has the same
+/// mean frequency and mirrored neighbours, so a Hermitian block stays Hermitian. Returns the
+/// (i, j) of the values with no given value on one side.
+fn fill_along_difference_lines(
+    omegas: &[f64],
+    values: &mut [Complex64],
+    given: &[bool],
+) -> Vec<(usize, usize)> {
+    let n = omegas.len();
+    let mut unfilled = Vec::new();
+    for d in -(n as isize - 1)..=(n as isize - 1) {
+        // The line's cells (i, i + d), by increasing i.
+        let cells: Vec<(usize, usize)> = (0..n)
+            .filter_map(|i| {
+                let j = i as isize + d;
+                (0..n as isize).contains(&j).then_some((i, j as usize))
+            })
+            .collect();
+        let known: Vec<usize> = (0..cells.len())
+            .filter(|&k| given[cells[k].0 * n + cells[k].1])
+            .collect();
+        for (k, &(i, j)) in cells.iter().enumerate() {
+            if given[i * n + j] {
+                continue;
+            }
+            let after = known.partition_point(|&m| m < k);
+            if after == 0 || after == known.len() {
+                unfilled.push((i, j));
+                continue;
+            }
+            let (a, b) = (cells[known[after - 1]], cells[known[after]]);
+            let mean = |(i, j): (usize, usize)| omegas[i] + omegas[j];
+            let s = (mean((i, j)) - mean(a)) / (mean(b) - mean(a));
+            values[i * n + j] = values[a.0 * n + a.1] * (1.0 - s) + values[b.0 * n + b.1] * s;
+        }
+    }
+    unfilled.sort_unstable();
+    unfilled
+}
+
+/// Pairs of frequencies, rad/s, grouped by their first frequency: "w1 = 0.25: w2 = 1.5, 1.6;
+/// w1 = 0.3: ...".
+fn list_pairs(omegas: &[f64], pairs: &[(usize, usize)]) -> String {
+    let mut rows: Vec<String> = Vec::new();
+    let mut k = 0;
+    while k < pairs.len() {
+        let i = pairs[k].0;
+        let end = k + pairs[k..].iter().take_while(|p| p.0 == i).count();
+        let seconds: Vec<String> = pairs[k..end]
+            .iter()
+            .map(|&(_, j)| format!("{:.6}", omegas[j]))
+            .collect();
+        rows.push(format!(
+            "w1 = {:.6}: w2 = {}",
+            omegas[i],
+            seconds.join(", ")
+        ));
+        k = end;
+    }
+    format!("{} rad/s", rows.join("; "))
 }
