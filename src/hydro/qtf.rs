@@ -18,12 +18,17 @@ pub struct Qtf {
     pub blocks: Vec<QtfBlock>,
 }
 
-/// T(w_i, w_j) of one DOF at one heading.
+/// T(w_i, w_j; beta1, beta2) of one DOF for one heading pair: uni-directional when
+/// beta1 = beta2, else the bi-directional QTF of waves at w_i from beta1 and at w_j from
+/// beta2, F(t) = Re sum_{i,k} sum_{j,l} a_ik a_jl* T(w_i, w_j; b_k, b_l) e^{i (w_i - w_j) t}
+/// (physics.md section 4).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct QtfBlock {
     pub dof: Dof,
-    /// Wave heading relative to the body x axis, rad.
+    /// Heading beta1 of the waves at w_i, relative to the body x axis, rad.
     pub heading: f64,
+    /// Heading beta2 of the waves at w_j, rad (equal to `heading`: uni-directional).
+    pub second_heading: f64,
     /// Row-major n x n values, `[i * n + j]` = T(w_i, w_j).
     #[serde(serialize_with = "re_im_pairs")]
     pub values: Vec<Complex64>,
@@ -42,13 +47,38 @@ fn re_im_pairs<S: serde::Serializer>(
     seq.end()
 }
 
+impl QtfBlock {
+    /// Whether the block is uni-directional (beta1 = beta2).
+    pub fn is_unidirectional(&self) -> bool {
+        self.heading == self.second_heading
+    }
+}
+
+/// a - b brought into [-pi, pi).
+fn apart(a: f64, b: f64) -> f64 {
+    (a - b + PI).rem_euclid(2.0 * PI) - PI
+}
+
 impl Qtf {
-    /// The block of `dof` at `heading` (rad, within `tolerance`, modulo 2 pi), if any.
+    /// The uni-directional block of `dof` at `heading` (rad, within `tolerance`, modulo
+    /// 2 pi), if any.
     pub fn block(&self, dof: Dof, heading: f64, tolerance: f64) -> Option<&QtfBlock> {
-        let apart = |a: f64, b: f64| (a - b + PI).rem_euclid(2.0 * PI) - PI;
-        self.blocks
-            .iter()
-            .find(|b| b.dof == dof && apart(b.heading, heading).abs() <= tolerance)
+        self.pair_block(dof, (heading, heading), tolerance)
+    }
+
+    /// The block of `dof` for the heading pair (beta1, beta2) (rad, each within
+    /// `tolerance`, modulo 2 pi), if any.
+    pub fn pair_block(&self, dof: Dof, headings: (f64, f64), tolerance: f64) -> Option<&QtfBlock> {
+        self.blocks.iter().find(|b| {
+            b.dof == dof
+                && apart(b.heading, headings.0).abs() <= tolerance
+                && apart(b.second_heading, headings.1).abs() <= tolerance
+        })
+    }
+
+    /// Whether the QTF has bi-directional blocks (beta1 != beta2).
+    pub fn is_bidirectional(&self) -> bool {
+        self.blocks.iter().any(|b| !b.is_unidirectional())
     }
 
     /// Checks the frequencies (positive, strictly increasing) and every block's size and
@@ -73,6 +103,7 @@ impl Qtf {
                 ));
             }
             if !b.heading.is_finite()
+                || !b.second_heading.is_finite()
                 || b.values
                     .iter()
                     .any(|z| !(z.re.is_finite() && z.im.is_finite()))
@@ -87,10 +118,11 @@ impl Qtf {
         Ok(())
     }
 
-    /// The distinct headings of the blocks, rad, in the order they first appear.
+    /// The distinct headings of the uni-directional blocks, rad, in the order they first
+    /// appear.
     pub fn headings(&self) -> Vec<f64> {
         let mut headings: Vec<f64> = Vec::new();
-        for b in &self.blocks {
+        for b in self.blocks.iter().filter(|b| b.is_unidirectional()) {
             if !headings.contains(&b.heading) {
                 headings.push(b.heading);
             }

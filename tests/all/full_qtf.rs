@@ -57,6 +57,7 @@ fn qtf_data(omegas: &[f64], headings: &[f64]) -> QtfData {
             blocks.push(QtfMatrix {
                 dof,
                 heading,
+                second_heading: None,
                 re: rows(|z| z.re),
                 im: rows(|z| z.im),
             });

@@ -460,17 +460,36 @@ fn header_both_triangles_any_dof_order_several_headings() {
 fn one_triangle_of_a_bidirectional_pair_fills_the_mirror_pair() {
     let dir = temp_dir("bidir");
     // Headings (0, 30): the mirror block (30, 0) is not in the file.
-    let text = "\
+    let pair = "\
   10.0  10.0  0.0  30.0  1  0 0  1.0  0.5
   5.0   10.0  0.0  30.0  1  0 0  2.0  0.25
   10.0  5.0   0.0  30.0  1  0 0  3.0  -0.75
   5.0   5.0   0.0  30.0  1  0 0  4.0  1.5
 ";
-    let path = write(&dir, "bi.11d", text);
+    // Without the uni-directional blocks of 0 and 30 deg the pairs are incomplete: listed.
+    let path = write(&dir, "pair.11d", pair);
+    let err = read_difference_qtf(&path, &WamitOptions::default())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("pair.11d")
+            && err.contains("2 of the 4 (DOF, heading pair) blocks are missing")
+            && err.contains("DOF 1 at (0.000, 0.000) deg; DOF 1 at (30.000, 30.000) deg"),
+        "{err}"
+    );
+    let uni = "\
+  10.0  10.0  0.0  0.0  1  0 0  1.0  0.0
+  5.0   10.0  0.0  0.0  1  0 0  2.0  0.1
+  5.0   5.0   0.0  0.0  1  0 0  4.0  0.0
+  10.0  10.0  30.0  30.0  1  0 0  1.5  0.0
+  5.0   10.0  30.0  30.0  1  0 0  2.5  0.1
+  5.0   5.0   30.0  30.0  1  0 0  4.5  0.0
+";
+    let path = write(&dir, "bi.11d", &format!("{pair}{uni}"));
     let qtf = read_difference_qtf(&path, &WamitOptions::default()).unwrap();
     let (a, b) = (0.0, 30f64.to_radians());
-    assert_eq!(qtf.blocks().len(), 2);
-    assert_eq!(qtf.filled_by_symmetry(), 4);
+    assert_eq!(qtf.blocks().len(), 4);
+    assert_eq!(qtf.filled_by_symmetry(), 4 + 2);
     for i in 0..2 {
         for j in 0..2 {
             assert_eq!(
@@ -479,12 +498,7 @@ fn one_triangle_of_a_bidirectional_pair_fills_the_mirror_pair() {
             );
         }
     }
-    // No uni-directional heading: asking for one lists it as missing.
-    let err = qtf.diagonal(1, 0.0).unwrap_err().to_string();
-    assert!(
-        err.contains("missing DOF 1") && err.contains("bi.11d"),
-        "{err}"
-    );
+    assert_eq!(qtf.headings(), [a, b]);
 }
 
 #[test]
@@ -717,6 +731,7 @@ fn small_database() -> HydroDatabase {
             blocks: vec![QtfMatrix {
                 dof: Dof::Yaw,
                 heading: 0.1,
+                second_heading: None,
                 re: vec![vec![1.0, PI], vec![PI, 2.0]],
                 im: vec![vec![0.0, -1.0 / 7.0], vec![1.0 / 7.0, 0.0]],
             }],

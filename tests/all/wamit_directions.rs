@@ -195,3 +195,122 @@ fn missing_heading_pairs_are_listed_and_both_orders_must_agree() {
         "{message}"
     );
 }
+
+/// A bi-directional QTF, Hermitian in the combined (frequency, heading) pair:
+/// T(w2, w1; b2, b1) = conj T(w1, w2; b1, b2); nondimensional.
+pub fn closed_form_qtf(dof: usize, w1: f64, w2: f64, b1: f64, b2: f64) -> Complex64 {
+    let magnitude = match dof {
+        1 => (0.5 + w1 * w2) * (b1.cos() + b2.cos()),
+        2 => (0.5 + w1 * w2) * (b1.sin() + b2.sin()),
+        _ => 2.0 * (w1 + w2) * (b1 - b2).cos() + 0.3 * (b1 + b2).sin(),
+    };
+    let phase = |w: f64, b: f64| 0.7 * w + 0.3 * w * w * b.sin();
+    magnitude * Complex64::from_polar(1.0, phase(w1, b1) - phase(w2, b2))
+}
+
+/// A `.12d` file of `closed_form_qtf` on `periods` (s) and `headings` (deg): for beta1 =
+/// beta2 one frequency triangle, for beta1 < beta2 every frequency pair, nothing for
+/// beta1 > beta2 (Hermitian symmetry), the pairs `skip` left out.
+pub fn write_bidirectional_qtf(
+    path: &Path,
+    periods: &[f64],
+    headings: &[f64],
+    skip: &[(f64, f64)],
+) {
+    let mut text = String::from(" a header\n");
+    for (a, &h1) in headings.iter().enumerate() {
+        for &h2 in &headings[a..] {
+            if skip.contains(&(h1, h2)) {
+                continue;
+            }
+            for (i, &p1) in periods.iter().enumerate() {
+                for (j, &p2) in periods.iter().enumerate() {
+                    if h1 == h2 && j > i {
+                        continue;
+                    }
+                    for dof in [1, 2, 6] {
+                        let t = closed_form_qtf(
+                            dof,
+                            2.0 * PI / p1,
+                            2.0 * PI / p2,
+                            h1.to_radians(),
+                            h2.to_radians(),
+                        );
+                        writeln!(
+                            text,
+                            "{p1} {p2} {h1} {h2} {dof} {:.12e} {:.10} {:.12e} {:.12e}",
+                            t.norm(),
+                            t.arg().to_degrees(),
+                            t.re,
+                            t.im
+                        )
+                        .unwrap();
+                    }
+                }
+            }
+        }
+    }
+    std::fs::write(path, text).unwrap();
+}
+
+#[test]
+fn a_qtf_with_several_heading_pairs_becomes_per_pair_blocks() {
+    let dir = temp_dir("qtf-pairs");
+    let periods = [20.0, 12.0, 9.0, 7.0];
+    let headings = [-30.0, 0.0, 30.0];
+    write_bidirectional_qtf(&dir.join("semi.12d"), &periods, &headings, &[]);
+    let import = HydroDatabase::from_wamit(&dir.join("semi"), &WamitOptions::default()).unwrap();
+    assert!(
+        import
+            .files
+            .iter()
+            .any(|l| l.contains("bi-directional blocks on every pair of the headings")),
+        "{:?}",
+        import.files
+    );
+    let stored = import.database.qtf.as_ref().unwrap();
+    // 3 uni-directional headings and 6 ordered pairs, 3 DOFs each.
+    assert_eq!(stored.blocks.len(), 3 * 9);
+    let json = dir.join("semi.json");
+    import.database.save(&json).unwrap();
+    let qtf = HydroDatabase::load(&json).unwrap().qtf.unwrap().to_qtf();
+    assert!(qtf.is_bidirectional());
+    let omegas: Vec<f64> = qtf.omegas.clone();
+    for &h1 in &headings {
+        for &h2 in &headings {
+            let (b1, b2) = (f64::to_radians(h1), f64::to_radians(h2));
+            for (dof, wamit) in slowdrift::model::Dof::ALL.into_iter().zip([1, 2, 6]) {
+                let block = qtf.pair_block(dof, (b1, b2), 1e-9).expect("every pair");
+                assert_eq!(block.is_unidirectional(), h1 == h2);
+                let n = omegas.len();
+                for i in 0..n {
+                    for j in 0..n {
+                        let expected =
+                            closed_form_qtf(wamit, omegas[i], omegas[j], b1, b2) * RHO * G;
+                        let got = block.values[i * n + j];
+                        assert!(
+                            (got - expected).norm() <= 1e-9 * (1.0 + expected.norm()),
+                            "({h1}, {h2}) DOF {wamit} ({i}, {j}): {got} vs {expected}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+    // One pair missing in both orders: every missing block is listed.
+    write_bidirectional_qtf(&dir.join("gap.12d"), &periods, &headings, &[(-30.0, 30.0)]);
+    let message = slowdrift::hydro::io::wamit::read_difference_qtf(
+        &dir.join("gap.12d"),
+        &WamitOptions::default(),
+    )
+    .unwrap_err()
+    .to_string();
+    for dof in [1, 2, 6] {
+        assert!(
+            message.contains(&format!("DOF {dof} at (-30.000, 30.000) deg"))
+                && message.contains(&format!("DOF {dof} at (30.000, -30.000) deg")),
+            "{message}"
+        );
+    }
+    assert!(message.contains("6 of the 27"), "{message}");
+}

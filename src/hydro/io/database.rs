@@ -117,13 +117,17 @@ pub struct QtfData {
     pub blocks: Vec<QtfMatrix>,
 }
 
-/// T(w_i, w_j) = `re[i][j] + i im[i][j]` of one DOF at one heading.
+/// T(w_i, w_j; beta1, beta2) = `re[i][j] + i im[i][j]` of one DOF for one heading pair.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct QtfMatrix {
     pub dof: Dof,
-    /// Heading, rad.
+    /// Heading beta1 of the waves at w_i, rad.
     pub heading: f64,
+    /// Heading beta2 of the waves at w_j, rad, for a bi-directional block; absent (`None`)
+    /// for a uni-directional one (beta2 = beta1).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub second_heading: Option<f64>,
     pub re: Vec<Vec<f64>>,
     pub im: Vec<Vec<f64>>,
 }
@@ -312,7 +316,8 @@ impl HydroDatabase {
     /// - drift from `.8` (momentum), else `.9` (pressure), else the QTF diagonal; the
     ///   bi-directional drift from the same file's beta1 != beta2 entries, on every pair of
     ///   its headings (the error lists the pairs missing in both orders);
-    /// - the QTF at its uni-directional headings (bi-directional pairs are not stored).
+    /// - the QTF: every uni-directional heading and, when the file has them, every
+    ///   bi-directional heading pair (the reader requires all pairs of its headings).
     ///
     /// At least one file must exist.
     pub fn from_wamit(root: &Path, options: &WamitOptions) -> Result<WamitImport> {
@@ -396,7 +401,10 @@ impl HydroDatabase {
                     ),
                 },
                 if bidirectional > 0 {
-                    format!("; {bidirectional} bi-directional blocks not stored")
+                    format!(
+                        "; {bidirectional} bi-directional blocks on every pair of the headings \
+                         (those of DOFs 1, 2, 6 kept)"
+                    )
                 } else {
                     String::new()
                 }
@@ -503,6 +511,9 @@ impl QtfData {
         }
         for (k, b) in self.blocks.iter().enumerate() {
             require_finite(format_args!("database.qtf.blocks[{k}].heading"), b.heading)?;
+            if let Some(h) = b.second_heading {
+                require_finite(format_args!("database.qtf.blocks[{k}].second_heading"), h)?;
+            }
             for (part, m) in [("re", &b.re), ("im", &b.im)] {
                 let field = format!("database.qtf.blocks[{k}].{part}");
                 if m.len() != n || m.iter().any(|row| row.len() != n) {
@@ -532,6 +543,7 @@ impl QtfData {
                 .map(|b| QtfBlock {
                     dof: b.dof,
                     heading: b.heading,
+                    second_heading: b.second_heading.unwrap_or(b.heading),
                     values: b
                         .re
                         .iter()
@@ -576,22 +588,35 @@ fn drift_points(table: &DriftTable) -> Vec<DriftPoint> {
     points
 }
 
-/// The uni-directional surge, sway and yaw blocks of a QTF.
+/// The surge, sway and yaw blocks of a QTF: the uni-directional ones (which must have
+/// all three DOFs at every heading), then the bi-directional ones.
 fn qtf_data(qtf: &DifferenceQtf) -> Result<QtfData> {
     let n = qtf.omegas().len();
+    let matrix = |dof: Dof, headings: (f64, f64), m: &[Complex64]| {
+        let part = |f: fn(&Complex64) -> f64| -> Vec<Vec<f64>> {
+            m.chunks(n).map(|row| row.iter().map(f).collect()).collect()
+        };
+        QtfMatrix {
+            dof,
+            heading: headings.0,
+            second_heading: (headings.0 != headings.1).then_some(headings.1),
+            re: part(|z| z.re),
+            im: part(|z| z.im),
+        }
+    };
     let mut blocks = Vec::new();
     for heading in qtf.headings() {
         for (dof, wamit_dof) in Dof::ALL.into_iter().zip(SLOW_DOFS) {
-            let m = qtf.matrix(wamit_dof, heading)?;
-            let part = |f: fn(&Complex64) -> f64| -> Vec<Vec<f64>> {
-                m.chunks(n).map(|row| row.iter().map(f).collect()).collect()
-            };
-            blocks.push(QtfMatrix {
+            blocks.push(matrix(
                 dof,
-                heading,
-                re: part(|z| z.re),
-                im: part(|z| z.im),
-            });
+                (heading, heading),
+                qtf.matrix(wamit_dof, heading)?,
+            ));
+        }
+    }
+    for block in qtf.blocks().iter().filter(|b| b.headings.0 != b.headings.1) {
+        if let Some(k) = SLOW_DOFS.iter().position(|&d| d == block.dof) {
+            blocks.push(matrix(Dof::ALL[k], block.headings, &block.values));
         }
     }
     Ok(QtfData {

@@ -49,6 +49,10 @@ struct Entry {
 /// T = rho g L^k (Re + i Im), k = 1 forces, 2 moments, per unit amplitude squared. One
 /// triangle or both may be given, in any order.
 ///
+/// A file with bi-directional blocks (beta1 != beta2) must have, after the Hermitian fill
+/// (which makes (beta2, beta1) from (beta1, beta2)), a block for every DOF it lists and every
+/// pair of its headings; the error lists the missing (DOF, heading pair) blocks.
+///
 /// Sparse files (pairs missing off the diagonal, as in QTFs converted from other codes):
 /// after the Hermitian fill, a pair (i, j) still missing is filled by linear interpolation
 /// in the mean frequency (w_i + w_j)/2 along its difference-frequency line (the matrix diagonal j - i = const, constant
@@ -156,6 +160,9 @@ pub fn read_difference_qtf(path: &Path, options: &WamitOptions) -> Result<Differ
             headings: (headings[key.1], headings[key.2]),
             values,
         });
+    }
+    if out.iter().any(|b| b.headings.0 != b.headings.1) {
+        require_every_pair(&file.path, &headings, &out)?;
     }
     Ok(DifferenceQtf {
         path: file.path,
@@ -339,4 +346,51 @@ fn list_pairs(omegas: &[f64], pairs: &[(usize, usize)]) -> String {
         k = end;
     }
     format!("{} rad/s", rows.join("; "))
+}
+
+/// Every (DOF, beta1, beta2) on `headings` for the DOFs of `blocks`; the error lists the
+/// missing ones.
+fn require_every_pair(path: &str, headings: &[f64], blocks: &[QtfBlock]) -> Result<()> {
+    let mut dofs: Vec<usize> = blocks.iter().map(|b| b.dof).collect();
+    dofs.dedup();
+    let mut missing = Vec::new();
+    for &dof in &dofs {
+        for &b1 in headings {
+            for &b2 in headings {
+                let present = blocks.iter().any(|b| {
+                    b.dof == dof && same_heading(b.headings.0, b1) && same_heading(b.headings.1, b2)
+                });
+                if !present {
+                    missing.push(format!(
+                        "DOF {dof} at ({:.3}, {:.3}) deg",
+                        b1.to_degrees(),
+                        b2.to_degrees()
+                    ));
+                }
+            }
+        }
+    }
+    if missing.is_empty() {
+        return Ok(());
+    }
+    Err(Error::Parse {
+        path: path.to_string(),
+        line: None,
+        message: format!(
+            "a bi-directional QTF needs every pair of its headings {} deg for DOFs {}: {} of \
+             the {} (DOF, heading pair) blocks are missing even with Hermitian symmetry: {}",
+            headings
+                .iter()
+                .map(|h| format!("{:.3}", h.to_degrees()))
+                .collect::<Vec<_>>()
+                .join(", "),
+            dofs.iter()
+                .map(usize::to_string)
+                .collect::<Vec<_>>()
+                .join(", "),
+            missing.len(),
+            dofs.len() * headings.len() * headings.len(),
+            missing.join("; ")
+        ),
+    })
 }
