@@ -20,6 +20,7 @@ mod fmi2_state;
 mod fmi2_symbols;
 mod full_qtf;
 mod montecarlo;
+mod nemoh;
 mod newman;
 mod oscillator;
 mod quirks;

@@ -462,15 +462,30 @@ impl HydroDatabase {
                 message: "no WAMIT file found (.1, .hst, .8, .9, .12d, .11d, .10d)".into(),
             });
         }
-        let qtf = qtf.as_ref().map(qtf_data).transpose()?;
+        let mut bidirectional_from = if bidirectional_drift.is_some() {
+            drift_from
+        } else {
+            "none"
+        };
+        if bidirectional_drift.is_none() {
+            if let Some(q) = &qtf {
+                bidirectional_drift = q.to_bidirectional_table(SLOW_DOFS)?;
+                if bidirectional_drift.is_some() {
+                    bidirectional_from = "the QTF's heading pairs' diagonals";
+                }
+            }
+        }
+        let qtf = qtf.as_ref().map(|q| qtf_data(q, SLOW_DOFS)).transpose()?;
         let source = format!(
-            "WAMIT output {} ({}); ULEN = {} m, rho = {} kg/m^3, g = {} m/s^2; drift from {}",
+            "WAMIT output {} ({}); ULEN = {} m, rho = {} kg/m^3, g = {} m/s^2; drift from {}; \
+             bi-directional drift from {}",
             root.display(),
             used.join(", "),
             options.ulen,
             options.rho,
             options.gravity,
-            drift_from
+            drift_from,
+            bidirectional_from
         );
         let name = root.file_name().map_or_else(
             || root.display().to_string(),
@@ -570,7 +585,7 @@ fn degrees(headings: &[f64]) -> String {
 }
 
 /// Every node of a drift table, heading-major.
-fn drift_points(table: &DriftTable) -> Vec<DriftPoint> {
+pub(super) fn drift_points(table: &DriftTable) -> Vec<DriftPoint> {
     let mut points = Vec::new();
     for (ih, &heading) in table.headings().iter().enumerate() {
         for (iw, &omega) in table.omegas().iter().enumerate() {
@@ -588,9 +603,10 @@ fn drift_points(table: &DriftTable) -> Vec<DriftPoint> {
     points
 }
 
-/// The surge, sway and yaw blocks of a QTF: the uni-directional ones (which must have
-/// all three DOFs at every heading), then the bi-directional ones.
-fn qtf_data(qtf: &DifferenceQtf) -> Result<QtfData> {
+/// The surge, sway and yaw blocks of a QTF (`dofs`: the file's numbers of the three): the
+/// uni-directional ones (which must have all three DOFs at every heading), then the
+/// bi-directional ones.
+pub(super) fn qtf_data(qtf: &DifferenceQtf, dofs: [usize; 3]) -> Result<QtfData> {
     let n = qtf.omegas().len();
     let matrix = |dof: Dof, headings: (f64, f64), m: &[Complex64]| {
         let part = |f: fn(&Complex64) -> f64| -> Vec<Vec<f64>> {
@@ -606,7 +622,7 @@ fn qtf_data(qtf: &DifferenceQtf) -> Result<QtfData> {
     };
     let mut blocks = Vec::new();
     for heading in qtf.headings() {
-        for (dof, wamit_dof) in Dof::ALL.into_iter().zip(SLOW_DOFS) {
+        for (dof, wamit_dof) in Dof::ALL.into_iter().zip(dofs) {
             blocks.push(matrix(
                 dof,
                 (heading, heading),
@@ -615,7 +631,7 @@ fn qtf_data(qtf: &DifferenceQtf) -> Result<QtfData> {
         }
     }
     for block in qtf.blocks().iter().filter(|b| b.headings.0 != b.headings.1) {
-        if let Some(k) = SLOW_DOFS.iter().position(|&d| d == block.dof) {
+        if let Some(k) = dofs.iter().position(|&d| d == block.dof) {
             blocks.push(matrix(Dof::ALL[k], block.headings, &block.values));
         }
     }

@@ -1,7 +1,8 @@
 //! The hydrodynamic file formats: the native database ([`database`]), WAMIT output
-//! ([`wamit`]) and CSV drift tables ([`drift_csv`]). Each reader names the file and line of
+//! ([`wamit`]), NEMOH v3 results ([`nemoh`]) and CSV drift tables ([`drift_csv`]). Each reader names the file and line of
 //! what it refuses; the data it gives are SI, radians, and the crate's frames.
 
 pub mod database;
 pub mod drift_csv;
+pub mod nemoh;
 pub mod wamit;

@@ -36,6 +36,7 @@ mod qtf;
 pub use added_mass::{read_added_mass_damping, AddedMassDamping};
 pub use hydrostatics::{read_hydrostatics, Hydrostatics};
 pub use mean_drift::{read_mean_drift, DriftBlock, MeanDrift, PairBlock};
+pub(in crate::hydro::io) use qtf::{assemble_qtf, QtfEntry};
 pub use qtf::{read_difference_qtf, DifferenceQtf, QtfBlock};
 
 use crate::error::{require_positive, Error, Result};
@@ -138,21 +139,21 @@ fn grid_index(grid: &[f64], value: f64, same: fn(f64, f64) -> bool) -> Option<us
 }
 
 /// One numeric line of a file: its 1-based line number and its numbers.
-struct Record {
-    line: usize,
-    values: Vec<f64>,
+pub(in crate::hydro::io) struct Record {
+    pub line: usize,
+    pub values: Vec<f64>,
 }
 
-/// The numeric lines of a WAMIT file.
-struct NumericFile {
-    path: String,
-    records: Vec<Record>,
+/// The numeric lines of a WAMIT file (or of another code's file of the same shape).
+pub(in crate::hydro::io) struct NumericFile {
+    pub path: String,
+    pub records: Vec<Record>,
 }
 
 impl NumericFile {
     /// Reads `path`: skips blank lines and a first line that does not start with a number;
     /// every other line must hold one of `counts` numbers, laid out as `layout` says.
-    fn read(path: &Path, counts: &[usize], layout: &str) -> Result<Self> {
+    pub fn read(path: &Path, counts: &[usize], layout: &str) -> Result<Self> {
         let name = path.display().to_string();
         let text = crate::files::read_text(path)?;
         let mut records = Vec::new();
@@ -243,7 +244,7 @@ impl NumericFile {
     /// e^{-i omega t} (a converter that flipped one pair and not the other) and is refused:
     /// which of the two is meant cannot be told from the line. abs(F) = phase = 0 with a
     /// non-zero Re, Im is taken as a file that leaves the polar form out.
-    fn check_polar(&self, record: &Record, first: usize) -> Result<()> {
+    pub fn check_polar(&self, record: &Record, first: usize) -> Result<()> {
         let v = &record.values;
         let (modulus, phase) = (v[first], v[first + 1]);
         let cartesian = rustfft::num_complex::Complex64::new(v[first + 2], v[first + 3]);

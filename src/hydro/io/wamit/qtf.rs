@@ -5,6 +5,8 @@ use super::{
     WamitOptions,
 };
 use crate::error::{Error, Result};
+use crate::hydro::bidirectional::BidirectionalTable;
+use crate::hydro::reference_point::ReferencePoint;
 use crate::hydro::{DriftRow, DriftTable};
 use rustfft::num_complex::Complex64;
 use std::collections::HashMap;
@@ -64,32 +66,73 @@ struct Entry {
 pub fn read_difference_qtf(path: &Path, options: &WamitOptions) -> Result<DifferenceQtf> {
     options.validate()?;
     let file = NumericFile::read(path, &[9], "PER1 PER2 beta1 beta2 I |F| phase Re Im")?;
-    let mut omegas = Vec::with_capacity(2 * file.records.len());
-    let mut headings = Vec::new();
-    for r in &file.records {
-        omegas.push(file.frequency(r, 0, "PER1")?);
-        omegas.push(file.frequency(r, 1, "PER2")?);
-        headings.push(r.values[2].to_radians());
-        headings.push(r.values[3].to_radians());
-    }
-    let omegas = unique_sorted(omegas, same_frequency);
-    let headings = unique_sorted(headings, same_heading);
-    let frequency =
-        |v: f64| grid_index(&omegas, super::omega_of_period(v), same_frequency).expect("collected");
-    let heading = |v: f64| grid_index(&headings, v.to_radians(), same_heading).expect("collected");
     let mut entries = Vec::with_capacity(file.records.len());
     for r in &file.records {
+        let omegas = (file.frequency(r, 0, "PER1")?, file.frequency(r, 1, "PER2")?);
         let dof = file.dof(r, 4, "I")?;
         file.check_polar(r, 5)?;
         let v = &r.values;
-        entries.push(Entry {
+        entries.push(QtfEntry {
             line: r.line,
             dof,
-            heading_index: (heading(v[2]), heading(v[3])),
-            omega_index: (frequency(v[0]), frequency(v[1])),
+            omegas,
+            headings: (v[2].to_radians(), v[3].to_radians()),
             value: Complex64::new(v[7], v[8]) * options.force_scale(dof),
         });
     }
+    assemble_qtf(file.path, entries)
+}
+
+/// One value of a QTF file in the crate's units and convention: T(w_i, w_j; beta1, beta2)
+/// of a DOF, per unit amplitude squared, and the 1-based line it came from.
+pub(in crate::hydro::io) struct QtfEntry {
+    pub line: usize,
+    pub dof: usize,
+    /// (w_i, w_j), rad/s.
+    pub omegas: (f64, f64),
+    /// (beta1, beta2), rad.
+    pub headings: (f64, f64),
+    pub value: Complex64,
+}
+
+/// The QTF of a file's entries (WAMIT's, NEMOH's): the frequency and heading grids (values
+/// within the match tolerances are one node), entries given twice refused naming both
+/// lines, the Hermitian fill, the sparse fill and the checks of [`read_difference_qtf`].
+pub(in crate::hydro::io) fn assemble_qtf(
+    path: String,
+    lines: Vec<QtfEntry>,
+) -> Result<DifferenceQtf> {
+    let omegas = unique_sorted(
+        lines
+            .iter()
+            .flat_map(|e| [e.omegas.0, e.omegas.1])
+            .collect(),
+        same_frequency,
+    );
+    let headings = unique_sorted(
+        lines
+            .iter()
+            .flat_map(|e| [e.headings.0, e.headings.1])
+            .collect(),
+        same_heading,
+    );
+    let frequency = |v: f64| grid_index(&omegas, v, same_frequency).expect("collected");
+    let heading = |v: f64| grid_index(&headings, v, same_heading).expect("collected");
+    let entries: Vec<Entry> = lines
+        .iter()
+        .map(|e| Entry {
+            line: e.line,
+            dof: e.dof,
+            heading_index: (heading(e.headings.0), heading(e.headings.1)),
+            omega_index: (frequency(e.omegas.0), frequency(e.omegas.1)),
+            value: e.value,
+        })
+        .collect();
+    let error = |line: usize, message: String| Error::Parse {
+        path: path.clone(),
+        line: Some(line),
+        message,
+    };
     let n = omegas.len();
     // Block key (dof, beta1 index, beta2 index) -> (values, line of each value; 0 = filled).
     type Slots = (Vec<Complex64>, Vec<Option<usize>>);
@@ -101,7 +144,7 @@ pub fn read_difference_qtf(path: &Path, options: &WamitOptions) -> Result<Differ
             .or_insert_with(|| (vec![Complex64::new(0.0, 0.0); n * n], vec![None; n * n]));
         let (i, j) = e.omega_index;
         if let Some(first) = lines[i * n + j].replace(e.line) {
-            return Err(file.error(
+            return Err(error(
                 e.line,
                 format!(
                     "DOF {} at headings ({:.3}, {:.3}) deg and frequencies ({:.6}, {:.6}) rad/s \
@@ -139,7 +182,7 @@ pub fn read_difference_qtf(path: &Path, options: &WamitOptions) -> Result<Differ
         let unfilled = fill_along_difference_lines(&omegas, &mut values, &given);
         if !unfilled.is_empty() {
             return Err(Error::Parse {
-                path: file.path.clone(),
+                path: path.clone(),
                 line: None,
                 message: format!(
                     "DOF {} at headings ({:.3}, {:.3}) deg: {} of {} frequency pairs missing \
@@ -162,10 +205,10 @@ pub fn read_difference_qtf(path: &Path, options: &WamitOptions) -> Result<Differ
         });
     }
     if out.iter().any(|b| b.headings.0 != b.headings.1) {
-        require_every_pair(&file.path, &headings, &out)?;
+        require_every_pair(&path, &headings, &out)?;
     }
     Ok(DifferenceQtf {
-        path: file.path,
+        path,
         omegas,
         blocks: out,
         filled_by_symmetry,
@@ -263,6 +306,94 @@ impl DifferenceQtf {
             }
         }
         DriftTable::from_rows(&rows)
+    }
+
+    /// Moves the yaw moments of every heading pair from the vertical axis through `point`
+    /// to the body origin: T_yaw += x_r T_sway - y_r T_surge ([`ReferencePoint`]), with
+    /// `dofs` the file's DOF numbers of surge, sway and yaw; the error lists the missing
+    /// blocks a moved yaw block needs.
+    pub fn move_yaw_moment(&mut self, dofs: [usize; 3], point: ReferencePoint) -> Result<()> {
+        let pairs: Vec<(f64, f64)> = self
+            .blocks
+            .iter()
+            .filter(|b| b.dof == dofs[2])
+            .map(|b| b.headings)
+            .collect();
+        for headings in pairs {
+            let force = |d: usize| -> Result<Vec<Complex64>> {
+                self.block(d, headings)
+                    .map(|b| b.values.clone())
+                    .ok_or_else(|| Error::Parse {
+                        path: self.path.clone(),
+                        line: None,
+                        message: format!(
+                            "moving the yaw moment to the origin needs DOF {d} at headings \
+                         ({:.3}, {:.3}) deg, which the file lacks",
+                            headings.0.to_degrees(),
+                            headings.1.to_degrees()
+                        ),
+                    })
+            };
+            let (surge, sway) = (force(dofs[0])?, force(dofs[1])?);
+            let yaw = self
+                .blocks
+                .iter_mut()
+                .find(|b| b.dof == dofs[2] && b.headings == headings)
+                .expect("listed");
+            for ((m, fx), fy) in yaw.values.iter_mut().zip(&surge).zip(&sway) {
+                *m = point.complex_force_to_origin([*fx, *fy, *m])[2];
+            }
+        }
+        Ok(())
+    }
+
+    /// The bi-directional mean drift T(w; beta_p, beta_q) = the diagonal T(w, w; beta_p,
+    /// beta_q) of every heading pair, for `dofs` (the file's numbers of surge, sway, yaw),
+    /// or `None` when the QTF has no bi-directional blocks (the reader made sure that a
+    /// bi-directional file has every pair).
+    pub fn to_bidirectional_table(&self, dofs: [usize; 3]) -> Result<Option<BidirectionalTable>> {
+        if self.blocks.iter().all(|b| b.headings.0 == b.headings.1) {
+            return Ok(None);
+        }
+        let headings = unique_sorted(
+            self.blocks.iter().map(|b| b.headings.0).collect(),
+            same_heading,
+        );
+        let (nw, nh) = (self.omegas.len(), headings.len());
+        let mut re = vec![vec![vec![[0.0; 3]; nh]; nh]; nw];
+        let mut im = re.clone();
+        for (p, &bp) in headings.iter().enumerate() {
+            for (q, &bq) in headings.iter().enumerate() {
+                for (i, &dof) in dofs.iter().enumerate() {
+                    let block = self.block(dof, (bp, bq)).ok_or_else(|| Error::Parse {
+                        path: self.path.clone(),
+                        line: None,
+                        message: format!(
+                            "no DOF {dof} at headings ({:.3}, {:.3}) deg for the bi-directional drift",
+                            bp.to_degrees(),
+                            bq.to_degrees()
+                        ),
+                    })?;
+                    for n in 0..nw {
+                        let v = block.values[n * nw + n];
+                        re[n][p][q][i] = v.re;
+                        im[n][p][q][i] = v.im;
+                    }
+                }
+            }
+        }
+        let table = BidirectionalTable {
+            omegas: self.omegas.clone(),
+            headings,
+            re,
+            im,
+        };
+        table.validate().map_err(|e| Error::Parse {
+            path: self.path.clone(),
+            line: None,
+            message: e.to_string(),
+        })?;
+        Ok(Some(table))
     }
 
     fn block(&self, dof: usize, headings: (f64, f64)) -> Option<&QtfBlock> {
