@@ -139,10 +139,14 @@ fn simulate(args: SimulateArgs) -> Result<(), String> {
     let mut sim = Simulation::new(config).map_err(|e| e.to_string())?;
     for r in sim.qtf_ranks() {
         println!(
-            "full QTF, {:?} at {:.1} deg: rank {} of {} (discarded {:.1e} of the eigenvalues' \
-             absolute sum)",
+            "full QTF, {:?} {}: rank {} of {} (discarded {:.1e} of the eigenvalues' absolute \
+             sum)",
             r.dof,
-            r.heading.to_degrees(),
+            if r.directions > 1 {
+                format!("across {} directions with their cross terms", r.directions)
+            } else {
+                format!("at {:.1} deg", r.heading.to_degrees())
+            },
             r.rank,
             r.size,
             r.discarded

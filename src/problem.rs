@@ -19,9 +19,7 @@ use crate::hydro::default_platform;
 use crate::hydro::io::{database::HydroDatabase, drift_csv};
 use crate::hydro::qtf::{check_tolerance, Qtf};
 use crate::hydro::DriftTable;
-use crate::model::{
-    Dof, DragModel, DriftDamping, Environment, Interaction, SecondOrder, HEADING_MATCH_TOLERANCE,
-};
+use crate::model::{Dof, DragModel, DriftDamping, Environment, Interaction, SecondOrder};
 use crate::scenario::default::default_scenario;
 use crate::scenario::{file, limits, ColumnGrid, DriftSource, Platform, Scenario};
 use serde::Serialize;
@@ -444,8 +442,10 @@ impl Problem {
         Ok(())
     }
 
-    /// The full QTF, when selected: present, with surge, sway and yaw at every wave
-    /// direction's heading (within 0.01 deg; no interpolation in heading), covering the band.
+    /// The full QTF, when selected: present, covering the band, and its headings covering
+    /// every wave direction (bilinear interpolation in the heading pair between data
+    /// headings, never extrapolated; with the cross terms from the QTF, every pair of
+    /// directions).
     fn validate_qtf(&self) -> Result<()> {
         if let Some(q) = &self.hydro.qtf {
             q.validate()?;
@@ -459,43 +459,54 @@ impl Problem {
                 "model.second_order",
                 "full-qtf",
                 "needs a QTF: use [drift] source = \"database\" with a database that holds one \
-                 (`slowdrift hydro wamit` with a .12d, .11d or .10d file)",
+                 (`slowdrift hydro wamit` with a .12d, .11d or .10d file, `slowdrift hydro \
+                 nemoh`)",
             ));
         };
-        let missing: Vec<String> = self
-            .sea
-            .directions()
-            .iter()
-            .filter(|d| {
-                Dof::ALL
-                    .iter()
-                    .any(|&dof| q.block(dof, d.heading, HEADING_MATCH_TOLERANCE).is_none())
-            })
-            .map(|d| format!("{:.3}", d.heading.to_degrees()))
-            .collect();
-        if !missing.is_empty() {
-            let have: Vec<String> = q
-                .headings()
+        let headings: Vec<f64> = self.sea.directions().iter().map(|d| d.heading).collect();
+        let pairs: Vec<(f64, f64)> = if self.cross_terms_from_qtf() {
+            headings
                 .iter()
-                .map(|h| format!("{:.3}", h.to_degrees()))
-                .collect();
-            return Err(Error::invalid(
-                "model.second_order",
-                "full-qtf",
-                format!(
-                    "the QTF has no surge, sway and yaw blocks at the wave heading(s) {} deg \
-                     (it has {} deg); the full QTF is not interpolated in heading, so every \
-                     direction of the sea needs its own QTF heading",
-                    missing.join(", "),
-                    have.join(", ")
-                ),
-            ));
+                .flat_map(|&a| headings.iter().map(move |&b| (a, b)))
+                .collect()
+        } else {
+            headings.iter().map(|&a| (a, a)).collect()
+        };
+        for pair in pairs {
+            for dof in Dof::ALL {
+                q.interpolated(dof, pair).map_err(|e| {
+                    Error::invalid(
+                        "model.second_order",
+                        "full-qtf",
+                        format!(
+                            "the QTF does not serve the wave direction(s) ({:.3}, {:.3}) deg: {e}",
+                            pair.0.to_degrees(),
+                            pair.1.to_degrees()
+                        ),
+                    )
+                })?;
+            }
         }
         crate::hydro::qtf::check_covers(&q.omegas, self.band())
     }
 
+    /// Whether the cross terms between the directions of a spread sea come from the
+    /// bi-directional QTF: the full QTF is selected, the QTF has bi-directional blocks, the
+    /// sea has several directions and the interaction is bi-directional (`auto` resolves to
+    /// it with such a QTF).
+    pub fn cross_terms_from_qtf(&self) -> bool {
+        self.model.second_order == SecondOrder::FullQtf
+            && self.sea.directions().len() > 1
+            && self
+                .hydro
+                .qtf
+                .as_ref()
+                .is_some_and(|q| q.is_bidirectional())
+            && self.interaction() == Interaction::Bidirectional
+    }
+
     /// Yaw following: at least two headings, a finite increasing range that holds the
-    /// initial yaw, Newman's approximation (the full QTF is not interpolated in heading).
+    /// initial yaw, Newman's approximation (the yaw-following records are Newman's).
     fn validate_yaw_following(&self) -> Result<()> {
         let Some(yaw) = &self.model.yaw_following else {
             return Ok(());
@@ -511,7 +522,8 @@ impl Problem {
             return Err(Error::invalid(
                 "model.yaw_following",
                 format!("{} headings", yaw.headings),
-                "needs second_order = \"newman\": the full QTF is not interpolated in heading",
+                "needs second_order = \"newman\": the yaw-following records are not built \
+                 from the full QTF yet",
             ));
         }
         if let Some((min, max)) = yaw.range {
@@ -545,8 +557,15 @@ impl Problem {
         if let Some(BidirectionalSource::Table(table)) = &self.hydro.bidirectional {
             table.validate()?;
         }
+        let qtf_has_it = self.model.second_order == SecondOrder::FullQtf
+            && self
+                .hydro
+                .qtf
+                .as_ref()
+                .is_some_and(|q| q.is_bidirectional());
         if self.model.interaction == Interaction::Bidirectional
             && self.hydro.bidirectional.is_none()
+            && !qtf_has_it
         {
             return Err(Error::invalid(
                 "model.interaction",
@@ -560,10 +579,19 @@ impl Problem {
         Ok(())
     }
 
-    /// The interaction actually used ([`Interaction::Auto`] resolved against the data).
+    /// The interaction actually used ([`Interaction::Auto`] resolved against the data:
+    /// bi-directional when the drift source has the bi-directional drift, or under the full
+    /// QTF a bi-directional QTF).
     pub fn interaction(&self) -> Interaction {
+        let qtf_has_it = self.model.second_order == SecondOrder::FullQtf
+            && self
+                .hydro
+                .qtf
+                .as_ref()
+                .is_some_and(|q| q.is_bidirectional());
         match (self.model.interaction, &self.hydro.bidirectional) {
             (Interaction::Auto, Some(_)) => Interaction::Bidirectional,
+            (Interaction::Auto, None) if qtf_has_it => Interaction::Bidirectional,
             (Interaction::Auto, None) => Interaction::MeanDirection,
             (chosen, _) => chosen,
         }

@@ -4,8 +4,9 @@
 //! crate's convention e^{i omega t}). Surge and sway in N/m^2, yaw in N m/m^2, body frame.
 //! The database stores it as real and imaginary parts (`hydro::io::database`).
 
+use super::heading_grid::heading_bracket;
 use crate::error::{Error, Result};
-use crate::model::{Dof, FREQUENCY_MATCH_TOLERANCE};
+use crate::model::{Dof, FREQUENCY_MATCH_TOLERANCE, HEADING_MATCH_TOLERANCE};
 use rustfft::num_complex::Complex64;
 use serde::Serialize;
 use std::f64::consts::PI;
@@ -79,6 +80,102 @@ impl Qtf {
     /// Whether the QTF has bi-directional blocks (beta1 != beta2).
     pub fn is_bidirectional(&self) -> bool {
         self.blocks.iter().any(|b| !b.is_unidirectional())
+    }
+
+    /// T(w_i, w_j; beta1, beta2) of `dof` on the QTF's own grid (n x n, row-major) for
+    /// headings that need not be data headings: bilinear in the heading pair between the
+    /// data headings (those of the uni-directional blocks, wrapping around only when they
+    /// cover the circle), never extrapolated:
+    ///   T(b1, b2) = sum_{p, q} w_p(b1) w_q(b2) T(H_p, H_q),
+    /// w the linear weights of the two data headings around each. With uni-directional data
+    /// only, b1 = b2 is interpolated along the diagonal, (1 - f) T(H_p, H_p) + f T(H_p+1,
+    /// H_p+1), and b1 != b2 is refused; bilinear weights are the same for (b1, b2) and
+    /// (b2, b1), so a Hermitian QTF stays Hermitian in (w, beta). A heading within
+    /// [`HEADING_MATCH_TOLERANCE`] of a data heading is that heading (its block, bit for
+    /// bit). Errors name the heading and what the data cover.
+    pub fn interpolated(&self, dof: Dof, headings: (f64, f64)) -> Result<Vec<Complex64>> {
+        let nodes = self.sorted_headings();
+        let weights = |b: f64| -> Result<Vec<(f64, f64)>> {
+            if let Some(&h) = nodes
+                .iter()
+                .find(|&&h| apart(h, b).abs() <= HEADING_MATCH_TOLERANCE)
+            {
+                return Ok(vec![(h, 1.0)]);
+            }
+            let bracket = heading_bracket(&nodes, b).ok_or_else(|| {
+                Error::invalid(
+                    "qtf.headings",
+                    format!("{:.3} deg", b.to_degrees()),
+                    format!(
+                        "a wave direction outside the QTF's headings {} deg (nothing is \
+                         extrapolated in heading)",
+                        nodes
+                            .iter()
+                            .map(|h| format!("{:.3}", h.to_degrees()))
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    ),
+                )
+            })?;
+            Ok([
+                (nodes[bracket.lo], 1.0 - bracket.frac),
+                (nodes[bracket.hi], bracket.frac),
+            ]
+            .into_iter()
+            .filter(|(_, w)| *w != 0.0)
+            .collect())
+        };
+        let (first, second) = (weights(headings.0)?, weights(headings.1)?);
+        let corners: Vec<((f64, f64), f64)> = if self.is_bidirectional() {
+            first
+                .iter()
+                .flat_map(|&(p, wp)| second.iter().map(move |&(q, wq)| ((p, q), wp * wq)))
+                .collect()
+        } else if first == second {
+            first.iter().map(|&(p, w)| ((p, p), w)).collect()
+        } else {
+            return Err(Error::invalid(
+                "qtf.blocks",
+                format!(
+                    "({:.3}, {:.3}) deg",
+                    headings.0.to_degrees(),
+                    headings.1.to_degrees()
+                ),
+                "a pair of different headings needs a bi-directional QTF (blocks with \
+                 second_heading); this QTF is uni-directional",
+            ));
+        };
+        let n = self.omegas.len();
+        let mut out = vec![Complex64::default(); n * n];
+        for ((p, q), w) in corners {
+            let block = self.pair_block(dof, (p, q), 1e-12).ok_or_else(|| {
+                Error::invalid(
+                    "qtf.blocks",
+                    format!(
+                        "{dof:?} at ({:.3}, {:.3}) deg",
+                        p.to_degrees(),
+                        q.to_degrees()
+                    ),
+                    "missing: interpolating in heading needs every pair of the data headings \
+                     around the wave directions",
+                )
+            })?;
+            if w == 1.0 {
+                out.copy_from_slice(&block.values);
+            } else {
+                for (o, v) in out.iter_mut().zip(&block.values) {
+                    *o += w * v;
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    /// The distinct headings of the uni-directional blocks, rad, increasing.
+    fn sorted_headings(&self) -> Vec<f64> {
+        let mut headings = self.headings();
+        headings.sort_by(f64::total_cmp);
+        headings
     }
 
     /// Checks the frequencies (positive, strictly increasing) and every block's size and

@@ -173,12 +173,19 @@ impl MemoryEstimate {
             if let Some(qtf) = &problem.hydro.qtf {
                 let n = qtf.omegas.len() as f64;
                 // Per direction and DOF: at most n factors on the grid, and the
-                // factorisation's matrices.
+                // factorisation's matrices; jointly over the directions (the cross terms from
+                // the bi-directional QTF): at most n d factors of d g values per DOF, and
+                // matrices of (n d)^2.
+                let bytes = if problem.cross_terms_from_qtf() {
+                    3.0 * ((n * d) * C64 * d * g + 4.0 * (n * d) * (n * d) * C64)
+                } else {
+                    d * 3.0 * (n * C64 * g + 4.0 * n * n * C64)
+                };
                 plan.push(term(
                     "model.second_order",
                     "full-qtf".to_string(),
                     format!("the full QTF's factors ({n} frequencies) on the grid"),
-                    d * 3.0 * (n * C64 * g + 4.0 * n * n * C64),
+                    bytes,
                 ));
             }
         }

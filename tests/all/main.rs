@@ -19,6 +19,7 @@ mod fmi2_misuse;
 mod fmi2_state;
 mod fmi2_symbols;
 mod full_qtf;
+mod full_qtf_directions;
 mod montecarlo;
 mod nemoh;
 mod newman;

@@ -268,6 +268,24 @@ fn a_qtf_with_several_heading_pairs_becomes_per_pair_blocks() {
         "{:?}",
         import.files
     );
+    // Without a .8 or .9 the bi-directional drift is the QTF's diagonal of every pair.
+    let table = import
+        .database
+        .bidirectional_drift
+        .as_ref()
+        .expect("from the QTF");
+    assert_eq!(table.headings.len(), 3);
+    for (n, &w) in table.omegas.iter().enumerate() {
+        for (p, &bp) in table.headings.iter().enumerate() {
+            for (q, &bq) in table.headings.iter().enumerate() {
+                for (i, dof) in [1, 2, 6].into_iter().enumerate() {
+                    let expected = closed_form_qtf(dof, w, w, bp, bq) * RHO * G;
+                    let got = Complex64::new(table.re[n][p][q][i], table.im[n][p][q][i]);
+                    assert!((got - expected).norm() <= 1e-9 * (1.0 + expected.norm()));
+                }
+            }
+        }
+    }
     let stored = import.database.qtf.as_ref().unwrap();
     // 3 uni-directional headings and 6 ordered pairs, 3 DOFs each.
     assert_eq!(stored.blocks.len(), 3 * 9);
