@@ -3,10 +3,14 @@
 //! start values and the variable table), so the Rust code and the XML cannot drift apart.
 //!
 //! The build fails with a message naming the offending variable on: duplicate names,
-//! duplicate value references within a base type (Integer and Enumeration share one
-//! space), illegal causality/variability/initial combinations, missing or forbidden start
-//! values, missing descriptions, enumeration start values outside the declared items,
-//! and a ModelStructure whose Outputs or InitialUnknowns do not match the variables.
+//! duplicate value references within a base type, illegal causality/variability/initial
+//! combinations, missing or forbidden start values, start values outside min/max, missing
+//! descriptions, and a ModelStructure whose Outputs or InitialUnknowns do not match the
+//! variables. The variables must be master-neutral (docs/fmu.md, "Master-neutral variables"):
+//! no Enumeration (libcosim and ecos register only Real, Integer, Boolean and String: a mode
+//! is an Integer with min, max and its codes in the description), and every Real carries
+//! its own `unit`, one of the UnitDefinitions and its declaredType's (OMSimulator does not
+//! inherit a unit from a declaredType).
 
 use quick_xml::events::{BytesStart, Event};
 use quick_xml::{Reader, XmlVersion};
@@ -35,10 +39,14 @@ struct Var {
     variability: String,
     initial: Option<String>,
     description: Option<String>,
-    /// Real, Integer, Boolean, String or Enumeration.
+    /// Real, Integer, Boolean, String (or Enumeration, which the checks refuse).
     ty: String,
     declared_type: Option<String>,
     start: Option<String>,
+    /// `unit`, `min` and `max` of the type element.
+    unit: Option<String>,
+    min: Option<String>,
+    max: Option<String>,
     line: usize,
 }
 
@@ -55,8 +63,10 @@ struct Model {
     guid: String,
     model_identifier: Option<String>,
     vars: Vec<Var>,
-    /// Enumeration type name -> item value -> item name.
-    enum_items: BTreeMap<String, BTreeMap<i64, String>>,
+    /// `UnitDefinitions/Unit` names.
+    units: BTreeSet<String>,
+    /// `SimpleType` name -> the `unit` of its Real element (None: a type without one).
+    type_units: BTreeMap<String, Option<String>>,
     outputs: Vec<Unknown>,
     initial_unknowns: Vec<Unknown>,
     saw_model_structure: bool,
@@ -122,7 +132,7 @@ fn parse(xml: &str) -> Result<Model, String> {
     let mut reader = Reader::from_str(xml);
     let mut model = Model::default();
     let mut stack: Vec<String> = Vec::new();
-    let mut current_enum: Option<String> = None;
+    let mut current_type: Option<String> = None;
     loop {
         let pos = reader.buffer_position() as usize;
         let line = 1 + xml[..pos.min(xml.len())].matches('\n').count();
@@ -134,7 +144,7 @@ fn parse(xml: &str) -> Result<Model, String> {
             Event::Empty(e) => (e, true),
             Event::End(_) => {
                 if stack.pop().as_deref() == Some("SimpleType") {
-                    current_enum = None;
+                    current_type = None;
                 }
                 continue;
             }
@@ -152,26 +162,24 @@ fn parse(xml: &str) -> Result<Model, String> {
             (Some("fmiModelDescription"), "CoSimulation") => {
                 model.model_identifier = a.get("modelIdentifier").cloned();
             }
-            (Some("TypeDefinitions"), "SimpleType") => {
-                current_enum = a.get("name").cloned();
+            (Some("UnitDefinitions"), "Unit") => {
+                let name = a
+                    .get("name")
+                    .ok_or(format!("line {line}: Unit without name"))?;
+                if !model.units.insert(name.clone()) {
+                    return Err(format!("line {line}: unit {name} defined twice"));
+                }
             }
-            (Some("Enumeration"), "Item") => {
-                if let Some(t) = &current_enum {
-                    let value = a
-                        .get("value")
-                        .ok_or(format!("line {line}: Item without value"))?
-                        .parse::<i64>()
-                        .map_err(|err| format!("line {line}: Item value: {err}"))?;
-                    let name = a
-                        .get("name")
-                        .ok_or(format!("line {line}: Item without name"))?
-                        .clone();
-                    let items = model.enum_items.entry(t.clone()).or_default();
-                    if items.insert(value, name).is_some() {
-                        return Err(format!(
-                            "line {line}: {t}: item value {value} appears twice"
-                        ));
-                    }
+            (Some("TypeDefinitions"), "SimpleType") => {
+                current_type = a.get("name").cloned();
+            }
+            (Some("SimpleType"), ty) => {
+                let name = current_type
+                    .clone()
+                    .ok_or(format!("line {line}: SimpleType without name"))?;
+                let unit = a.get("unit").cloned().filter(|_| ty == "Real");
+                if model.type_units.insert(name.clone(), unit).is_some() {
+                    return Err(format!("line {line}: type {name} defined twice"));
                 }
             }
             (Some("ModelVariables"), "ScalarVariable") => {
@@ -207,6 +215,9 @@ fn parse(xml: &str) -> Result<Model, String> {
                 var.ty = ty.to_string();
                 var.declared_type = a.get("declaredType").cloned();
                 var.start = a.get("start").cloned();
+                var.unit = a.get("unit").cloned();
+                var.min = a.get("min").cloned();
+                var.max = a.get("max").cloned();
             }
             (Some("LogCategories"), "Category") => {
                 let name = a
@@ -309,7 +320,7 @@ fn check(m: &Model) -> Vec<String> {
                 ));
             }
         }
-        let space = vr_space(&v.ty);
+        let space = v.ty.as_str();
         if let Some(other) = vrs.insert((space, v.vr), v.name.as_str()) {
             errors.push(format!(
                 "{at}: valueReference {} of type {space} already used by {other}",
@@ -328,21 +339,17 @@ fn check(m: &Model) -> Vec<String> {
                 .into_iter()
                 .map(|e| format!("{at}: {e}")),
         );
+        errors.extend(
+            check_master_neutral(m, v)
+                .into_iter()
+                .map(|e| format!("{at}: {e}")),
+        );
         if let Some(start) = &v.start {
             if let Err(e) = start_literal(&v.ty, start) {
                 errors.push(format!("{at}: start {start:?}: {e}"));
             }
-            if v.ty == "Enumeration" {
-                let items = v.declared_type.as_ref().and_then(|t| m.enum_items.get(t));
-                match (items, start.parse::<i64>()) {
-                    (Some(items), Ok(s)) if !items.contains_key(&s) => {
-                        errors.push(format!("{at}: start {s} is not an item of its enumeration"))
-                    }
-                    (None, _) => errors.push(format!("{at}: declaredType is not an enumeration")),
-                    _ => {}
-                }
-            }
         }
+        errors.extend(check_bounds(v).into_iter().map(|e| format!("{at}: {e}")));
     }
 
     if !m.saw_model_structure {
@@ -398,6 +405,66 @@ fn check(m: &Model) -> Vec<String> {
                     }
                 }
             }
+        }
+    }
+    errors
+}
+
+/// What every master reads alike: no Enumeration (libcosim and ecos skip them), and a
+/// Real's own `unit`, declared and equal to its declaredType's (OMSimulator reads only the
+/// variable's own attribute).
+fn check_master_neutral(m: &Model, v: &Var) -> Vec<String> {
+    let mut errors = Vec::new();
+    match v.ty.as_str() {
+        "Enumeration" => errors.push(
+            "is an Enumeration, which libcosim and ecos do not register: make it an Integer \
+             with min, max and its codes in the description"
+                .into(),
+        ),
+        "Real" => match &v.unit {
+            None => errors.push(
+                "a Real needs its own unit attribute (OMSimulator does not inherit it from \
+                 a declaredType)"
+                    .into(),
+            ),
+            Some(unit) => {
+                if !m.units.contains(unit) {
+                    errors.push(format!("unit {unit:?} is not in UnitDefinitions"));
+                }
+                if let Some(t) = &v.declared_type {
+                    match m.type_units.get(t) {
+                        None => errors.push(format!("declaredType {t:?} is not defined")),
+                        Some(Some(declared)) if declared != unit => errors.push(format!(
+                            "unit {unit:?} differs from its declaredType {t}'s {declared:?}"
+                        )),
+                        Some(_) => {}
+                    }
+                }
+            }
+        },
+        _ => {}
+    }
+    errors
+}
+
+/// `min <= start <= max` where given (Real and Integer).
+fn check_bounds(v: &Var) -> Vec<String> {
+    let number = |s: &Option<String>| s.as_ref().and_then(|s| s.trim().parse::<f64>().ok());
+    let (min, max, start) = (number(&v.min), number(&v.max), number(&v.start));
+    let mut errors = Vec::new();
+    for (name, given, parsed) in [("min", &v.min, min), ("max", &v.max, max)] {
+        if given.is_some() && parsed.is_none() {
+            errors.push(format!("{name} {given:?} is not a number"));
+        }
+    }
+    if let (Some(lo), Some(hi)) = (min, max) {
+        if lo > hi {
+            errors.push(format!("min {lo} is above max {hi}"));
+        }
+    }
+    if let Some(x) = start {
+        if min.is_some_and(|lo| x < lo) || max.is_some_and(|hi| x > hi) {
+            errors.push(format!("start {x} is outside [min, max]"));
         }
     }
     errors
@@ -511,15 +578,6 @@ fn effective_initial(v: &Var) -> Option<String> {
     }
 }
 
-/// The value-reference space of a type: fmi2GetInteger serves Integer and Enumeration.
-fn vr_space(ty: &str) -> &str {
-    if ty == "Enumeration" {
-        "Integer"
-    } else {
-        ty
-    }
-}
-
 fn is_c_identifier(s: &str) -> bool {
     let mut chars = s.chars();
     chars
@@ -554,7 +612,7 @@ fn start_literal(ty: &str, start: &str) -> Result<(&'static str, String), String
             }
             Ok(("f64", format!("{x:?}")))
         }
-        "Integer" | "Enumeration" => {
+        "Integer" => {
             let x: i32 = start.trim().parse().map_err(|e| format!("{e}"))?;
             Ok(("i32", x.to_string()))
         }
@@ -661,7 +719,7 @@ fn generate(m: &Model) -> String {
                 "Start::Real({})",
                 start_literal("Real", s).expect("checked").1
             ),
-            (Some(s), "Integer" | "Enumeration") => {
+            (Some(s), "Integer") => {
                 format!(
                     "Start::Integer({})",
                     start_literal("Integer", s).expect("checked").1
@@ -670,19 +728,6 @@ fn generate(m: &Model) -> String {
             (Some(s), _) => format!("Start::String({s:?})"),
         };
         let _ = writeln!(w, "        start: {start},");
-        let items: Vec<String> = v
-            .declared_type
-            .as_ref()
-            .and_then(|t| m.enum_items.get(t))
-            .filter(|_| v.ty == "Enumeration")
-            .map(|items| {
-                items
-                    .iter()
-                    .map(|(value, name)| format!("({value}, {name:?})"))
-                    .collect()
-            })
-            .unwrap_or_default();
-        let _ = writeln!(w, "        items: &[{}],", items.join(", "));
         let _ = writeln!(
             w,
             "        causality: Causality::{},",

@@ -130,7 +130,8 @@ fn main() {
     let jobs: Vec<Job> = (1..=runs).map(|seed| Job { case: 0, seed }).collect();
     let start = Instant::now();
     let mut failed = 0;
-    run_jobs(std::slice::from_ref(&case), &jobs, cores, |event| {
+    let never = std::sync::atomic::AtomicBool::new(false);
+    run_jobs(std::slice::from_ref(&case), &jobs, cores, &never, |event| {
         failed += usize::from(matches!(event, Some(f) if f.result.is_err()));
     });
     let wall = start.elapsed().as_secs_f64();

@@ -19,6 +19,16 @@ pub enum Error {
         /// The file and line where the value was written, when known.
         at: Option<Location>,
     },
+    /// A size beyond the memory budget ([`OverBudget`]).
+    OverBudget(Box<OverBudget>),
+    /// Memory within the budget that this process cannot allocate (its own limit, a
+    /// container's or the machine's is lower than the budget).
+    OutOfMemory {
+        /// Bytes, the estimate that could not be allocated.
+        needs: f64,
+        /// The memory limit, bytes.
+        limit: f64,
+    },
     /// A file could not be read or written.
     Io { path: String, message: String },
     /// A file could be read but not understood (`line` is 1-based when known).
@@ -33,8 +43,14 @@ pub enum Error {
     BeyondRecord { time: f64, record_end: f64 },
     /// A time before the run's start, where there are no records.
     BeforeStart { time: f64, start: f64 },
-    /// The state became NaN or infinite (the step is too large for the system).
-    Diverged { time: f64 },
+    /// The state or an output became non-finite or left the bounds of a physical state
+    /// (`simulation::bounds`): `what` says which value, `cause` which force, input or
+    /// setting made it.
+    Unphysical {
+        time: f64,
+        what: String,
+        cause: Cause,
+    },
     /// The body's yaw left the range covered by the yaw-following records (rad); they are
     /// never extrapolated.
     YawOutsideRecords {
@@ -76,16 +92,37 @@ impl Error {
                 reason,
                 at,
             } => {
-                match at {
-                    Some(Location {
-                        path,
-                        line: Some(line),
-                    }) => write!(f, "{path}:{line}: ")?,
-                    Some(Location { path, line: None }) => write!(f, "{path}: ")?,
-                    None => {}
-                }
+                write_location(f, at)?;
                 write!(f, "invalid {field} = {value}: {reason}")
             }
+            Error::OverBudget(excess) => {
+                let OverBudget {
+                    field,
+                    value,
+                    at,
+                    needs,
+                    what,
+                    limit,
+                } = excess.as_ref();
+                write_location(f, at)?;
+                write!(
+                    f,
+                    "invalid {field} = {value}: needs {} of memory ({what}); the limit is {} \
+                     ({} = {})",
+                    bytes_text(*needs),
+                    bytes_text(*limit),
+                    name(MEMORY_LIMIT_KEY),
+                    limit / BYTES_PER_GB
+                )
+            }
+            Error::OutOfMemory { needs, limit } => write!(
+                f,
+                "the records need {} and this process cannot allocate them: its own memory \
+                 limit (ulimit, a container) or the machine's is lower than {} = {} GB",
+                bytes_text(*needs),
+                name(MEMORY_LIMIT_KEY),
+                limit / BYTES_PER_GB
+            ),
             Error::Io { path, message } => write!(f, "{path}: {message}"),
             Error::Parse {
                 path,
@@ -108,11 +145,10 @@ impl Error {
                 f,
                 "time {time} s is before the start of the run ({start} s)"
             ),
-            Error::Diverged { time } => write!(
-                f,
-                "the state became non-finite at t = {time} s; reduce {}",
-                name("run.time_step")
-            ),
+            Error::Unphysical { time, what, cause } => {
+                write!(f, "{what} at t = {time} s: ")?;
+                cause.describe(f, name)
+            }
             Error::YawOutsideRecords { time, yaw, covered } => write!(
                 f,
                 "yaw {yaw:.6} rad ({:.4} deg) at t = {time} s is outside the yaw-following \
@@ -126,6 +162,38 @@ impl Error {
                 name("model.yaw_following.range_deg")
             ),
         }
+    }
+}
+
+/// `path:line: `, `path: ` or nothing.
+fn write_location(f: &mut fmt::Formatter<'_>, at: &Option<Location>) -> fmt::Result {
+    match at {
+        Some(Location {
+            path,
+            line: Some(line),
+        }) => write!(f, "{path}:{line}: "),
+        Some(Location { path, line: None }) => write!(f, "{path}: "),
+        None => Ok(()),
+    }
+}
+
+/// The configuration key of the memory limit (`run.memory_limit_gb`, GB).
+pub const MEMORY_LIMIT_KEY: &str = "run.memory_limit_gb";
+
+/// Bytes in the unit of [`MEMORY_LIMIT_KEY`] (decimal gigabytes).
+pub const BYTES_PER_GB: f64 = 1.0e9;
+
+/// A memory size for a message: "302 GB", "12.500 MB".
+pub fn bytes_text(bytes: f64) -> String {
+    let (scale, unit) = [(1e12, "TB"), (1e9, "GB"), (1e6, "MB"), (1e3, "kB")]
+        .into_iter()
+        .find(|&(scale, _)| bytes >= scale)
+        .unwrap_or((1.0, "bytes"));
+    let value = bytes / scale;
+    if value >= 100.0 || scale == 1.0 {
+        format!("{value:.0} {unit}")
+    } else {
+        format!("{value:.3} {unit}")
     }
 }
 
@@ -153,6 +221,76 @@ impl Location {
             message: message.into(),
         }
     }
+}
+
+/// What made a state or an output unphysical ([`Error::Unphysical`]).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Cause {
+    /// A force at the step's start (inertial frame): not finite, or enough alone to change
+    /// the velocity beyond its bound within the step. `dof`: 0 X, 1 Y, 2 yaw; `settings`:
+    /// the configuration keys it grows with.
+    Force {
+        force: &'static str,
+        dof: usize,
+        value: f64,
+        settings: &'static [&'static str],
+    },
+    /// The external force input, likewise.
+    External { dof: usize, value: f64 },
+    /// Nothing at the step's start explains it: the step is too large for the system.
+    Step,
+}
+
+impl Cause {
+    fn describe(
+        &self,
+        f: &mut fmt::Formatter<'_>,
+        name: &dyn Fn(&'static str) -> String,
+    ) -> fmt::Result {
+        const DOF: [(&str, &str); 3] = [("X", "N"), ("Y", "N"), ("yaw", "N m")];
+        match self {
+            Cause::Force {
+                force,
+                dof,
+                value,
+                settings,
+            } => {
+                let (axis, unit) = DOF[*dof];
+                let names: Vec<String> = settings.iter().map(|key| name(key)).collect();
+                write!(
+                    f,
+                    "the {force} there is {value:e} {unit} in {axis}, enough alone to leave \
+                     the bounds within a step; it grows with {}",
+                    names.join(", ")
+                )
+            }
+            Cause::External { dof, value } => {
+                let (axis, unit) = DOF[*dof];
+                write!(
+                    f,
+                    "the external force input there is {value:e} {unit} in {axis}, enough \
+                     alone to leave the bounds within a step"
+                )
+            }
+            Cause::Step => write!(f, "reduce {}", name("run.time_step")),
+        }
+    }
+}
+
+/// A size beyond the memory budget: the setting that drives the largest part of the
+/// estimate (named and located as [`Error::InvalidValue`]'s), what the estimate holds, and
+/// the limit (the setting [`MEMORY_LIMIT_KEY`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct OverBudget {
+    pub field: String,
+    pub value: String,
+    pub at: Option<Location>,
+    /// The estimated memory, bytes.
+    pub needs: f64,
+    /// What the estimate is made of (its largest part).
+    pub what: String,
+    /// The memory limit, bytes.
+    pub limit: f64,
 }
 
 /// Result with the core's [`Error`].
@@ -207,4 +345,17 @@ pub fn require_finite_matrix(field: impl fmt::Display, m: &[[f64; 3]; 3]) -> Res
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes_read_in_their_units() {
+        assert_eq!(bytes_text(3.02e11), "302 GB");
+        assert_eq!(bytes_text(4.0e9), "4.000 GB");
+        assert_eq!(bytes_text(12.5e6), "12.500 MB");
+        assert_eq!(bytes_text(512.0), "512 bytes");
+    }
 }

@@ -3,9 +3,19 @@
 //! a device, a socket or a directory is refused by what it is before anything reads it (a
 //! FIFO would block the reader until a writer comes, `/dev/zero` would be read until memory
 //! runs out), and reading stops at the limit whatever the file does meanwhile.
+//!
+//! The files a program writes again and again (a campaign's summary, a study's data and
+//! figures) are written anew atomically ([`replace`]: a temporary file renamed), and a
+//! campaign's runs file is kept off by a second process ([`lock`]).
+
+mod lock;
+mod replace;
+
+pub use lock::{lock, lock_path, Lock};
+pub use replace::replace;
 
 use crate::error::{Error, Result};
-use std::fs::{FileType, OpenOptions};
+use std::fs::{File, FileType, OpenOptions};
 use std::io::Read;
 use std::os::unix::fs::{FileTypeExt, OpenOptionsExt};
 use std::path::Path;
@@ -45,7 +55,9 @@ fn kind(file_type: FileType) -> &'static str {
     }
 }
 
-fn read_text_within(path: &Path, limit: u64) -> Result<Option<String>> {
+/// The regular file at `path`, open for reading and no larger than `limit` (the module's
+/// checks); `None` when nothing exists at `path`.
+fn open_within(path: &Path, limit: u64) -> Result<Option<File>> {
     let io = |message: String| Error::Io {
         path: path.display().to_string(),
         message,
@@ -75,24 +87,72 @@ fn read_text_within(path: &Path, limit: u64) -> Result<Option<String>> {
     if !meta.is_file() {
         return Err(refuse(meta.file_type()));
     }
-    let too_large = |size: u64| {
-        io(format!(
-            "is {size} bytes, more than the {limit} bytes an input file may have"
-        ))
-    };
     if meta.len() > limit {
-        return Err(too_large(meta.len()));
+        return Err(io(format!(
+            "is {} bytes, more than the {limit} bytes an input file may have",
+            meta.len()
+        )));
     }
+    Ok(Some(file))
+}
+
+/// An input file read as a stream (a case table read row by row): the checks of
+/// [`read_text`], and a read error, not an end, past [`MAX_INPUT_BYTES`] (the file grew
+/// while it was read).
+#[derive(Debug)]
+pub struct Input {
+    file: File,
+    read: u64,
+    limit: u64,
+}
+
+impl Read for Input {
+    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        let n = self.file.read(buf)?;
+        self.read += n as u64;
+        if self.read > self.limit {
+            return Err(std::io::Error::other(format!(
+                "grew past the {} bytes an input file may have while it was read",
+                self.limit
+            )));
+        }
+        Ok(n)
+    }
+}
+
+/// The regular file at `path` as a stream ([`Input`]); errors name the path.
+pub fn open(path: &Path) -> Result<Input> {
+    let file = open_within(path, MAX_INPUT_BYTES)?.ok_or_else(|| Error::Io {
+        path: path.display().to_string(),
+        message: "No such file or directory".into(),
+    })?;
+    Ok(Input {
+        file,
+        read: 0,
+        limit: MAX_INPUT_BYTES,
+    })
+}
+
+fn read_text_within(path: &Path, limit: u64) -> Result<Option<String>> {
+    let io = |message: String| Error::Io {
+        path: path.display().to_string(),
+        message,
+    };
+    let Some(file) = open_within(path, limit)? else {
+        return Ok(None);
+    };
+    let size = file.metadata().map_err(|e| io(e.to_string()))?.len();
     let mut bytes = Vec::new();
     bytes
-        .try_reserve_exact(meta.len() as usize)
-        .map_err(|_| io(format!("{} bytes cannot be allocated", meta.len())))?;
-    file.take(limit + 1)
-        .read_to_end(&mut bytes)
-        .map_err(|e| io(e.to_string()))?;
-    if bytes.len() as u64 > limit {
-        return Err(too_large(bytes.len() as u64));
+        .try_reserve_exact(size as usize)
+        .map_err(|_| io(format!("{size} bytes cannot be allocated")))?;
+    Input {
+        file,
+        read: 0,
+        limit,
     }
+    .read_to_end(&mut bytes)
+    .map_err(|e| io(e.to_string()))?;
     String::from_utf8(bytes).map(Some).map_err(|e| {
         io(format!(
             "is not UTF-8 text (byte {})",

@@ -46,4 +46,4 @@ pub use error::{Error, Result};
 pub use problem::Problem;
 pub use record_plan::{MemoryEstimate, PlanKey, QtfRank, RecordPlan, Term};
 pub use scenario::Scenario;
-pub use simulation::{Outputs, Simulation, Snapshot};
+pub use simulation::{bounds, Outputs, Simulation, Snapshot};

@@ -19,6 +19,7 @@ mod plot;
 
 use clap::{Args, CommandFactory, Parser, Subcommand};
 use cli::args::Checked;
+use cli::Failure;
 use slowdrift::problem::{self, default_problem};
 use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
 use slowdrift::stats::{summarize, Summary};
@@ -92,23 +93,23 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
-        Err(message) => {
+        Err(Failure { message, status }) => {
             eprintln!("slowdrift: {message}");
-            ExitCode::FAILURE
+            ExitCode::from(status)
         }
     }
 }
 
-fn run(cli: Cli) -> Result<(), String> {
+fn run(cli: Cli) -> Result<(), Failure> {
     match cli.command {
-        Some(Command::Simulate(args)) => simulate(args),
-        Some(Command::Hydro(args)) => cli::hydro::run(args),
+        Some(Command::Simulate(args)) => Ok(simulate(args)?),
+        Some(Command::Hydro(args)) => Ok(cli::hydro::run(args)?),
         Some(Command::Montecarlo(args)) => cli::montecarlo::run(args),
         Some(Command::Study(args)) => cli::study::run(args),
         // No command: the help, as `slowdrift --help`.
-        None => Cli::command()
+        None => Ok(Cli::command()
             .print_help()
-            .map_err(|e| format!("writing the help: {e}")),
+            .map_err(|e| format!("writing the help: {e}"))?),
     }
 }
 

@@ -357,7 +357,7 @@ impl Problem {
         limits::check_sizes(self, None)?;
         require_positive("environment.gravity", self.environment.gravity)?;
         require_positive("environment.water_density", self.environment.water_density)?;
-        self.sea.validate()?;
+        self.sea.validate(self.environment.gravity)?;
         require_non_negative("current.speed", self.current.speed)?;
         require_finite("current.direction_deg", self.current.direction.to_degrees())?;
         if self.run.duration.is_nan() || self.run.duration <= 0.0 {

@@ -133,7 +133,7 @@ impl RecordPlan {
     /// allocated when the records of one simulation would exceed the memory limit
     /// ([`MemoryEstimate`]).
     pub(crate) fn of_checked(config: &Problem) -> Result<Self> {
-        MemoryEstimate::of(config)?.check(config, 1)?;
+        MemoryEstimate::of(config)?.check(config)?;
         let sea = &config.sea;
         let dt = 0.5 * config.run.time_step;
         let segments = segments_of(config.run.block_duration, dt);

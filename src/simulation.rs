@@ -5,6 +5,8 @@
 //! advances one RK4 step h, `advance` any interval in equal substeps no longer than h.
 //! Time is always origin + count * step from an integer count, never an accumulated sum.
 
+pub mod bounds;
+
 use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};
 use crate::error::{Error, Result};
 use crate::forces::{ForceRecords, Segments};
@@ -78,6 +80,7 @@ impl Snapshot {
         let position = triple();
         let velocity = triple();
         let external_force = triple();
+        bounds::check_restored(&position, &velocity)?;
         Ok(Snapshot {
             origin,
             count,
@@ -103,6 +106,25 @@ pub struct Outputs {
     pub forces: ForceBreakdown,
     /// The external force last applied.
     pub external_force: [f64; 3],
+}
+
+impl Outputs {
+    /// The first force or elevation output that is not finite, by its FMU name (the state
+    /// is bounded by the steps).
+    fn first_non_finite(&self) -> Option<&'static str> {
+        let f = &self.forces;
+        let named: [(&'static str, &[f64]); 5] = [
+            ("eta", std::slice::from_ref(&self.wave_elevation)),
+            ("F_wave", &f.wave),
+            ("F_damping", &f.damping),
+            ("F_drag", &f.drag),
+            ("F_extra_damping", &f.extra_damping),
+        ];
+        named
+            .into_iter()
+            .find(|(_, values)| values.iter().any(|v| !v.is_finite()))
+            .map(|(name, _)| name)
+    }
 }
 
 /// One slow-drift simulation.
@@ -323,15 +345,38 @@ impl Simulation {
             let qdd = model.acceleration(records, &at, &yaw, &q, &qd, &external);
             Ok::<_, Error>([qd[0], qd[1], qd[2], qdd[0], qdd[1], qdd[2]])
         })?;
-        if next.iter().any(|v| !v.is_finite()) {
-            return Err(Error::Diverged { time: t });
+        let (position, velocity) = ([next[0], next[1], next[2]], [next[3], next[4], next[5]]);
+        if let Some(what) = bounds::violation(&position, &velocity) {
+            return Err(self.unphysical(t, h, &external, format!("the state became {what}")));
         }
         // The state a step ends on stays inside the yaw-following records, so `outputs`
         // can always read them.
         records.locate_yaw(t + h, next[2])?;
-        self.state.position = [next[0], next[1], next[2]];
-        self.state.velocity = [next[3], next[4], next[5]];
+        self.state.position = position;
+        self.state.velocity = velocity;
         Ok(())
+    }
+
+    /// The error of a step from time `t` over `h` (or of the outputs at `t`, h the step)
+    /// that made `what` unphysical, with its cause from the forces at `t`.
+    fn unphysical(&self, t: f64, h: f64, external: &[f64; 3], what: String) -> Error {
+        let s = &self.state;
+        let records = &self.segment.records;
+        let forces = records.clock.locate(t).and_then(|at| {
+            let yaw = records.locate_yaw(t, s.position[2])?;
+            Ok(self
+                .model
+                .forces(records, &at, &yaw, &s.position, &s.velocity))
+        });
+        let cause = match forces {
+            Ok(forces) => bounds::cause(&self.model, &forces, external, s.position[2], h),
+            Err(_) => crate::error::Cause::Step,
+        };
+        Error::Unphysical {
+            time: t,
+            what,
+            cause,
+        }
     }
 
     /// Outputs at the current time.
@@ -346,14 +391,23 @@ impl Simulation {
             &self.state.position,
             &self.state.velocity,
         );
-        Ok(Outputs {
+        let outputs = Outputs {
             time: t,
             position: self.state.position,
             velocity: self.state.velocity,
             wave_elevation: self.segment.records.elevation.at(&at),
             forces,
             external_force: self.state.external_force,
-        })
+        };
+        match outputs.first_non_finite() {
+            None => Ok(outputs),
+            Some(what) => Err(self.unphysical(
+                t,
+                self.problem.run.time_step,
+                &self.state.external_force,
+                format!("the output {what} is not finite"),
+            )),
+        }
     }
 
     /// The complete dynamic state.
@@ -368,6 +422,7 @@ impl Simulation {
             .iter()
             .chain(&snapshot.velocity)
             .chain(&snapshot.external_force);
+        bounds::check_restored(&snapshot.position, &snapshot.velocity)?;
         if values.clone().any(|v| !v.is_finite()) || !snapshot.time().is_finite() {
             return Err(Error::invalid(
                 "snapshot",
@@ -438,7 +493,7 @@ mod tests {
             count: 0x0123_4567_89ab_cdef,
             step: 0.1,
             position: [1.0 / 3.0, -0.0, f64::MIN_POSITIVE],
-            velocity: [1e300, -2.5e-7, 7.0],
+            velocity: [999.5, -2.5e-7, 7.0],
             external_force: [3e6, -4e6, 5e9],
         };
         let bytes = snapshot.to_bytes();

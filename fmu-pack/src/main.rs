@@ -3,10 +3,12 @@
 //! resources/platform.toml with the default platform's drift precomputed in
 //! resources/platform_drift.json, documentation/index.html), then loads the library from the
 //! archive through its C ABI, as a master would, runs the default platform in the default
-//! sea state for three hours and prints a short summary.
+//! sea state for three hours and prints a short summary. Then the same for the mooring FMU,
+//! `target/fmu/Mooring.fmu` ([`mooring`]).
 
 mod archive;
 mod master;
+mod mooring;
 
 use slowdrift::fmi2::resources::{write_resources, RESOURCE_CONFIG, RESOURCE_DRIFT};
 use slowdrift::stats::summarize;
@@ -37,7 +39,7 @@ fn run() -> Result<(), String> {
     let target = std::env::var_os("CARGO_TARGET_DIR")
         .map(PathBuf::from)
         .unwrap_or_else(|| root.join("target"));
-    build_library(&root)?;
+    cargo_build(&root, &["--no-default-features", "-p", "slowdrift"])?;
     let fmu_path = target.join("fmu").join(format!("{MODEL_IDENTIFIER}.fmu"));
     let library = target.join("release").join("libslowdrift.so");
     let resources = target.join("fmu").join("resources");
@@ -47,27 +49,23 @@ fn run() -> Result<(), String> {
     check_by_running(&fmu_path, &target.join("fmu").join("unpacked")).inspect_err(|_| {
         // A packed FMU that fails its own check must not be left for a master to find.
         let _ = std::fs::remove_file(&fmu_path);
-    })
+    })?;
+    mooring::pack_and_check(&root, &target)
 }
 
-fn build_library(root: &Path) -> Result<(), String> {
+/// `cargo build --release --lib` with `args` (the package and its features).
+fn cargo_build(root: &Path, args: &[&str]) -> Result<(), String> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let status = Command::new(cargo)
-        .args([
-            "build",
-            "--release",
-            "--lib",
-            "--no-default-features",
-            "-p",
-            "slowdrift",
-        ])
+        .args(["build", "--release", "--lib"])
+        .args(args)
         .current_dir(root)
         .status()
         .map_err(|e| format!("running cargo: {e}"))?;
     status
         .success()
         .then_some(())
-        .ok_or_else(|| "cargo build of the library failed".into())
+        .ok_or_else(|| format!("cargo build of the library failed ({})", args.join(" ")))
 }
 
 fn read(path: &Path) -> Result<Vec<u8>, String> {
@@ -95,13 +93,18 @@ fn pack(root: &Path, library: &Path, resources: &Path, fmu_path: &Path) -> Resul
         },
         archive::Entry {
             path: "documentation/index.html".into(),
-            data: documentation(&fmu_reference).into_bytes(),
+            data: documentation("SlowDrift", &fmu_reference).into_bytes(),
         },
     ];
+    write_fmu(fmu_path, &entries)
+}
+
+/// Writes the archive of `entries` at `fmu_path`, creating its folder.
+fn write_fmu(fmu_path: &Path, entries: &[archive::Entry]) -> Result<(), String> {
     std::fs::create_dir_all(fmu_path.parent().expect("has a parent")).map_err(|e| e.to_string())?;
     let file =
         std::fs::File::create(fmu_path).map_err(|e| format!("{}: {e}", fmu_path.display()))?;
-    archive::write(std::io::BufWriter::new(file), &entries)
+    archive::write(std::io::BufWriter::new(file), entries)
         // Flushing the buffer here, unlike dropping it, reports a failed write.
         .and_then(|out| {
             out.into_inner()
@@ -128,13 +131,13 @@ fn file_uri(path: &Path) -> Result<String, String> {
     Ok(uri)
 }
 
-/// The FMU reference (docs/fmu.md) as a preformatted HTML page.
-fn documentation(readme: &str) -> String {
+/// A page of the docs (Markdown) as a preformatted HTML page.
+fn documentation(title: &str, readme: &str) -> String {
     let escaped = readme
         .replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;");
-    format!("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>SlowDrift</title></head>\n<body><pre>\n{escaped}</pre></body></html>\n")
+    format!("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>{title}</title></head>\n<body><pre>\n{escaped}</pre></body></html>\n")
 }
 
 /// Unpacks the whole archive, as a master would (refusing entries that would land outside
@@ -155,7 +158,7 @@ fn check_by_running(fmu_path: &Path, unpack_dir: &Path) -> Result<(), String> {
         &fmu,
         &description,
         &uri,
-        &names,
+        (&[], &names),
         (0.0, THREE_HOURS, COMMUNICATION_STEP),
     )?;
     let elapsed = started.elapsed().as_secs_f64();

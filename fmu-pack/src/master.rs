@@ -105,6 +105,7 @@ pub struct Fmu {
     exit_initialization: unsafe extern "C" fn(Component) -> Status,
     do_step: unsafe extern "C" fn(Component, f64, f64, c_int) -> Status,
     get_real: unsafe extern "C" fn(Component, *const c_uint, usize, *mut f64) -> Status,
+    set_real: unsafe extern "C" fn(Component, *const c_uint, usize, *const f64) -> Status,
     terminate: unsafe extern "C" fn(Component) -> Status,
     free_instance: unsafe extern "C" fn(Component),
 }
@@ -128,6 +129,7 @@ impl Fmu {
             exit_initialization: get(&library, "fmi2ExitInitializationMode")?,
             do_step: get(&library, "fmi2DoStep")?,
             get_real: get(&library, "fmi2GetReal")?,
+            set_real: get(&library, "fmi2SetReal")?,
             terminate: get(&library, "fmi2Terminate")?,
             free_instance: get(&library, "fmi2FreeInstance")?,
             _library: library,
@@ -135,19 +137,25 @@ impl Fmu {
     }
 }
 
-/// Runs one instance from `start` to `stop` at communication step `step` with zero external
-/// force and returns the samples of the named real outputs after every step.
+/// Runs one instance from `start` to `stop` at communication step `step` with the named
+/// Real inputs held at the given values (set in initialisation mode; the others at their
+/// start values) and returns the samples of the named real outputs after every step.
 pub fn run(
     fmu: &Fmu,
     description: &ModelDescription,
     resource_uri: &str,
-    outputs: &[&str],
+    (inputs, outputs): (&[(&str, f64)], &[&str]),
     (start, stop, step): (f64, f64, f64),
 ) -> Result<Vec<Vec<f64>>, String> {
     let references = outputs
         .iter()
         .map(|n| description.value_reference(n))
         .collect::<Result<Vec<_>, _>>()?;
+    let input_references = inputs
+        .iter()
+        .map(|(n, _)| description.value_reference(n))
+        .collect::<Result<Vec<_>, _>>()?;
+    let input_values: Vec<f64> = inputs.iter().map(|(_, v)| *v).collect();
     let name = CString::new("fmu-pack").expect("no NUL");
     let guid = CString::new(description.guid.clone()).map_err(|e| e.to_string())?;
     let uri = CString::new(resource_uri).map_err(|e| e.to_string())?;
@@ -185,6 +193,15 @@ pub fn run(
                 (fmu.setup_experiment)(c, FALSE, 0.0, start, TRUE, stop),
             )?;
             check("fmi2EnterInitializationMode", (fmu.enter_initialization)(c))?;
+            check(
+                "fmi2SetReal",
+                (fmu.set_real)(
+                    c,
+                    input_references.as_ptr(),
+                    input_references.len(),
+                    input_values.as_ptr(),
+                ),
+            )?;
             check("fmi2ExitInitializationMode", (fmu.exit_initialization)(c))?;
             let steps = ((stop - start) / step).round() as usize;
             let mut samples = vec![Vec::with_capacity(steps); outputs.len()];

@@ -6,13 +6,20 @@
 //! configuration, skips the (case, seed) pairs already done and runs the rest (failed runs
 //! again). The summary `RESULTS.csv` is always recomputed from the per-run file, for the
 //! requested seeds in seed order, so it does not depend on the threads, the finishing
-//! order or the interruptions.
+//! order or the interruptions; it is written anew atomically.
+//!
+//! One process per runs file: a second one on the same `--out` is refused at once, naming
+//! the first ([`RunsFile::open`] locks it). SIGINT and SIGTERM stop a campaign cleanly
+//! ([`super::interrupt`]): the summary of the runs done is written and the command to
+//! resume printed.
 
 use super::args::{all_cores, seconds, whole};
+use super::interrupt::{this_command, Interrupts, Signal};
+use super::Failure;
 use clap::Args;
 use slowdrift::fmi2::campaign;
-use slowdrift::montecarlo::cases::{read_case_table, CaseRow};
-use slowdrift::montecarlo::runs_file::{self, RunRow};
+use slowdrift::montecarlo::cases::{open_case_table, CaseRow};
+use slowdrift::montecarlo::runs_file::{self, RunRow, RunsFile};
 use slowdrift::montecarlo::{run_jobs, seed_statistics, Case, Job, DOFS, STATISTICS};
 use slowdrift::problem::{self, default_problem};
 use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
@@ -149,17 +156,17 @@ pub fn runs_path(out: &Path) -> PathBuf {
 }
 
 /// Runs `slowdrift montecarlo`.
-pub fn run(args: MontecarloArgs) -> Result<(), String> {
+pub fn run(args: MontecarloArgs) -> Result<(), Failure> {
     match command(args)? {
         Command::Run(options) => run_and_summarise(options),
-        Command::PrintCases(options) => print_cases(&options),
+        Command::PrintCases(options) => Ok(print_cases(&options)?),
     }
 }
 
-/// The base configuration (the file, else the embedded default with `--duration` applied)
-/// and the cases on top of it (all, or the one `--case` names).
-fn load_cases(options: &Options, announce: bool) -> Result<(Problem, Vec<Case>), String> {
-    let mut base = match &options.config {
+/// The base configuration as the file gives it (else the embedded default), and the one
+/// the cases are made on (with `--duration` applied).
+fn load_base(options: &Options, announce: bool) -> Result<(Problem, Problem), String> {
+    let file_base = match &options.config {
         Some(path) => problem::load(path).map_err(|e| e.to_string())?,
         None => {
             if announce {
@@ -168,39 +175,58 @@ fn load_cases(options: &Options, announce: bool) -> Result<(Problem, Vec<Case>),
             default_problem().map_err(|e| e.to_string())?
         }
     };
-    let file_base = base.clone();
+    let mut base = file_base.clone();
     if let Some(duration) = options.duration {
         base.run.duration = duration;
     }
-    let (rows, source) = match &options.cases {
-        Some(path) => (
-            read_case_table(path).map_err(|e| e.to_string())?,
-            path.display().to_string(),
-        ),
-        None => (vec![CaseRow::base()], String::new()),
-    };
-    let mut cases = rows
-        .iter()
-        .map(|row| row.case(&base, options.transient, &source))
-        .collect::<Result<Vec<Case>, _>>()
-        .map_err(|e| e.to_string())?;
-    if let Some(name) = &options.only {
-        if !cases.iter().any(|c| &c.name == name) {
-            let names: Vec<&str> = cases.iter().map(|c| c.name.as_str()).collect();
-            return Err(format!(
-                "--case {name}: no such case; the cases are {}",
-                names.join(", ")
-            ));
-        }
-        cases.retain(|c| &c.name == name);
-    }
-    Ok((file_base, cases))
+    Ok((file_base, base))
 }
 
-/// `--print-cases`: the cases as JSON on stdout, with the FMU's `hydroDatabase` = the
-/// absolute path of `--config` (empty: the FMU's packed default platform).
+/// Case-table rows as they are read.
+type Rows = Box<dyn Iterator<Item = slowdrift::Result<CaseRow>>>;
+
+/// The rows the options select, read as a stream, and the name of their table: every row
+/// of the table, or the one `--case` names (the table is read once before, to refuse an
+/// unknown name by listing the names); without a table the base alone, case 'base'.
+fn case_rows(options: &Options) -> Result<(Rows, String), String> {
+    let no_such_case = |name: &str, names: &[&str]| {
+        format!(
+            "--case {name}: no such case; the cases are {}",
+            names.join(", ")
+        )
+    };
+    let Some(path) = &options.cases else {
+        let base = CaseRow::base();
+        if let Some(name) = options.only.as_ref().filter(|name| **name != base.name) {
+            return Err(no_such_case(name, &[&base.name]));
+        }
+        return Ok((Box::new(std::iter::once(Ok(base))), String::new()));
+    };
+    let open = || open_case_table(path).map_err(|e| e.to_string());
+    let rows: Rows = match &options.only {
+        None => Box::new(open()?),
+        Some(name) => {
+            let mut table = open()?;
+            let mut found = false;
+            for row in &mut table {
+                found |= row.map_err(|e| e.to_string())?.name == *name;
+            }
+            if !found {
+                return Err(no_such_case(name, &table.names()));
+            }
+            let name = name.clone();
+            Box::new(open()?.filter(move |row| row.as_ref().map_or(true, |r| r.name == name)))
+        }
+    };
+    Ok((rows, path.display().to_string()))
+}
+
+/// `--print-cases`: the cases as JSON on stdout, each written as soon as it is made (the
+/// table read as a stream: memory independent of its number of rows), with the FMU's
+/// `hydroDatabase` = the absolute path of `--config` (empty: the FMU's packed default
+/// platform). An error stops the document unfinished.
 fn print_cases(options: &Options) -> Result<(), String> {
-    let (base, cases) = load_cases(options, false)?;
+    let (file_base, base) = load_base(options, false)?;
     let hydro_database = match &options.config {
         Some(path) => std::fs::canonicalize(path)
             .map_err(|e| format!("{}: {e}", path.display()))?
@@ -209,53 +235,108 @@ fn print_cases(options: &Options) -> Result<(), String> {
             .to_string(),
         None => String::new(),
     };
-    println!("{}", campaign::cases_json(&cases, &base, &hydro_database));
-    Ok(())
+    let (rows, source) = case_rows(options)?;
+    let cases = rows.map(|row| row.and_then(|row| row.case(&base, options.transient, &source)));
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    campaign::write_cases_json(
+        &mut out,
+        "standard output",
+        cases,
+        &file_base,
+        &hydro_database,
+    )
+    .map_err(|e| e.to_string())
 }
 
-fn run_and_summarise(options: Options) -> Result<(), String> {
-    let (_, cases) = load_cases(&options, true)?;
+fn run_and_summarise(options: Options) -> Result<(), Failure> {
+    let (_, base) = load_base(&options, true)?;
+    let (rows, source) = case_rows(&options)?;
+    let cases = rows
+        .map(|row| row.and_then(|row| row.case(&base, options.transient, &source)))
+        .collect::<Result<Vec<Case>, _>>()
+        .map_err(|e| e.to_string())?;
     let runs_path = runs_path(&options.out);
     let seeds = options.first_seed..options.first_seed + options.seeds;
     let wanted: Vec<Job> = (0..cases.len())
         .flat_map(|case| seeds.clone().map(move |seed| Job { case, seed }))
         .collect();
     println!("seeds {}..={} of every case", seeds.start, seeds.end - 1);
-    let runs = run_campaign(&cases, &wanted, options.threads, &runs_path)?;
+    let Campaign { runs, interrupted } =
+        run_campaign(&cases, &wanted, options.threads, &runs_path)?;
     let total = wanted.len();
     let summaries: Vec<CaseSummary> = cases
         .iter()
         .map(|case| CaseSummary::new(case, &runs, &seeds))
         .collect();
-    write_summary(&options.out, &summaries, options.seeds)
-        .map_err(|e| format!("{}: {e}", options.out.display()))?;
+    write_summary(&options.out, &summaries, options.seeds).map_err(|e| e.to_string())?;
     print_summary(&summaries, options.seeds);
     println!(
         "summary written to {}, runs to {}",
         options.out.display(),
         runs_path.display()
     );
+    if let Some(interrupted) = interrupted {
+        return Err(interrupted.failure(&runs_path, Some(&options.out)));
+    }
     let failed: usize = summaries.iter().map(|s| s.failed).sum();
     if failed > 0 {
         return Err(format!(
             "{failed} of {total} runs failed (their errors are in {} and the summary)",
             runs_path.display()
-        ));
+        )
+        .into());
     }
     Ok(())
+}
+
+/// What [`run_campaign`] leaves: every run the per-run file holds, and whether a signal
+/// stopped the campaign before every run was done.
+pub struct Campaign {
+    pub runs: Vec<RunRow>,
+    pub interrupted: Option<Interrupted>,
+}
+
+/// A campaign a signal stopped.
+pub struct Interrupted {
+    signal: Signal,
+    /// Runs done (in the per-run file) and not done, of those this call had to run.
+    done: usize,
+    not_done: usize,
+}
+
+impl Interrupted {
+    /// The failure the command ends with: what was kept, in which files, and how to resume.
+    pub fn failure(&self, runs_path: &Path, summary: Option<&Path>) -> Failure {
+        let summary = summary.map_or(String::new(), |path| {
+            format!("; the summary of the runs done is in {}", path.display())
+        });
+        Failure {
+            message: format!(
+                "stopped by {}: {} run(s) done and written to {}, {} not done (the runs in \
+                 flight abandoned){summary}. To resume, run the same command again:\n    {}",
+                self.signal.name(),
+                self.done,
+                runs_path.display(),
+                self.not_done,
+                this_command()
+            ),
+            status: self.signal.exit_status(),
+        }
+    }
 }
 
 /// Runs the `wanted` jobs of `cases` that the per-run file `runs_path` does not already
 /// hold as successful (resume; a case run before with another configuration is refused),
 /// appending each result to the file as it finishes, with a progress line on stderr;
-/// returns every run the file then holds.
+/// returns every run the file then holds. The file is locked meanwhile (another process
+/// on it is refused), and SIGINT or SIGTERM stops the campaign ([`super::interrupt`]).
 pub fn run_campaign(
     cases: &[Case],
     wanted: &[Job],
     threads: usize,
     runs_path: &Path,
-) -> Result<Vec<RunRow>, String> {
-    let (done, mut file) = runs_file::open(runs_path).map_err(|e| e.to_string())?;
+) -> Result<Campaign, String> {
+    let (done, mut file) = RunsFile::open(runs_path).map_err(|e| e.to_string())?;
     // Computed once per case: a fingerprint formats the whole configuration.
     let fingerprints: Vec<String> = cases.iter().map(Case::fingerprint).collect();
     check_fingerprints(cases, &fingerprints, &done, runs_path)?;
@@ -283,9 +364,10 @@ pub fn run_campaign(
         );
     }
 
+    let interrupts = Interrupts::install()?;
     let mut progress = Progress::new(jobs.len());
     let mut write_error = None;
-    run_jobs(cases, &jobs, threads, |event| {
+    run_jobs(cases, &jobs, threads, interrupts.stop(), |event| {
         if let Some(finished) = event {
             let job = jobs[finished.job];
             progress.failed += usize::from(finished.result.is_err());
@@ -295,20 +377,28 @@ pub fn run_campaign(
                 job.seed,
                 finished.result,
             );
-            let line = runs_file::format_row(&row);
-            if let Err(e) = file.write_all(line.as_bytes()).and_then(|()| file.flush()) {
-                write_error.get_or_insert(format!("{}: {e}", runs_path.display()));
+            if let Err(e) = file.append(&row) {
+                write_error.get_or_insert(e.to_string());
             }
             progress.done += 1;
         }
         progress.show(false);
     });
     progress.show(true);
+    let interrupted = interrupts
+        .received()
+        .filter(|_| progress.done < jobs.len())
+        .map(|signal| Interrupted {
+            signal,
+            done: progress.done,
+            not_done: jobs.len() - progress.done,
+        });
+    drop(interrupts);
     if let Some(e) = write_error {
         return Err(e);
     }
-    let text = slowdrift::files::read_text(runs_path).map_err(|e| e.to_string())?;
-    runs_file::parse(&text, &runs_path.display().to_string()).map_err(|e| e.to_string())
+    let runs = file.runs().map_err(|e| e.to_string())?;
+    Ok(Campaign { runs, interrupted })
 }
 
 fn check_fingerprints(
@@ -388,8 +478,16 @@ impl CaseSummary {
     }
 }
 
-fn write_summary(path: &Path, summaries: &[CaseSummary], requested: u64) -> std::io::Result<()> {
-    let mut w = std::io::BufWriter::new(std::fs::File::create(path)?);
+/// Writes the summary anew, atomically (a kill never leaves it cut: `files::replace`).
+fn write_summary(path: &Path, summaries: &[CaseSummary], requested: u64) -> slowdrift::Result<()> {
+    slowdrift::files::replace(path, |w| summary_text(w, summaries, requested))
+}
+
+fn summary_text(
+    w: &mut impl Write,
+    summaries: &[CaseSummary],
+    requested: u64,
+) -> std::io::Result<()> {
     let mut header = "case,dof,unit,seeds_requested,seeds_done,seeds_failed,status".to_string();
     for stat in STATISTICS {
         header += &format!(",{stat},{stat}_se");
@@ -424,7 +522,7 @@ fn write_summary(path: &Path, summaries: &[CaseSummary], requested: u64) -> std:
             }
         }
     }
-    w.flush()
+    Ok(())
 }
 
 fn print_summary(summaries: &[CaseSummary], requested: u64) {

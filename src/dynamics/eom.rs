@@ -134,6 +134,15 @@ impl SlowDriftModel {
         rotation.to_inertial(&(self.inverse_mass * body)).into()
     }
 
+    /// The change of velocity (X', Y', theta') over a time `h` that the force `force`
+    /// (inertial frame, N, N, N m) alone gives the body at yaw `theta`: S (M + A)^-1 S^T f h
+    /// (E&S 1 without the other terms).
+    pub fn velocity_change(&self, theta: f64, force: &[f64; 3], h: f64) -> [f64; 3] {
+        let rotation = Rotation::new(theta);
+        let body = rotation.to_body(&Vector3::from(*force));
+        (rotation.to_inertial(&(self.inverse_mass * body)) * h).into()
+    }
+
     /// [`SlowDriftModel::forces`] with S(theta) already taken.
     fn forces_rotated(
         &self,

@@ -8,7 +8,7 @@
 //! round(duration / time_step); the statistics use the samples at k time_step >= transient,
 //! k = 0 ..= steps), and `fmu`: either `{"start_time", "stop_time", "parameters": {FMU
 //! parameter name: value}}` (every parameter of modelDescription.xml except `seed`, which
-//! the master sets per run; Enumerations as their codes) that makes `SlowDrift.fmu` run this
+//! the master sets per run; modes as their Integer codes) that makes `SlowDrift.fmu` run this
 //! case exactly, or `{"unavailable": reason}`; and, for a case whose values the model
 //! refuses, `refused`: the message every run of the case fails with (as the native tool
 //! records it, naming the case-table cell or configuration key). Numbers are written in
@@ -18,11 +18,13 @@
 //! not rebuild (applied to the base, as the FMU applies them) is unavailable.
 
 use super::parameters::{Experiment, FmuValue, Parameters, HYDRO_DATABASE};
+use crate::error::Error;
 use crate::fmi2::model_description::VariableType;
 use crate::montecarlo::Case;
 use crate::scenario::overrides::{by_fmu, Value};
 use crate::{Problem, Scenario};
 use serde_json::{json, Map, Value as Json};
+use std::io::Write;
 
 /// Relative tolerance of the FMU's end-of-run check (`fmi2DoStep` refuses a step that ends
 /// past stopTime by more than this times max(1, |stopTime|)).
@@ -31,14 +33,38 @@ const FMU_TIME_TOLERANCE: f64 = 1e-9;
 /// The FMU parameter the master sets per run.
 const SEED: &str = "seed";
 
-/// The JSON document of `cases` run on top of `base`; `hydro_database` is the FMU's
+/// Writes the JSON document of the cases `cases` yields, run on top of `base`, to `out`
+/// one case at a time, so that its memory does not grow with the number of cases:
+/// `{"format_version":1,"cases":[...]}` and a newline; `hydro_database` is the FMU's
 /// `hydroDatabase` parameter that loads `base` (empty for the packed default platform).
-pub fn cases_json(cases: &[Case], base: &Problem, hydro_database: &str) -> Json {
-    let cases: Vec<Json> = cases
-        .iter()
-        .map(|case| case_json(case, base, hydro_database))
-        .collect();
-    json!({ "format_version": 1, "cases": cases })
+/// The first case that is an error stops the document there, unfinished (a reader cannot
+/// take it for a whole one), and is returned; nothing is written before the first case.
+/// Write errors name `out_name`.
+pub fn write_cases_json(
+    out: &mut impl Write,
+    out_name: &str,
+    cases: impl IntoIterator<Item = crate::Result<Case>>,
+    base: &Problem,
+    hydro_database: &str,
+) -> crate::Result<()> {
+    let io = |e: std::io::Error| Error::Io {
+        path: out_name.to_string(),
+        message: e.to_string(),
+    };
+    let mut separator = "{\"format_version\":1,\"cases\":[";
+    for case in cases {
+        let document = case_json(&case?, base, hydro_database);
+        out.write_all(separator.as_bytes()).map_err(io)?;
+        serde_json::to_writer(&mut *out, &document).map_err(|e| io(e.into()))?;
+        separator = ",";
+    }
+    if separator == "," {
+        out.write_all(b"]}\n").map_err(io)?;
+    } else {
+        out.write_all(b"{\"format_version\":1,\"cases\":[]}\n")
+            .map_err(io)?;
+    }
+    out.flush().map_err(io)
 }
 
 fn case_json(case: &Case, base: &Problem, hydro_database: &str) -> Json {
@@ -95,15 +121,11 @@ pub fn parameters_for<H: Clone + PartialEq>(
                     }
                     FmuValue::Integer(x as i32)
                 }
-                (Value::Word(word), _) => {
-                    let code = variable
-                        .items
-                        .iter()
-                        .find(|(_, w)| *w == word)
-                        .map(|(code, _)| *code)
-                        .ok_or_else(|| format!("{name} has no item '{word}'"))?;
-                    FmuValue::Integer(code)
-                }
+                (Value::Word(word), _) => FmuValue::Integer(
+                    setting
+                        .code_of(word)
+                        .ok_or_else(|| format!("{name} has no code for '{word}'"))?,
+                ),
             }
         };
         parameters.set(name, value);
@@ -166,6 +188,16 @@ mod tests {
         .unwrap()
     }
 
+    /// The document of `cases`, as written and read back.
+    fn cases_json(cases: &[Case], base: &Problem, hydro_database: &str) -> Json {
+        let mut out = Vec::new();
+        let cases = cases.iter().cloned().map(Ok);
+        write_cases_json(&mut out, "out", cases, base, hydro_database).unwrap();
+        let text = String::from_utf8(out).unwrap();
+        assert!(text.ends_with("]}\n"), "{text}");
+        serde_json::from_str(&text).unwrap()
+    }
+
     fn plan(table: &str, base: &Problem) -> Json {
         let cases: Vec<Case> = parse_case_table(table, "cases.csv")
             .unwrap()
@@ -206,7 +238,7 @@ mod tests {
                 .filter(|v| v.causality == Causality::Parameter)
             {
                 let value = &fmu["parameters"][v.name];
-                let set = match v.var_type.access_type() {
+                let set = match v.var_type {
                     VariableType::Integer if v.name == "seed" => {
                         assert!(value.is_null());
                         true

@@ -81,7 +81,11 @@ mod tests {
     /// A runtime error names its remedy by the FMU parameter; `Display` by the key.
     #[test]
     fn remedies_are_named_as_the_fmu_user_sets_them() {
-        let diverged = Error::Diverged { time: 3.0 };
+        let diverged = Error::Unphysical {
+            time: 3.0,
+            what: "the state became X = NaN".into(),
+            cause: crate::error::Cause::Step,
+        };
         assert!(diverged.to_string().ends_with("reduce run.time_step"));
         let text = FmuError::Core(diverged).to_string();
         assert!(text.ends_with("reduce the parameter stepSize"), "{text}");

@@ -6,26 +6,15 @@
 //! the start values in [`start`] and the table [`VARIABLES`]. The FMU layer uses these,
 //! so the XML is the single source of truth.
 
-/// Base type of a model variable (the FMI 2.0 element inside `ScalarVariable`).
+/// Base type of a model variable (the FMI 2.0 element inside `ScalarVariable`). No
+/// Enumeration: build.rs refuses one, as libcosim and ecos do not register them (a mode is
+/// an Integer with its codes in the description).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum VariableType {
     Real,
     Integer,
     Boolean,
     String,
-    /// Accessed through `fmi2GetInteger`/`fmi2SetInteger`: shares the Integer
-    /// value-reference space.
-    Enumeration,
-}
-
-impl VariableType {
-    /// The type whose `fmi2Get*`/`fmi2Set*` functions access this variable.
-    pub const fn access_type(self) -> VariableType {
-        match self {
-            VariableType::Enumeration => VariableType::Integer,
-            other => other,
-        }
-    }
 }
 
 /// FMI 2.0 causality.
@@ -54,7 +43,6 @@ pub enum Variability {
 pub enum Start {
     None,
     Real(f64),
-    /// Integer or Enumeration.
     Integer(i32),
     String(&'static str),
 }
@@ -64,23 +52,21 @@ pub enum Start {
 pub struct VariableInfo {
     /// The variable's name in the XML.
     pub name: &'static str,
-    /// Its value reference (unique within its [`VariableType::access_type`]).
+    /// Its value reference (unique within its type).
     pub value_reference: u32,
     /// Its base type.
     pub var_type: VariableType,
     /// Its start value.
     pub start: Start,
-    /// The items (value, name) of its enumeration type (empty unless an Enumeration).
-    pub items: &'static [(i32, &'static str)],
     pub causality: Causality,
     pub variability: Variability,
 }
 
 /// Looks a variable up by its access type and value reference.
 pub fn find(var_type: VariableType, value_reference: u32) -> Option<&'static VariableInfo> {
-    VARIABLES.iter().find(|v| {
-        v.var_type.access_type() == var_type.access_type() && v.value_reference == value_reference
-    })
+    VARIABLES
+        .iter()
+        .find(|v| v.var_type == var_type && v.value_reference == value_reference)
 }
 
 include!(concat!(env!("OUT_DIR"), "/model_description.rs"));
@@ -146,6 +132,50 @@ mod tests {
         assert_eq!(MODEL_IDENTIFIER, "SlowDrift");
     }
 
+    /// What every master reads alike (checked here on the text, independently of build.rs,
+    /// which refuses the same): no Enumeration, which libcosim and ecos skip; every Real with
+    /// its own unit (OMSimulator does not inherit one from a declaredType), declared in
+    /// UnitDefinitions and equal to its declaredType's.
+    #[test]
+    fn variables_are_master_neutral() {
+        let unit_definitions = section("UnitDefinitions");
+        let units: HashSet<&str> = tags(&unit_definitions, "Unit")
+            .iter()
+            .map(|t| attr(t, "name").expect("name"))
+            .collect();
+        let types = section("TypeDefinitions");
+        let type_unit = |name: &str| -> Option<String> {
+            let open = format!("<SimpleType name=\"{name}\">");
+            let body = &types[types.find(&open)?..];
+            let body = &body[..body.find("</SimpleType>").expect("closes")];
+            tags(body, "Real")
+                .first()
+                .and_then(|t| attr(t, "unit"))
+                .map(str::to_string)
+        };
+        let vars = section("ModelVariables");
+        let mut reals = 0;
+        for block in vars.split("<ScalarVariable").skip(1) {
+            let name = attr(block, "name").expect("name");
+            assert!(!block.contains("<Enumeration"), "{name} is an Enumeration");
+            let Some(real) = tags(block, "Real").first().copied() else {
+                continue;
+            };
+            reals += 1;
+            let unit = attr(real, "unit").unwrap_or_else(|| panic!("{name} has no unit"));
+            assert!(units.contains(unit), "{name}: unit {unit} is not declared");
+            if let Some(t) = attr(real, "declaredType") {
+                let declared = type_unit(t).unwrap_or_else(|| panic!("{name}: type {t}"));
+                assert_eq!(declared, unit, "{name}: declaredType {t}");
+            }
+        }
+        let expected = VARIABLES
+            .iter()
+            .filter(|v| v.var_type == VariableType::Real)
+            .count();
+        assert_eq!(reals, expected);
+    }
+
     #[test]
     fn names_are_unique() {
         let names: HashSet<&str> = VARIABLES.iter().map(|v| v.name).collect();
@@ -156,7 +186,7 @@ mod tests {
     fn value_references_are_unique_per_type() {
         let keys: HashSet<(VariableType, u32)> = VARIABLES
             .iter()
-            .map(|v| (v.var_type.access_type(), v.value_reference))
+            .map(|v| (v.var_type, v.value_reference))
             .collect();
         assert_eq!(keys.len(), VARIABLES.len());
         for v in VARIABLES {
@@ -201,8 +231,8 @@ mod tests {
             Some(Output)
         );
         assert_eq!(
-            find(VariableType::Integer, vr::DRAG_MODEL).map(|v| v.var_type),
-            Some(VariableType::Enumeration)
+            find(VariableType::Integer, vr::DRAG_MODEL).map(|v| v.causality),
+            Some(Parameter)
         );
         assert_eq!(
             find(VariableType::String, vr::HYDRO_DATABASE).map(|v| v.causality),

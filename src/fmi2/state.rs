@@ -21,7 +21,7 @@
 //! | 1 | 1 when the experiment has a stop time, else 0 |
 //! | 8 | stop time (f64, finite and after the start time; all bits 0 without a stop time) |
 //! | 4 | number of parameters (u32): modelDescription.xml's, which the reader requires |
-//! | ... | each parameter in the XML's order: its value reference (u32), its type (one byte: `R` Real, `I` Integer or Enumeration, `S` String), its value: Real 8 bytes (f64, finite), Integer 4 bytes (i32), String a length (u32, at most [`MAX_STRING_BYTES`]) and that many bytes of UTF-8 without NUL |
+//! | ... | each parameter in the XML's order: its value reference (u32), its type (one byte: `R` Real, `I` Integer, `S` String), its value: Real 8 bytes (f64, finite), Integer 4 bytes (i32), String a length (u32, at most [`MAX_STRING_BYTES`]) and that many bytes of UTF-8 without NUL |
 //! | 96 | the snapshot, when present ([`Snapshot::to_bytes`]) |
 //! | 8 | checksum: FNV-1a (u64) of every byte before it |
 //!
@@ -386,7 +386,7 @@ impl<'a> Reader<'a> {
             }
             let at = self.at;
             let tag = self.u8(&format!("type of {name}"))?;
-            let wanted = match info.var_type.access_type() {
+            let wanted = match info.var_type {
                 VariableType::Real => REAL,
                 VariableType::String => STRING,
                 _ => INTEGER,

@@ -65,7 +65,7 @@ impl Segments {
     }
 
     /// Samples of a tail: x_k for m in [(k+1)B - 1, (k+1)B + H + R).
-    fn tail_len(&self) -> usize {
+    pub fn tail_len(&self) -> usize {
         HALO_BEFORE + HALO_AFTER + self.ramp
     }
 

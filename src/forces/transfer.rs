@@ -40,7 +40,9 @@ pub fn transfers_on_grid(
         .iter()
         .map(|dir| {
             let mut drift: [Vec<f64>; 3] = std::array::from_fn(|_| Vec::with_capacity(grid.count));
-            let mut damping: [[Vec<f64>; 3]; 3] = Default::default();
+            let capacity = if with_damping { grid.count } else { 0 };
+            let mut damping: [[Vec<f64>; 3]; 3] =
+                std::array::from_fn(|_| std::array::from_fn(|_| Vec::with_capacity(capacity)));
             table.for_each_along_heading(dir.heading, &omegas, |t, b| {
                 for (column, value) in drift.iter_mut().zip(t) {
                     column.push(value);

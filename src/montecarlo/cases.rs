@@ -12,15 +12,18 @@
 //! starting with `#` are skipped; fields are trimmed; quoting follows RFC 4180.
 //!
 //! A malformed table is an [`Error::Parse`] naming the file, the line, the data row and the
-//! column. A value the model refuses (a negative Hs, say) makes that case's runs fail, not
+//! column. The table is read as a stream ([`CaseRows`], row by row), so that a table of any
+//! length is read in the same memory (but for its names). A value the model refuses (a negative Hs, say) makes that case's runs fail, not
 //! the table; its error names the row and column.
 
 use super::Case;
-use crate::error::{Location, Result};
+use crate::error::{Error, Location, Result};
 use crate::model::DragModel;
 use crate::scenario::overrides::{by_column, Refusal, Setting, Value, SETTINGS};
 use crate::scenario::Written;
 use crate::Problem;
+use std::collections::HashMap;
+use std::io::Read;
 use std::path::Path;
 
 /// One cell of a case table.
@@ -52,84 +55,158 @@ fn columns() -> String {
     names.join(", ")
 }
 
-/// Reads a case table file.
+/// Reads a case table file (every row; [`open_case_table`] reads them one at a time).
 pub fn read_case_table(path: &Path) -> Result<Vec<CaseRow>> {
-    let text = crate::files::read_text(path)?;
-    parse_case_table(&text, &path.display().to_string())
+    open_case_table(path)?.collect()
+}
+
+/// The rows of the case table file at `path`, read as they are asked for ([`CaseRows`]).
+pub fn open_case_table(path: &Path) -> Result<CaseRows<crate::files::Input>> {
+    CaseRows::new(crate::files::open(path)?, &path.display().to_string())
+}
+
+/// Parses the text of a case table; `source` names it in errors.
+pub fn parse_case_table(text: &str, source: &str) -> Result<Vec<CaseRow>> {
+    CaseRows::new(text.as_bytes(), source)?.collect()
 }
 
 /// The header's columns: `None` for `name`, else the setting.
 type Header = Vec<Option<&'static Setting>>;
 
-/// Parses the text of a case table; `source` names it in errors.
-pub fn parse_case_table(text: &str, source: &str) -> Result<Vec<CaseRow>> {
-    let at = |line: u64| Location {
-        path: source.to_string(),
-        line: usize::try_from(line).ok(),
-    };
-    let error = |line: u64, message: String| at(line).error(message);
-    let mut reader = csv::ReaderBuilder::new()
-        .has_headers(false)
-        .comment(Some(b'#'))
-        .trim(csv::Trim::All)
-        .flexible(true)
-        .from_reader(text.as_bytes());
-    let mut records = reader.records();
-    let csv_error = |e: csv::Error| {
-        let line = e.position().map_or(1, csv::Position::line);
-        error(line, e.to_string())
-    };
-    let header_record = match records.next() {
-        Some(record) => record.map_err(csv_error)?,
-        None => return Err(error(1, "the case table is empty (no header line)".into())),
-    };
-    let header_line = header_record.position().map_or(1, csv::Position::line);
-    let mut header: Header = Vec::new();
-    let mut names: Vec<&str> = Vec::new();
-    for field in header_record.iter() {
-        let setting = match field {
-            "name" => None,
-            _ => Some(by_column(field).ok_or_else(|| {
-                error(
-                    header_line,
-                    format!("unknown column '{field}'; the columns are {}", columns()),
-                )
-            })?),
+/// The rows of a case table read from `R` one at a time: an iterator of [`CaseRow`]s that
+/// ends after the first error. What it holds does not grow with the rows read but for the
+/// names seen (a map from name to row, to refuse a name used twice).
+pub struct CaseRows<R> {
+    reader: csv::Reader<R>,
+    /// The record read last (one buffer for every row).
+    record: csv::StringRecord,
+    source: String,
+    header: Header,
+    /// The header's fields as written.
+    columns: Vec<String>,
+    header_line: u64,
+    /// Data rows read so far.
+    rows: usize,
+    /// The row of every name seen.
+    names: HashMap<String, usize>,
+    finished: bool,
+}
+
+impl<R: Read> CaseRows<R> {
+    /// Reads the header of the table `input`; `source` names it in errors.
+    pub fn new(input: R, source: &str) -> Result<Self> {
+        let reader = csv::ReaderBuilder::new()
+            .has_headers(false)
+            .comment(Some(b'#'))
+            .trim(csv::Trim::All)
+            .flexible(true)
+            .from_reader(input);
+        let mut table = CaseRows {
+            reader,
+            record: csv::StringRecord::new(),
+            source: source.to_string(),
+            header: Vec::new(),
+            columns: Vec::new(),
+            header_line: 1,
+            rows: 0,
+            names: HashMap::new(),
+            finished: false,
         };
-        if names.contains(&field) {
-            return Err(error(
-                header_line,
-                format!("column '{field}' appears twice"),
-            ));
+        if !table.read_record()? {
+            return Err(table.error(1, "the case table is empty (no header line)".into()));
         }
-        names.push(field);
-        header.push(setting);
+        table.header_line = table.line();
+        for field in table.record.iter() {
+            let setting = match field {
+                "name" => None,
+                _ => Some(by_column(field).ok_or_else(|| {
+                    table.error(
+                        table.header_line,
+                        format!("unknown column '{field}'; the columns are {}", columns()),
+                    )
+                })?),
+            };
+            if table.columns.iter().any(|c| c == field) {
+                return Err(
+                    table.error(table.header_line, format!("column '{field}' appears twice"))
+                );
+            }
+            table.columns.push(field.to_string());
+            table.header.push(setting);
+        }
+        Ok(table)
     }
-    let mut rows: Vec<CaseRow> = Vec::new();
-    for (index, record) in records.enumerate() {
-        let record = record.map_err(csv_error)?;
-        let row = index + 1;
-        let line = record.position().map_or(header_line, csv::Position::line);
-        if record.len() != header.len() {
-            return Err(error(
+
+    /// The names of the rows read so far, in row order.
+    pub fn names(&self) -> Vec<&str> {
+        let mut names: Vec<(&str, usize)> = self
+            .names
+            .iter()
+            .map(|(n, &row)| (n.as_str(), row))
+            .collect();
+        names.sort_by_key(|&(_, row)| row);
+        names.into_iter().map(|(name, _)| name).collect()
+    }
+
+    fn error(&self, line: u64, message: String) -> Error {
+        Location {
+            path: self.source.clone(),
+            line: usize::try_from(line).ok(),
+        }
+        .error(message)
+    }
+
+    /// The line of the record read last.
+    fn line(&self) -> u64 {
+        self.record
+            .position()
+            .map_or(self.header_line, csv::Position::line)
+    }
+
+    /// Reads the next record into `self.record`; `false` at the end of the table.
+    fn read_record(&mut self) -> Result<bool> {
+        self.reader.read_record(&mut self.record).map_err(|e| {
+            let line = e.position().map(csv::Position::line);
+            match e.kind() {
+                csv::ErrorKind::Io(io) => Error::Io {
+                    path: self.source.clone(),
+                    message: io.to_string(),
+                },
+                _ => self.error(line.unwrap_or(self.header_line), e.to_string()),
+            }
+        })
+    }
+
+    /// The next row, `None` at the end of the table.
+    fn next_row(&mut self) -> Result<Option<CaseRow>> {
+        if !self.read_record()? {
+            if self.rows == 0 {
+                return Err(self.error(self.header_line, "the case table has no rows".into()));
+            }
+            return Ok(None);
+        }
+        self.rows += 1;
+        let (row, line) = (self.rows, self.line());
+        if self.record.len() != self.header.len() {
+            return Err(self.error(
                 line,
                 format!(
                     "row {row} has {} fields, the header has {} ({})",
-                    record.len(),
-                    header.len(),
-                    names.join(", ")
+                    self.record.len(),
+                    self.header.len(),
+                    self.columns.join(", ")
                 ),
             ));
         }
         let mut name = format!("case{row}");
         let mut cells = Vec::new();
-        for ((setting, column), field) in header.iter().zip(&names).zip(record.iter()) {
+        for ((setting, column), field) in self.header.iter().zip(&self.columns).zip(&self.record) {
             if field.is_empty() {
                 continue;
             }
             let Some(setting) = setting else {
                 if field.contains('"') {
-                    return Err(error(
+                    return Err(self.error(
                         line,
                         format!("row {row}, column 'name': '{field}' contains a quote"),
                     ));
@@ -139,7 +216,7 @@ pub fn parse_case_table(text: &str, source: &str) -> Result<Vec<CaseRow>> {
             };
             let cell = if setting.takes_words() {
                 if !setting.words.contains(&field) {
-                    return Err(error(
+                    return Err(self.error(
                         line,
                         format!(
                             "row {row}, column '{column}': '{field}' is not one of {}",
@@ -152,7 +229,7 @@ pub fn parse_case_table(text: &str, source: &str) -> Result<Vec<CaseRow>> {
                 match field.parse::<f64>() {
                     Ok(v) if v.is_finite() => Cell::Number(v),
                     _ => {
-                        return Err(error(
+                        return Err(self.error(
                             line,
                             format!(
                                 "row {row}, column '{column}': '{field}' is not a finite number"
@@ -163,26 +240,33 @@ pub fn parse_case_table(text: &str, source: &str) -> Result<Vec<CaseRow>> {
             };
             cells.push((*setting, cell));
         }
-        if let Some(other) = rows.iter().find(|r| r.name == name) {
-            return Err(error(
+        if let Some(&other) = self.names.get(&name) {
+            return Err(self.error(
                 line,
-                format!(
-                    "row {row}, column 'name': '{name}' is also the name of row {}",
-                    other.row
-                ),
+                format!("row {row}, column 'name': '{name}' is also the name of row {other}"),
             ));
         }
-        rows.push(CaseRow {
+        self.names.insert(name.clone(), row);
+        Ok(Some(CaseRow {
             row,
             line: line as usize,
             name,
             cells,
-        });
+        }))
     }
-    if rows.is_empty() {
-        return Err(error(header_line, "the case table has no rows".into()));
+}
+
+impl<R: Read> Iterator for CaseRows<R> {
+    type Item = Result<CaseRow>;
+
+    fn next(&mut self) -> Option<Result<CaseRow>> {
+        if self.finished {
+            return None;
+        }
+        let next = self.next_row();
+        self.finished = !matches!(next, Ok(Some(_)));
+        next.transpose()
     }
-    Ok(rows)
 }
 
 impl CaseRow {

@@ -4,7 +4,9 @@
 //! transient to drop. [`run_seed`] simulates one (case, seed) and summarises surge, sway and
 //! yaw after the transient ([`DofStats`]); [`run_jobs`] runs a list of (case, seed) jobs on
 //! scoped threads that take the next job from a shared counter and hand each result to the
-//! calling thread as it finishes; [`seed_statistics`] is the mean over seeds and its
+//! calling thread as it finishes, and stops early, abandoning the runs in flight, when its
+//! `stop` flag is set (the CLI sets it on SIGINT and SIGTERM; the library installs no signal
+//! handler); [`seed_statistics`] is the mean over seeds and its
 //! standard error. The results depend only on (case, seed): not on the thread count or the
 //! order in which runs finish.
 //!
@@ -21,7 +23,7 @@ use crate::stats::summarize;
 use crate::{Problem, RecordPlan, Simulation};
 use std::collections::HashMap;
 use std::panic::{catch_unwind, AssertUnwindSafe};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
@@ -81,10 +83,24 @@ pub fn run_seed(case: &Case, seed: u64) -> Result<[DofStats; 3]> {
 
 /// [`run_seed`] with the case's [`RecordPlan`] made beforehand (once for all its seeds).
 pub fn run_seed_with(case: &Case, plan: &Arc<RecordPlan>, seed: u64) -> Result<[DofStats; 3]> {
+    let never = AtomicBool::new(false);
+    let stats = run_seed_unless(case, plan, seed, &never)?;
+    Ok(stats.expect("a run that is never stopped ends"))
+}
+
+/// [`run_seed_with`], abandoned (`Ok(None)`) at the first time step that finds `stop` set.
+fn run_seed_unless(
+    case: &Case,
+    plan: &Arc<RecordPlan>,
+    seed: u64,
+    stop: &AtomicBool,
+) -> Result<Option<[DofStats; 3]>> {
     let mut config = case.problem.clone();
     config.sea.seed = seed;
     let dt = config.run.time_step;
-    let records = positions(Simulation::with_plan(config, plan)?)?;
+    let Some(records) = positions(Simulation::with_plan(config, plan)?, stop)? else {
+        return Ok(None);
+    };
     let mut out = [DofStats {
         mean: 0.0,
         rms: 0.0,
@@ -105,18 +121,21 @@ pub fn run_seed_with(case: &Case, plan: &Arc<RecordPlan>, seed: u64) -> Result<[
             min: s.min * scale,
         };
     }
-    Ok(out)
+    Ok(Some(out))
 }
 
 /// Simulates `config` from its initial condition for its duration with no external force
 /// and returns the records of X (m), Y (m) and theta (rad), sampled every time step from
 /// t = start_time (the initial state) to the end.
 pub fn simulate_positions(config: Problem) -> Result<[Vec<f64>; 3]> {
-    positions(Simulation::new(config)?)
+    let never = AtomicBool::new(false);
+    let records = positions(Simulation::new(config)?, &never)?;
+    Ok(records.expect("a run that is never stopped ends"))
 }
 
-/// The positions of [`simulate_positions`] for a simulation at its start.
-fn positions(mut sim: Simulation) -> Result<[Vec<f64>; 3]> {
+/// The positions of [`simulate_positions`] for a simulation at its start; `None` when a
+/// step finds `stop` set (checked before every step: one relaxed atomic load).
+fn positions(mut sim: Simulation, stop: &AtomicBool) -> Result<Option<[Vec<f64>; 3]>> {
     let mut records: [Vec<f64>; 3] = Default::default();
     let mut steps = 0;
     for record in &mut records {
@@ -125,10 +144,13 @@ fn positions(mut sim: Simulation) -> Result<[Vec<f64>; 3]> {
     let mut push = |q: [f64; 3]| records.iter_mut().zip(q).for_each(|(r, v)| r.push(v));
     push(sim.position());
     for _ in 0..steps {
+        if stop.load(Ordering::Relaxed) {
+            return Ok(None);
+        }
         sim.step([0.0; 3])?;
         push(sim.position());
     }
-    Ok(records)
+    Ok(Some(records))
 }
 
 /// One run of a campaign: the index of its case and its seed.
@@ -151,28 +173,38 @@ pub const TICK: Duration = Duration::from_millis(250);
 
 /// Runs `jobs` on `threads` scoped threads (at least 1) sharing one job counter. On the
 /// calling thread, `on_event` receives `Some(finished)` as each run finishes (in finishing
-/// order) and `None` every [`TICK`] while nothing finishes. Returns when every job is done.
+/// order) and `None` every [`TICK`] while nothing finishes. Returns when every job is done,
+/// or, once `stop` is set, as soon as the runs in flight have seen it: no job starts after
+/// it, a run in flight is abandoned at its next time step (a plan being made is finished
+/// first), and the jobs not run or abandoned are not reported.
 pub fn run_jobs(
     cases: &[Case],
     jobs: &[Job],
     threads: usize,
+    stop: &AtomicBool,
     mut on_event: impl FnMut(Option<Finished>),
 ) {
     let plans = CasePlans::new(cases, jobs);
     let run_job = |index: usize| {
         let job = jobs[index];
         let run = || {
+            if stop.load(Ordering::Relaxed) {
+                return Ok(None);
+            }
             let plan = plans.get(job.case)?.map_err(|e| e.to_string())?;
-            run_seed_with(&cases[job.case], &plan, job.seed).map_err(|e| e.to_string())
+            run_seed_unless(&cases[job.case], &plan, job.seed, stop).map_err(|e| e.to_string())
         };
         let result = catch_unwind(AssertUnwindSafe(run)).unwrap_or_else(|panic| {
             Err(Error::invalid("run", "panic", panic_text(&*panic)).to_string())
         });
         plans.done(job.case);
-        result
+        result.transpose()
     };
-    crate::parallel::run_indexed(jobs.len(), threads, run_job, TICK, |event| {
-        on_event(event.map(|(job, result)| Finished { job, result }))
+    crate::parallel::run_indexed(jobs.len(), threads, run_job, TICK, |event| match event {
+        Some((job, Some(result))) => on_event(Some(Finished { job, result })),
+        // Abandoned: not reported.
+        Some((_, None)) => {}
+        None => on_event(None),
     });
 }
 

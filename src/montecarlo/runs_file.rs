@@ -10,12 +10,17 @@
 //! Reading keeps the last line of each (case, seed): a run that failed and was run again
 //! counts once. A last line without its newline (the process was killed while writing it)
 //! is dropped, and cut off before anything is appended.
+//!
+//! One process at a time: [`RunsFile::open`] takes the file's exclusive lock
+//! ([`crate::files::lock`], `NAME.lock` beside it) before reading it, and holds it until
+//! the [`RunsFile`] is dropped; a second process is refused at once, naming the first.
 
 use super::{Case, DofStats, DOFS, STATISTICS};
 use crate::error::{Error, Result};
+use crate::files::Lock;
 use std::fs::{File, OpenOptions};
 use std::io::{Seek, SeekFrom, Write};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// One line of the per-run file.
 #[derive(Debug, Clone, PartialEq)]
@@ -87,30 +92,66 @@ fn quote(text: &str) -> String {
     format!("\"{}\"", text.replace('"', "\"\""))
 }
 
-/// Opens (or creates) the per-run file for appending and returns the runs it already holds
-/// (the last line of each (case, seed), in file order).
-pub fn open(path: &Path) -> Result<(Vec<RunRow>, File)> {
-    let io = |e: std::io::Error| Error::Io {
-        path: path.display().to_string(),
-        message: e.to_string(),
-    };
-    let text = crate::files::read_text_if_exists(path)?.unwrap_or_default();
-    let complete = text.rfind('\n').map_or(0, |i| i + 1);
-    let runs = parse(&text[..complete], &path.display().to_string())?;
-    let mut file = OpenOptions::new()
-        .read(true)
-        .write(true)
-        .create(true)
-        .truncate(false)
-        .open(path)
-        .map_err(io)?;
-    file.set_len(complete as u64).map_err(io)?;
-    file.seek(SeekFrom::End(0)).map_err(io)?;
-    if complete == 0 {
-        writeln!(file, "{}", header()).map_err(io)?;
-        file.flush().map_err(io)?;
+/// A per-run file open for appending, locked against other processes.
+#[derive(Debug)]
+pub struct RunsFile {
+    path: PathBuf,
+    file: File,
+    _lock: Lock,
+}
+
+impl RunsFile {
+    /// Locks the per-run file at `path` (an error naming the process that holds it), opens
+    /// or creates it for appending (a cut-off last line removed, a header written to a new
+    /// file) and returns the runs it already holds (the last line of each (case, seed), in
+    /// file order).
+    pub fn open(path: &Path) -> Result<(Vec<RunRow>, RunsFile)> {
+        let lock = crate::files::lock(path)?;
+        let io = |e: std::io::Error| Error::Io {
+            path: path.display().to_string(),
+            message: e.to_string(),
+        };
+        let text = crate::files::read_text_if_exists(path)?.unwrap_or_default();
+        let complete = text.rfind('\n').map_or(0, |i| i + 1);
+        let runs = parse(&text[..complete], &path.display().to_string())?;
+        let mut file = OpenOptions::new()
+            .read(true)
+            .write(true)
+            .create(true)
+            .truncate(false)
+            .open(path)
+            .map_err(io)?;
+        file.set_len(complete as u64).map_err(io)?;
+        file.seek(SeekFrom::End(0)).map_err(io)?;
+        if complete == 0 {
+            writeln!(file, "{}", header()).map_err(io)?;
+            file.flush().map_err(io)?;
+        }
+        let runs_file = RunsFile {
+            path: path.to_path_buf(),
+            file,
+            _lock: lock,
+        };
+        Ok((runs, runs_file))
     }
-    Ok((runs, file))
+
+    /// Appends `row` as one write of its whole line, flushed: a kill leaves the line whole
+    /// or cut (and a cut line is dropped on the next open).
+    pub fn append(&mut self, row: &RunRow) -> Result<()> {
+        self.file
+            .write_all(format_row(row).as_bytes())
+            .and_then(|()| self.file.flush())
+            .map_err(|e| Error::Io {
+                path: self.path.display().to_string(),
+                message: e.to_string(),
+            })
+    }
+
+    /// Every run the file holds now ([`parse`]).
+    pub fn runs(&self) -> Result<Vec<RunRow>> {
+        let text = crate::files::read_text(&self.path)?;
+        parse(&text, &self.path.display().to_string())
+    }
 }
 
 /// Reads the runs of a per-run file's text (RFC 4180 quoting, the `csv` crate); `source`

@@ -37,7 +37,8 @@ fn register_font() -> Result<(), String> {
     result
 }
 
-/// Writes `figure` to `stem.png` and `stem.svg`; returns the two paths.
+/// Writes `figure` to `stem.png` and `stem.svg`, each anew atomically (`files::replace`:
+/// a kill never leaves a figure cut); returns the two paths.
 pub fn write_figure(figure: &Figure, stem: &Path) -> Result<[PathBuf; 2], String> {
     register_font()?;
     let png = stem.with_extension("png");
@@ -50,28 +51,35 @@ pub fn write_figure(figure: &Figure, stem: &Path) -> Result<[PathBuf; 2], String
         root.present()
             .map_err(|e| format!("{}: {e}", png.display()))?;
     }
-    write_png(&png, figure.size, &pixels).map_err(|e| format!("{}: {e}", png.display()))?;
+    write_png(&png, figure.size, &pixels)?;
+    let mut text = String::new();
     {
-        let root = SVGBackend::new(&svg, figure.size).into_drawing_area();
+        let root = SVGBackend::with_string(&mut text, figure.size).into_drawing_area();
         draw(&root, figure).map_err(|e| format!("{}: {e}", svg.display()))?;
         root.present()
             .map_err(|e| format!("{}: {e}", svg.display()))?;
     }
+    slowdrift::files::replace(&svg, |w| std::io::Write::write_all(w, text.as_bytes()))
+        .map_err(|e| e.to_string())?;
     Ok([png, svg])
 }
 
 /// Writes 8-bit RGB `pixels` as a PNG with the encoder's best compression and adaptive
 /// row filters (a third of the size of plotters' default encoding for these figures).
 fn write_png(path: &Path, (width, height): (u32, u32), pixels: &[u8]) -> Result<(), String> {
-    let file = std::fs::File::create(path).map_err(|e| e.to_string())?;
-    let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), width, height);
-    encoder.set_color(png::ColorType::Rgb);
-    encoder.set_depth(png::BitDepth::Eight);
-    encoder.set_compression(png::Compression::Best);
-    encoder.set_adaptive_filter(png::AdaptiveFilterType::Adaptive);
-    let mut writer = encoder.write_header().map_err(|e| e.to_string())?;
-    writer.write_image_data(pixels).map_err(|e| e.to_string())?;
-    writer.finish().map_err(|e| e.to_string())
+    slowdrift::files::replace(path, |w| {
+        let mut encoder = png::Encoder::new(w, width, height);
+        encoder.set_color(png::ColorType::Rgb);
+        encoder.set_depth(png::BitDepth::Eight);
+        encoder.set_compression(png::Compression::Best);
+        encoder.set_adaptive_filter(png::AdaptiveFilterType::Adaptive);
+        let mut writer = encoder.write_header().map_err(std::io::Error::other)?;
+        writer
+            .write_image_data(pixels)
+            .map_err(std::io::Error::other)?;
+        writer.finish().map_err(std::io::Error::other)
+    })
+    .map_err(|e| e.to_string())
 }
 
 type DrawResult<DB> = Result<(), DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;

@@ -17,12 +17,12 @@
 //! less room gets a typed error here instead of an allocation failure later, which would
 //! abort the process (and, in an FMU, the master with it).
 
-use crate::error::{Error, Result};
+use crate::error::{bytes_text, Error, Result};
 use crate::forces::distinct_kinematics;
 use crate::hydro::bidirectional::BidirectionalSource;
 use crate::model::{DragModel, Interaction, NewmanForm, SecondOrder};
 use crate::problem::Problem;
-use crate::scenario::limits::{bytes_text, over_budget};
+use crate::scenario::limits::over_budget;
 use crate::sea_state::FrequencyGrid;
 
 const F64: f64 = 8.0;
@@ -72,6 +72,13 @@ impl MemoryEstimate {
         let directions = problem.sea.directions();
         let d = directions.len() as f64;
         let model = &problem.model;
+        // The stream's join (`forces::stream`) keeps the tail of every linear series of a
+        // segment for the next: each term below adds its series' tails.
+        let tail = segments.tail_len() as f64 * C64;
+        // Linear series per direction and set of records: Newman's P+ and P- of the force
+        // and damping records (the geometric form; the arithmetic form has one and the
+        // elevation).
+        let newman_series = 2.0 * FORCE_AND_DAMPING + 1.0;
         let mut plan = Vec::new();
         let mut run = Vec::new();
         let block = || format!("{}", problem.run.block_duration);
@@ -97,13 +104,13 @@ impl MemoryEstimate {
             "run.block_duration",
             block(),
             "the records of one block",
-            series,
+            series + tail,
         ));
         run.push(term(
             "sea.n_directions",
             problem.sea.n_directions.to_string(),
-            format!("{d} directions' wave components"),
-            d * (C64 + F64) * g,
+            format!("{d} directions' wave components and series"),
+            d * (C64 + F64) * g + d * newman_series * tail,
         ));
         if d >= 2.0 && problem.interaction() != Interaction::None {
             let omegas = match &problem.hydro.bidirectional {
@@ -132,7 +139,7 @@ impl MemoryEstimate {
                 "sea.n_directions",
                 problem.sea.n_directions.to_string(),
                 "the cross-direction terms".to_string(),
-                3.0 * C64 * l + 3.0 * F64 * l + 2.0 * C64 * g,
+                3.0 * C64 * l + 3.0 * F64 * l + 2.0 * C64 * g + 4.0 * d * tail,
             ));
         }
         if let Some(yaw) = &model.yaw_following {
@@ -151,7 +158,7 @@ impl MemoryEstimate {
                 "model.yaw_following.headings",
                 yaw.headings.to_string(),
                 format!("the records at {y} yaw angles"),
-                y * FORCE_AND_DAMPING * F64 * l + eta,
+                y * FORCE_AND_DAMPING * F64 * l + eta + y * d * newman_series * tail,
             ));
         }
         if model.drag != DragModel::Off {
@@ -166,7 +173,8 @@ impl MemoryEstimate {
                 format!("the kinematics of {c} distinct columns of {s} strips"),
                 c * (1.0 + s) * C32 * l
                     + (1.0 + s) * C32 * l
-                    + c * ((s + 6.0) * C64 * g + 4.0 * s * s * F64),
+                    + c * ((s + 6.0) * C64 * g + 4.0 * s * s * F64)
+                    + c * (1.0 + s) * tail,
             ));
         }
         if model.second_order == SecondOrder::FullQtf {
@@ -176,10 +184,11 @@ impl MemoryEstimate {
                 // factorisation's matrices; jointly over the directions (the cross terms from
                 // the bi-directional QTF): at most n d factors of d g values per DOF, and
                 // matrices of (n d)^2.
+                // The join's tails: one per factor series.
                 let bytes = if problem.cross_terms_from_qtf() {
-                    3.0 * ((n * d) * C64 * d * g + 4.0 * (n * d) * (n * d) * C64)
+                    3.0 * ((n * d) * C64 * d * g + 4.0 * (n * d) * (n * d) * C64 + n * d * tail)
                 } else {
-                    d * 3.0 * (n * C64 * g + 4.0 * n * n * C64)
+                    d * 3.0 * (n * C64 * g + 4.0 * n * n * C64 + n * tail)
                 };
                 plan.push(term(
                     "model.second_order",
@@ -202,30 +211,24 @@ impl MemoryEstimate {
         })
     }
 
-    /// The memory of a plan serving `runs` simulations at once, bytes.
-    pub fn total(&self, runs: usize) -> f64 {
-        self.plan + runs as f64 * self.per_run
+    /// The memory of one simulation and its plan, bytes.
+    pub fn total(&self) -> f64 {
+        self.plan + self.per_run
     }
 
-    /// Refuses `runs` simulations at once beyond the problem's memory limit, naming the
+    /// Refuses the records of one simulation beyond the problem's memory limit, naming the
     /// setting of the largest term; then reserves the memory once and frees it, so that a
-    /// process that cannot hold it gets an error here rather than an abort later.
-    pub fn check(&self, problem: &Problem, runs: usize) -> Result<()> {
-        let total = self.total(runs);
+    /// process that cannot hold it gets an error here rather than an abort later. (The
+    /// limit is per simulation: a campaign on T threads may hold T of them.)
+    pub fn check(&self, problem: &Problem) -> Result<()> {
+        let total = self.total();
         let run = &problem.run;
         if total > run.memory_limit {
-            let what = match runs {
-                1 => format!(
-                    "of which {}: {}",
-                    bytes_text(self.largest.bytes),
-                    self.largest.what
-                ),
-                n => format!(
-                    "{n} runs at once; of which {}: {}",
-                    bytes_text(self.largest.bytes),
-                    self.largest.what
-                ),
-            };
+            let what = format!(
+                "of which {}: {}",
+                bytes_text(self.largest.bytes),
+                self.largest.what
+            );
             return Err(problem.origins.locate(over_budget(
                 self.largest.key,
                 &self.largest.value,
@@ -235,15 +238,10 @@ impl MemoryEstimate {
             )));
         }
         if !crate::allocator::can_allocate(total as usize) {
-            return Err(Error::invalid(
-                "run.memory_limit_gb",
-                run.memory_limit / crate::scenario::limits::BYTES_PER_GB,
-                format!(
-                    "the records need {} and this process cannot allocate them (its memory \
-                     limit, or the machine's, is lower than run.memory_limit_gb)",
-                    bytes_text(total)
-                ),
-            ));
+            return Err(Error::OutOfMemory {
+                needs: total,
+                limit: run.memory_limit,
+            });
         }
         Ok(())
     }

@@ -455,7 +455,7 @@ fn default_block_duration() -> f64 {
 }
 
 fn default_memory_limit_gb() -> f64 {
-    limits::DEFAULT_MEMORY_LIMIT / limits::BYTES_PER_GB
+    limits::DEFAULT_MEMORY_LIMIT / crate::error::BYTES_PER_GB
 }
 
 impl RunFile {
@@ -465,7 +465,7 @@ impl RunFile {
             time_step: self.time_step,
             start_time: self.start_time,
             block_duration: self.block_duration,
-            memory_limit: self.memory_limit_gb * limits::BYTES_PER_GB,
+            memory_limit: self.memory_limit_gb * crate::error::BYTES_PER_GB,
         }
     }
 }

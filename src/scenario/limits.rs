@@ -8,14 +8,11 @@
 //! and no solver runs for hours before the memory budget is consulted.
 
 use super::{DriftSource, Run, Scenario};
-use crate::error::{Error, Result};
+use crate::error::{Error, OverBudget, Result, BYTES_PER_GB, MEMORY_LIMIT_KEY};
 
 /// Default [`Run::memory_limit`]: 4 GB (4e9 bytes), for a workstation that runs a few
 /// simulations at once.
 pub const DEFAULT_MEMORY_LIMIT: f64 = 4.0e9;
-
-/// Bytes in the unit of `run.memory_limit_gb` (decimal gigabytes).
-pub const BYTES_PER_GB: f64 = 1.0e9;
 
 /// The largest number of discrete directions of a short-crested sea.
 pub const MAX_DIRECTIONS: usize = 1000;
@@ -34,20 +31,6 @@ pub const MAX_SOLVER_HEADINGS: usize = 3600;
 /// three DOFs and Aranha's 3 x 3 damping made from it, f64.
 const SOLVER_NODE_BYTES: f64 = 12.0 * 8.0;
 
-/// A memory size for a message: "302 GB", "12.5 MB".
-pub fn bytes_text(bytes: f64) -> String {
-    let (scale, unit) = [(1e12, "TB"), (1e9, "GB"), (1e6, "MB"), (1e3, "kB")]
-        .into_iter()
-        .find(|&(scale, _)| bytes >= scale)
-        .unwrap_or((1.0, "bytes"));
-    let value = bytes / scale;
-    if value >= 100.0 || scale == 1.0 {
-        format!("{value:.0} {unit}")
-    } else {
-        format!("{value:.3} {unit}")
-    }
-}
-
 /// The error of a size beyond the memory limit: names the setting that drives it, its
 /// value, the estimate and the limit.
 pub fn over_budget(
@@ -57,16 +40,14 @@ pub fn over_budget(
     bytes: f64,
     run: &Run,
 ) -> Error {
-    Error::invalid(
-        key,
-        value,
-        format!(
-            "needs {} of memory ({what}); the limit is {} (run.memory_limit_gb = {})",
-            bytes_text(bytes),
-            bytes_text(run.memory_limit),
-            run.memory_limit / BYTES_PER_GB
-        ),
-    )
+    Error::OverBudget(Box::new(OverBudget {
+        field: key.to_string(),
+        value: value.to_string(),
+        at: None,
+        needs: bytes,
+        what: what.to_string(),
+        limit: run.memory_limit,
+    }))
 }
 
 /// Checks the memory limit itself and every count of `scenario` against its bound, and the
@@ -76,7 +57,7 @@ pub fn check_sizes<H>(scenario: &Scenario<H>, source: Option<&DriftSource>) -> R
     let run = &scenario.run;
     if !(run.memory_limit.is_finite() && run.memory_limit > 0.0) {
         return Err(Error::invalid(
-            "run.memory_limit_gb",
+            MEMORY_LIMIT_KEY,
             run.memory_limit / BYTES_PER_GB,
             "must be a finite number greater than zero",
         ));
@@ -141,17 +122,4 @@ pub fn check_sizes<H>(scenario: &Scenario<H>, source: Option<&DriftSource>) -> R
         }
     }
     Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn sizes_read_in_their_units() {
-        assert_eq!(bytes_text(3.02e11), "302 GB");
-        assert_eq!(bytes_text(4.0e9), "4.000 GB");
-        assert_eq!(bytes_text(12.5e6), "12.500 MB");
-        assert_eq!(bytes_text(512.0), "512 bytes");
-    }
 }

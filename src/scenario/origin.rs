@@ -7,7 +7,7 @@
 //! key path (`sea.hs`, `platform.columns[2].draft`, `current.direction_deg`, in the file's
 //! units); [`Origins::locate`] rewrites such an error for the place the value came from.
 
-use crate::error::{Error, Location};
+use crate::error::{Error, Location, OverBudget};
 use std::collections::BTreeMap;
 use std::ops::Range;
 
@@ -63,15 +63,41 @@ impl Origins {
     /// `error` (from validation, naming a key path) as the user wrote the setting: where
     /// it was written and under which name. Other errors are returned unchanged.
     pub fn locate(&self, error: Error) -> Error {
-        let Error::InvalidValue {
-            field,
-            value,
-            reason,
-            at: None,
-        } = error
-        else {
-            return error;
-        };
+        match error {
+            Error::InvalidValue {
+                field,
+                value,
+                reason,
+                at: None,
+            } => {
+                let (field, value, at) = self.place(field, value);
+                Error::InvalidValue {
+                    field,
+                    value,
+                    reason,
+                    at,
+                }
+            }
+            Error::OverBudget(mut excess) if excess.at.is_none() => {
+                let (field, value, at) = self.place(
+                    std::mem::take(&mut excess.field),
+                    std::mem::take(&mut excess.value),
+                );
+                *excess = OverBudget {
+                    field,
+                    value,
+                    at,
+                    ..*excess
+                };
+                Error::OverBudget(excess)
+            }
+            other => other,
+        }
+    }
+
+    /// A setting (key path `field`, its value in the file's units) as the user wrote it:
+    /// its name, its value in that name's units, and where.
+    fn place(&self, field: String, value: String) -> (String, String, Option<Location>) {
         if let Some((key, written)) = self
             .overrides
             .iter()
@@ -79,18 +105,16 @@ impl Origins {
             .find(|(key, _)| covers(key, &field))
         {
             return match written {
-                Written::Fmu { variable } => Error::InvalidValue {
-                    field: format!("FMU parameter {variable}"),
-                    value: in_radians(key, value),
-                    reason,
-                    at: None,
-                },
-                Written::CaseTable { at, row, column } => Error::InvalidValue {
-                    field: format!("row {row}, column '{column}'"),
+                Written::Fmu { variable } => (
+                    format!("FMU parameter {variable}"),
+                    in_radians(key, value),
+                    None,
+                ),
+                Written::CaseTable { at, row, column } => (
+                    format!("row {row}, column '{column}'"),
                     value,
-                    reason,
-                    at: Some(at.clone()),
-                },
+                    Some(at.clone()),
+                ),
             };
         }
         match &self.file {
@@ -100,22 +124,16 @@ impl Origins {
                     .filter(|(key, _)| covers(key, &field))
                     .max_by_key(|(key, _)| key.len())
                     .map(|(_, line)| *line);
-                Error::InvalidValue {
-                    field: file_key(&field),
+                (
+                    file_key(&field),
                     value,
-                    reason,
-                    at: Some(Location {
+                    Some(Location {
                         path: path.clone(),
                         line,
                     }),
-                }
+                )
             }
-            None => Error::InvalidValue {
-                field,
-                value,
-                reason,
-                at: None,
-            },
+            None => (field, value, None),
         }
     }
 }

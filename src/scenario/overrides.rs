@@ -17,6 +17,10 @@
 //!   unit); the table's values ([`Value::Number`]) are SI and radians.
 //! - **Order**: the table is applied in its order, modes before what depends on them
 //!   (`drag` before `cd`, `spreading_exponent` before `n_directions`).
+//! - **Modes in the FMU**: a setting of words (a mode: `model.drag`) is an FMU Integer whose
+//!   value is the word's code, its position in [`Setting::words`] (`dragModel` 0 off,
+//!   1 separate, 2 combined): every master can set an Integer, where libcosim and ecos skip
+//!   Enumerations. The XML's min, max and description list exactly these codes (tested).
 //!
 //! Adding a setting is one entry here (and its FMU variable in modelDescription.xml).
 
@@ -135,6 +139,28 @@ impl Setting {
     /// Whether the setting takes words rather than numbers.
     pub fn takes_words(&self) -> bool {
         !self.words.is_empty()
+    }
+
+    /// The FMU code of `word`: its position in [`Setting::words`].
+    pub fn code_of(&self, word: &str) -> Option<i32> {
+        let position = self.words.iter().position(|w| *w == word)?;
+        i32::try_from(position).ok()
+    }
+
+    /// The word of FMU code `code`, or why there is none (the codes it takes, listed).
+    pub fn word_of(&self, code: i32) -> Result<&'static str, Refusal> {
+        usize::try_from(code)
+            .ok()
+            .and_then(|i| self.words.get(i).copied())
+            .ok_or_else(|| {
+                let codes: Vec<String> = self
+                    .words
+                    .iter()
+                    .enumerate()
+                    .map(|(i, w)| format!("{i} ({w})"))
+                    .collect();
+                Refusal::Invalid(format!("must be one of {}", codes.join(", ")))
+            })
     }
 
     /// Whether its key is in degrees in the file and the case table (the FMU's is radians).
@@ -705,10 +731,10 @@ pub static SETTINGS: [Setting; 23] = [
         words: &[],
         meaning: "memory the records may take, GB (1e9 bytes); larger estimates are refused",
         apply: |s, v| {
-            s.run.memory_limit = number(v)? * super::limits::BYTES_PER_GB;
+            s.run.memory_limit = number(v)? * crate::error::BYTES_PER_GB;
             Ok(())
         },
-        get: |s| Value::Number(s.run.memory_limit / super::limits::BYTES_PER_GB),
+        get: |s| Value::Number(s.run.memory_limit / crate::error::BYTES_PER_GB),
     },
 ];
 

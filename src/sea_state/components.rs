@@ -191,6 +191,8 @@ impl WaveComponents {
         self.amplitudes.clear();
         self.power.clear();
         self.power.resize(grid.count, 0.0);
+        self.amplitudes
+            .reserve_exact(self.directions.len() * grid.count);
         for dir in &self.directions {
             for j in 0..grid.count {
                 let variance = sea.spectrum.density(grid.omega(j)) * dir.weight * grid.d_omega;

@@ -6,7 +6,7 @@ mod spectrum;
 mod spreading;
 
 pub use components::{FrequencyGrid, WaveComponents};
-pub use spectrum::Spectrum;
+pub use spectrum::{Spectrum, MAX_STEEPNESS};
 pub use spreading::{Direction, Spreading};
 
 use crate::error::{require_finite, Error, Result};
@@ -36,9 +36,25 @@ pub struct SeaState {
 }
 
 impl SeaState {
-    /// Checks every field; the error names the first offending one.
-    pub fn validate(&self) -> Result<()> {
+    /// Checks every field, and the steepness against [`MAX_STEEPNESS`] at gravity `gravity`
+    /// (m/s^2); the error names the first offending field.
+    pub fn validate(&self, gravity: f64) -> Result<()> {
         self.spectrum.validate()?;
+        let steepness = self.spectrum.steepness(gravity);
+        if steepness > MAX_STEEPNESS {
+            let (field, value) = match &self.spectrum {
+                Spectrum::Tabulated { .. } => ("sea.density", "the table".to_string()),
+                spectrum => ("sea.hs", spectrum.significant_height().to_string()),
+            };
+            return Err(Error::invalid(
+                field,
+                value,
+                format!(
+                    "a sea steeper than waves can be: Hs / L_p = {steepness:.3} (L_p = 2 pi g / \
+                     wp^2, the peak wave's length) exceeds the breaking limit 1/7"
+                ),
+            ));
+        }
         self.spreading.validate()?;
         require_finite("sea.direction_deg", self.mean_direction.to_degrees())?;
         if self.n_directions == 0 && !matches!(self.spreading, Spreading::LongCrested) {

@@ -24,6 +24,12 @@ pub enum Spectrum {
 /// 10 leaves room for narrow swell spectra while A_gamma stays well above zero (0.34).
 const MAX_GAMMA: f64 = 10.0;
 
+/// The steepest sea accepted, Hs / L_p: the deep-water breaking limit of a regular wave,
+/// H / L = 1/7 (Michell 1893; 0.142). Measured irregular seas stay below about 1/10; a
+/// steeper one is a mistake of units or digits (an Hs of 1e200 m overflows the force
+/// records).
+pub const MAX_STEEPNESS: f64 = 1.0 / 7.0;
+
 /// DNV-RP-C205 3.5.5.5: gamma when none is given, from Tp / sqrt(Hs) (s / m^0.5).
 pub fn dnv_default_gamma(hs: f64, tp: f64) -> f64 {
     let ratio = tp / hs.sqrt();
@@ -61,6 +67,29 @@ impl Spectrum {
             }
             Spectrum::Tabulated { omega, density } => interpolate_table(omega, density, w),
         }
+    }
+
+    /// Significant wave height Hs, m: the parameter of the parametric spectra; for a table
+    /// 4 sqrt(m0), m0 by the trapezoidal rule over the table.
+    pub fn significant_height(&self) -> f64 {
+        match self {
+            Spectrum::Jonswap { hs, .. } | Spectrum::PiersonMoskowitz { hs, .. } => *hs,
+            Spectrum::Tabulated { omega, density } => {
+                let m0: f64 = omega
+                    .windows(2)
+                    .zip(density.windows(2))
+                    .map(|(w, s)| 0.5 * (s[0] + s[1]) * (w[1] - w[0]))
+                    .sum();
+                4.0 * m0.sqrt()
+            }
+        }
+    }
+
+    /// Steepness Hs / L_p of the sea, L_p = 2 pi g / wp^2 the deep-water length of the peak
+    /// wave (physics.md section 2), for gravity `g` in m/s^2.
+    pub fn steepness(&self, g: f64) -> f64 {
+        let wp = self.peak_frequency();
+        self.significant_height() * wp * wp / (2.0 * std::f64::consts::PI * g)
     }
 
     /// Peak frequency wp, rad/s (for a table: the frequency of the largest entry).

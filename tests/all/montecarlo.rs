@@ -9,6 +9,7 @@ use crate::common::{base_config, oscillator_surge_variance};
 use slowdrift::montecarlo::{run_jobs, seed_statistics, Case, Job};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
+use std::sync::atomic::AtomicBool;
 
 const EXAMPLE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/example.toml");
 
@@ -273,7 +274,8 @@ fn oscillator_variance_agrees_within_the_reported_standard_error() {
     let seeds = 16;
     let jobs: Vec<Job> = (1..=seeds).map(|seed| Job { case: 0, seed }).collect();
     let mut rms = vec![0.0; jobs.len()];
-    run_jobs(std::slice::from_ref(&case), &jobs, 2, |event| {
+    let never = AtomicBool::new(false);
+    run_jobs(std::slice::from_ref(&case), &jobs, 2, &never, |event| {
         if let Some(finished) = event {
             rms[finished.job] = finished.result.unwrap()[0].rms;
         }
@@ -388,7 +390,8 @@ fn shared_plans_give_the_runs_of_fresh_ones() {
     .map(|(case, seed)| Job { case, seed })
     .to_vec();
     let mut results = vec![None; jobs.len()];
-    run_jobs(&cases, &jobs, 2, |event| {
+    let never = AtomicBool::new(false);
+    run_jobs(&cases, &jobs, 2, &never, |event| {
         if let Some(f) = event {
             results[f.job] = Some(f.result);
         }
@@ -398,4 +401,355 @@ fn shared_plans_give_the_runs_of_fresh_ones() {
         assert_eq!(result.expect("every job reports"), expected, "{job:?}");
         assert_eq!(expected.is_err(), job.case == 0 || job.case == 2, "{job:?}");
     }
+}
+
+/// `slowdrift montecarlo` on the example with `extra` arguments, started and not waited
+/// for; stdout discarded, stderr piped.
+fn spawn_montecarlo(out: &Path, extra: &[&str]) -> std::process::Child {
+    Command::new(env!("CARGO_BIN_EXE_slowdrift"))
+        .args(["montecarlo", "--config", EXAMPLE])
+        .args(extra)
+        .arg("--out")
+        .arg(out)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap()
+}
+
+/// Sends `signal` (`INT`, `TERM`, `KILL`) to `child` with kill(1).
+fn send(signal: &str, child: &std::process::Child) {
+    let sent = Command::new("kill")
+        .args(["-s", signal, &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(sent.success(), "kill -s {signal}");
+}
+
+/// Waits (polling, at most 60 s) until `done` says yes.
+fn wait_until(what: &str, mut done: impl FnMut() -> bool) {
+    let start = std::time::Instant::now();
+    while !done() {
+        assert!(
+            start.elapsed() < std::time::Duration::from_secs(60),
+            "waited a minute for {what}"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+}
+
+/// The lines of the per-run file after its header, sorted (the finishing order aside).
+fn sorted_run_lines(out: &Path) -> Vec<String> {
+    let mut lines: Vec<String> = read(&runs_file(out))
+        .lines()
+        .skip(1)
+        .map(String::from)
+        .collect();
+    lines.sort();
+    lines
+}
+
+/// Issue #15 item 4: a second campaign on the same --out is refused at once (while the
+/// first still runs), naming the first's pid and the file; the runs file keeps only the
+/// first's lines, each whole.
+#[test]
+fn a_second_campaign_on_the_same_out_is_refused_naming_the_first() {
+    let dir = scratch("lock");
+    let out = dir.join("r.csv");
+    let args = ["--duration", "8192", "--seeds", "400", "--threads", "1"];
+    let mut first = spawn_montecarlo(&out, &args);
+    let lock = dir.join("r.runs.csv.lock");
+    let pid = first.id().to_string();
+    wait_until("the first campaign's lock and two runs", || {
+        std::fs::read_to_string(&lock).is_ok_and(|text| text.trim() == pid)
+            && std::fs::read_to_string(runs_file(&out)).is_ok_and(|t| t.lines().count() > 2)
+    });
+    let second = montecarlo_with(&out, &args);
+    assert!(
+        first.try_wait().unwrap().is_none(),
+        "the second was refused while the first still ran"
+    );
+    assert!(!second.status.success());
+    let stderr = String::from_utf8_lossy(&second.stderr);
+    assert!(
+        stderr.contains(&format!(
+            "{}: in use by process {pid}, which holds its lock {}",
+            runs_file(&out).display(),
+            lock.display()
+        )),
+        "{stderr}"
+    );
+    send("TERM", &first);
+    let status = first.wait().unwrap();
+    assert_eq!(status.code(), Some(143));
+    assert!(!lock.exists(), "the lock file goes with the campaign");
+    let lines = per_run_lines(&out);
+    assert!(!lines.is_empty());
+    let mut seeds: Vec<u64> = lines.iter().map(|(_, seed, _)| *seed).collect();
+    seeds.sort();
+    seeds.dedup();
+    assert_eq!(seeds.len(), lines.len(), "each seed once");
+    for (case, _, fields) in &lines {
+        assert_eq!(case, "base");
+        assert_eq!(field(fields, "status"), "ok");
+        assert_eq!(fields.len(), 17);
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `slowdrift montecarlo` on the example with exactly `extra` (no --duration added).
+fn montecarlo_with(out: &Path, extra: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_slowdrift"))
+        .args(["montecarlo", "--config", EXAMPLE])
+        .args(extra)
+        .arg("--out")
+        .arg(out)
+        .output()
+        .unwrap()
+}
+
+/// Issue #15 item 4: a campaign stopped by SIGINT, by SIGTERM, or killed (kill -9, its
+/// last line then cut in the middle as a kill inside a write leaves it) and resumed writes
+/// the summary of an uninterrupted campaign byte for byte, and the same runs. SIGINT and
+/// SIGTERM end it with 128 + the signal's number, the summary of the runs done written
+/// and the command to resume printed.
+#[test]
+fn a_stopped_or_killed_campaign_resumes_to_the_uninterrupted_one() {
+    let dir = scratch("signals");
+    let args = ["--duration", "8192", "--seeds", "24", "--threads", "2"];
+    let reference = dir.join("reference.csv");
+    succeeded(&montecarlo_with(&reference, &args));
+    for (signal, status) in [("INT", Some(130)), ("TERM", Some(143)), ("KILL", None)] {
+        let out = dir.join(format!("{signal}.csv"));
+        let child = spawn_montecarlo(&out, &args);
+        wait_until("three runs done", || {
+            std::fs::read_to_string(runs_file(&out)).is_ok_and(|t| t.lines().count() > 3)
+        });
+        send(signal, &child);
+        let stopped = child.wait_with_output().unwrap();
+        let stderr = String::from_utf8_lossy(&stopped.stderr);
+        assert_eq!(stopped.status.code(), status, "SIG{signal}: {stderr}");
+        if signal == "KILL" {
+            use std::os::unix::process::ExitStatusExt;
+            assert_eq!(stopped.status.signal(), Some(9));
+            // A kill inside the write of a line: the file ends in the middle of one.
+            let text = read(&runs_file(&out));
+            let last = text[..text.len() - 1].rfind('\n').unwrap() + 1;
+            let cut = last + (text.len() - last) / 2;
+            std::fs::write(runs_file(&out), &text[..cut]).unwrap();
+        } else {
+            assert!(
+                stderr.contains(&format!("stopped by SIG{signal}: "))
+                    && stderr.contains("To resume, run the same command again:")
+                    && stderr.contains(&format!("--out {}", out.display())),
+                "{stderr}"
+            );
+            let summary = read(&out);
+            assert!(
+                summary.contains(",24,") && summary.contains(",partial,"),
+                "{summary}"
+            );
+        }
+        let resumed = succeeded(&montecarlo_with(&out, &args));
+        assert!(resumed.contains("to run on 2 thread(s)"), "{resumed}");
+        assert_eq!(read(&out), read(&reference), "SIG{signal}: the summary");
+        assert_eq!(
+            sorted_run_lines(&out),
+            sorted_run_lines(&reference),
+            "SIG{signal}: the runs"
+        );
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Issue #15 item 4: the summary is written anew atomically, so a kill at any moment of a
+/// rewrite leaves it whole. A finished campaign of 150 cases (a summary of 450 lines) is
+/// started again (nothing to run: it rewrites the summary) and killed at 20 moments spread
+/// over such a run; the summary is the whole one after every kill.
+#[test]
+fn a_kill_never_leaves_the_summary_cut() {
+    let dir = scratch("summary-kill");
+    let table = dir.join("cases.csv");
+    let mut text = String::from("name,hs\n");
+    for k in 0..150 {
+        text += &format!("c{k},{}\n", 1.0 + 0.01 * k as f64);
+    }
+    std::fs::write(&table, text).unwrap();
+    let out = dir.join("r.csv");
+    let args = [
+        "--cases",
+        table.to_str().unwrap(),
+        "--duration",
+        "256",
+        "--seeds",
+        "1",
+        "--threads",
+        "2",
+    ];
+    succeeded(&montecarlo_with(&out, &args));
+    let whole = read(&out);
+    assert_eq!(whole.lines().count(), 1 + 450);
+    let start = std::time::Instant::now();
+    succeeded(&montecarlo_with(&out, &args));
+    let rerun = start.elapsed();
+    for k in 0..20 {
+        let child = spawn_montecarlo(&out, &args);
+        std::thread::sleep(rerun * k / 19);
+        send("KILL", &child);
+        child.wait_with_output().unwrap();
+        assert_eq!(read(&out), whole, "after a kill at {k}/19 of a rewrite");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `run_jobs` with its stop flag set while its runs are in flight returns without reporting
+/// them (they are abandoned at their next step, not recorded as failed), and a run that
+/// finished before is reported as a run that is never stopped reports it.
+#[test]
+fn a_stop_abandons_the_runs_in_flight_unreported() {
+    use slowdrift::montecarlo::run_seed;
+    use std::sync::atomic::Ordering;
+    let short = Case {
+        name: "short".into(),
+        problem: base_config(256.0, 1.0, 0),
+        transient: 50.0,
+    };
+    // Each long run takes tens of seconds: the stop comes long before any ends.
+    let long = Case {
+        name: "long".into(),
+        problem: base_config(2.0e6, 1.0, 0),
+        transient: 50.0,
+    };
+    let cases = [short, long];
+    let jobs: Vec<Job> = [(0, 1), (1, 1), (1, 2), (1, 3)]
+        .map(|(case, seed)| Job { case, seed })
+        .to_vec();
+    let stop = AtomicBool::new(false);
+    let mut reported = Vec::new();
+    run_jobs(&cases, &jobs, 1, &stop, |event| match event {
+        Some(finished) => reported.push(finished),
+        // The first tick after the short run: the long one is in flight.
+        None if !reported.is_empty() => stop.store(true, Ordering::Relaxed),
+        None => {}
+    });
+    assert_eq!(reported.len(), 1, "{reported:?}");
+    assert_eq!(reported[0].job, 0);
+    assert_eq!(reported[0].result, Ok(run_seed(&cases[0], 1).unwrap()));
+}
+
+/// The heap this thread held at most above what it held before, in bytes, while the cases
+/// of a `rows`-row case table (file `table`) were written as `--print-cases` writes them
+/// (the table read as a stream, each case made, written and dropped), and the bytes
+/// written.
+fn print_cases_peak(table: &Path, rows: usize) -> (isize, usize) {
+    use crate::counting::{live_bytes, peak_bytes, reset_peak};
+    use slowdrift::fmi2::campaign::write_cases_json;
+    use slowdrift::montecarlo::cases::open_case_table;
+    let mut text = String::from("name,hs,tp,direction_deg\n");
+    for k in 0..rows {
+        text += &format!("c{k},{},{},{}\n", 2 + k % 5, 8 + k % 7, k % 360);
+    }
+    std::fs::write(table, text).unwrap();
+    let base = slowdrift::problem::load(Path::new(EXAMPLE)).unwrap();
+    let source = table.display().to_string();
+    let mut written = 0;
+    let mut out = std::io::sink();
+    let mut counted = CountingWriter(&mut out, &mut written);
+    let before = live_bytes();
+    reset_peak();
+    let cases = open_case_table(table)
+        .unwrap()
+        .map(|row| row.and_then(|row| row.case(&base, None, &source)));
+    write_cases_json(&mut counted, "sink", cases, &base, "").unwrap();
+    (peak_bytes() - before, written)
+}
+
+/// A writer that counts the bytes written through it.
+struct CountingWriter<'a, W>(&'a mut W, &'a mut usize);
+
+impl<W: std::io::Write> std::io::Write for CountingWriter<'_, W> {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        let n = self.0.write(buf)?;
+        *self.1 += n;
+        Ok(n)
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        self.0.flush()
+    }
+}
+
+/// Issue #15 item 8: `--print-cases` streams. Writing the cases of a 20 000-row table holds
+/// at most what a 200-row one holds plus the names seen (under 200 bytes a row), against a
+/// document of 100 times the size: the cases are not held (each holds its whole
+/// configuration, tens of kB for the example).
+#[test]
+fn printing_cases_holds_memory_independent_of_the_rows() {
+    let dir = scratch("print-cases");
+    let (small, small_out) = print_cases_peak(&dir.join("small.csv"), 200);
+    let (large, large_out) = print_cases_peak(&dir.join("large.csv"), 20_000);
+    let base = slowdrift::problem::load(Path::new(EXAMPLE)).unwrap();
+    let before = crate::counting::live_bytes();
+    let copy = base.clone();
+    let one_case = crate::counting::live_bytes() - before;
+    drop(copy);
+    eprintln!(
+        "print-cases peak heap: 200 rows {small} B ({small_out} B written), 20 000 rows \
+         {large} B ({large_out} B written); one configuration holds {one_case} B of heap"
+    );
+    assert!(large_out > 90 * small_out);
+    assert!(
+        large - small < 200 * 19_800,
+        "{large} B for 20 000 rows vs {small} B for 200"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `--print-cases` writes each case as it is made: a bad row stops the document unfinished
+/// (after the cases before it; no JSON reader takes it for a whole one) with an error that
+/// names the file and line, and the exit status 1; `--case` with an unknown name prints
+/// nothing and lists the names.
+#[test]
+fn printed_cases_stop_unfinished_at_a_bad_row() {
+    let dir = scratch("print-bad-row");
+    let table = dir.join("cases.csv");
+    std::fs::write(&table, "name,hs\na,2\nb,3\nc,x\n").unwrap();
+    let print = |extra: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_slowdrift"))
+            .args(["montecarlo", "--config", EXAMPLE, "--cases"])
+            .arg(&table)
+            .args(extra)
+            .arg("--print-cases")
+            .output()
+            .unwrap()
+    };
+    let output = print(&[]);
+    assert_eq!(output.status.code(), Some(1));
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("cases.csv:4: row 3, column 'hs': 'x' is not a finite number"),
+        "{stderr}"
+    );
+    assert!(
+        stdout.starts_with("{\"format_version\":1,\"cases\":[{"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("\"name\":\"b\""), "{stdout}");
+    assert!(serde_json::from_str::<serde_json::Value>(&stdout).is_err());
+
+    std::fs::write(&table, "name,hs\na,2\nb,3\n").unwrap();
+    let output = print(&["--case", "z"]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(output.stdout.is_empty());
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("--case z: no such case; the cases are a, b"),
+        "{stderr}"
+    );
+    let output = print(&["--case", "b"]);
+    let document: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(document["cases"].as_array().unwrap().len(), 1);
+    assert_eq!(document["cases"][0]["name"], "b");
+    std::fs::remove_dir_all(&dir).ok();
 }

@@ -34,6 +34,15 @@ def fmu():
     return path
 
 
+@pytest.fixture(scope="session")
+def mooring_fmu(fmu):
+    """Path of Mooring.fmu, which fmu-pack writes beside SlowDrift.fmu: its absence fails."""
+    path = mooring_loop.mooring_fmu_path()
+    if not os.path.isfile(path):
+        pytest.fail(f"{path} not found (build it with: cargo run --release -p fmu-pack)")
+    return path
+
+
 @pytest.fixture(scope="module")
 def md(fmu):
     """The FMU's model description, read by fmpy."""

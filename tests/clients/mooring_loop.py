@@ -38,6 +38,12 @@ def fmu_path():
     return os.environ.get("SLOWDRIFT_FMU", DEFAULT_FMU)
 
 
+def mooring_fmu_path():
+    """Mooring.fmu: $MOORING_FMU, else beside SlowDrift.fmu (fmu-pack writes both)."""
+    return os.environ.get("MOORING_FMU",
+                          os.path.join(os.path.dirname(fmu_path()), "Mooring.fmu"))
+
+
 class FmuBody:
     """SlowDrift as a co-simulation slave through fmpy, variables found by name only."""
 
@@ -65,7 +71,7 @@ class FmuBody:
             kind = self.types[name]
             if kind == "Real":
                 self.fmu.setReal([self.vr[name]], [float(value)])
-            elif kind in ("Integer", "Enumeration"):
+            elif kind == "Integer":
                 self.fmu.setInteger([self.vr[name]], [int(value)])
             else:
                 raise TypeError(f"parameter {name} of type {kind} not supported here")
@@ -101,8 +107,58 @@ class FmuBody:
         self.close()
 
 
-def run_loop(body, duration, dt=1.0, dat=DEFAULT_DAT):
+class MooringFmu:
+    """Mooring.fmu through fmpy with the interface of mooring_stiffness.Mooring:
+    step(q, qdot, t, dt) sets the inputs X..thetadot to the state at t, steps the FMU from t
+    to t + dt and returns its outputs (Fx, Fy, Mz), the line force at t + dt."""
+
+    def __init__(self, dat=None, q0=(0.0, 0.0, 0.0), qdot0=(0.0, 0.0, 0.0), path=None,
+                 instance_name="mooring"):
+        from fmpy import extract, read_model_description
+        from fmpy.fmi2 import FMU2Slave
+
+        path = path or mooring_fmu_path()
+        self.md = read_model_description(path)
+        self.vr = {v.name: v.valueReference for v in self.md.modelVariables}
+        self.unzipdir = extract(path)
+        self.fmu = FMU2Slave(guid=self.md.guid, unzipDirectory=self.unzipdir,
+                             modelIdentifier=self.md.coSimulation.modelIdentifier,
+                             instanceName=instance_name)
+        self.in_vr = [self.vr[n] for n in STATE_NAMES + RATE_NAMES]
+        self.out_vr = [self.vr[n] for n in ("Fx", "Fy", "Mz")]
+        self.fmu.instantiate()
+        self.fmu.setupExperiment(startTime=0.0)
+        if dat is not None:
+            self.fmu.setString([self.vr["mooringFile"]], [dat])
+        self.fmu.enterInitializationMode()
+        self.fmu.setReal(self.in_vr, [float(x) for x in (*q0, *qdot0)])
+        self.fmu.exitInitializationMode()
+
+    def step(self, q, qdot, t, dt):
+        self.fmu.setReal(self.in_vr, [float(x) for x in (*q, *qdot)])
+        self.fmu.doStep(currentCommunicationPoint=t, communicationStepSize=dt)
+        return np.array(self.fmu.getReal(self.out_vr))
+
+    def close(self):
+        if self.fmu is not None:
+            try:
+                self.fmu.terminate()
+            finally:
+                self.fmu.freeInstance()
+                self.fmu = None
+                shutil.rmtree(self.unzipdir, ignore_errors=True)
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+
+def run_loop(body, duration, dt=1.0, dat=DEFAULT_DAT, mooring=Mooring):
     """Couple body and the MoorDyn mooring explicitly for duration seconds of steps dt.
+    mooring: the class of the mooring model (MoorDyn through its Python API, Mooring, or
+    through the mooring FMU, MooringFmu).
 
     Returns an array with COLUMNS: row n holds the state at t_n and the force applied over
     the step from t_n (the last row's force is the one MoorDyn returns at the end).
@@ -110,7 +166,7 @@ def run_loop(body, duration, dt=1.0, dat=DEFAULT_DAT):
     n = int(round(duration / dt))
     rec = np.empty((n + 1, len(COLUMNS)))
     q, qd = body.state()
-    with Mooring(dat, q0=q, qdot0=qd) as mooring:
+    with mooring(dat, q0=q, qdot0=qd) as mooring:
         for k in range(n):
             t = k * dt
             q, qd = body.state()

@@ -25,7 +25,8 @@ import numpy as np
 import moordyn
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-DEFAULT_DAT = os.path.join(HERE, "mooring", "spread_mooring.dat")
+# The mooring FMU's default input file (packed into Mooring.fmu as resources/spread_mooring.dat).
+DEFAULT_DAT = os.path.join(HERE, "..", "..", "mooring", "spread_mooring.dat")
 
 # Finite-difference steps: 1 m in surge/sway, 0.01 rad (0.57 deg; 0.6 m at the fairleads) in
 # yaw: small against the line geometry, large against the solver's force noise (~10 N).

@@ -89,13 +89,13 @@ def run_native(workdir, parameters, duration, step):
 
 
 def set_parameters(slave, md, parameters):
-    """Sets FMU parameters by name on an fmpy slave (Real, Integer/Enumeration)."""
+    """Sets FMU parameters by name on an fmpy slave (Real, Integer)."""
     by_name = {v.name: v for v in md.modelVariables}
     for name, value in parameters.items():
         v = by_name[name]
         if v.type == "Real":
             slave.setReal([v.valueReference], [float(value)])
-        elif v.type in ("Integer", "Enumeration"):
+        elif v.type == "Integer":
             slave.setInteger([v.valueReference], [int(value)])
         else:
             raise TypeError(f"{name}: type {v.type} not handled")

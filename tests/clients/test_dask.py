@@ -22,6 +22,9 @@ separate drag, and a case the model refuses (Hs = -1).
    worker process killed (SIGKILL) while it holds runs: the campaign still completes with
    every run, equal to the native tool's.
 6. Number formatting against values printed by rustc; seeds grouped into tasks.
+7. One campaign per --out whichever tool runs it (issue #15): a client on the --out of a
+   running native campaign is refused naming its pid, and the native tool on the --out of
+   a client's campaign is refused naming the client's; the summary is replaced atomically.
 """
 
 import hashlib
@@ -318,3 +321,53 @@ def test_tasks_group_consecutive_missing_seeds():
     jobs = [(a, 1), (a, 2), (a, 3), (a, 5), (b, 1), (b, 2)]
     assert tasks(jobs, 2) == [(a, [1, 2]), (a, [3]), (a, [5]), (b, [1, 2])]
     assert tasks(jobs, 1) == [(c, [s]) for c, s in jobs]
+
+
+def test_one_campaign_per_out_whichever_tool(fmu, slowdrift, tmp_path):
+    """The client takes the lock the native tool takes (flock on RESULTS.runs.csv.lock,
+    which holds the pid): each is refused on the other's --out at once, naming the other's
+    pid, and nothing is written to the runs file by the one refused."""
+    from slowdrift_dask.plan import CampaignError
+    from slowdrift_dask.runs_file import lock
+
+    out = tmp_path / "r.csv"
+    runs = tmp_path / "r.runs.csv"
+    lock_file = tmp_path / "r.runs.csv.lock"
+    native_run = subprocess.Popen(
+        [slowdrift, "montecarlo", "--config", EXAMPLE, "--duration", "8192", "--seeds", "400",
+         "--threads", "1", "--out", str(out)],
+        stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    try:
+        deadline = time.monotonic() + 60
+        while not (lock_file.exists() and lock_file.read_text().strip() == str(native_run.pid)
+                   and runs.exists() and len(runs.read_text().splitlines()) > 2):
+            assert time.monotonic() < deadline, "the native campaign did not start"
+            time.sleep(0.01)
+        settings = Settings(seeds=2, out=str(out), config=EXAMPLE, duration=8192.0,
+                            backend="fmu", fmu=fmu, slowdrift=slowdrift)
+        with pytest.raises(CampaignError) as refused:
+            run_campaign(settings)
+        assert f"r.runs.csv: in use by process {native_run.pid}, which holds its lock " \
+            f"{lock_file}" in str(refused.value)
+        assert native_run.poll() is None, "refused while the native campaign ran"
+    finally:
+        native_run.send_signal(signal.SIGTERM)
+        _, stderr = native_run.communicate(timeout=60)
+    assert native_run.returncode == 143, stderr
+    assert "stopped by SIGTERM" in stderr
+    lines = runs.read_text().splitlines()
+    assert lines and all(line.count(",") >= 16 for line in lines[1:])
+    assert not lock_file.exists()
+
+    held = lock(str(runs))
+    try:
+        done = subprocess.run(
+            [slowdrift, "montecarlo", "--config", EXAMPLE, "--duration", "8192", "--seeds", "1",
+             "--out", str(out)], capture_output=True, text=True)
+        assert done.returncode == 1, done
+        assert f"in use by process {os.getpid()}, which holds its lock {lock_file}" \
+            in done.stderr
+        assert runs.read_text().splitlines() == lines
+    finally:
+        held.release()
+    assert not lock_file.exists()

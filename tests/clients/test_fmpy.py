@@ -51,6 +51,23 @@ def test_validate_fmu(fmu):
     assert problems == [], "\n".join(problems)
 
 
+def test_every_real_has_its_unit(md):
+    """fmpy reads a variable's unit from its own attribute only, as OMSimulator does (neither
+    inherits it from a declaredType): every Real must carry it, and the coupling variables
+    are in SI units and radians."""
+    defined = {u.name for u in md.unitDefinitions}
+    reals = [v for v in md.modelVariables if v.type == "Real"]
+    missing = [v.name for v in reals if v.unit is None]
+    assert missing == [], f"Reals without their own unit: {missing}"
+    assert all(v.unit in defined for v in reals)
+    units = {v.name: v.unit for v in reals}
+    expected = {"X": "m", "Y": "m", "theta": "rad", "Xdot": "m/s", "Ydot": "m/s",
+                "thetadot": "rad/s", "Fx_ext": "N", "Fy_ext": "N", "Mz_ext": "N.m",
+                "waveDirection": "rad", "stiffnessSurge": "N/m", "stiffnessYaw": "N.m/rad"}
+    assert {n: units[n] for n in expected} == expected
+    assert not any(v.type == "Enumeration" for v in md.modelVariables)
+
+
 def test_validate_fmu_sees_a_broken_copy(fmu, workdir):
     """Control: the same call reports a problem in a copy whose first Real has an attribute
     the FMI 2.0 schema does not allow (so an empty list above means something)."""

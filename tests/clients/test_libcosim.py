@@ -19,9 +19,11 @@ libcosimc):
   reference sets its stop time. test_libcosim_two_days runs 48 h (past ten joins of the
   record stream) and compares every minute with fmpy's 48 h.
 - it ignores Enumeration variables ("FMI 2.0 Enumeration variable type not supported,
-  variable with name dragModel will be ignored", the same for driftDamping): those two
-  parameters cannot be set from libcosim and keep their start values (combined drag, table
-  damping). test_libcosim_variables pins this.
+  variable with name dragModel will be ignored"): SlowDrift therefore has none, its modes
+  (dragModel, driftDamping, interaction) are Integers with their codes in the description.
+  test_libcosim_variables checks that libcosim registers every variable, and
+  test_libcosim_sets_the_modes that the modes set there take effect (a master that skipped
+  them would leave the drag and the drift damping on).
 - it unpacks the FMU under its temporary directory (the first of $TMPDIR, $TMP, $TEMP,
   $TEMPDIR that is set) and fails (libcosimpy then crashes on the NULL slave) when that
   directory does not exist, where Python's tempfile (fmpy) quietly falls back to /tmp.
@@ -58,25 +60,56 @@ def execution(fmu, md):
     return ex, slave, index
 
 
-def set_parameters(ex, index, vr):
-    """routes.PARAMETERS as the slave's initial values."""
-    for name, value in PARAMETERS.items():
+def set_parameters(ex, index, vr, parameters=PARAMETERS):
+    """parameters (routes.PARAMETERS) as the slave's initial values."""
+    for name, value in parameters.items():
         v = vr[name]
         if v.type == "Real":
             assert ex.real_initial_value(index, v.valueReference, float(value)), name
         else:
+            assert v.type == "Integer", name
             assert ex.integer_initial_value(index, v.valueReference, int(value)), name
 
 
 def test_libcosim_variables(fmu, md):
-    """libcosim lists every variable except the three Enumeration parameters (a libcosim
-    limitation: it skips FMI 2.0 Enumeration variables)."""
+    """libcosim registers every variable (it would skip an FMI 2.0 Enumeration: there is
+    none), each with the type of the model description."""
+    from libcosimpy.CosimEnums import CosimVariableType
+
     ex, _slave, index = execution(fmu, md)
-    seen = {v.name.decode() for v in ex.slave_variables(index)}
-    declared = {v.name for v in md.modelVariables}
-    enumerations = {v.name for v in md.modelVariables if v.type == "Enumeration"}
-    assert enumerations == {"dragModel", "driftDamping", "interaction"}
-    assert seen == declared - enumerations
+    seen = {v.name.decode(): v for v in ex.slave_variables(index)}
+    declared = {v.name: v for v in md.modelVariables}
+    assert set(seen) == set(declared)
+    for name, v in declared.items():
+        assert seen[name].type == CosimVariableType[v.type.upper()].value, name
+        assert seen[name].reference == v.valueReference, name
+
+
+def test_libcosim_sets_the_modes(fmu, md):
+    """The modes set as libcosim initial values take effect: dragModel 0 (off) and
+    driftDamping 0 (off) make the drag and drift-damping outputs zero, where the start
+    values (combined drag, Aranha damping) make them non-zero, and the run equals fmpy's
+    with the same start values bit for bit."""
+    from fmpy import simulate_fmu
+    from libcosimpy.CosimObserver import CosimObserver
+
+    modes = dict(PARAMETERS, dragModel=0, driftDamping=0, interaction=4)
+    steps = 120
+    vr = {v.name: v for v in md.modelVariables}
+    ex, _slave, index = execution(fmu, md)
+    set_parameters(ex, index, vr, modes)
+    last = CosimObserver.create_last_value()
+    assert ex.add_observer(observer=last)
+    assert ex.simulate_until(target_time=steps * STEP_NS)
+    final = np.array(last.last_real_values(index, [vr[n].valueReference for n in OUTPUTS]))
+    reference = simulate_fmu(fmu, start_time=0.0, stop_time=float(steps), output_interval=1.0,
+                             start_values=modes, output=list(OUTPUTS))
+    assert np.array_equal(final, np.array([reference[n][-1] for n in OUTPUTS]))
+    off = [OUTPUTS.index(n) for n in OUTPUTS if n.endswith(("_drag", "_damping"))]
+    assert np.all(final[off] == 0.0)
+    on = simulate_fmu(fmu, start_time=0.0, stop_time=float(steps), output_interval=1.0,
+                      start_values=PARAMETERS, output=["Fx_drag", "Fx_damping"])
+    assert on["Fx_drag"][-1] != 0.0 and on["Fx_damping"][-1] != 0.0
 
 
 def test_libcosim_run_equals_fmpy(fmu, md):

@@ -1,4 +1,4 @@
-"""Independent checks of tests/clients/mooring/spread_mooring.dat and of the MoorDyn API
+"""Independent checks of mooring/spread_mooring.dat (the mooring FMU's default) and of the MoorDyn API
 conventions the loop relies on (DOF order, yaw sign, force indices)."""
 
 import numpy as np

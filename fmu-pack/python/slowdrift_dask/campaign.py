@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from .plan import CampaignError, case_arguments, read_cases
-from .runs_file import RunRow, format_row, open_runs, parse
+from .runs_file import RunRow, RunsFileLocked, format_row, lock, open_runs, parse
 from .summary import CaseSummary, print_summary, write_summary
 
 # The FMU's seed parameter is an FMI Integer (32-bit signed).
@@ -169,6 +169,18 @@ def run_campaign(settings, client=None, campaign=None):
     cases = read_cases(settings.slowdrift, arguments)
     _check_backend(settings, cases, seeds)
     path = runs_path(settings.out)
+    try:
+        held = lock(path)
+    except RunsFileLocked as e:
+        raise CampaignError(str(e)) from None
+    try:
+        return _run_locked(settings, arguments, cases, seeds, path, client, campaign)
+    finally:
+        held.release()
+
+
+def _run_locked(settings, arguments, cases, seeds, path, client, campaign):
+    """`run_campaign` once the runs file `path` is locked."""
     done, runs = open_runs(path)
     try:
         check_fingerprints(cases, done, path)

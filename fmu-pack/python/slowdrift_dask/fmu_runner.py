@@ -65,7 +65,7 @@ class FmuRunner:
         v = self.variables[name]
         if v.type == "Real":
             self.slave.setReal([v.valueReference], [float(value)])
-        elif v.type in ("Integer", "Enumeration"):
+        elif v.type == "Integer":
             self.slave.setInteger([v.valueReference], [int(value)])
         elif v.type == "String":
             self.slave.setString([v.valueReference], [str(value)])

@@ -7,8 +7,13 @@ sway (m) and yaw (deg) (empty for a failed run), error (double-quoted, inner quo
 empty for an ok run). Numbers in Rust's shortest round-trip form (`numbers.rust_display`).
 Reading keeps the last line of each (case, seed); a last line without its newline (cut off
 by a kill) is dropped, and cut off before anything is appended.
+
+One campaign per file, whichever tool runs it: `lock` takes the exclusive lock the native
+tool takes (src/files/lock.rs): `flock` on NAME.lock beside the file, which holds the pid of
+the holder and is removed by it when done; the kernel drops the lock when the process ends.
 """
 
+import fcntl
 import os
 from dataclasses import dataclass
 
@@ -137,3 +142,70 @@ def open_runs(path):
         f.write((header() + "\n").encode("utf-8"))
         f.flush()
     return runs, f
+
+
+class RunsFileLocked(Exception):
+    """Another process (the native tool or another client) runs a campaign on this file."""
+
+
+class Lock:
+    """The exclusive lock of a runs file, held until `release`."""
+
+    def __init__(self, path, fd):
+        self.path = path
+        self._fd = fd
+
+    def release(self):
+        # Removed while still locked (a process that opened it meanwhile finds it gone and
+        # starts again), then unlocked by closing it.
+        try:
+            os.remove(self.path)
+        except OSError:
+            pass
+        os.close(self._fd)
+
+
+def lock(path):
+    """Takes the lock of the runs file `path` at once, or raises RunsFileLocked naming the
+    process that holds it (the message of the native tool)."""
+    lock_path = path + ".lock"
+    while True:
+        fd = os.open(lock_path, os.O_RDWR | os.O_CREAT, 0o666)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            os.close(fd)
+            raise RunsFileLocked(_held(path, lock_path)) from None
+        # The holder that just let go removed its file: lock the one now at the path.
+        mine = os.fstat(fd)
+        try:
+            there = os.stat(lock_path)
+        except FileNotFoundError:
+            there = None
+        if there is None or (there.st_dev, there.st_ino) != (mine.st_dev, mine.st_ino):
+            os.close(fd)
+            continue
+        os.ftruncate(fd, 0)
+        os.write(fd, f"{os.getpid()}\n".encode())
+        return Lock(lock_path, fd)
+
+
+def _held(path, lock_path):
+    """The message for `path` held by another process, named by the pid in its lock file
+    (read again for up to a tenth of a second while the holder has not yet written it)."""
+    import time
+
+    holder = None
+    for _ in range(10):
+        try:
+            with open(lock_path) as f:
+                text = f.read().strip()
+            if text.isdigit():
+                holder = f"process {text}"
+                break
+        except OSError:
+            pass
+        time.sleep(0.01)
+    holder = holder or "another process (its pid not yet written)"
+    return (f"{path}: in use by {holder}, which holds its lock {lock_path}: two campaigns on "
+            "one file would mix their runs; wait for that one to end, or stop it")

@@ -1,6 +1,10 @@
 """RESULTS.csv and the printed table, as `slowdrift montecarlo` writes them
 (src/cli/montecarlo.rs): per case and DOF, from the per-run file, for the requested seeds in
-seed order, so the summary depends neither on the backend nor on the finishing order."""
+seed order, so the summary depends neither on the backend nor on the finishing order. The
+file is written anew atomically, as the native tool writes it (src/files/replace.rs): to
+RESULTS.csv.PID.tmp, synced, then renamed over it, so a kill never leaves it cut."""
+
+import os
 
 from .numbers import rust_display
 from .runs_file import DOFS, STATISTICS
@@ -51,8 +55,17 @@ def write_summary(path, summaries, requested):
             error = s.first_error or ""
             line += "," + ('"' + error.replace('"', '""') + '"' if error else "")
             lines.append(line)
-    with open(path, "w", newline="") as f:
-        f.write("\n".join(lines) + "\n")
+    temporary = f"{path}.{os.getpid()}.tmp"
+    try:
+        with open(temporary, "w", newline="") as f:
+            f.write("\n".join(lines) + "\n")
+            f.flush()
+            os.fsync(f.fileno())
+        os.replace(temporary, path)
+    except BaseException:
+        if os.path.exists(temporary):
+            os.remove(temporary)
+        raise
 
 
 def print_summary(summaries, requested):

@@ -2,7 +2,8 @@
 //! 2^11 .. 2^17 s as box plots (E&S Fig. 10).
 
 use super::{report, sea_text, surge_values, ten_cycles, threads, write_text, BoxplotsArgs};
-use crate::cli::montecarlo::run_campaign;
+use crate::cli::montecarlo::{run_campaign, Campaign};
+use crate::cli::Failure;
 use crate::plot::{
     padded_range, write_figure, BoxItem, Figure, LegendAt, Panel, Series, Style, Ticks,
 };
@@ -18,7 +19,7 @@ const DEFAULT_SAMPLES: [usize; 7] = [1000, 1000, 1000, 400, 200, 200, 200];
 
 /// Fig. 10: box plots of the surge mean and rms over many seeds for record lengths
 /// 2^A .. 2^B s (analysed after the transient), and their scatter against length.
-pub(super) fn boxplots(base: &Problem, args: &BoxplotsArgs) -> Result<(), String> {
+pub(super) fn boxplots(base: &Problem, args: &BoxplotsArgs) -> Result<(), Failure> {
     let exponents = &args.exponents.0;
     let out = args.out.as_path();
     let samples: Vec<usize> = match &args.samples {
@@ -33,7 +34,8 @@ pub(super) fn boxplots(base: &Problem, args: &BoxplotsArgs) -> Result<(), String
             return Err(format!(
                 "--samples: {n} counts for {} record lengths (give one, or one per length)",
                 exponents.len()
-            ))
+            )
+            .into())
         }
     };
     let transient = match args.transient {
@@ -57,12 +59,12 @@ pub(super) fn boxplots(base: &Problem, args: &BoxplotsArgs) -> Result<(), String
         .enumerate()
         .flat_map(|(case, &n)| (1..=n as u64).map(move |seed| Job { case, seed }))
         .collect();
-    let runs = run_campaign(
-        &cases,
-        &jobs,
-        threads(args.threads),
-        &out.join("fig10.runs.csv"),
-    )?;
+    let runs_path = out.join("fig10.runs.csv");
+    let Campaign { runs, interrupted } =
+        run_campaign(&cases, &jobs, threads(args.threads), &runs_path)?;
+    if let Some(interrupted) = interrupted {
+        return Err(interrupted.failure(&runs_path, None));
+    }
 
     let mut csv = String::from("record_length_s,samples,mean_median_m,mean_iqr_m,mean_std_m,rms_median_m,rms_iqr_m,rms_std_m\n");
     let (mut mean_boxes, mut rms_boxes) = (Vec::new(), Vec::new());
@@ -73,7 +75,8 @@ pub(super) fn boxplots(base: &Problem, args: &BoxplotsArgs) -> Result<(), String
             return Err(format!(
                 "{}: fewer than 2 successful runs (see fig10.runs.csv)",
                 case.name
-            ));
+            )
+            .into());
         }
         let (bm, br) = (
             box_stats(&means).map_err(|e| e.to_string())?,

@@ -11,6 +11,7 @@ mod transient;
 mod waves;
 
 use super::args::{all_cores, parse_whole, seconds, whole, Checked};
+use super::Failure;
 use clap::{Args, Subcommand};
 use slowdrift::montecarlo::runs_file::RunRow;
 use slowdrift::montecarlo::Case;
@@ -180,7 +181,7 @@ struct Counts(Vec<usize>);
 struct Numbers(Vec<f64>);
 
 /// Runs `slowdrift study ...`.
-pub fn run(args: StudyArgs) -> Result<(), String> {
+pub fn run(args: StudyArgs) -> Result<(), Failure> {
     let (config, out) = match &args.study {
         Study::Drift(a) => (&a.config, &a.out),
         Study::Waves(a) => (&a.config, &a.out),
@@ -197,10 +198,10 @@ pub fn run(args: StudyArgs) -> Result<(), String> {
         }
     };
     match &args.study {
-        Study::Drift(a) => drift::drift(&base, a),
-        Study::Waves(a) => waves::waves(&base, a),
+        Study::Drift(a) => Ok(drift::drift(&base, a)?),
+        Study::Waves(a) => Ok(waves::waves(&base, a)?),
         Study::Boxplots(a) => boxplots::boxplots(&base, a),
-        Study::Transient(a) => transient::transient(&base, a),
+        Study::Transient(a) => Ok(transient::transient(&base, a)?),
         Study::Sensitivity(a) => sensitivity::sensitivity(&base, a),
     }
 }
@@ -250,8 +251,10 @@ fn parse_numbers(flag: &str, text: &str) -> Result<Vec<f64>, String> {
         .collect()
 }
 
+/// Writes a study's data file anew, atomically (a kill never leaves it cut).
 fn write_text(path: &Path, text: &str) -> Result<(), String> {
-    std::fs::write(path, text).map_err(|e| format!("{}: {e}", path.display()))
+    slowdrift::files::replace(path, |w| std::io::Write::write_all(w, text.as_bytes()))
+        .map_err(|e| e.to_string())
 }
 
 fn report(paths: &[PathBuf]) {

@@ -2,7 +2,8 @@
 //! current speed; E&S Figs 12-15).
 
 use super::{report, sea_text, surge_values, threads, write_text, SensitivityArgs};
-use crate::cli::montecarlo::run_campaign;
+use crate::cli::montecarlo::{run_campaign, Campaign};
+use crate::cli::Failure;
 use crate::plot::{padded_range, write_figure, Figure, LegendAt, Panel, Series, Style, Ticks};
 use slowdrift::montecarlo::cases::read_case_table;
 use slowdrift::montecarlo::{seed_statistics, Job};
@@ -27,7 +28,7 @@ fn column_label(column: &str) -> String {
 
 /// Figs 12-15: surge mean and rms (mean over seeds, +- 1 standard error) against one
 /// column of a case table.
-pub(super) fn sensitivity(base: &Problem, args: &SensitivityArgs) -> Result<(), String> {
+pub(super) fn sensitivity(base: &Problem, args: &SensitivityArgs) -> Result<(), Failure> {
     let table = &args.cases;
     let column = args.x.as_str();
     let seeds = args.seeds;
@@ -54,12 +55,12 @@ pub(super) fn sensitivity(base: &Problem, args: &SensitivityArgs) -> Result<(), 
     let jobs: Vec<Job> = (0..cases.len())
         .flat_map(|case| (1..=seeds as u64).map(move |seed| Job { case, seed }))
         .collect();
-    let runs = run_campaign(
-        &cases,
-        &jobs,
-        threads(args.threads),
-        &out.join(format!("{stem}.runs.csv")),
-    )?;
+    let runs_path = out.join(format!("{stem}.runs.csv"));
+    let Campaign { runs, interrupted } =
+        run_campaign(&cases, &jobs, threads(args.threads), &runs_path)?;
+    if let Some(interrupted) = interrupted {
+        return Err(interrupted.failure(&runs_path, None));
+    }
     let mut csv = format!(
         "case,{column},seeds_done,surge_mean_m,surge_mean_se_m,surge_rms_m,surge_rms_se_m\n"
     );
@@ -70,7 +71,8 @@ pub(super) fn sensitivity(base: &Problem, args: &SensitivityArgs) -> Result<(), 
             return Err(format!(
                 "case '{}': no successful run (see {stem}.runs.csv)",
                 case.name
-            ));
+            )
+            .into());
         };
         let (mse, rse) = (
             m.standard_error.unwrap_or(0.0),

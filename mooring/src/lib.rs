@@ -1,0 +1,15 @@
+//! The mooring FMU of SlowDrift's co-simulation (docs/coupling.md): MoorDyn's mooring lines
+//! on a platform that moves in the horizontal plane, as an FMI 2.0 co-simulation FMU
+//! (`target/fmu/Mooring.fmu`, packed by `fmu-pack`).
+//!
+//! - [`planar`]: SlowDrift's planar motion and force (X, Y, theta; Fx, Fy, Mz) against
+//!   MoorDyn's six coupled degrees of freedom: the frame and sign conventions, in one place.
+//! - [`moordyn`]: MoorDyn's C library, loaded at run time from beside this library, behind
+//!   a safe type (one mooring system, closed when dropped).
+//! - [`fmi2`]: the C ABI (the 34 FMI 2.0 functions), its variables, and the state machine
+//!   and C types shared with SlowDrift's FMU (`src/fmi2/machine.rs`, `src/fmi2/types.rs` of
+//!   the workspace root).
+
+pub mod fmi2;
+pub mod moordyn;
+pub mod planar;

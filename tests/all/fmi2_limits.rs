@@ -1,0 +1,226 @@
+//! Sizes the user controls never abort the host (issue #15, items 1 and 2): each size that
+//! aborted or hung a master before (an allocation of terabytes, a count of 2^31) is refused
+//! at initialisation with fmi2Error and a log line that names the parameter, its value and
+//! the limit; the instance is then in the Error state and the process lives on. Under a
+//! process memory limit (`ulimit -v`, RLIMIT_AS, in a child process) sizes within the memory
+//! budget but beyond what the process may allocate are refused the same way.
+
+use crate::fmu::*;
+use slowdrift::fmi2::exports::*;
+use slowdrift::fmi2::machine::MachineState;
+use slowdrift::fmi2::model_description::vr;
+use slowdrift::fmi2::types::*;
+use std::process::Command;
+
+const DEFAULT_TOML: &str = include_str!("../../src/scenario/default.toml");
+
+/// One hostile set of parameters.
+struct Case {
+    name: &'static str,
+    set: fn(&Fmu, &std::path::Path),
+    /// What the fmi2Error's log line must say.
+    expected: &'static [&'static str],
+}
+
+fn spread(fmu: &Fmu, directions: i32) {
+    assert_eq!(
+        fmu.set_real(vr::SPREADING_EXPONENT, 2.0),
+        fmi2Status::fmi2OK
+    );
+    assert_eq!(
+        fmu.set_int(vr::N_DIRECTIONS, directions),
+        fmi2Status::fmi2OK
+    );
+}
+
+/// A configuration file (the FMU's `hydroDatabase`) with one line replaced.
+fn database_with(dir: &std::path::Path, from: &str, to: &str) -> String {
+    assert!(DEFAULT_TOML.contains(from), "{from}");
+    let path = dir.join("hostile.toml");
+    std::fs::write(&path, DEFAULT_TOML.replacen(from, to, 1)).unwrap();
+    path.display().to_string()
+}
+
+/// The sizes of issue #15 that aborted or hung a master, at the default memory budget.
+const HOSTILE: [Case; 5] = [
+    Case {
+        name: "nDirections = 100000",
+        set: |f, _| spread(f, 100_000),
+        expected: &["nDirections = 100000: must be at most 1000"],
+    },
+    Case {
+        name: "nDirections = 1000 (the cross terms' 3.6 GB and the rest)",
+        set: |f, _| spread(f, 1000),
+        // The largest part, 1000^2 pairs x 75 frequencies (the default's bi-directional
+        // table) x 3 DOFs x 16 bytes (complex f64) = 3.6e9 bytes.
+        expected: &[
+            "nDirections = 1000: needs ",
+            "of which 3.600 GB: the drift of 1000 x 1000 direction pairs at 75 frequencies",
+            "the limit is 4.000 GB (the parameter memoryLimit = 4)",
+        ],
+    },
+    Case {
+        name: "yawFollowingHeadings = 2147483647",
+        set: |f, _| {
+            assert_eq!(
+                f.set_int(vr::YAW_FOLLOWING_HEADINGS, i32::MAX),
+                fmi2Status::fmi2OK
+            )
+        },
+        expected: &["yawFollowingHeadings = 2147483647: must be at most 3600"],
+    },
+    Case {
+        name: "a hydroDatabase with strips_per_column = 10000000",
+        set: |f, dir| {
+            let path = database_with(
+                dir,
+                "strips_per_column = 20",
+                "strips_per_column = 10000000",
+            );
+            assert_eq!(f.set_string(vr::HYDRO_DATABASE, &path), fmi2Status::fmi2OK)
+        },
+        expected: &[
+            "hostile.toml:",
+            "[model] strips_per_column = 10000000: must be at most 1000",
+        ],
+    },
+    Case {
+        name: "memoryLimit = 0.001 (1 MB) with the default's 31 MB",
+        set: |f, _| assert_eq!(f.set_real(vr::MEMORY_LIMIT, 0.001), fmi2Status::fmi2OK),
+        expected: &["strips_per_column = 20: needs", "the limit is 1.000 MB"],
+    },
+];
+
+/// Initialises an instance set up by `case` and checks the refusal: fmi2Error, a log line
+/// with every expected text, the Error state, and a step refused after it.
+fn refused(case: &Case, dir: &std::path::Path, raise_budget: bool) {
+    let fmu = Fmu::new(case.name);
+    assert_eq!(fmu.setup(0.0, Some(3600.0)), fmi2Status::fmi2OK);
+    if raise_budget {
+        assert_eq!(fmu.set_real(vr::MEMORY_LIMIT, 1000.0), fmi2Status::fmi2OK);
+    }
+    (case.set)(&fmu, dir);
+    let start = std::time::Instant::now();
+    let status = fmu.init();
+    let messages = fmu.messages();
+    println!(
+        "{}: {status:?} in {:.2?}\n  {}",
+        case.name,
+        start.elapsed(),
+        fmu.last_message().message
+    );
+    assert_eq!(status, fmi2Status::fmi2Error, "{}: {messages}", case.name);
+    let last = fmu.last_message();
+    assert_eq!(last.status, fmi2Status::fmi2Error);
+    for needle in case.expected {
+        assert!(
+            last.message.contains(needle),
+            "{}: {needle:?} in {messages}",
+            case.name
+        );
+    }
+    assert_eq!(unsafe { instance_state(fmu.c) }, Some(MachineState::Error));
+    assert_eq!(fmu.step(0.0, 1.0), fmi2Status::fmi2Error);
+}
+
+fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("slowdrift-limits-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn hostile_sizes_are_refused_with_fmi2_error_and_the_process_lives_on() {
+    let dir = scratch("budget");
+    for case in &HOSTILE {
+        refused(case, &dir, false);
+    }
+    // The same process then runs the default.
+    let fmu = Fmu::running("after", 1, 0.0, 0.0, Some(100.0));
+    fmu.step_with(0.0, 1.0, [0.0; 3]);
+    std::fs::remove_dir_all(dir).ok();
+}
+
+/// The environment variable that makes the test below its own child.
+const CHILD: &str = "SLOWDRIFT_LIMITS_CHILD";
+
+/// Address space of the child, kB: room for the test binary and the default's records
+/// (tens of MB), far below what the cases need.
+const CHILD_ADDRESS_SPACE_KB: u64 = 1_500_000;
+
+/// Sizes within a raised budget (memoryLimit = 1000 GB) but beyond the process's own limit:
+/// the probe of the allocator finds it, fmi2Error instead of an abort.
+const BEYOND_THE_PROCESS: [Case; 3] = [
+    Case {
+        name: "nDirections = 1000 under a 1.5 GB process limit",
+        set: |f, _| spread(f, 1000),
+        expected: &["this process cannot allocate them"],
+    },
+    Case {
+        name: "yawFollowingHeadings = 3600 under a 1.5 GB process limit",
+        set: |f, _| {
+            assert_eq!(
+                f.set_int(vr::YAW_FOLLOWING_HEADINGS, 3600),
+                fmi2Status::fmi2OK
+            )
+        },
+        expected: &["this process cannot allocate them"],
+    },
+    Case {
+        name: "strips_per_column = 1000 and a 65536-s block under a 1.5 GB process limit",
+        set: |f, dir| {
+            let path = database_with(dir, "strips_per_column = 20", "strips_per_column = 1000");
+            let path = {
+                let text = std::fs::read_to_string(&path).unwrap();
+                let text = text.replacen(
+                    "time_step = 1.0",
+                    "time_step = 1.0\nblock_duration = 65536.0",
+                    1,
+                );
+                std::fs::write(&path, text).unwrap();
+                path
+            };
+            assert_eq!(f.set_string(vr::HYDRO_DATABASE, &path), fmi2Status::fmi2OK)
+        },
+        expected: &["this process cannot allocate them"],
+    },
+];
+
+#[test]
+fn under_a_process_memory_limit_sizes_beyond_it_are_refused() {
+    if std::env::var_os(CHILD).is_some() {
+        let dir = scratch("rlimit");
+        for case in &BEYOND_THE_PROCESS {
+            refused(case, &dir, true);
+        }
+        let fmu = Fmu::running("within the limit", 1, 0.0, 0.0, Some(100.0));
+        fmu.step_with(0.0, 1.0, [0.0; 3]);
+        std::fs::remove_dir_all(dir).ok();
+        println!("child done");
+        return;
+    }
+    let exe = std::env::current_exe().unwrap();
+    let output = Command::new("bash")
+        .arg("-c")
+        .arg(format!(
+            "ulimit -v {CHILD_ADDRESS_SPACE_KB} && exec \"$0\" \"$@\""
+        ))
+        .arg(exe)
+        .args([
+            "--exact",
+            "fmi2_limits::under_a_process_memory_limit_sizes_beyond_it_are_refused",
+            "--nocapture",
+            "--test-threads=1",
+        ])
+        .env(CHILD, "1")
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    println!("{stdout}");
+    assert!(
+        output.status.success() && stdout.contains("child done"),
+        "child {:?}\n{stdout}\n{stderr}",
+        output.status
+    );
+}
