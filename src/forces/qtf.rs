@@ -196,6 +196,7 @@ impl QtfFactorisation {
         Ok(GridQtf {
             eigenvalues: self.eigenvalues.clone(),
             count: grid.count,
+            directions: self.directions,
             factors,
         })
     }
@@ -208,6 +209,8 @@ pub struct GridQtf {
     eigenvalues: Vec<f64>,
     /// The grid's component count.
     count: usize,
+    /// The number of wave directions the factors span.
+    directions: usize,
     /// f_r at the directions' components, direction-major (`[k * count + j]`), one vector
     /// per retained term.
     factors: Vec<Vec<Complex64>>,
@@ -231,9 +234,7 @@ impl GridQtf {
 
     /// The number of wave directions the factors span.
     pub fn directions(&self) -> usize {
-        self.factors
-            .first()
-            .map_or(1, |f| f.len() / self.count.max(1))
+        self.directions
     }
 
     /// The represented QTF between components i and j of the first direction (for checks;

@@ -95,6 +95,14 @@ impl Qtf {
     /// bit). Errors name the heading and what the data cover.
     pub fn interpolated(&self, dof: Dof, headings: (f64, f64)) -> Result<Vec<Complex64>> {
         let nodes = self.sorted_headings();
+        if nodes.is_empty() {
+            return Err(Error::invalid(
+                "qtf.blocks",
+                "no uni-directional block",
+                "interpolating in heading needs the QTF at its data headings (blocks with \
+                 beta1 = beta2)",
+            ));
+        }
         let weights = |b: f64| -> Result<Vec<(f64, f64)>> {
             if let Some(&h) = nodes
                 .iter()

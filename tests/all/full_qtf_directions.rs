@@ -418,3 +418,53 @@ fn force_spectrum_with_the_cross_terms_between_directions() {
         );
     }
 }
+
+/// Heading interpolation never extrapolates and never invents a pair: a direction beyond the
+/// data headings, and a pair of different headings with uni-directional data, are refused
+/// naming them; a direction on a data heading takes that heading's block bit for bit.
+#[test]
+fn heading_interpolation_refuses_what_the_data_do_not_cover() {
+    let omegas = qtf_grid();
+    let uni = qtf(&omegas, &data_headings(), false);
+    let message = uni
+        .interpolated(Dof::Surge, (150f64.to_radians(), 150f64.to_radians()))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        message.contains("150.000 deg") && message.contains("-100.000"),
+        "{message}"
+    );
+    let message = uni
+        .interpolated(Dof::Yaw, (0.0, 30f64.to_radians()))
+        .unwrap_err()
+        .to_string();
+    assert!(message.contains("bi-directional QTF"), "{message}");
+    let node = 25f64.to_radians();
+    assert_eq!(
+        uni.interpolated(Dof::Sway, (node, node)).unwrap(),
+        uni.block(Dof::Sway, node, 1e-12).unwrap().values
+    );
+    let pairs = qtf(&omegas, &data_headings(), true);
+    assert_eq!(
+        pairs.interpolated(Dof::Sway, (node, 0.0)).unwrap(),
+        pairs
+            .pair_block(Dof::Sway, (node, 0.0), 1e-12)
+            .unwrap()
+            .values
+    );
+    // Bilinear weights are symmetric: (b1, b2) and (b2, b1) of a Hermitian QTF are each
+    // other's conjugate transpose.
+    let (b1, b2) = (0.3, -0.7);
+    let (a, b) = (
+        pairs.interpolated(Dof::Yaw, (b1, b2)).unwrap(),
+        pairs.interpolated(Dof::Yaw, (b2, b1)).unwrap(),
+    );
+    let n = omegas.len();
+    for i in 0..n {
+        for j in 0..n {
+            assert!(
+                (a[i * n + j] - b[j * n + i].conj()).norm() <= 1e-9 * a[i * n + j].norm().max(1.0)
+            );
+        }
+    }
+}
