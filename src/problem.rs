@@ -506,7 +506,7 @@ impl Problem {
     }
 
     /// Yaw following: at least two headings, a finite increasing range that holds the
-    /// initial yaw, Newman's approximation (the yaw-following records are Newman's).
+    /// initial yaw.
     fn validate_yaw_following(&self) -> Result<()> {
         let Some(yaw) = &self.model.yaw_following else {
             return Ok(());
@@ -516,14 +516,6 @@ impl Problem {
                 "model.yaw_following.headings",
                 yaw.headings,
                 "must be at least 2",
-            ));
-        }
-        if self.model.second_order == SecondOrder::FullQtf {
-            return Err(Error::invalid(
-                "model.yaw_following",
-                format!("{} headings", yaw.headings),
-                "needs second_order = \"newman\": the yaw-following records are not built \
-                 from the full QTF yet",
             ));
         }
         if let Some((min, max)) = yaw.range {

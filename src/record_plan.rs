@@ -96,11 +96,20 @@ pub struct RecordPlan {
     transfers: Vec<DirectionTransfer>,
     /// Cross-direction terms of a spread sea (`None`: long-crested or interaction "none").
     pairs: Option<DirectionPairs>,
-    /// The yaw-following grid and the coefficients of every yaw and direction.
-    yaw: Option<(YawGrid, Vec<Vec<DirectionTransfer>>)>,
+    /// The yaw-following grid and the coefficients of every yaw and direction (and, under
+    /// the full QTF, its factors at every yaw's relative headings).
+    yaw: Option<YawRecordsPlan>,
     /// The full QTF on the grid by groups of directions (second_order = "full-qtf").
     full_qtf: Option<Vec<QtfGroup>>,
     ranks: Vec<QtfRank>,
+}
+
+/// What the yaw-following records need besides the seed.
+struct YawRecordsPlan {
+    grid: YawGrid,
+    transfers: Vec<Vec<DirectionTransfer>>,
+    /// Under the full QTF: per yaw theta_j, the QTF at the relative headings beta_k - theta_j.
+    full_qtf: Option<Vec<Vec<QtfGroup>>>,
 }
 
 /// The truncation of one full-QTF factorisation: one DOF of one wave direction, or of every
@@ -188,14 +197,49 @@ impl RecordPlan {
                     &yaw_grid,
                     damping_table.is_some(),
                 )?;
-                Some((yaw_grid, transfers))
+                let full_qtf = match config.model.second_order {
+                    SecondOrder::Newman => None,
+                    SecondOrder::FullQtf => Some(
+                        (0..yaw_grid.len())
+                            .map(|j| {
+                                let theta = yaw_grid.yaw(j);
+                                let relative: Vec<Direction> = directions
+                                    .iter()
+                                    .map(|d| Direction {
+                                        heading: d.heading - theta,
+                                        weight: d.weight,
+                                    })
+                                    .collect();
+                                full_qtf_on_grid(config, &grid, &relative)
+                                    .map(|(q, _)| q)
+                                    .map_err(|e| {
+                                        Error::invalid(
+                                            "model.yaw_following",
+                                            format!("{} headings", options.headings),
+                                            format!(
+                                                "the full QTF at the body yaw {:.3} deg: {e}",
+                                                theta.to_degrees()
+                                            ),
+                                        )
+                                    })
+                            })
+                            .collect::<Result<Vec<_>>>()?,
+                    ),
+                };
+                Some(YawRecordsPlan {
+                    grid: yaw_grid,
+                    transfers,
+                    full_qtf,
+                })
             }
         };
         let (full_qtf, ranks) = match config.model.second_order {
             SecondOrder::Newman => (None, Vec::new()),
             SecondOrder::FullQtf => {
+                // With yaw following the force comes from the yaw records alone (their QTF
+                // at the relative headings); the mean position's ranks are still reported.
                 let (qtf, ranks) = full_qtf_on_grid(config, &grid, &directions)?;
-                (Some(qtf), ranks)
+                (config.model.yaw_following.is_none().then_some(qtf), ranks)
             }
         };
         Ok(RecordPlan {
@@ -295,11 +339,12 @@ impl RecordPlan {
             work.cross_terms(records, components, pairs);
         }
         match &self.yaw {
-            Some((grid, transfers)) => work.yaw_following(
+            Some(yaw) => work.yaw_following(
                 &mut records.yaw_following,
                 components,
-                grid,
-                transfers,
+                &yaw.grid,
+                &yaw.transfers,
+                yaw.full_qtf.as_deref(),
                 config.model.newman,
             ),
             None => records.yaw_following = None,

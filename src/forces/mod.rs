@@ -115,6 +115,7 @@ impl RecordWork {
         components: &WaveComponents,
         grid: &YawGrid,
         transfers: &[Vec<DirectionTransfer>],
+        full_qtf: Option<&[Vec<QtfGroup>]>,
         form: NewmanForm,
     ) {
         let records = records.get_or_insert_with(|| YawFollowingRecords {
@@ -124,6 +125,7 @@ impl RecordWork {
         records.rebuild(
             components,
             transfers,
+            full_qtf,
             form,
             &mut self.synth,
             &mut self.newman,

@@ -190,11 +190,16 @@ impl MemoryEstimate {
                 } else {
                     d * 3.0 * (n * C64 * g + 4.0 * n * n * C64 + n * tail)
                 };
+                // With yaw following: the factors again at every yaw's relative headings.
+                let copies = model
+                    .yaw_following
+                    .as_ref()
+                    .map_or(1.0, |y| 1.0 + y.headings as f64);
                 plan.push(term(
                     "model.second_order",
                     "full-qtf".to_string(),
                     format!("the full QTF's factors ({n} frequencies) on the grid"),
-                    bytes,
+                    copies * bytes,
                 ));
             }
         }

@@ -468,3 +468,59 @@ fn heading_interpolation_refuses_what_the_data_do_not_cover() {
         }
     }
 }
+
+/// Yaw following with the full QTF: the records at body yaw theta_j are those of the sea
+/// turned by -theta_j at the mean position (the same amplitudes, the QTF at the relative
+/// headings beta_k - theta_j, cross terms included), for a spread sea on bi-directional data;
+/// a yaw range whose relative headings leave the data is refused naming the yaw.
+#[test]
+fn yaw_following_records_are_the_full_qtf_at_the_relative_headings() {
+    use slowdrift::model::YawFollowing;
+    let mut config = config(sea(21, 3), true, 300.0);
+    config.model.yaw_following = Some(YawFollowing {
+        headings: 3,
+        range: Some((-10f64.to_radians(), 10f64.to_radians())),
+    });
+    let sim = Simulation::new(config.clone()).unwrap();
+    let yaw = sim
+        .records()
+        .yaw_following
+        .as_ref()
+        .expect("yaw-following records");
+    assert_eq!(yaw.sets.len(), 3);
+    for (j, theta) in [-10.0f64, 0.0, 10.0].into_iter().enumerate() {
+        let mut turned = config.clone();
+        turned.model.yaw_following = None;
+        turned.sea.mean_direction -= theta.to_radians();
+        let reference = Simulation::new(turned).unwrap();
+        for d in 0..3 {
+            let (a, b) = (
+                yaw.sets[j].wave_force[d].samples(),
+                reference.records().wave_force[d].samples(),
+            );
+            let scale = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+            let worst = a
+                .iter()
+                .zip(b)
+                .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+            assert!(
+                worst <= 1e-9 * scale,
+                "yaw {theta} deg, DOF {d}: {worst} of {scale}"
+            );
+        }
+    }
+    // Beyond the data: directions at about -54, 6 and 66 deg turned by up to 40 deg reach
+    // -94 .. 106 deg, past the data's 100 deg.
+    config.model.yaw_following = Some(YawFollowing {
+        headings: 3,
+        range: Some((-40f64.to_radians(), 40f64.to_radians())),
+    });
+    let Err(error) = Simulation::new(config) else {
+        panic!("relative headings beyond the QTF must be refused")
+    };
+    let message = error.to_string();
+    assert!(
+        message.contains("model.yaw_following") && message.contains("-40.000 deg"),
+        "{message}"
+    );
+}
