@@ -122,6 +122,13 @@ fn simulate(args: SimulateArgs) -> Result<(), String> {
         }
     };
     let transient = args.transient.unwrap_or_else(|| config.default_transient());
+    if let Some(trim) = config.band_trim() {
+        println!(
+            "wave band: the default {:.4} .. {:.4} rad/s limited to the hydrodynamic data's \
+             {:.4} .. {:.4} rad/s ({:.2e} of its variance left out; sea.band sets it)",
+            trim.default.0, trim.default.1, trim.band.0, trim.band.1, trim.variance_left_out
+        );
+    }
     let directions = config.sea.directions().len();
     if directions > 1 {
         println!(
@@ -133,10 +140,14 @@ fn simulate(args: SimulateArgs) -> Result<(), String> {
     let mut sim = Simulation::new(config).map_err(|e| e.to_string())?;
     for r in sim.qtf_ranks() {
         println!(
-            "full QTF, {:?} at {:.1} deg: rank {} of {} (discarded {:.1e} of the eigenvalues' \
-             absolute sum)",
+            "full QTF, {:?} {}: rank {} of {} (discarded {:.1e} of the eigenvalues' absolute \
+             sum)",
             r.dof,
-            r.heading.to_degrees(),
+            if r.directions > 1 {
+                format!("across {} directions with their cross terms", r.directions)
+            } else {
+                format!("at {:.1} deg", r.heading.to_degrees())
+            },
             r.rank,
             r.size,
             r.discarded

@@ -27,6 +27,15 @@ impl Dof {
 /// matches a data heading within it (the full QTF is never interpolated in heading).
 pub const HEADING_MATCH_TOLERANCE: f64 = 0.01 * PI / 180.0;
 
+/// Frequencies closer than this relative distance are the same frequency, and a band limit
+/// this close beyond a data grid's first or last frequency is covered by it (the data's end
+/// value is used there; nothing further is extrapolated). Frequencies of hydrodynamic files
+/// are computed from printed periods, omega = 2 pi / PER: a period printed with five
+/// significant digits is off by up to 5e-5 of itself, so the IEA-15 MW file's 2.5 rad/s comes
+/// out as 2.4999... and a band to 2.5 must still be covered. 1e-4 is below the relative
+/// step of every real frequency grid (0.05 rad/s at 3 rad/s is 1.7e-2).
+pub const FREQUENCY_MATCH_TOLERANCE: f64 = 1e-4;
+
 /// Physical constants of the water (physics.md section 1).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Environment {

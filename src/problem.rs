@@ -21,9 +21,7 @@ use crate::hydro::io::database::{self, HydroDatabase};
 use crate::hydro::io::drift_csv;
 use crate::hydro::qtf::{check_tolerance, Qtf};
 use crate::hydro::DriftTable;
-use crate::model::{
-    Dof, DragModel, DriftDamping, Environment, Interaction, SecondOrder, HEADING_MATCH_TOLERANCE,
-};
+use crate::model::{Dof, DragModel, DriftDamping, Environment, Interaction, SecondOrder};
 use crate::scenario::default::default_scenario;
 use crate::scenario::{file, limits, ColumnGrid, DriftSource, Platform, Scenario};
 use serde::Serialize;
@@ -237,7 +235,89 @@ fn grid_nodes(grid: &ColumnGrid) -> (Vec<f64>, Vec<f64>) {
     (omegas, headings)
 }
 
+/// The largest share of the spectrum's variance that limiting the default band to the
+/// hydrodynamic data may leave out ([`Problem::band`]).
+pub const DEFAULT_BAND_TRIM_LIMIT: f64 = 0.01;
+
+/// The default band limited to the hydrodynamic data ([`Problem::band_trim`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BandTrim {
+    /// The spectrum's default band, rad/s.
+    pub default: (f64, f64),
+    /// The band simulated: the default band within the data's frequencies, rad/s.
+    pub band: (f64, f64),
+    /// The share of the default band's variance left out.
+    pub variance_left_out: f64,
+}
+
 impl Problem {
+    /// The simulated band (omega_min, omega_max), rad/s: `sea.band` when the user set it;
+    /// otherwise the spectrum's default band ([`crate::sea_state::SeaState::band`]), limited
+    /// to the frequencies the hydrodynamic data cover (the drift table, and the QTF under
+    /// `second_order = "full-qtf"`) when they stop inside it and what is left out holds at
+    /// most [`DEFAULT_BAND_TRIM_LIMIT`] of the default band's variance ([`Problem::band_trim`]).
+    /// A data file whose last frequency, computed from a printed period, is 2.4999 rad/s
+    /// thus serves the default band to 2.5133 rad/s of Tp = 10 s. Beyond the limit the
+    /// default band is kept and the coverage checks name the gap.
+    pub fn band(&self) -> (f64, f64) {
+        self.band_trim()
+            .map_or_else(|| self.sea.band(), |trim| trim.band)
+    }
+
+    /// How the default band was limited to the data ([`Problem::band`]), or `None` when it
+    /// was not (the user set `sea.band`, the data cover the default band, or limiting it
+    /// would leave out more than [`DEFAULT_BAND_TRIM_LIMIT`] of the variance).
+    pub fn band_trim(&self) -> Option<BandTrim> {
+        if self.sea.band.is_some() {
+            return None;
+        }
+        let default = self.sea.band();
+        let mut cover = {
+            let w = self.hydro.drift.omegas();
+            (w[0], w[w.len() - 1])
+        };
+        if let (SecondOrder::FullQtf, Some(q)) = (self.model.second_order, &self.hydro.qtf) {
+            if let (Some(&lo), Some(&hi)) = (q.omegas.first(), q.omegas.last()) {
+                cover = (cover.0.max(lo), cover.1.min(hi));
+            }
+        }
+        let tolerance = crate::model::FREQUENCY_MATCH_TOLERANCE;
+        let band = (
+            if default.0 < cover.0 * (1.0 - tolerance) {
+                cover.0
+            } else {
+                default.0
+            },
+            if default.1 > cover.1 * (1.0 + tolerance) {
+                cover.1
+            } else {
+                default.1
+            },
+        );
+        if band == default || band.0 >= band.1 {
+            return None;
+        }
+        let variance = |a: f64, b: f64| {
+            if b <= a {
+                return 0.0;
+            }
+            let panels = 400;
+            let h = (b - a) / panels as f64;
+            let density = |w: f64| self.sea.spectrum.density(w);
+            let inner: f64 = (1..panels)
+                .map(|i| if i % 2 == 1 { 4.0 } else { 2.0 } * density(a + i as f64 * h))
+                .sum();
+            (density(a) + inner + density(b)) * h / 3.0
+        };
+        let total = variance(default.0, default.1);
+        let left_out = (variance(default.0, band.0) + variance(band.1, default.1)) / total;
+        (left_out <= DEFAULT_BAND_TRIM_LIMIT).then_some(BandTrim {
+            default,
+            band,
+            variance_left_out: left_out,
+        })
+    }
+
     /// The drift table with the wave-drift damping a run of this problem uses: the table's
     /// own b_ij (`drift_damping = "table"`), Aranha's on its nodes (`"aranha"`, whatever
     /// b_ij the table holds), or `None` (`"off"`).
@@ -418,8 +498,10 @@ impl Problem {
         Ok(())
     }
 
-    /// The full QTF, when selected: present, with surge, sway and yaw at every wave
-    /// direction's heading (within 0.01 deg; no interpolation in heading), covering the band.
+    /// The full QTF, when selected: present, covering the band, and its headings covering
+    /// every wave direction (bilinear interpolation in the heading pair between data
+    /// headings, never extrapolated; with the cross terms from the QTF, every pair of
+    /// directions).
     fn validate_qtf(&self) -> Result<()> {
         if let Some(q) = &self.hydro.qtf {
             q.validate()?;
@@ -433,43 +515,54 @@ impl Problem {
                 "model.second_order",
                 "full-qtf",
                 "needs a QTF: use [drift] source = \"database\" with a database that holds one \
-                 (`slowdrift hydro wamit` with a .12d, .11d or .10d file)",
+                 (`slowdrift hydro wamit` with a .12d, .11d or .10d file, `slowdrift hydro \
+                 nemoh`)",
             ));
         };
-        let missing: Vec<String> = self
-            .sea
-            .directions()
-            .iter()
-            .filter(|d| {
-                Dof::ALL
-                    .iter()
-                    .any(|&dof| q.block(dof, d.heading, HEADING_MATCH_TOLERANCE).is_none())
-            })
-            .map(|d| format!("{:.3}", d.heading.to_degrees()))
-            .collect();
-        if !missing.is_empty() {
-            let have: Vec<String> = q
-                .headings()
+        let headings: Vec<f64> = self.sea.directions().iter().map(|d| d.heading).collect();
+        let pairs: Vec<(f64, f64)> = if self.cross_terms_from_qtf() {
+            headings
                 .iter()
-                .map(|h| format!("{:.3}", h.to_degrees()))
-                .collect();
-            return Err(Error::invalid(
-                "model.second_order",
-                "full-qtf",
-                format!(
-                    "the QTF has no surge, sway and yaw blocks at the wave heading(s) {} deg \
-                     (it has {} deg); the full QTF is not interpolated in heading, so every \
-                     direction of the sea needs its own QTF heading",
-                    missing.join(", "),
-                    have.join(", ")
-                ),
-            ));
+                .flat_map(|&a| headings.iter().map(move |&b| (a, b)))
+                .collect()
+        } else {
+            headings.iter().map(|&a| (a, a)).collect()
+        };
+        for pair in pairs {
+            for dof in Dof::ALL {
+                q.interpolated(dof, pair).map_err(|e| {
+                    Error::invalid(
+                        "model.second_order",
+                        "full-qtf",
+                        format!(
+                            "the QTF does not serve the wave direction(s) ({:.3}, {:.3}) deg: {e}",
+                            pair.0.to_degrees(),
+                            pair.1.to_degrees()
+                        ),
+                    )
+                })?;
+            }
         }
-        crate::hydro::qtf::check_covers(&q.omegas, self.sea.band())
+        crate::hydro::qtf::check_covers(&q.omegas, self.band())
+    }
+
+    /// Whether the cross terms between the directions of a spread sea come from the
+    /// bi-directional QTF: the full QTF is selected, the QTF has bi-directional blocks, the
+    /// sea has several directions and the interaction is bi-directional (`auto` resolves to
+    /// it with such a QTF).
+    pub fn cross_terms_from_qtf(&self) -> bool {
+        self.model.second_order == SecondOrder::FullQtf
+            && self.sea.directions().len() > 1
+            && self
+                .hydro
+                .qtf
+                .as_ref()
+                .is_some_and(|q| q.is_bidirectional())
+            && self.interaction() == Interaction::Bidirectional
     }
 
     /// Yaw following: at least two headings, a finite increasing range that holds the
-    /// initial yaw, Newman's approximation (the full QTF is not interpolated in heading).
+    /// initial yaw.
     fn validate_yaw_following(&self) -> Result<()> {
         let Some(yaw) = &self.model.yaw_following else {
             return Ok(());
@@ -479,13 +572,6 @@ impl Problem {
                 "model.yaw_following.headings",
                 yaw.headings,
                 "must be at least 2",
-            ));
-        }
-        if self.model.second_order == SecondOrder::FullQtf {
-            return Err(Error::invalid(
-                "model.yaw_following",
-                format!("{} headings", yaw.headings),
-                "needs second_order = \"newman\": the full QTF is not interpolated in heading",
             ));
         }
         if let Some((min, max)) = yaw.range {
@@ -519,8 +605,15 @@ impl Problem {
         if let Some(BidirectionalSource::Table(table)) = &self.hydro.bidirectional {
             table.validate()?;
         }
+        let qtf_has_it = self.model.second_order == SecondOrder::FullQtf
+            && self
+                .hydro
+                .qtf
+                .as_ref()
+                .is_some_and(|q| q.is_bidirectional());
         if self.model.interaction == Interaction::Bidirectional
             && self.hydro.bidirectional.is_none()
+            && !qtf_has_it
         {
             return Err(Error::invalid(
                 "model.interaction",
@@ -534,10 +627,19 @@ impl Problem {
         Ok(())
     }
 
-    /// The interaction actually used ([`Interaction::Auto`] resolved against the data).
+    /// The interaction actually used ([`Interaction::Auto`] resolved against the data:
+    /// bi-directional when the drift source has the bi-directional drift, or under the full
+    /// QTF a bi-directional QTF).
     pub fn interaction(&self) -> Interaction {
+        let qtf_has_it = self.model.second_order == SecondOrder::FullQtf
+            && self
+                .hydro
+                .qtf
+                .as_ref()
+                .is_some_and(|q| q.is_bidirectional());
         match (self.model.interaction, &self.hydro.bidirectional) {
             (Interaction::Auto, Some(_)) => Interaction::Bidirectional,
+            (Interaction::Auto, None) if qtf_has_it => Interaction::Bidirectional,
             (Interaction::Auto, None) => Interaction::MeanDirection,
             (chosen, _) => chosen,
         }

@@ -21,14 +21,13 @@ pub use budget::{MemoryEstimate, Term};
 use crate::error::{Error, Result};
 use crate::forces::{
     direction_pairs, plan_inverse_fft, transfers_on_grid, yaw_transfers, DirectionTransfer,
-    ForceRecords, GridQtf, InverseFft, Join, QtfFactorisation, RecordOptions, RecordWork, Segments,
-    Synthesizer, YawGrid,
+    ForceRecords, InverseFft, Join, QtfFactorisation, QtfGroup, RecordOptions, RecordWork,
+    Segments, Synthesizer, YawGrid,
 };
 
 use crate::hydro::bidirectional::DirectionPairs;
 use crate::model::{
     Cylinder, Dof, DriftDamping, Environment, Interaction, SecondOrder, YawFollowing,
-    HEADING_MATCH_TOLERANCE,
 };
 use crate::problem::{Hydro, Problem};
 use crate::sea_state::{Direction, FrequencyGrid, Spreading, WaveComponents};
@@ -66,7 +65,7 @@ impl PlanKey {
             start_time: problem.run.start_time,
             block_duration: problem.run.block_duration,
             time_step: problem.run.time_step,
-            band: problem.sea.band(),
+            band: problem.band(),
             spreading: problem.sea.spreading.clone(),
             mean_direction: problem.sea.mean_direction,
             n_directions: problem.sea.n_directions,
@@ -97,20 +96,33 @@ pub struct RecordPlan {
     transfers: Vec<DirectionTransfer>,
     /// Cross-direction terms of a spread sea (`None`: long-crested or interaction "none").
     pairs: Option<DirectionPairs>,
-    /// The yaw-following grid and the coefficients of every yaw and direction.
-    yaw: Option<(YawGrid, Vec<Vec<DirectionTransfer>>)>,
-    /// The full QTF of every direction and DOF on the grid (second_order = "full-qtf").
-    full_qtf: Option<DirectionQtfs>,
+    /// The yaw-following grid and the coefficients of every yaw and direction (and, under
+    /// the full QTF, its factors at every yaw's relative headings).
+    yaw: Option<YawRecordsPlan>,
+    /// The full QTF on the grid by groups of directions (second_order = "full-qtf").
+    full_qtf: Option<Vec<QtfGroup>>,
     ranks: Vec<QtfRank>,
 }
 
-/// The truncation of one full-QTF block (one DOF of one wave direction).
+/// What the yaw-following records need besides the seed.
+struct YawRecordsPlan {
+    grid: YawGrid,
+    transfers: Vec<Vec<DirectionTransfer>>,
+    /// Under the full QTF: per yaw theta_j, the QTF at the relative headings beta_k - theta_j.
+    full_qtf: Option<Vec<Vec<QtfGroup>>>,
+}
+
+/// The truncation of one full-QTF factorisation: one DOF of one wave direction, or of every
+/// direction of a spread sea jointly (`directions` > 1: the cross terms from the
+/// bi-directional QTF).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct QtfRank {
-    /// Index of the wave direction.
+    /// Index of the (first) wave direction.
     pub direction: usize,
     /// Wave heading of that direction, rad.
     pub heading: f64,
+    /// How many directions the factorisation spans.
+    pub directions: usize,
     pub dof: Dof,
     /// Retained rank R and the QTF's full rank n.
     pub rank: usize,
@@ -118,9 +130,6 @@ pub struct QtfRank {
     /// Trace-norm share of the discarded eigenvalues (<= `model.qtf_tolerance`).
     pub discarded: f64,
 }
-
-/// The QTF of every direction and DOF, factorised and interpolated onto the grid.
-type DirectionQtfs = Vec<[GridQtf; 3]>;
 
 impl RecordPlan {
     /// Checks `config` and computes everything of its records that the seed does not change.
@@ -141,11 +150,17 @@ impl RecordPlan {
             config.run.start_time,
             segments.span() as f64 * dt,
             dt,
-            sea.band(),
+            config.band(),
         )?;
         let directions = sea.directions();
         let damping_table = config.damping_table()?;
-        let pairs = direction_pairs(config, &grid, &directions)?;
+        // The cross terms of a spread sea: from the bi-directional QTF itself (in the joint
+        // factorisation below), else by the Newman-type rule of `forces::directional`.
+        let pairs = if config.cross_terms_from_qtf() {
+            None
+        } else {
+            direction_pairs(config, &grid, &directions)?
+        };
         if let (Some(options), Some(_)) = (&config.model.yaw_following, &pairs) {
             return Err(Error::invalid(
                 "model.yaw_following",
@@ -182,14 +197,49 @@ impl RecordPlan {
                     &yaw_grid,
                     damping_table.is_some(),
                 )?;
-                Some((yaw_grid, transfers))
+                let full_qtf = match config.model.second_order {
+                    SecondOrder::Newman => None,
+                    SecondOrder::FullQtf => Some(
+                        (0..yaw_grid.len())
+                            .map(|j| {
+                                let theta = yaw_grid.yaw(j);
+                                let relative: Vec<Direction> = directions
+                                    .iter()
+                                    .map(|d| Direction {
+                                        heading: d.heading - theta,
+                                        weight: d.weight,
+                                    })
+                                    .collect();
+                                full_qtf_on_grid(config, &grid, &relative)
+                                    .map(|(q, _)| q)
+                                    .map_err(|e| {
+                                        Error::invalid(
+                                            "model.yaw_following",
+                                            format!("{} headings", options.headings),
+                                            format!(
+                                                "the full QTF at the body yaw {:.3} deg: {e}",
+                                                theta.to_degrees()
+                                            ),
+                                        )
+                                    })
+                            })
+                            .collect::<Result<Vec<_>>>()?,
+                    ),
+                };
+                Some(YawRecordsPlan {
+                    grid: yaw_grid,
+                    transfers,
+                    full_qtf,
+                })
             }
         };
         let (full_qtf, ranks) = match config.model.second_order {
             SecondOrder::Newman => (None, Vec::new()),
             SecondOrder::FullQtf => {
+                // With yaw following the force comes from the yaw records alone (their QTF
+                // at the relative headings); the mean position's ranks are still reported.
                 let (qtf, ranks) = full_qtf_on_grid(config, &grid, &directions)?;
-                (Some(qtf), ranks)
+                (config.model.yaw_following.is_none().then_some(qtf), ranks)
             }
         };
         Ok(RecordPlan {
@@ -289,11 +339,12 @@ impl RecordPlan {
             work.cross_terms(records, components, pairs);
         }
         match &self.yaw {
-            Some((grid, transfers)) => work.yaw_following(
+            Some(yaw) => work.yaw_following(
                 &mut records.yaw_following,
                 components,
-                grid,
-                transfers,
+                &yaw.grid,
+                &yaw.transfers,
+                yaw.full_qtf.as_deref(),
                 config.model.newman,
             ),
             None => records.yaw_following = None,
@@ -320,37 +371,70 @@ pub fn segments_of(block_duration: f64, dt: f64) -> Segments {
     Segments { block, ramp }
 }
 
+/// The full QTF on `grid`: with the cross terms from a bi-directional QTF
+/// ([`Problem::cross_terms_from_qtf`]), one factorisation per DOF over (frequency, direction)
+/// pairs of every direction; otherwise one per direction and DOF. The sea's headings are
+/// interpolated bilinearly in the heading pair between the data's (`Qtf::interpolated`).
 fn full_qtf_on_grid(
     config: &Problem,
     grid: &FrequencyGrid,
     directions: &[Direction],
-) -> Result<(DirectionQtfs, Vec<QtfRank>)> {
+) -> Result<(Vec<QtfGroup>, Vec<QtfRank>)> {
     let qtf = config
         .hydro
         .qtf
         .as_ref()
         .expect("Problem::validate requires the QTF for full-qtf");
+    let tolerance = config.model.qtf_tolerance;
+    let n = qtf.omegas.len();
     let mut ranks = Vec::new();
-    let mut on_grid = Vec::with_capacity(directions.len());
-    for (k, direction) in directions.iter().enumerate() {
-        let mut blocks = Vec::with_capacity(3);
+    let mut groups = Vec::new();
+    let rank = |factors: &QtfFactorisation, direction: usize, dof: Dof| QtfRank {
+        direction,
+        heading: directions[direction].heading,
+        directions: factors.directions(),
+        dof,
+        rank: factors.rank(),
+        size: factors.size(),
+        discarded: factors.discarded(),
+    };
+    if config.cross_terms_from_qtf() {
+        let nd = directions.len();
+        let m = n * nd;
+        let mut dofs = Vec::with_capacity(3);
         for dof in Dof::ALL {
-            let block = qtf
-                .block(dof, direction.heading, HEADING_MATCH_TOLERANCE)
-                .expect("Problem::validate requires every direction's QTF");
-            let factors =
-                QtfFactorisation::new(&qtf.omegas, &block.values, config.model.qtf_tolerance)?;
-            ranks.push(QtfRank {
-                direction: k,
-                heading: direction.heading,
-                dof,
-                rank: factors.rank(),
-                size: factors.size(),
-                discarded: factors.discarded(),
-            });
-            blocks.push(factors.on_grid(grid)?);
+            let mut matrix = vec![rustfft::num_complex::Complex64::default(); m * m];
+            for (k, dk) in directions.iter().enumerate() {
+                for (l, dl) in directions.iter().enumerate() {
+                    let block = qtf.interpolated(dof, (dk.heading, dl.heading))?;
+                    for i in 0..n {
+                        let row = (k * n + i) * m + l * n;
+                        matrix[row..row + n].copy_from_slice(&block[i * n..(i + 1) * n]);
+                    }
+                }
+            }
+            let factors = QtfFactorisation::across_directions(&qtf.omegas, nd, &matrix, tolerance)?;
+            ranks.push(rank(&factors, 0, dof));
+            dofs.push(factors.on_grid(grid)?);
         }
-        on_grid.push(blocks.try_into().expect("three DOFs"));
+        groups.push(QtfGroup {
+            first_direction: 0,
+            dofs: dofs.try_into().expect("three DOFs"),
+        });
+        return Ok((groups, ranks));
     }
-    Ok((on_grid, ranks))
+    for (k, direction) in directions.iter().enumerate() {
+        let mut dofs = Vec::with_capacity(3);
+        for dof in Dof::ALL {
+            let block = qtf.interpolated(dof, (direction.heading, direction.heading))?;
+            let factors = QtfFactorisation::new(&qtf.omegas, &block, tolerance)?;
+            ranks.push(rank(&factors, k, dof));
+            dofs.push(factors.on_grid(grid)?);
+        }
+        groups.push(QtfGroup {
+            first_direction: k,
+            dofs: dofs.try_into().expect("three DOFs"),
+        });
+    }
+    Ok((groups, ranks))
 }

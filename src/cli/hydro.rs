@@ -2,6 +2,10 @@
 //! imports the WAMIT files `NAME.1`, `.hst`, `.8`, `.9`, `.12d` (or `.11d`, `.10d`) that
 //! exist into a native hydro database and prints what it found.
 //!
+//! `slowdrift hydro nemoh --dir DIR --out FILE.json`: imports the NEMOH v3 results of the
+//! project directory DIR (Nemoh.cal, results/CM.dat, Mechanics/, results/QTF/OUT_QTFM_N.dat)
+//! into a native hydro database and prints what it found.
+//!
 //! `slowdrift hydro columns [--config FILE.toml] --out FILE.json`: writes the drift table
 //! (and the wave-drift damping a run of it uses: the table's b_ij, or Aranha's) of a
 //! configuration (default: the embedded default platform's database) as a native
@@ -14,6 +18,7 @@ use super::args::Checked;
 use clap::{Args, Subcommand};
 use slowdrift::hydro::bidirectional::{BidirectionalSource, BidirectionalTable};
 use slowdrift::hydro::io::database::HydroDatabase;
+use slowdrift::hydro::io::nemoh;
 use slowdrift::hydro::io::wamit::WamitOptions;
 use slowdrift::problem::{self, default_problem};
 use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
@@ -32,6 +37,10 @@ enum HydroCommand {
     /// Imports the WAMIT files NAME.1, .hst, .8, .9 and .12d (else .11d, else .10d) that exist
     /// into a native hydro database (JSON) and prints what it found in each
     Wamit(WamitArgs),
+    /// Imports NEMOH v3 results (Nemoh.cal, results/CM.dat, Mechanics/, the difference-frequency
+    /// QTF results/QTF/OUT_QTFM_N.dat) into a native hydro database (JSON) and prints what it
+    /// found in each
+    Nemoh(NemohArgs),
     /// Writes the drift table (and wave-drift damping) of a configuration as a native hydro
     /// database (JSON)
     Columns(ColumnsArgs),
@@ -56,6 +65,17 @@ struct WamitArgs {
     #[arg(long, value_name = "G", allow_hyphen_values = true,
           default_value_t = WamitOptions::default().gravity, value_parser = Checked(positive))]
     g: f64,
+    /// The native hydro database to write (JSON)
+    #[arg(long, value_name = "FILE.json", allow_hyphen_values = true)]
+    out: PathBuf,
+}
+
+#[derive(Args)]
+#[command(args_override_self = true)]
+struct NemohArgs {
+    /// NEMOH's project directory (the one with Nemoh.cal; its results/ is accepted too)
+    #[arg(long, value_name = "DIR", allow_hyphen_values = true)]
+    dir: PathBuf,
     /// The native hydro database to write (JSON)
     #[arg(long, value_name = "FILE.json", allow_hyphen_values = true)]
     out: PathBuf,
@@ -89,6 +109,7 @@ fn positive(flag: &str, value: &str) -> Result<f64, String> {
 pub fn run(args: HydroArgs) -> Result<(), String> {
     match args.command {
         HydroCommand::Wamit(args) => wamit(args),
+        HydroCommand::Nemoh(args) => nemoh(args),
         HydroCommand::Columns(args) => columns(args),
     }
 }
@@ -173,7 +194,20 @@ fn wamit(args: WamitArgs) -> Result<(), String> {
     for line in &import.files {
         println!("  {line}");
     }
-    let db = &import.database;
+    summarize_and_save(&import.database, &out)
+}
+
+fn nemoh(args: NemohArgs) -> Result<(), String> {
+    let import = nemoh::import(&args.dir).map_err(|e| e.to_string())?;
+    println!("NEMOH results {}:", args.dir.display());
+    for line in &import.files {
+        println!("  {line}");
+    }
+    summarize_and_save(&import.database, &args.out)
+}
+
+/// Prints what an imported database holds and writes it to `out`.
+fn summarize_and_save(db: &HydroDatabase, out: &std::path::Path) -> Result<(), String> {
     if db.drift.is_empty() {
         println!("drift: none");
     } else {
@@ -205,7 +239,21 @@ fn wamit(args: WamitArgs) -> Result<(), String> {
         yes(db.low_frequency_added_mass.is_some()),
         yes(db.stiffness.is_some())
     );
-    db.save(&out).map_err(|e| e.to_string())?;
+    if let Some(t) = &db.bidirectional_drift {
+        println!(
+            "bi-directional drift: {} frequencies x {} x {} headings",
+            t.omegas.len(),
+            t.headings.len(),
+            t.headings.len()
+        );
+    }
+    if let Some(m) = &db.mass_properties {
+        println!(
+            "mass properties: mass {:.6e} kg, yaw inertia {:.6e} kg m^2",
+            m.mass, m.yaw_inertia
+        );
+    }
+    db.save(out).map_err(|e| e.to_string())?;
     println!("database \"{}\" written to {}", db.name, out.display());
     Ok(())
 }

@@ -18,7 +18,7 @@ pub use depth_basis::{DepthBasis, KINEMATICS_TOLERANCE};
 pub use directional::{add_cross_terms, cross_direction_force, direction_pairs, CrossWork};
 pub use kinematics::{distinct_kinematics, ColumnKinematics, KinematicsWork};
 pub use newman::NewmanBuilder;
-pub use qtf::{GridQtf, QtfFactorisation};
+pub use qtf::{GridQtf, QtfFactorisation, QtfGroup};
 pub use record::{Record, RecordClock, SamplePoint};
 pub use stream::{Join, Segments};
 pub use synthesis::{plan_inverse_fft, InverseFft, Synthesizer};
@@ -35,10 +35,11 @@ use rustfft::num_complex::Complex64;
 /// What to precompute besides the elevation and the wave force.
 pub struct RecordOptions<'a> {
     pub newman: NewmanForm,
-    /// The full QTF of every direction (surge, sway, yaw), factorised on the grid: when
-    /// given, the wave force comes from it instead of Newman's approximation (the damping
-    /// records stay Newman's, from the transfers' b_ij).
-    pub full_qtf: Option<&'a [[GridQtf; 3]]>,
+    /// The full QTF (surge, sway, yaw), factorised on the grid, by groups of directions
+    /// (one per direction, or one for every direction of a spread sea with the cross terms):
+    /// when given, the wave force comes from it instead of Newman's approximation (the
+    /// damping records stay Newman's, from the transfers' b_ij).
+    pub full_qtf: Option<&'a [QtfGroup]>,
     /// Columns (and strips per column) whose kinematics the drag needs; empty = no drag.
     pub drag_columns: &'a [Cylinder],
     pub strips_per_column: usize,
@@ -114,6 +115,7 @@ impl RecordWork {
         components: &WaveComponents,
         grid: &YawGrid,
         transfers: &[Vec<DirectionTransfer>],
+        full_qtf: Option<&[Vec<QtfGroup>]>,
         form: NewmanForm,
     ) {
         let records = records.get_or_insert_with(|| YawFollowingRecords {
@@ -123,6 +125,7 @@ impl RecordWork {
         records.rebuild(
             components,
             transfers,
+            full_qtf,
             form,
             &mut self.synth,
             &mut self.newman,
@@ -147,7 +150,7 @@ impl ForceRecords {
     /// direction for the elevation, one or two per non-zero coefficient record and direction
     /// (with the full QTF: one per retained term, DOF and direction instead, for the force),
     /// one per strip and column (columns with the same phases share theirs).
-    /// `options.full_qtf`, when given, holds one entry per direction of `components`.
+    /// `options.full_qtf`, when given, covers every direction of `components`.
     pub fn build(
         components: &WaveComponents,
         transfers: &[DirectionTransfer],
@@ -235,26 +238,15 @@ impl ForceRecords {
             if options.newman == NewmanForm::Arithmetic {
                 synth.complex_series(amplitudes, eta_c);
             }
-            match options.full_qtf {
-                Some(qtf) => {
-                    for (out, t) in force.iter_mut().zip(&qtf[k]) {
-                        t.accumulate(
-                            synth,
-                            amplitudes,
-                            &mut work.qtf_coefficients,
-                            &mut work.qtf_series,
-                            out,
-                        );
-                    }
-                }
-                None => builder.accumulate_force(
+            if options.full_qtf.is_none() {
+                builder.accumulate_force(
                     synth,
                     options.newman,
                     amplitudes,
                     eta_c,
                     transfer,
                     &mut force,
-                ),
+                );
             }
             builder.accumulate_damping(
                 synth,
@@ -264,6 +256,20 @@ impl ForceRecords {
                 transfer,
                 &mut damping,
             );
+        }
+        for group in options.full_qtf.unwrap_or_default() {
+            let amplitudes = components.of_directions(
+                group.first_direction..group.first_direction + group.dofs[0].directions(),
+            );
+            for (out, t) in force.iter_mut().zip(&group.dofs) {
+                t.accumulate(
+                    synth,
+                    amplitudes,
+                    &mut work.qtf_coefficients,
+                    &mut work.qtf_series,
+                    out,
+                );
+            }
         }
         let mut elevation = take_samples(&mut self.elevation);
         builder.real_series(synth, coefficients, &mut elevation);

@@ -37,11 +37,15 @@ use crate::sea_state::FrequencyGrid;
 use nalgebra::{DMatrix, SymmetricEigen};
 use rustfft::num_complex::Complex64;
 
-/// A Hermitian QTF factorised on its own grid and truncated: sum_r s_r u_r u_r^H.
+/// A Hermitian QTF factorised on its own grid and truncated: sum_r s_r u_r u_r^H; over
+/// one wave direction, or jointly over (frequency, direction) pairs of a spread sea.
 #[derive(Debug, Clone, PartialEq)]
 pub struct QtfFactorisation {
     /// The QTF's frequencies, rad/s, strictly increasing.
     omegas: Vec<f64>,
+    /// The number of wave directions the factors span (the vectors are direction-major:
+    /// `[k * n + i]` for direction k, frequency i).
+    directions: usize,
     /// Retained eigenvalues s_r (N/m^2 or N m/m^2), by decreasing |s_r|.
     eigenvalues: Vec<f64>,
     /// Retained unit eigenvectors u_r, one value per QTF frequency.
@@ -55,6 +59,22 @@ impl QtfFactorisation {
     /// `omegas` and keeps the fewest terms whose discarded trace-norm share is at most
     /// `tolerance` (in [`crate::hydro::qtf::MIN_QTF_TOLERANCE`], 1)).
     pub fn new(omegas: &[f64], matrix: &[Complex64], tolerance: f64) -> Result<Self> {
+        Self::across_directions(omegas, 1, matrix, tolerance)
+    }
+
+    /// Factorises the QTF of a spread sea over (frequency, direction) pairs: `matrix` is
+    /// (n D) x (n D), row-major, `[(k n + i) * n D + (l n + j)]` = T(w_i, w_j; b_k, b_l) for
+    /// the D = `directions` wave directions. It is Hermitian when T(w_j, w_i; b_l, b_k) =
+    /// conj T(w_i, w_j; b_k, b_l), and
+    /// F(t) = Re sum_{i,k} sum_{j,l} a_ik a_jl* T e^{i (w_i - w_j) t} = sum_r s_r |U_r(t)|^2
+    /// with U_r = sum_{i,k} a_ik u_r(k n + i) e^{i w_i t}: one FFT per retained term,
+    /// whatever D, the cross terms between directions included.
+    pub fn across_directions(
+        omegas: &[f64],
+        directions: usize,
+        matrix: &[Complex64],
+        tolerance: f64,
+    ) -> Result<Self> {
         check_tolerance(tolerance)?;
         let n = omegas.len();
         if n < 2
@@ -68,7 +88,9 @@ impl QtfFactorisation {
                 "need at least 2 positive, strictly increasing frequencies",
             ));
         }
-        if matrix.len() != n * n
+        let m = n * directions;
+        if directions == 0
+            || matrix.len() != m * m
             || matrix
                 .iter()
                 .any(|z| !(z.re.is_finite() && z.im.is_finite()))
@@ -76,9 +98,10 @@ impl QtfFactorisation {
             return Err(Error::invalid(
                 "qtf.matrix",
                 format!("{} values", matrix.len()),
-                format!("must be {n} x {n} finite values"),
+                format!("must be {m} x {m} finite values"),
             ));
         }
+        let n = m;
         let hermitian = DMatrix::from_fn(n, n, |i, j| {
             0.5 * (matrix[i * n + j] + matrix[j * n + i].conj())
         });
@@ -108,6 +131,7 @@ impl QtfFactorisation {
         };
         Ok(QtfFactorisation {
             omegas: omegas.to_vec(),
+            directions,
             eigenvalues: kept.iter().map(|&r| eigen.eigenvalues[r]).collect(),
             vectors: kept
                 .iter()
@@ -122,9 +146,14 @@ impl QtfFactorisation {
         self.eigenvalues.len()
     }
 
-    /// Size n of the QTF grid (the full rank).
+    /// Size of the factorised matrix (the full rank): the QTF grid's n times the directions.
     pub fn size(&self) -> usize {
-        self.omegas.len()
+        self.omegas.len() * self.directions
+    }
+
+    /// The number of wave directions the factors span.
+    pub fn directions(&self) -> usize {
+        self.directions
     }
 
     /// Trace-norm share of the discarded terms (<= the tolerance).
@@ -145,35 +174,56 @@ impl QtfFactorisation {
         let stencils: Vec<(usize, f64)> = (0..grid.count)
             .map(|j| bracket(&self.omegas, grid.omega(j)))
             .collect();
+        let n = self.omegas.len();
         let factors = self
             .vectors
             .iter()
             .map(|u| {
-                stencils
-                    .iter()
-                    .map(|&(k, s)| {
-                        if s == 0.0 {
-                            u[k]
-                        } else {
-                            (1.0 - s) * u[k] + s * u[k + 1]
-                        }
+                (0..self.directions)
+                    .flat_map(|g| {
+                        let u = &u[g * n..(g + 1) * n];
+                        stencils.iter().map(move |&(k, s)| {
+                            if s == 0.0 {
+                                u[k]
+                            } else {
+                                (1.0 - s) * u[k] + s * u[k + 1]
+                            }
+                        })
                     })
                     .collect()
             })
             .collect();
         Ok(GridQtf {
             eigenvalues: self.eigenvalues.clone(),
+            count: grid.count,
+            directions: self.directions,
             factors,
         })
     }
 }
 
-/// A factorised QTF on a simulation grid: T(w_i, w_j) = sum_r s_r f_r(w_i) f_r(w_j)*.
+/// A factorised QTF on a simulation grid: T(w_i, w_j; b_k, b_l) = sum_r s_r f_r(k, w_i)
+/// f_r(l, w_j)* over the directions it spans (one, or a spread sea's jointly).
 #[derive(Debug, Clone, PartialEq)]
 pub struct GridQtf {
     eigenvalues: Vec<f64>,
-    /// f_r at the grid's components j = 0 .. count, one vector per retained term.
+    /// The grid's component count.
+    count: usize,
+    /// The number of wave directions the factors span.
+    directions: usize,
+    /// f_r at the directions' components, direction-major (`[k * count + j]`), one vector
+    /// per retained term.
     factors: Vec<Vec<Complex64>>,
+}
+
+/// The full QTF's records of a group of consecutive wave directions: one direction, or
+/// every direction of a spread sea jointly (the cross terms from the bi-directional QTF).
+#[derive(Debug, Clone, PartialEq)]
+pub struct QtfGroup {
+    /// Index of the group's first wave direction.
+    pub first_direction: usize,
+    /// Surge, sway, yaw, each spanning the same directions.
+    pub dofs: [GridQtf; 3],
 }
 
 impl GridQtf {
@@ -182,18 +232,33 @@ impl GridQtf {
         self.eigenvalues.len()
     }
 
-    /// The represented QTF between components i and j (for checks; O(R)).
+    /// The number of wave directions the factors span.
+    pub fn directions(&self) -> usize {
+        self.directions
+    }
+
+    /// The represented QTF between components i and j of the first direction (for checks;
+    /// O(R)).
     pub fn value(&self, i: usize, j: usize) -> Complex64 {
+        self.value_between((i, 0), (j, 0))
+    }
+
+    /// The represented QTF between component i of direction k and component j of
+    /// direction l (`(i, k)`, `(j, l)`; directions counted within the group).
+    pub fn value_between(&self, (i, k): (usize, usize), (j, l): (usize, usize)) -> Complex64 {
+        let (a, b) = (k * self.count + i, l * self.count + j);
         self.eigenvalues
             .iter()
             .zip(&self.factors)
-            .map(|(s, f)| *s * f[i] * f[j].conj())
+            .map(|(s, f)| *s * f[a] * f[b].conj())
             .sum()
     }
 
-    /// Adds sum_r s_r |U_r(t_m)|^2, U_r = sum_i a_i f_r(w_i) e^{i w_i t_m}, to `out`
+    /// Adds sum_r s_r |U_r(t_m)|^2, U_r = sum_{i,k} a_ik f_r(k, w_i) e^{i w_i t_m}, to `out`
     /// (allocated to the record length when first needed; left alone at rank 0).
-    /// `coefficients` (grid count) and `series` (record length) are scratch.
+    /// `amplitudes` are those of the directions the factors span, direction-major
+    /// (`WaveComponents::of_directions`); `coefficients` (grid count) and `series` (record
+    /// length) are scratch.
     pub fn accumulate(
         &self,
         synth: &mut Synthesizer,
@@ -206,6 +271,15 @@ impl GridQtf {
             for ((c, a), u) in coefficients.iter_mut().zip(amplitudes).zip(f) {
                 *c = a * u;
             }
+            for (a, u) in amplitudes
+                .chunks(self.count)
+                .zip(f.chunks(self.count))
+                .skip(1)
+            {
+                for ((c, a), u) in coefficients.iter_mut().zip(a).zip(u) {
+                    *c += a * u;
+                }
+            }
             synth.complex_series(coefficients, series);
             out.resize(series.len(), 0.0);
             for (o, p) in out.iter_mut().zip(series.iter()) {
@@ -215,9 +289,11 @@ impl GridQtf {
     }
 }
 
-/// Lower node k and weight s of `w` in `omegas` (covered): w = (1 - s) w_k + s w_{k+1};
+/// Lower node k and weight s of `w` in `omegas` (covered, within the frequency match
+/// tolerance: a `w` just beyond an end takes the end's value): w = (1 - s) w_k + s w_{k+1};
 /// s is exactly 0 at a node.
 fn bracket(omegas: &[f64], w: f64) -> (usize, f64) {
+    let w = w.clamp(omegas[0], omegas[omegas.len() - 1]);
     let above = omegas.partition_point(|&o| o <= w);
     let k = above.saturating_sub(1).min(omegas.len() - 2);
     if omegas[k] == w {

@@ -26,6 +26,7 @@
 //! The elevation and the drag columns' kinematics stay at the mean position and zero yaw.
 
 use super::newman::NewmanBuilder;
+use super::qtf::QtfGroup;
 use super::synthesis::{InverseFft, Synthesizer};
 use super::transfer::transfers_on_grid;
 use super::transfer::DirectionTransfer;
@@ -193,6 +194,7 @@ impl YawFollowingRecords {
         records.rebuild(
             components,
             &transfers,
+            None,
             form,
             &mut synth,
             &mut builder,
@@ -203,11 +205,15 @@ impl YawFollowingRecords {
 
     /// [`YawFollowingRecords::build`] into these records (their buffers reused), from the
     /// transfers of every yaw ([`yaw_transfers`]), through `synth` (a stream's segment when
-    /// joined).
+    /// joined). With `full_qtf` (one set of groups per yaw, the QTF at the relative headings
+    /// beta_k - theta_j), the wave force of each yaw comes from the full QTF instead of
+    /// Newman's form; the damping stays Newman's, from the transfers.
+    #[allow(clippy::too_many_arguments)]
     pub fn rebuild(
         &mut self,
         components: &WaveComponents,
         transfers: &[Vec<DirectionTransfer>],
+        full_qtf: Option<&[Vec<QtfGroup>]>,
         form: NewmanForm,
         synth: &mut Synthesizer,
         builder: &mut NewmanBuilder,
@@ -230,7 +236,7 @@ impl YawFollowingRecords {
             wave_force: Default::default(),
             damping: None,
         });
-        for (set, transfers) in self.sets.iter_mut().zip(transfers) {
+        for (j, (set, transfers)) in self.sets.iter_mut().zip(transfers).enumerate() {
             let with_damping = transfers.iter().any(|t| t.damping.is_some());
             let mut force: [Vec<f64>; 3] =
                 std::array::from_fn(|i| take_samples(&mut set.wave_force[i]));
@@ -243,8 +249,27 @@ impl YawFollowingRecords {
             for (k, transfer) in transfers.iter().enumerate() {
                 let amplitudes = components.of_direction(k);
                 let e = &work.eta_c[k];
-                builder.accumulate_force(synth, form, amplitudes, e, transfer, &mut force);
+                if full_qtf.is_none() {
+                    builder.accumulate_force(synth, form, amplitudes, e, transfer, &mut force);
+                }
                 builder.accumulate_damping(synth, form, amplitudes, e, transfer, &mut damping);
+            }
+            for group in full_qtf.map_or(&[][..], |q| &q[j][..]) {
+                let amplitudes = components.of_directions(
+                    group.first_direction..group.first_direction + group.dofs[0].directions(),
+                );
+                work.qtf_coefficients
+                    .resize(components.grid.count, Complex64::default());
+                work.qtf_series.resize(len, Complex64::default());
+                for (out, t) in force.iter_mut().zip(&group.dofs) {
+                    t.accumulate(
+                        synth,
+                        amplitudes,
+                        &mut work.qtf_coefficients,
+                        &mut work.qtf_series,
+                        out,
+                    );
+                }
             }
             set.wave_force = force.map(record_or_zero);
             set.damping = with_damping.then(|| damping.map(|row| row.map(record_or_zero)));
@@ -270,6 +295,9 @@ impl YawFollowingRecords {
 #[derive(Default, Clone)]
 pub struct YawWork {
     eta_c: Vec<Vec<Complex64>>,
+    /// Scratch of the full-QTF synthesis.
+    qtf_coefficients: Vec<Complex64>,
+    qtf_series: Vec<Complex64>,
 }
 
 /// The coefficients of every yaw theta_j of `grid` and every wave direction k, at the

@@ -21,12 +21,12 @@ use super::columns::ColumnArray;
 use super::heading_grid::{heading_bracket, Bracket};
 use super::DriftTable;
 use crate::error::{require_finite, require_positive, Error, Result};
-use crate::model::Environment;
+use crate::model::{Environment, FREQUENCY_MATCH_TOLERANCE};
 use rustfft::num_complex::Complex64;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
-/// Relative tolerance of grid comparisons (frequencies, headings).
+/// Relative tolerance of a band limit against a data frequency it lies on.
 const GRID_TOLERANCE: f64 = 1e-9;
 
 /// Largest relative departure from T(beta_q, beta_p) = conj T(beta_p, beta_q) a table may
@@ -158,7 +158,9 @@ pub fn mean_direction_pairs(
 /// above band.1; an error naming `field` when the grid does not reach that far.
 fn covering_range(omegas: &[f64], band: (f64, f64), field: &str) -> Result<std::ops::Range<usize>> {
     let (lo, hi) = (omegas[0], omegas[omegas.len() - 1]);
-    if band.0 < lo * (1.0 - GRID_TOLERANCE) || band.1 > hi * (1.0 + GRID_TOLERANCE) {
+    if band.0 < lo * (1.0 - FREQUENCY_MATCH_TOLERANCE)
+        || band.1 > hi * (1.0 + FREQUENCY_MATCH_TOLERANCE)
+    {
         return Err(Error::invalid(
             field,
             format!("[{lo}, {hi}] rad/s"),

@@ -8,6 +8,7 @@
 
 use super::heading_grid::{heading_bracket, is_periodic, Bracket};
 use crate::error::{require_finite, Error, Result};
+use crate::model::FREQUENCY_MATCH_TOLERANCE;
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -212,7 +213,9 @@ impl DriftTable {
     /// interpolated; the error names the gap.
     pub fn check_covers(&self, band: (f64, f64), headings: &[f64]) -> Result<()> {
         let (lo, hi) = (self.omegas[0], self.omegas[self.omegas.len() - 1]);
-        if band.0 < lo * (1.0 - GRID_TOLERANCE) || band.1 > hi * (1.0 + GRID_TOLERANCE) {
+        if band.0 < lo * (1.0 - FREQUENCY_MATCH_TOLERANCE)
+            || band.1 > hi * (1.0 + FREQUENCY_MATCH_TOLERANCE)
+        {
             return Err(Error::invalid(
                 "drift.omega",
                 format!("[{lo}, {hi}] rad/s"),
@@ -334,7 +337,9 @@ impl DriftTable {
     fn frequency_bracket(&self, omega: f64) -> Result<Bracket> {
         let w = &self.omegas;
         let (lo, hi) = (w[0], w[w.len() - 1]);
-        if omega < lo * (1.0 - GRID_TOLERANCE) || omega > hi * (1.0 + GRID_TOLERANCE) {
+        if omega < lo * (1.0 - FREQUENCY_MATCH_TOLERANCE)
+            || omega > hi * (1.0 + FREQUENCY_MATCH_TOLERANCE)
+        {
             return Err(Error::invalid(
                 "drift.omega",
                 omega,

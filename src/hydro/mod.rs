@@ -11,5 +11,6 @@ mod drift_table;
 mod heading_grid;
 pub mod io;
 pub mod qtf;
+pub mod reference_point;
 
 pub use drift_table::{DriftRow, DriftTable};

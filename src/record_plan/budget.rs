@@ -65,7 +65,7 @@ impl MemoryEstimate {
             problem.run.start_time,
             segments.span() as f64 * dt,
             dt,
-            problem.sea.band(),
+            problem.band(),
         )?;
         let l = grid.len as f64;
         let g = grid.count as f64;
@@ -181,12 +181,25 @@ impl MemoryEstimate {
             if let Some(qtf) = &problem.hydro.qtf {
                 let n = qtf.omegas.len() as f64;
                 // Per direction and DOF: at most n factors on the grid, and the
-                // factorisation's matrices.
+                // factorisation's matrices; jointly over the directions (the cross terms from
+                // the bi-directional QTF): at most n d factors of d g values per DOF, and
+                // matrices of (n d)^2.
+                // The join's tails: one per factor series.
+                let bytes = if problem.cross_terms_from_qtf() {
+                    3.0 * ((n * d) * C64 * d * g + 4.0 * (n * d) * (n * d) * C64 + n * d * tail)
+                } else {
+                    d * 3.0 * (n * C64 * g + 4.0 * n * n * C64 + n * tail)
+                };
+                // With yaw following: the factors again at every yaw's relative headings.
+                let copies = model
+                    .yaw_following
+                    .as_ref()
+                    .map_or(1.0, |y| 1.0 + y.headings as f64);
                 plan.push(term(
                     "model.second_order",
                     "full-qtf".to_string(),
                     format!("the full QTF's factors ({n} frequencies) on the grid"),
-                    d * 3.0 * (n * C64 * g + 4.0 * n * n * C64 + n * tail),
+                    copies * bytes,
                 ));
             }
         }

@@ -1594,6 +1594,7 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
                 .map(|dof| QtfMatrix {
                     dof,
                     heading: heading_deg.to_radians(),
+                    second_heading: None,
                     re: (0..n)
                         .map(|i| (0..n).map(|j| 1.0e3 * (1 + i + j) as f64).collect())
                         .collect(),

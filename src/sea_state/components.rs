@@ -215,6 +215,11 @@ impl WaveComponents {
     pub fn of_direction(&self, k: usize) -> &[Complex64] {
         &self.amplitudes[k * self.grid.count..(k + 1) * self.grid.count]
     }
+
+    /// Amplitudes of the directions `range`, direction-major (`[(k - start) * count + j]`).
+    pub fn of_directions(&self, range: std::ops::Range<usize>) -> &[Complex64] {
+        &self.amplitudes[range.start * self.grid.count..range.end * self.grid.count]
+    }
 }
 
 /// Two independent standard normal numbers by the Box-Muller transform (exact, no tables).

@@ -7,7 +7,7 @@
 use crate::common::*;
 use rustfft::num_complex::Complex64;
 use slowdrift::forces::{
-    DirectionTransfer, ForceRecords, GridQtf, QtfFactorisation, RecordOptions,
+    DirectionTransfer, ForceRecords, GridQtf, QtfFactorisation, QtfGroup, RecordOptions,
 };
 use slowdrift::hydro::io::database::{HydroDatabase, QtfData, QtfMatrix};
 use slowdrift::hydro::io::wamit::WamitOptions;
@@ -57,6 +57,7 @@ fn qtf_data(omegas: &[f64], headings: &[f64]) -> QtfData {
             blocks.push(QtfMatrix {
                 dof,
                 heading,
+                second_heading: None,
                 re: rows(|z| z.re),
                 im: rows(|z| z.im),
             });
@@ -201,8 +202,15 @@ fn records(
     components: &WaveComponents,
     diag: &[Vec<f64>; 3],
     newman: NewmanForm,
-    qtf: Option<&[[GridQtf; 3]]>,
+    qtf: Option<[GridQtf; 3]>,
 ) -> ForceRecords {
+    let groups: Vec<QtfGroup> = qtf
+        .into_iter()
+        .map(|dofs| QtfGroup {
+            first_direction: 0,
+            dofs,
+        })
+        .collect();
     let transfers = [DirectionTransfer {
         drift: diag.clone(),
         damping: None,
@@ -212,7 +220,7 @@ fn records(
         &transfers,
         &RecordOptions {
             newman,
-            full_qtf: qtf,
+            full_qtf: (!groups.is_empty()).then_some(&groups[..]),
             drag_columns: &[],
             strips_per_column: 1,
             gravity: GRAVITY,
@@ -259,7 +267,7 @@ fn full_qtf_built_from_the_diagonal_is_newman() {
             assert_eq!(f.rank(), 2, "{form:?} DOF {dof}");
             f.on_grid(&grid).unwrap()
         });
-        let full = records(&components, &diag, form, Some(&[qtf]));
+        let full = records(&components, &diag, form, Some(qtf));
         for dof in 0..3 {
             let (a, b) = (
                 newman.wave_force[dof].samples(),
@@ -307,7 +315,7 @@ fn mean_force_is_twice_the_integral_of_spectrum_times_the_qtf_diagonal() {
             &components,
             &zero,
             NewmanForm::Geometric,
-            Some(std::slice::from_ref(&on_grid)),
+            Some(on_grid.clone()),
         );
         let f = f.wave_force[0].samples();
         mean_of_means += f.iter().sum::<f64>() / f.len() as f64 / seeds as f64;
@@ -363,7 +371,7 @@ fn force_spectrum_matches_the_double_integral_of_the_spectrum_and_the_qtf() {
             &components,
             &zero,
             NewmanForm::Geometric,
-            Some(std::slice::from_ref(&on_grid)),
+            Some(on_grid.clone()),
         );
         let welch = welch_spectrum(f.wave_force[0].samples(), dt, segment).unwrap();
         let k = 1 + (grid.len - segment) / (segment - segment / 2);

@@ -69,6 +69,7 @@ fn features() -> Vec<(&'static str, Problem)> {
             .map(|(d, &dof)| QtfBlock {
                 dof,
                 heading: 0.0,
+                second_heading: 0.0,
                 values: (0..n * n)
                     .map(|ij| {
                         let (wi, wj) = (omegas[ij / n], omegas[ij % n]);

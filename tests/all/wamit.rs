@@ -460,17 +460,36 @@ fn header_both_triangles_any_dof_order_several_headings() {
 fn one_triangle_of_a_bidirectional_pair_fills_the_mirror_pair() {
     let dir = temp_dir("bidir");
     // Headings (0, 30): the mirror block (30, 0) is not in the file.
-    let text = "\
+    let pair = "\
   10.0  10.0  0.0  30.0  1  0 0  1.0  0.5
   5.0   10.0  0.0  30.0  1  0 0  2.0  0.25
   10.0  5.0   0.0  30.0  1  0 0  3.0  -0.75
   5.0   5.0   0.0  30.0  1  0 0  4.0  1.5
 ";
-    let path = write(&dir, "bi.11d", text);
+    // Without the uni-directional blocks of 0 and 30 deg the pairs are incomplete: listed.
+    let path = write(&dir, "pair.11d", pair);
+    let err = read_difference_qtf(&path, &WamitOptions::default())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("pair.11d")
+            && err.contains("2 of the 4 (DOF, heading pair) blocks are missing")
+            && err.contains("DOF 1 at (0.000, 0.000) deg; DOF 1 at (30.000, 30.000) deg"),
+        "{err}"
+    );
+    let uni = "\
+  10.0  10.0  0.0  0.0  1  0 0  1.0  0.0
+  5.0   10.0  0.0  0.0  1  0 0  2.0  0.1
+  5.0   5.0   0.0  0.0  1  0 0  4.0  0.0
+  10.0  10.0  30.0  30.0  1  0 0  1.5  0.0
+  5.0   10.0  30.0  30.0  1  0 0  2.5  0.1
+  5.0   5.0   30.0  30.0  1  0 0  4.5  0.0
+";
+    let path = write(&dir, "bi.11d", &format!("{pair}{uni}"));
     let qtf = read_difference_qtf(&path, &WamitOptions::default()).unwrap();
     let (a, b) = (0.0, 30f64.to_radians());
-    assert_eq!(qtf.blocks().len(), 2);
-    assert_eq!(qtf.filled_by_symmetry(), 4);
+    assert_eq!(qtf.blocks().len(), 4);
+    assert_eq!(qtf.filled_by_symmetry(), 4 + 2);
     for i in 0..2 {
         for j in 0..2 {
             assert_eq!(
@@ -479,12 +498,7 @@ fn one_triangle_of_a_bidirectional_pair_fills_the_mirror_pair() {
             );
         }
     }
-    // No uni-directional heading: asking for one lists it as missing.
-    let err = qtf.diagonal(1, 0.0).unwrap_err().to_string();
-    assert!(
-        err.contains("missing DOF 1") && err.contains("bi.11d"),
-        "{err}"
-    );
+    assert_eq!(qtf.headings(), [a, b]);
 }
 
 #[test]
@@ -514,7 +528,7 @@ fn malformed_lines_name_the_file_and_line() {
             "PER1",
         ),
         (
-            format!("{good}  10.0  10.0  0.0  0.0  1  1.0 0.0  2.0  0.0\n"),
+            format!("{good}  10.0  10.0  0.0  0.0  1  2.0 0.0  2.0  0.0\n"),
             2,
             "line 1",
         ),
@@ -569,7 +583,7 @@ fn malformed_lines_name_the_file_and_line() {
 }
 
 /// Strict numbers (issue #15): a `.1` file cut inside its last number (the exponent lost:
-/// it would read A66 = 6.27 kg m^2 instead of 6.27e9), an exponent cut short inside a file,
+/// it would read A66 = 6.27 kg m^2 instead of 6.27e9), an exponent cut short at its end,
 /// a number cut on an unterminated last line of a column without exponents, and a `.1`
 /// file with no frequency at all are refused naming the file and line.
 #[test]
@@ -583,10 +597,10 @@ fn cut_numbers_and_files_without_frequencies_are_refused() {
     let good = lines.concat();
     read_added_mass_damping(&write(&dir, "good.1", &good), &WamitOptions::default()).unwrap();
     let cut_exponent = good.replace("6.273170E+09\n", "6.273170");
-    let wrong_digits = good.replace("E+09", "E+9");
+    let wrong_digits = good.replace("E+09\n", "E+0");
     for (name, text, field) in [
         ("lost.1", cut_exponent, "field 4 (\"6.273170\")"),
-        ("short.1", wrong_digits, "field 4 (\"6.273170E+9\")"),
+        ("short.1", wrong_digits, "field 4 (\"6.273170E+0\")"),
     ] {
         let path = write(&dir, name, &text);
         let err = read_added_mass_damping(&path, &WamitOptions::default())
@@ -672,7 +686,7 @@ fn added_mass_damping_and_hydrostatics_scale_with_ulen() {
 fn mean_drift_file_gives_a_drift_table_and_lists_what_is_missing() {
     let dir = temp_dir("mean");
     // Momentum file: DOFs 1, 2, 6 at 0 and 90 deg, order shuffled, one bi-directional
-    // entry (skipped), a header line.
+    // block (kept apart from the drift table), a header line.
     let text = "WAMIT .8 test
   5.0  90.0  90.0  6  0 0  0.6  0.0
  10.0   0.0   0.0  1  0 0  1.0  0.0
@@ -687,6 +701,7 @@ fn mean_drift_file_gives_a_drift_table_and_lists_what_is_missing() {
   5.0  90.0  90.0  2  0 0  1.6  0.0
  10.0  90.0  90.0  6  0 0  0.5  0.0
  10.0   0.0  90.0  1  0 0  9.0  0.0
+  5.0   0.0  90.0  1  0 0  9.5  0.0
 ";
     let path = write(&dir, "m.8", text);
     let ulen = 2.0;
@@ -700,6 +715,8 @@ fn mean_drift_file_gives_a_drift_table_and_lists_what_is_missing() {
     .unwrap();
     let beam = 90f64.to_radians();
     assert_eq!(mean.headings(), [0.0, beam]);
+    assert_eq!(mean.pairs().len(), 1);
+    assert_eq!(mean.pairs()[0].headings, (0.0, beam));
     assert_eq!(
         mean.values(1, 0.0).unwrap(),
         [force_scale(ulen, 1), 1.5 * force_scale(ulen, 1)]
@@ -771,6 +788,7 @@ fn small_database() -> HydroDatabase {
             blocks: vec![QtfMatrix {
                 dof: Dof::Yaw,
                 heading: 0.1,
+                second_heading: None,
                 re: vec![vec![1.0, PI], vec![PI, 2.0]],
                 im: vec![vec![0.0, -1.0 / 7.0], vec![1.0 / 7.0, 0.0]],
             }],

@@ -152,13 +152,17 @@ pub struct QtfData {
     pub blocks: Vec<QtfMatrix>,
 }
 
-/// T(w_i, w_j) = `re[i][j] + i im[i][j]` of one DOF at one heading.
+/// T(w_i, w_j; beta1, beta2) = `re[i][j] + i im[i][j]` of one DOF for one heading pair.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct QtfMatrix {
     pub dof: Dof,
-    /// Heading, rad.
+    /// Heading beta1 of the waves at w_i, rad.
     pub heading: f64,
+    /// Heading beta2 of the waves at w_j, rad, for a bi-directional block; absent (`None`)
+    /// for a uni-directional one (beta2 = beta1).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub second_heading: Option<f64>,
     pub re: Vec<Vec<f64>>,
     pub im: Vec<Vec<f64>>,
 }
@@ -340,8 +344,11 @@ impl HydroDatabase {
     /// `.10d`) that exist, restricted to surge, sway and yaw (WAMIT DOFs 1, 2, 6):
     /// - `.1`: the PER = -1 (omega = 0) added mass;
     /// - `.hst`: the hydrostatic stiffness (zero in these DOFs for a floater);
-    /// - drift from `.8` (momentum), else `.9` (pressure), else the QTF diagonal;
-    /// - the QTF at its uni-directional headings (bi-directional pairs are not stored).
+    /// - drift from `.8` (momentum), else `.9` (pressure), else the QTF diagonal; the
+    ///   bi-directional drift from the same file's beta1 != beta2 entries, on every pair of
+    ///   its headings (the error lists the pairs missing in both orders);
+    /// - the QTF: every uni-directional heading and, when the file has them, every
+    ///   bi-directional heading pair (the reader requires all pairs of its headings).
     ///
     /// At least one file must exist.
     pub fn from_wamit(root: &Path, options: &WamitOptions) -> Result<WamitImport> {
@@ -409,7 +416,7 @@ impl HydroDatabase {
                 .count();
             files.push(format!(
                 "{}: QTF, {} frequencies {:.4} .. {:.4} rad/s, headings {} deg, DOFs {:?} \
-                 (kept 1, 2, 6), {} values filled by Hermitian symmetry{}",
+                 (kept 1, 2, 6), {} values filled by Hermitian symmetry{}{}",
                 path.display(),
                 read.omegas().len(),
                 read.omegas()[0],
@@ -417,8 +424,18 @@ impl HydroDatabase {
                 degrees(&headings),
                 read.dofs(),
                 read.filled_by_symmetry(),
+                match read.filled_by_interpolation() {
+                    0 => String::new(),
+                    k => format!(
+                        "; warning: a sparse QTF, {k} values missing from the file filled by \
+                         linear interpolation along their difference-frequency lines"
+                    ),
+                },
                 if bidirectional > 0 {
-                    format!("; {bidirectional} bi-directional blocks not stored")
+                    format!(
+                        "; {bidirectional} bi-directional blocks on every pair of the headings \
+                         (those of DOFs 1, 2, 6 kept)"
+                    )
                 } else {
                     String::new()
                 }
@@ -434,6 +451,7 @@ impl HydroDatabase {
 
         let mut drift_from = "none";
         let mut drift = Vec::new();
+        let mut bidirectional_drift = None;
         for (ext, label) in [("8", ".8"), ("9", ".9")] {
             let path = file(ext);
             if !path.exists() {
@@ -443,11 +461,21 @@ impl HydroDatabase {
             let mean = read_mean_drift(&path, options)?;
             let headings = mean.headings();
             drift = drift_points(&mean.to_drift_table(&headings, SLOW_DOFS)?);
+            bidirectional_drift = mean.to_bidirectional_table(SLOW_DOFS)?;
             files.push(format!(
-                "{}: mean drift, {} frequencies, headings {} deg",
+                "{}: mean drift, {} frequencies, headings {} deg{}",
                 path.display(),
                 mean.omegas().len(),
-                degrees(&headings)
+                degrees(&headings),
+                match &bidirectional_drift {
+                    Some(t) => format!(
+                        "; bi-directional drift on every pair of the headings {} deg ({} blocks \
+                         given, the other order by Hermitian symmetry)",
+                        degrees(&t.headings),
+                        mean.pairs().len()
+                    ),
+                    None => "; no bi-directional entries (beta1 != beta2)".to_string(),
+                }
             ));
             drift_from = label;
             used.push(label);
@@ -465,15 +493,30 @@ impl HydroDatabase {
                 message: "no WAMIT file found (.1, .hst, .8, .9, .12d, .11d, .10d)".into(),
             });
         }
-        let qtf = qtf.as_ref().map(qtf_data).transpose()?;
+        let mut bidirectional_from = if bidirectional_drift.is_some() {
+            drift_from
+        } else {
+            "none"
+        };
+        if bidirectional_drift.is_none() {
+            if let Some(q) = &qtf {
+                bidirectional_drift = q.to_bidirectional_table(SLOW_DOFS)?;
+                if bidirectional_drift.is_some() {
+                    bidirectional_from = "the QTF's heading pairs' diagonals";
+                }
+            }
+        }
+        let qtf = qtf.as_ref().map(|q| qtf_data(q, SLOW_DOFS)).transpose()?;
         let source = format!(
-            "WAMIT output {} ({}); ULEN = {} m, rho = {} kg/m^3, g = {} m/s^2; drift from {}",
+            "WAMIT output {} ({}); ULEN = {} m, rho = {} kg/m^3, g = {} m/s^2; drift from {}; \
+             bi-directional drift from {}",
             root.display(),
             used.join(", "),
             options.ulen,
             options.rho,
             options.gravity,
-            drift_from
+            drift_from,
+            bidirectional_from
         );
         let name = root.file_name().map_or_else(
             || root.display().to_string(),
@@ -490,7 +533,7 @@ impl HydroDatabase {
             stiffness,
             drift,
             qtf,
-            bidirectional_drift: None,
+            bidirectional_drift,
         };
         database.validate()?;
         Ok(WamitImport { database, files })
@@ -514,6 +557,9 @@ impl QtfData {
         }
         for (k, b) in self.blocks.iter().enumerate() {
             require_finite(format_args!("database.qtf.blocks[{k}].heading"), b.heading)?;
+            if let Some(h) = b.second_heading {
+                require_finite(format_args!("database.qtf.blocks[{k}].second_heading"), h)?;
+            }
             for (part, m) in [("re", &b.re), ("im", &b.im)] {
                 let field = format!("database.qtf.blocks[{k}].{part}");
                 if m.len() != n || m.iter().any(|row| row.len() != n) {
@@ -543,6 +589,7 @@ impl QtfData {
                 .map(|b| QtfBlock {
                     dof: b.dof,
                     heading: b.heading,
+                    second_heading: b.second_heading.unwrap_or(b.heading),
                     values: b
                         .re
                         .iter()
@@ -569,7 +616,7 @@ fn degrees(headings: &[f64]) -> String {
 }
 
 /// Every node of a drift table, heading-major.
-fn drift_points(table: &DriftTable) -> Vec<DriftPoint> {
+pub(super) fn drift_points(table: &DriftTable) -> Vec<DriftPoint> {
     let mut points = Vec::new();
     for (ih, &heading) in table.headings().iter().enumerate() {
         for (iw, &omega) in table.omegas().iter().enumerate() {
@@ -587,22 +634,36 @@ fn drift_points(table: &DriftTable) -> Vec<DriftPoint> {
     points
 }
 
-/// The uni-directional surge, sway and yaw blocks of a QTF.
-fn qtf_data(qtf: &DifferenceQtf) -> Result<QtfData> {
+/// The surge, sway and yaw blocks of a QTF (`dofs`: the file's numbers of the three): the
+/// uni-directional ones (which must have all three DOFs at every heading), then the
+/// bi-directional ones.
+pub(super) fn qtf_data(qtf: &DifferenceQtf, dofs: [usize; 3]) -> Result<QtfData> {
     let n = qtf.omegas().len();
+    let matrix = |dof: Dof, headings: (f64, f64), m: &[Complex64]| {
+        let part = |f: fn(&Complex64) -> f64| -> Vec<Vec<f64>> {
+            m.chunks(n).map(|row| row.iter().map(f).collect()).collect()
+        };
+        QtfMatrix {
+            dof,
+            heading: headings.0,
+            second_heading: (headings.0 != headings.1).then_some(headings.1),
+            re: part(|z| z.re),
+            im: part(|z| z.im),
+        }
+    };
     let mut blocks = Vec::new();
     for heading in qtf.headings() {
-        for (dof, wamit_dof) in Dof::ALL.into_iter().zip(SLOW_DOFS) {
-            let m = qtf.matrix(wamit_dof, heading)?;
-            let part = |f: fn(&Complex64) -> f64| -> Vec<Vec<f64>> {
-                m.chunks(n).map(|row| row.iter().map(f).collect()).collect()
-            };
-            blocks.push(QtfMatrix {
+        for (dof, wamit_dof) in Dof::ALL.into_iter().zip(dofs) {
+            blocks.push(matrix(
                 dof,
-                heading,
-                re: part(|z| z.re),
-                im: part(|z| z.im),
-            });
+                (heading, heading),
+                qtf.matrix(wamit_dof, heading)?,
+            ));
+        }
+    }
+    for block in qtf.blocks().iter().filter(|b| b.headings.0 != b.headings.1) {
+        if let Some(k) = dofs.iter().position(|&d| d == block.dof) {
+            blocks.push(matrix(Dof::ALL[k], block.headings, &block.values));
         }
     }
     Ok(QtfData {

@@ -1,9 +1,11 @@
 //! The hydrodynamic file formats: the native database ([`database`]), WAMIT output
-//! ([`wamit`]) and CSV drift tables ([`drift_csv`]). Each reader names the file and line of
-//! what it refuses; the data it gives are SI, radians, and the crate's frames.
+//! ([`wamit`]), NEMOH v3 results ([`nemoh`]) and CSV drift tables ([`drift_csv`]). Each
+//! reader names the file and line of what it refuses; the data it gives are SI, radians, and
+//! the crate's frames.
 
 pub mod database;
 pub mod drift_csv;
 mod json_position;
+pub mod nemoh;
 pub mod wamit;
 mod written;

@@ -1,9 +1,9 @@
 //! How a number is written, to tell a number cut short from a whole one (issue #15): a
 //! reader compares a number with the same field of an earlier line of its file. A field
-//! whose earlier number has an exponent must have one with as many digits (a mantissa
-//! whose exponent was lost, `6.273170` for `6.273170E+09`, reads a billion times too
-//! small); on the last line of a file that ends without a newline, where a file cut inside
-//! a number ends, a field must also have as many decimals.
+//! whose earlier number has an exponent must have one (a mantissa whose exponent was lost,
+//! `6.273170` for `6.273170E+09`, reads a billion times too small); on the last line of a
+//! file that ends without a newline, where a file cut inside a number ends, a field must
+//! also have as many exponent digits and decimals.
 
 /// How a number is written: the digits after its decimal point and after its exponent's
 /// letter and sign.
@@ -27,14 +27,13 @@ impl Written {
     }
 
     /// Whether a number written like this is a cut copy of one written like `reference`
-    /// (the same field of an earlier line): its exponent lost or shortened where the
-    /// reference has one; on a file's unterminated last line (`last`) also fewer decimals.
+    /// (the same field of an earlier line): its exponent lost where the reference has one;
+    /// on a file's unterminated last line (`last`) also fewer exponent digits or decimals.
+    /// (Elsewhere those vary between writers: Rust writes `3.5e-2` where Fortran writes
+    /// `0.35E-01`.)
     pub fn is_cut(self, reference: &Written, last: bool) -> bool {
-        let exponent_lost = match (self.exponent, reference.exponent) {
-            (_, None) => false,
-            (None, Some(_)) => true,
-            (Some(digits), Some(expected)) => digits < expected,
-        };
-        exponent_lost || (last && self.decimals < reference.decimals)
+        let exponent_lost = reference.exponent.is_some() && self.exponent.is_none();
+        let shorter = self.exponent < reference.exponent || self.decimals < reference.decimals;
+        exponent_lost || (last && shorter)
     }
 }

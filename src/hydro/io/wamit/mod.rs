@@ -18,10 +18,10 @@
 //! What the readers assume about a file: nothing about the order of its lines or of its
 //! DOFs. A first line that does not start with a number is a header and is skipped; blank
 //! lines are skipped; any other line must hold the documented count of numbers, or the
-//! error names the file, the 1-based line and what is wrong. A number written with fewer
-//! exponent digits than the same field of the first line of its length (an exponent lost:
+//! error names the file, the 1-based line and what is wrong. A number written without the
+//! exponent that the same field of the first line of its length has (an exponent lost:
 //! `6.273170` where the column writes `6.273170E+09`), or, on a last line that ends the
-//! file without a newline, with fewer decimals, is cut: an error. An entry given twice is an
+//! file without a newline, with fewer exponent digits or decimals, is cut: an error. An entry given twice is an
 //! error naming both lines. Only single-body files (DOFs 1 to 6) are read.
 //!
 //! Time convention: WAMIT writes complex amplitudes for e^{i omega t}, the crate's own
@@ -38,12 +38,13 @@ mod qtf;
 
 pub use added_mass::{read_added_mass_damping, AddedMassDamping};
 pub use hydrostatics::{read_hydrostatics, Hydrostatics};
-pub use mean_drift::{read_mean_drift, DriftBlock, MeanDrift};
+pub use mean_drift::{read_mean_drift, DriftBlock, MeanDrift, PairBlock};
+pub(in crate::hydro::io) use qtf::{assemble_qtf, QtfEntry};
 pub use qtf::{read_difference_qtf, DifferenceQtf, QtfBlock};
 
 use super::written::Written;
 use crate::error::{require_positive, Error, Result};
-use crate::model::HEADING_MATCH_TOLERANCE;
+use crate::model::{FREQUENCY_MATCH_TOLERANCE, HEADING_MATCH_TOLERANCE};
 use std::f64::consts::PI;
 use std::path::Path;
 
@@ -54,9 +55,10 @@ pub const DEFAULT_RHO: f64 = 1025.0;
 /// Default acceleration of gravity, m/s^2 (physics.md section 1).
 pub const DEFAULT_GRAVITY: f64 = 9.80665;
 
-/// Frequencies within this relative distance are the same frequency (files print periods
-/// with five or more significant digits, the same text for the same period).
-pub const FREQUENCY_TOLERANCE: f64 = 1e-6;
+/// How closely a line's polar columns (abs(F), phase) must give its Cartesian ones (Re, Im),
+/// relative to the modulus: files print five to seven significant digits (the OC4 `.12d`
+/// agrees within 1.3e-5, the NEMOH OC3 QTF within 1.3e-6).
+pub const POLAR_TOLERANCE: f64 = 1e-3;
 
 /// The scales that make WAMIT's nondimensional numbers dimensional.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -113,8 +115,10 @@ fn omega_of_period(period: f64) -> f64 {
     2.0 * PI / period
 }
 
+/// Two frequencies of a file (or of two files) are one node within
+/// [`FREQUENCY_MATCH_TOLERANCE`]: the same period printed to different precision.
 fn same_frequency(a: f64, b: f64) -> bool {
-    (a - b).abs() <= FREQUENCY_TOLERANCE * a.abs().max(b.abs())
+    (a - b).abs() <= FREQUENCY_MATCH_TOLERANCE * a.abs().max(b.abs())
 }
 
 fn same_heading(a: f64, b: f64) -> bool {
@@ -139,21 +143,21 @@ fn grid_index(grid: &[f64], value: f64, same: fn(f64, f64) -> bool) -> Option<us
 }
 
 /// One numeric line of a file: its 1-based line number and its numbers.
-struct Record {
-    line: usize,
-    values: Vec<f64>,
+pub(in crate::hydro::io) struct Record {
+    pub line: usize,
+    pub values: Vec<f64>,
 }
 
-/// The numeric lines of a WAMIT file.
-struct NumericFile {
-    path: String,
-    records: Vec<Record>,
+/// The numeric lines of a WAMIT file (or of another code's file of the same shape).
+pub(in crate::hydro::io) struct NumericFile {
+    pub path: String,
+    pub records: Vec<Record>,
 }
 
 impl NumericFile {
     /// Reads `path`: skips blank lines and a first line that does not start with a number;
     /// every other line must hold one of `counts` numbers, laid out as `layout` says.
-    fn read(path: &Path, counts: &[usize], layout: &str) -> Result<Self> {
+    pub fn read(path: &Path, counts: &[usize], layout: &str) -> Result<Self> {
         let name = path.display().to_string();
         let text = crate::files::read_text(path)?;
         let mut records = Vec::new();
@@ -263,6 +267,49 @@ impl NumericFile {
                 ),
             ))
         }
+    }
+
+    /// Checks that the polar columns `first`, `first + 1` (abs(F), phase in degrees) and the
+    /// Cartesian columns `first + 2`, `first + 3` (Re, Im) of `record` are the same complex
+    /// number, within [`POLAR_TOLERANCE`] of its modulus. A line whose polar form is the
+    /// conjugate of its Cartesian form mixes the time conventions e^{i omega t} and
+    /// e^{-i omega t} (a converter that flipped one pair and not the other) and is refused:
+    /// which of the two is meant cannot be told from the line. abs(F) = phase = 0 with a
+    /// non-zero Re, Im is taken as a file that leaves the polar form out.
+    pub fn check_polar(&self, record: &Record, first: usize) -> Result<()> {
+        let v = &record.values;
+        let (modulus, phase) = (v[first], v[first + 1]);
+        let cartesian = rustfft::num_complex::Complex64::new(v[first + 2], v[first + 3]);
+        if modulus == 0.0 && phase == 0.0 {
+            return Ok(());
+        }
+        let polar = rustfft::num_complex::Complex64::from_polar(modulus, phase.to_radians());
+        let scale = modulus.abs().max(cartesian.norm());
+        if (polar - cartesian).norm() <= POLAR_TOLERANCE * scale {
+            return Ok(());
+        }
+        let conjugate = (polar - cartesian.conj()).norm() <= POLAR_TOLERANCE * scale;
+        Err(self.error(
+            record.line,
+            if conjugate {
+                format!(
+                    "abs(F) = {modulus}, phase = {phase} deg is the conjugate of Re, Im = {}, {}: \
+                     the line mixes the time conventions e^(i w t) and e^(-i w t); convert the \
+                     file to one of them (WAMIT's is e^(i w t), Re + i Im = abs(F) e^(i phase))",
+                    v[first + 2],
+                    v[first + 3]
+                )
+            } else {
+                format!(
+                    "abs(F) = {modulus}, phase = {phase} deg and Re, Im = {}, {} are not the \
+                     same complex number (fields {} to {})",
+                    v[first + 2],
+                    v[first + 3],
+                    first + 1,
+                    first + 4
+                )
+            },
+        ))
     }
 
     /// Field `k` of `record` as a positive period, converted to omega = 2 pi / PER.

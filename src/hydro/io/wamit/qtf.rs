@@ -5,6 +5,8 @@ use super::{
     WamitOptions,
 };
 use crate::error::{Error, Result};
+use crate::hydro::bidirectional::BidirectionalTable;
+use crate::hydro::reference_point::ReferencePoint;
 use crate::hydro::{DriftRow, DriftTable};
 use rustfft::num_complex::Complex64;
 use std::collections::HashMap;
@@ -33,6 +35,7 @@ pub struct DifferenceQtf {
     omegas: Vec<f64>,
     blocks: Vec<QtfBlock>,
     filled_by_symmetry: usize,
+    filled_by_interpolation: usize,
 }
 
 /// One line of the file, scaled.
@@ -46,36 +49,90 @@ struct Entry {
 
 /// Reads a `.10d`, `.11d` or `.12d` file: lines `PER1 PER2 beta1 beta2 I |F| phase Re Im`,
 /// T = rho g L^k (Re + i Im), k = 1 forces, 2 moments, per unit amplitude squared. One
-/// triangle or both may be given, in any order; after the Hermitian fill every (DOF,
-/// heading pair) must cover all pairs of the file's frequencies, or the error lists holes.
+/// triangle or both may be given, in any order.
+///
+/// A file with bi-directional blocks (beta1 != beta2) must have, after the Hermitian fill
+/// (which makes (beta2, beta1) from (beta1, beta2)), a block for every DOF it lists and every
+/// pair of its headings; the error lists the missing (DOF, heading pair) blocks.
+///
+/// Sparse files (pairs missing off the diagonal, as in QTFs converted from other codes):
+/// after the Hermitian fill, a pair (i, j) still missing is filled by linear interpolation
+/// in the mean frequency (w_i + w_j)/2 along its difference-frequency line (the matrix diagonal j - i = const, constant
+/// w_i - w_j on a uniform grid) between the nearest given pairs of that line on either
+/// side, and counted ([`DifferenceQtf::filled_by_interpolation`], which the import reports
+/// as a warning). A pair with no given pair on one side of its line (beyond the largest
+/// difference frequency the file gives, or at the grid's ends) is not extrapolated: the
+/// error lists every such pair.
 pub fn read_difference_qtf(path: &Path, options: &WamitOptions) -> Result<DifferenceQtf> {
     options.validate()?;
     let file = NumericFile::read(path, &[9], "PER1 PER2 beta1 beta2 I |F| phase Re Im")?;
-    let mut omegas = Vec::with_capacity(2 * file.records.len());
-    let mut headings = Vec::new();
-    for r in &file.records {
-        omegas.push(file.frequency(r, 0, "PER1")?);
-        omegas.push(file.frequency(r, 1, "PER2")?);
-        headings.push(r.values[2].to_radians());
-        headings.push(r.values[3].to_radians());
-    }
-    let omegas = unique_sorted(omegas, same_frequency);
-    let headings = unique_sorted(headings, same_heading);
-    let frequency =
-        |v: f64| grid_index(&omegas, super::omega_of_period(v), same_frequency).expect("collected");
-    let heading = |v: f64| grid_index(&headings, v.to_radians(), same_heading).expect("collected");
     let mut entries = Vec::with_capacity(file.records.len());
     for r in &file.records {
+        let omegas = (file.frequency(r, 0, "PER1")?, file.frequency(r, 1, "PER2")?);
         let dof = file.dof(r, 4, "I")?;
+        file.check_polar(r, 5)?;
         let v = &r.values;
-        entries.push(Entry {
+        entries.push(QtfEntry {
             line: r.line,
             dof,
-            heading_index: (heading(v[2]), heading(v[3])),
-            omega_index: (frequency(v[0]), frequency(v[1])),
+            omegas,
+            headings: (v[2].to_radians(), v[3].to_radians()),
             value: Complex64::new(v[7], v[8]) * options.force_scale(dof),
         });
     }
+    assemble_qtf(file.path, entries)
+}
+
+/// One value of a QTF file in the crate's units and convention: T(w_i, w_j; beta1, beta2)
+/// of a DOF, per unit amplitude squared, and the 1-based line it came from.
+pub(in crate::hydro::io) struct QtfEntry {
+    pub line: usize,
+    pub dof: usize,
+    /// (w_i, w_j), rad/s.
+    pub omegas: (f64, f64),
+    /// (beta1, beta2), rad.
+    pub headings: (f64, f64),
+    pub value: Complex64,
+}
+
+/// The QTF of a file's entries (WAMIT's, NEMOH's): the frequency and heading grids (values
+/// within the match tolerances are one node), entries given twice refused naming both
+/// lines, the Hermitian fill, the sparse fill and the checks of [`read_difference_qtf`].
+pub(in crate::hydro::io) fn assemble_qtf(
+    path: String,
+    lines: Vec<QtfEntry>,
+) -> Result<DifferenceQtf> {
+    let omegas = unique_sorted(
+        lines
+            .iter()
+            .flat_map(|e| [e.omegas.0, e.omegas.1])
+            .collect(),
+        same_frequency,
+    );
+    let headings = unique_sorted(
+        lines
+            .iter()
+            .flat_map(|e| [e.headings.0, e.headings.1])
+            .collect(),
+        same_heading,
+    );
+    let frequency = |v: f64| grid_index(&omegas, v, same_frequency).expect("collected");
+    let heading = |v: f64| grid_index(&headings, v, same_heading).expect("collected");
+    let entries: Vec<Entry> = lines
+        .iter()
+        .map(|e| Entry {
+            line: e.line,
+            dof: e.dof,
+            heading_index: (heading(e.headings.0), heading(e.headings.1)),
+            omega_index: (frequency(e.omegas.0), frequency(e.omegas.1)),
+            value: e.value,
+        })
+        .collect();
+    let error = |line: usize, message: String| Error::Parse {
+        path: path.clone(),
+        line: Some(line),
+        message,
+    };
     let n = omegas.len();
     // Block key (dof, beta1 index, beta2 index) -> (values, line of each value; 0 = filled).
     type Slots = (Vec<Complex64>, Vec<Option<usize>>);
@@ -87,7 +144,7 @@ pub fn read_difference_qtf(path: &Path, options: &WamitOptions) -> Result<Differ
             .or_insert_with(|| (vec![Complex64::new(0.0, 0.0); n * n], vec![None; n * n]));
         let (i, j) = e.omega_index;
         if let Some(first) = lines[i * n + j].replace(e.line) {
-            return Err(file.error(
+            return Err(error(
                 e.line,
                 format!(
                     "DOF {} at headings ({:.3}, {:.3}) deg and frequencies ({:.6}, {:.6}) rad/s \
@@ -118,41 +175,44 @@ pub fn read_difference_qtf(path: &Path, options: &WamitOptions) -> Result<Differ
     let mut keys: Vec<(usize, usize, usize)> = blocks.keys().copied().collect();
     keys.sort_unstable();
     let mut out = Vec::with_capacity(keys.len());
+    let mut filled_by_interpolation = 0;
     for key in keys {
-        let (values, lines) = blocks.remove(&key).expect("key listed");
-        let holes: Vec<usize> = (0..n * n).filter(|&k| lines[k].is_none()).collect();
-        if !holes.is_empty() {
-            let shown: Vec<String> = holes
-                .iter()
-                .take(5)
-                .map(|&k| format!("({:.6}, {:.6})", omegas[k / n], omegas[k % n]))
-                .collect();
+        let (mut values, lines) = blocks.remove(&key).expect("key listed");
+        let given: Vec<bool> = lines.iter().map(Option::is_some).collect();
+        let unfilled = fill_along_difference_lines(&omegas, &mut values, &given);
+        if !unfilled.is_empty() {
             return Err(Error::Parse {
-                path: file.path.clone(),
+                path: path.clone(),
                 line: None,
                 message: format!(
                     "DOF {} at headings ({:.3}, {:.3}) deg: {} of {} frequency pairs missing \
-                     even with Hermitian symmetry, e.g. {} rad/s",
+                     even with Hermitian symmetry and not between two given pairs of their \
+                     difference-frequency line (nothing is extrapolated): {}",
                     key.0,
                     headings[key.1].to_degrees(),
                     headings[key.2].to_degrees(),
-                    holes.len(),
+                    unfilled.len(),
                     n * n,
-                    shown.join(", ")
+                    list_pairs(&omegas, &unfilled)
                 ),
             });
         }
+        filled_by_interpolation += given.iter().filter(|g| !**g).count();
         out.push(QtfBlock {
             dof: key.0,
             headings: (headings[key.1], headings[key.2]),
             values,
         });
     }
+    if out.iter().any(|b| b.headings.0 != b.headings.1) {
+        require_every_pair(&path, &headings, &out)?;
+    }
     Ok(DifferenceQtf {
-        path: file.path,
+        path,
         omegas,
         blocks: out,
         filled_by_symmetry,
+        filled_by_interpolation,
     })
 }
 
@@ -195,6 +255,12 @@ impl DifferenceQtf {
     /// triangles).
     pub fn filled_by_symmetry(&self) -> usize {
         self.filled_by_symmetry
+    }
+
+    /// How many values were missing even with Hermitian symmetry and were filled by linear
+    /// interpolation along their difference-frequency line ([`read_difference_qtf`]).
+    pub fn filled_by_interpolation(&self) -> usize {
+        self.filled_by_interpolation
     }
 
     /// T(w_i, w_j) of `dof` for waves at `headings` = (beta1, beta2), rad.
@@ -242,6 +308,94 @@ impl DifferenceQtf {
         DriftTable::from_rows(&rows)
     }
 
+    /// Moves the yaw moments of every heading pair from the vertical axis through `point`
+    /// to the body origin: T_yaw += x_r T_sway - y_r T_surge ([`ReferencePoint`]), with
+    /// `dofs` the file's DOF numbers of surge, sway and yaw; the error lists the missing
+    /// blocks a moved yaw block needs.
+    pub fn move_yaw_moment(&mut self, dofs: [usize; 3], point: ReferencePoint) -> Result<()> {
+        let pairs: Vec<(f64, f64)> = self
+            .blocks
+            .iter()
+            .filter(|b| b.dof == dofs[2])
+            .map(|b| b.headings)
+            .collect();
+        for headings in pairs {
+            let force = |d: usize| -> Result<Vec<Complex64>> {
+                self.block(d, headings)
+                    .map(|b| b.values.clone())
+                    .ok_or_else(|| Error::Parse {
+                        path: self.path.clone(),
+                        line: None,
+                        message: format!(
+                            "moving the yaw moment to the origin needs DOF {d} at headings \
+                         ({:.3}, {:.3}) deg, which the file lacks",
+                            headings.0.to_degrees(),
+                            headings.1.to_degrees()
+                        ),
+                    })
+            };
+            let (surge, sway) = (force(dofs[0])?, force(dofs[1])?);
+            let yaw = self
+                .blocks
+                .iter_mut()
+                .find(|b| b.dof == dofs[2] && b.headings == headings)
+                .expect("listed");
+            for ((m, fx), fy) in yaw.values.iter_mut().zip(&surge).zip(&sway) {
+                *m = point.complex_force_to_origin([*fx, *fy, *m])[2];
+            }
+        }
+        Ok(())
+    }
+
+    /// The bi-directional mean drift T(w; beta_p, beta_q) = the diagonal T(w, w; beta_p,
+    /// beta_q) of every heading pair, for `dofs` (the file's numbers of surge, sway, yaw),
+    /// or `None` when the QTF has no bi-directional blocks (the reader made sure that a
+    /// bi-directional file has every pair).
+    pub fn to_bidirectional_table(&self, dofs: [usize; 3]) -> Result<Option<BidirectionalTable>> {
+        if self.blocks.iter().all(|b| b.headings.0 == b.headings.1) {
+            return Ok(None);
+        }
+        let headings = unique_sorted(
+            self.blocks.iter().map(|b| b.headings.0).collect(),
+            same_heading,
+        );
+        let (nw, nh) = (self.omegas.len(), headings.len());
+        let mut re = vec![vec![vec![[0.0; 3]; nh]; nh]; nw];
+        let mut im = re.clone();
+        for (p, &bp) in headings.iter().enumerate() {
+            for (q, &bq) in headings.iter().enumerate() {
+                for (i, &dof) in dofs.iter().enumerate() {
+                    let block = self.block(dof, (bp, bq)).ok_or_else(|| Error::Parse {
+                        path: self.path.clone(),
+                        line: None,
+                        message: format!(
+                            "no DOF {dof} at headings ({:.3}, {:.3}) deg for the bi-directional drift",
+                            bp.to_degrees(),
+                            bq.to_degrees()
+                        ),
+                    })?;
+                    for n in 0..nw {
+                        let v = block.values[n * nw + n];
+                        re[n][p][q][i] = v.re;
+                        im[n][p][q][i] = v.im;
+                    }
+                }
+            }
+        }
+        let table = BidirectionalTable {
+            omegas: self.omegas.clone(),
+            headings,
+            re,
+            im,
+        };
+        table.validate().map_err(|e| Error::Parse {
+            path: self.path.clone(),
+            line: None,
+            message: e.to_string(),
+        })?;
+        Ok(Some(table))
+    }
+
     fn block(&self, dof: usize, headings: (f64, f64)) -> Option<&QtfBlock> {
         self.blocks.iter().find(|b| {
             b.dof == dof
@@ -259,4 +413,115 @@ impl DifferenceQtf {
             .collect();
         require_present(&self.path, dofs, headings, &present)
     }
+}
+
+/// Fills the values of an n x n block (row-major) that are not `given`, each by linear
+/// interpolation in the mean frequency (w_i + w_j)/2 between the nearest given values on
+/// either side along its diagonal (j - i constant); the mirror (j, i) of a cell has the same
+/// mean frequency and mirrored neighbours, so a Hermitian block stays Hermitian. Returns the
+/// (i, j) of the values with no given value on one side.
+fn fill_along_difference_lines(
+    omegas: &[f64],
+    values: &mut [Complex64],
+    given: &[bool],
+) -> Vec<(usize, usize)> {
+    let n = omegas.len();
+    let mut unfilled = Vec::new();
+    for d in -(n as isize - 1)..=(n as isize - 1) {
+        // The line's cells (i, i + d), by increasing i.
+        let cells: Vec<(usize, usize)> = (0..n)
+            .filter_map(|i| {
+                let j = i as isize + d;
+                (0..n as isize).contains(&j).then_some((i, j as usize))
+            })
+            .collect();
+        let known: Vec<usize> = (0..cells.len())
+            .filter(|&k| given[cells[k].0 * n + cells[k].1])
+            .collect();
+        for (k, &(i, j)) in cells.iter().enumerate() {
+            if given[i * n + j] {
+                continue;
+            }
+            let after = known.partition_point(|&m| m < k);
+            if after == 0 || after == known.len() {
+                unfilled.push((i, j));
+                continue;
+            }
+            let (a, b) = (cells[known[after - 1]], cells[known[after]]);
+            let mean = |(i, j): (usize, usize)| omegas[i] + omegas[j];
+            let s = (mean((i, j)) - mean(a)) / (mean(b) - mean(a));
+            values[i * n + j] = values[a.0 * n + a.1] * (1.0 - s) + values[b.0 * n + b.1] * s;
+        }
+    }
+    unfilled.sort_unstable();
+    unfilled
+}
+
+/// Pairs of frequencies, rad/s, grouped by their first frequency: "w1 = 0.25: w2 = 1.5, 1.6;
+/// w1 = 0.3: ...".
+fn list_pairs(omegas: &[f64], pairs: &[(usize, usize)]) -> String {
+    let mut rows: Vec<String> = Vec::new();
+    let mut k = 0;
+    while k < pairs.len() {
+        let i = pairs[k].0;
+        let end = k + pairs[k..].iter().take_while(|p| p.0 == i).count();
+        let seconds: Vec<String> = pairs[k..end]
+            .iter()
+            .map(|&(_, j)| format!("{:.6}", omegas[j]))
+            .collect();
+        rows.push(format!(
+            "w1 = {:.6}: w2 = {}",
+            omegas[i],
+            seconds.join(", ")
+        ));
+        k = end;
+    }
+    format!("{} rad/s", rows.join("; "))
+}
+
+/// Every (DOF, beta1, beta2) on `headings` for the DOFs of `blocks`; the error lists the
+/// missing ones.
+fn require_every_pair(path: &str, headings: &[f64], blocks: &[QtfBlock]) -> Result<()> {
+    let mut dofs: Vec<usize> = blocks.iter().map(|b| b.dof).collect();
+    dofs.dedup();
+    let mut missing = Vec::new();
+    for &dof in &dofs {
+        for &b1 in headings {
+            for &b2 in headings {
+                let present = blocks.iter().any(|b| {
+                    b.dof == dof && same_heading(b.headings.0, b1) && same_heading(b.headings.1, b2)
+                });
+                if !present {
+                    missing.push(format!(
+                        "DOF {dof} at ({:.3}, {:.3}) deg",
+                        b1.to_degrees(),
+                        b2.to_degrees()
+                    ));
+                }
+            }
+        }
+    }
+    if missing.is_empty() {
+        return Ok(());
+    }
+    Err(Error::Parse {
+        path: path.to_string(),
+        line: None,
+        message: format!(
+            "a bi-directional QTF needs every pair of its headings {} deg for DOFs {}: {} of \
+             the {} (DOF, heading pair) blocks are missing even with Hermitian symmetry: {}",
+            headings
+                .iter()
+                .map(|h| format!("{:.3}", h.to_degrees()))
+                .collect::<Vec<_>>()
+                .join(", "),
+            dofs.iter()
+                .map(usize::to_string)
+                .collect::<Vec<_>>()
+                .join(", "),
+            missing.len(),
+            dofs.len() * headings.len() * headings.len(),
+            missing.join("; ")
+        ),
+    })
 }

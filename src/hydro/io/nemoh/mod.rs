@@ -1,0 +1,316 @@
+//! NEMOH v3 results into the native database (`slowdrift hydro nemoh --dir DIR`).
+//!
+//! | file | what is taken | conventions |
+//! |---|---|---|
+//! | `Nemoh.cal` | rho, g, depth; the body's DOFs and generalised forces (which are surge, sway, yaw; the point the yaw moment is taken about); the QTF grid and its output unit | [`cal`] |
+//! | `results/CM.dat` | the added mass at the lowest frequency as the low-frequency added mass | dimensional; NEMOH has no omega = 0 |
+//! | `Mechanics/Inertia.dat`, `Mechanics/Kh.dat` | mass and yaw inertia; hydrostatic stiffness | dimensional, about the DOFs' points |
+//! | `results/QTF/OUT_QTFM_N.dat` (or the one `OUT_QTFM_N*.dat`) | the difference-frequency QTF: the database's `qtf`, its diagonal as the mean drift, its bi-directional diagonal as `bidirectional_drift` | [`qtf`]: divided by rho g, e^{-i omega t}, lower triangle |
+//!
+//! Reference point: NEMOH takes moments about the point each generalised force names (the
+//! OC3 spar's about (0, 0, -78) m). A yaw moment about a point on the vertical axis through
+//! the origin is the yaw moment about the origin; a point off that axis is moved to the
+//! origin ([`crate::hydro::reference_point`]), the yaw motion's axis too (the two must be
+//! the same vertical axis). Units in the database are SI, frequencies rad/s, headings rad.
+
+pub mod cal;
+pub mod matrices;
+pub mod qtf;
+
+use super::database::{self, HydroDatabase, MassProperties, FORMAT_VERSION};
+use crate::error::{Error, Result};
+use crate::hydro::reference_point::ReferencePoint;
+use cal::{FrequencyUnit, Generalised, NemohCal};
+use std::path::{Path, PathBuf};
+
+/// A database made from NEMOH's results, and what was found.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NemohImport {
+    pub database: HydroDatabase,
+    /// One line per file: what was taken from it, or why not.
+    pub files: Vec<String>,
+}
+
+/// Imports the NEMOH v3 results of the project directory `dir` (the one with `Nemoh.cal`;
+/// its `results/` directory is accepted too).
+pub fn import(dir: &Path) -> Result<NemohImport> {
+    let project = if dir.join("Nemoh.cal").is_file() {
+        dir.to_path_buf()
+    } else if dir.join("../Nemoh.cal").is_file() {
+        dir.join("..")
+    } else {
+        return Err(Error::Io {
+            path: dir.display().to_string(),
+            message: "no Nemoh.cal here or in the parent directory (give NEMOH's project \
+                      directory)"
+                .into(),
+        });
+    };
+    let cal = NemohCal::read(&project.join("Nemoh.cal"))?;
+    let mut files = vec![format!(
+        "{}: rho = {} kg/m^3, g = {} m/s^2, depth {}; {} DOFs, {} generalised forces",
+        cal.path,
+        cal.rho,
+        cal.gravity,
+        if cal.depth == 0.0 {
+            "infinite".to_string()
+        } else {
+            format!("{} m", cal.depth)
+        },
+        cal.dofs.len(),
+        cal.forces.len()
+    )];
+    let motion = cal.slow_indices(&cal.dofs, "degree of freedom")?;
+    let force = cal.slow_indices(&cal.forces, "generalised force")?;
+    let point = reference_point(&cal, &cal.dofs[motion[2] - 1], &cal.forces[force[2] - 1])?;
+    let moved = if point.is_on_vertical_axis() {
+        format!(
+            "yaw moments about the vertical axis through ({}, {}, z): the body's z axis, kept",
+            point.x, point.y
+        )
+    } else {
+        format!(
+            "yaw moments and yaw rows/columns moved from the axis through ({}, {}) m to the \
+             origin: M_o = M_r + x_r F_y - y_r F_x, P^T A P",
+            point.x, point.y
+        )
+    };
+    files.push(moved);
+    let restrict =
+        |m: &[Vec<f64>]| -> [[f64; 3]; 3] { motion.map(|i| motion.map(|j| m[i - 1][j - 1])) };
+
+    let mut low_frequency_added_mass = None;
+    let path = project.join("results/CM.dat");
+    if path.is_file() {
+        let cm = matrices::read_frequency_matrices(&path, cal.dofs.len())?;
+        let (k, lowest) = lowest_frequency(&cm.frequencies, cal.first_order_unit);
+        low_frequency_added_mass = Some(point.matrix_to_origin(&restrict(&cm.matrices[k])));
+        let (count, min, max) = cal.first_order;
+        files.push(format!(
+            "{}: {} frequencies; low-frequency added mass from the lowest, {lowest:.4} rad/s \
+             (NEMOH has no omega = 0){}",
+            path.display(),
+            cm.frequencies.len(),
+            if count != cm.frequencies.len() {
+                format!(
+                    "; note: Nemoh.cal line {} lists {count} frequencies {min} .. {max}: the \
+                     file's own are used",
+                    cal.first_order_line
+                )
+            } else {
+                String::new()
+            }
+        ));
+    } else {
+        files.push(format!("{}: absent", path.display()));
+    }
+
+    let mechanics = |name: &str| project.join("Mechanics").join(name);
+    let six = |m: [[f64; 6]; 6]| -> Vec<Vec<f64>> { m.iter().map(|r| r.to_vec()).collect() };
+    let mut mass_properties = None;
+    let path = mechanics("Inertia.dat");
+    if path.is_file() {
+        let m = point.matrix_to_origin(&restrict(&six(matrices::read_matrix6(&path)?)));
+        let coupled = m[0][2] != 0.0 || m[1][2] != 0.0 || m[0][1] != 0.0;
+        if coupled {
+            files.push(format!(
+                "{}: the centre of gravity is off the body's z axis (surge/sway-yaw coupling \
+                 {:.4e}, {:.4e}): mass properties not set (the database holds mass and yaw \
+                 inertia only); give them in the configuration",
+                path.display(),
+                m[0][2],
+                m[1][2]
+            ));
+        } else {
+            files.push(format!(
+                "{}: mass {:.6e} kg, yaw inertia {:.6e} kg m^2",
+                path.display(),
+                m[0][0],
+                m[2][2]
+            ));
+            mass_properties = Some(MassProperties {
+                mass: m[0][0],
+                yaw_inertia: m[2][2],
+            });
+        }
+    } else {
+        files.push(format!("{}: absent", path.display()));
+    }
+    let mut stiffness = None;
+    let path = mechanics("Kh.dat");
+    if path.is_file() {
+        let c = point.matrix_to_origin(&restrict(&six(matrices::read_matrix6(&path)?)));
+        files.push(format!(
+            "{}: hydrostatic stiffness (surge, sway, yaw diagonal {:.4e}, {:.4e}, {:.4e}; the \
+             mooring must add its own)",
+            path.display(),
+            c[0][0],
+            c[1][1],
+            c[2][2]
+        ));
+        stiffness = Some(c);
+    } else {
+        files.push(format!("{}: absent", path.display()));
+    }
+
+    let mut drift = Vec::new();
+    let mut qtf_data = None;
+    let mut bidirectional_drift = None;
+    match &cal.qtf {
+        None => files.push(format!(
+            "{}: no QTF asked for (QTF flag not 1): no drift, no QTF",
+            cal.path
+        )),
+        Some(settings) => {
+            let path = qtf_file(&project.join("results/QTF"))?;
+            let mut qtf = qtf::read_difference_qtf(&path, &cal, settings)?;
+            if !point.is_on_vertical_axis() {
+                qtf.move_yaw_moment(force, point)?;
+            }
+            let headings = qtf.headings();
+            drift = database::drift_points(&qtf.to_drift_table(&headings, force)?);
+            bidirectional_drift = qtf.to_bidirectional_table(force)?;
+            qtf_data = Some(database::qtf_data(&qtf, force)?);
+            files.push(format!(
+                "{}: QTF, {} frequencies {:.4} .. {:.4} rad/s (Nemoh.cal's grid; printed in {}), \
+                 headings {} deg{}, forces {:?} = surge, sway, yaw; values x rho g, conjugated \
+                 from NEMOH's e^(-i w t) to e^(i w t); {} values filled by Hermitian symmetry{}; \
+                 mean drift = the diagonal",
+                path.display(),
+                qtf.omegas().len(),
+                qtf.omegas()[0],
+                qtf.omegas()[qtf.omegas().len() - 1],
+                settings.output_unit.name(),
+                headings
+                    .iter()
+                    .map(|h| format!("{:.2}", h.to_degrees()))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+                if bidirectional_drift.is_some() {
+                    "; bi-directional: every heading pair, its diagonal as bidirectional_drift"
+                } else {
+                    ""
+                },
+                force,
+                qtf.filled_by_symmetry(),
+                match qtf.filled_by_interpolation() {
+                    0 => String::new(),
+                    k => format!(
+                        "; warning: a sparse QTF, {k} values filled along difference-frequency \
+                         lines"
+                    ),
+                }
+            ));
+        }
+    }
+    let name = project
+        .canonicalize()
+        .ok()
+        .and_then(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
+        .unwrap_or_else(|| "nemoh".to_string());
+    let database = HydroDatabase {
+        format_version: FORMAT_VERSION,
+        name,
+        source: format!(
+            "NEMOH v3 results {} (Nemoh.cal, CM.dat, Mechanics/, the difference-frequency QTF); \
+             rho = {} kg/m^3, g = {} m/s^2 from Nemoh.cal; depth {}; QTF conjugated from \
+             e^(-i w t); moments about the body origin; drift from the QTF diagonal",
+            project.display(),
+            cal.rho,
+            cal.gravity,
+            if cal.depth == 0.0 {
+                "infinite".to_string()
+            } else {
+                format!("{} m", cal.depth)
+            }
+        ),
+        water_density: cal.rho,
+        gravity: cal.gravity,
+        mass_properties,
+        low_frequency_added_mass,
+        stiffness,
+        drift,
+        qtf: qtf_data,
+        bidirectional_drift,
+    };
+    database.validate()?;
+    Ok(NemohImport { database, files })
+}
+
+/// The horizontal point of the yaw moment's axis; the yaw motion's axis must be the same
+/// vertical line (else the file mixes reference points, refused).
+fn reference_point(
+    cal: &NemohCal,
+    motion: &Generalised,
+    moment: &Generalised,
+) -> Result<ReferencePoint> {
+    if motion.point[..2] != moment.point[..2] {
+        return Err(Error::Parse {
+            path: cal.path.clone(),
+            line: Some(moment.line),
+            message: format!(
+                "the yaw moment is about the axis through ({}, {}) but the yaw motion (line {}) \
+                 about ({}, {}): one reference point is needed for both",
+                moment.point[0], moment.point[1], motion.line, motion.point[0], motion.point[1]
+            ),
+        });
+    }
+    Ok(ReferencePoint {
+        x: moment.point[0],
+        y: moment.point[1],
+    })
+}
+
+/// The index and frequency (rad/s) of the lowest frequency of `frequencies` (in `unit`).
+fn lowest_frequency(frequencies: &[f64], unit: FrequencyUnit) -> (usize, f64) {
+    let omega = |f: f64| match unit {
+        FrequencyUnit::RadPerSecond => f,
+        FrequencyUnit::Hertz => 2.0 * std::f64::consts::PI * f,
+        FrequencyUnit::Second => 2.0 * std::f64::consts::PI / f,
+    };
+    frequencies
+        .iter()
+        .enumerate()
+        .map(|(k, &f)| (k, omega(f)))
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .expect("at least one frequency")
+}
+
+/// `OUT_QTFM_N.dat` in `dir`, else the one `OUT_QTFM_N*.dat` there.
+fn qtf_file(dir: &Path) -> Result<PathBuf> {
+    let standard = dir.join("OUT_QTFM_N.dat");
+    if standard.is_file() {
+        return Ok(standard);
+    }
+    let mut found: Vec<PathBuf> = std::fs::read_dir(dir)
+        .map_err(|e| Error::Io {
+            path: dir.display().to_string(),
+            message: format!("{e} (Nemoh.cal asks for a QTF: its results are expected here)"),
+        })?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| {
+            p.file_name()
+                .and_then(|n| n.to_str())
+                .is_some_and(|n| n.starts_with("OUT_QTFM_N") && n.ends_with(".dat"))
+        })
+        .collect();
+    found.sort();
+    match found.len() {
+        1 => Ok(found.remove(0)),
+        0 => Err(Error::Io {
+            path: dir.display().to_string(),
+            message: "no OUT_QTFM_N.dat (the difference-frequency QTF)".into(),
+        }),
+        _ => Err(Error::Io {
+            path: dir.display().to_string(),
+            message: format!(
+                "several difference-frequency QTF files, {}: keep one",
+                found
+                    .iter()
+                    .map(|p| p.display().to_string())
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+        }),
+    }
+}
