@@ -21,6 +21,8 @@ target/fmu/system/: SlowDrift_OspModelDescription.xml and Mooring_OspModelDescri
 4. The checks catch broken copies: a unit changed, a variable renamed, groups of different
    kinds connected, an input left unconnected, a parameter of the wrong type, a schema
    violation.
+5. The connection diagram of docs/coupling.md is drawn from these files by
+   docs/figures/coupling_diagram.py: the committed SVG is the script's output.
 """
 
 import os
@@ -180,3 +182,18 @@ def test_the_checks_catch_broken_copies(system, variables_of):
                    ssd.replace('endConnector="Fx_ext"', 'endConnector="Fx_wave"')):
         _s, connectors, parameters, ssp_connections, _step = sf.ssd_system(broken)
         assert sf.ssd_problems(connectors, parameters, ssp_connections, variables_of)
+
+
+def test_the_diagram_is_the_scripts(tmp_path):
+    """docs/figures/coupling_diagram.svg is what docs/figures/coupling_diagram.py draws from
+    the system files now (a changed connection or parameter needs the picture redrawn)."""
+    import subprocess
+    import sys
+
+    script = os.path.join(sf.HERE, "..", "..", "docs", "figures", "coupling_diagram.py")
+    out = tmp_path / "diagram.svg"
+    subprocess.run([sys.executable, script, str(out)], check=True, capture_output=True)
+    with open(os.path.join(sf.HERE, "..", "..", "docs", "figures", "coupling_diagram.svg"),
+              encoding="utf-8") as committed:
+        assert out.read_text(encoding="utf-8") == committed.read(), (
+            "run python3 docs/figures/coupling_diagram.py and commit the SVG")
