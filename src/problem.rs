@@ -11,12 +11,14 @@
 use crate::error::{
     require_finite, require_finite_matrix, require_non_negative, require_positive, Error, Result,
 };
+use crate::files::read_text;
 use crate::hydro::aranha::aranha_damping;
 use crate::hydro::bidirectional::BidirectionalSource;
 use crate::hydro::column_drift::isolated_columns_table;
 use crate::hydro::columns::ColumnArray;
 use crate::hydro::default_platform;
-use crate::hydro::io::{database::HydroDatabase, drift_csv};
+use crate::hydro::io::database::{self, HydroDatabase};
+use crate::hydro::io::drift_csv;
 use crate::hydro::qtf::{check_tolerance, Qtf};
 use crate::hydro::DriftTable;
 use crate::model::{
@@ -93,19 +95,21 @@ pub fn resolve_hydro(
         DriftSource::Database {
             path,
             bidirectional_from_columns,
-        } => from_database(
-            HydroDatabase::load(path)?,
-            &path.display().to_string(),
-            *bidirectional_from_columns,
-            platform,
-            environment,
-        ),
+        } => {
+            let (text, name) = (read_text(path)?, path.display().to_string());
+            from_database(
+                HydroDatabase::parse(&text, &name)?,
+                (&text, &name),
+                *bidirectional_from_columns,
+                platform,
+                environment,
+            )
+        }
         DriftSource::DefaultPlatform => {
-            let database =
-                HydroDatabase::parse(default_platform::DATABASE, default_platform::DATABASE_NAME)?;
+            let (text, name) = (default_platform::DATABASE, default_platform::DATABASE_NAME);
             let hydro = from_database(
-                database,
-                default_platform::DATABASE_NAME,
+                HydroDatabase::parse(text, name)?,
+                (text, name),
                 false,
                 platform,
                 environment,
@@ -147,12 +151,13 @@ pub fn resolve_hydro(
     }
 }
 
-/// The data of a database (`name` says where it came from in errors): its drift table, QTF
-/// and bi-directional drift, or the column solver's bi-directional drift on the platform's
-/// columns at the database's frequencies when `bidirectional_from_columns`.
+/// The data of a database read from `(text, name)` (the name says where it came from in
+/// errors, which are located in the text): its drift table, QTF and bi-directional drift,
+/// or the column solver's bi-directional drift on the platform's columns at the database's
+/// frequencies when `bidirectional_from_columns`.
 fn from_database(
     database: HydroDatabase,
-    name: &str,
+    (text, name): (&str, &str),
     bidirectional_from_columns: bool,
     platform: &Platform,
     environment: &Environment,
@@ -170,7 +175,9 @@ fn from_database(
             ),
         ));
     }
-    let drift = database.to_drift_table()?;
+    let drift = database
+        .to_drift_table()
+        .map_err(|e| database::locate(e, text, name))?;
     let qtf = database.qtf.as_ref().map(|q| q.to_qtf());
     let bidirectional = match (database.bidirectional_drift, bidirectional_from_columns) {
         (own, false) => own.map(BidirectionalSource::Table),

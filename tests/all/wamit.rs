@@ -780,6 +780,64 @@ fn database_errors_name_the_file() {
     assert!(err.contains("absent.json"), "{err}");
 }
 
+/// A database whose content is wrong (a negative frequency, found when its drift table is
+/// made; a negative gravity, found by its own check) is refused naming the database file,
+/// the line of the value (found here by scanning the written text) and the field as the
+/// file spells it, whether loaded alone or through a configuration that names it.
+#[test]
+fn database_content_errors_name_the_file_and_line() {
+    let dir = temp_dir("db-content");
+    let text = serde_json::to_string_pretty(&small_database()).unwrap();
+    // The third "omega" key of the text is drift[2]'s (the QTF's frequencies are under
+    // "omegas").
+    let line = text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| l.trim_start().starts_with("\"omega\":"))
+        .nth(2)
+        .map(|(k, _)| k + 1)
+        .unwrap();
+    let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
+    assert_eq!(lines[line - 1].trim(), "\"omega\": 1.1,");
+    lines[line - 1] = lines[line - 1].replace("1.1", "-1.1");
+    let negative = write(&dir, "negative.json", &lines.join("\n"));
+    let config = write(
+        &dir,
+        "negative.toml",
+        &slowdrift::scenario::default::DEFAULT_CONFIG_TOML.replace(
+            "source = \"default-platform\"",
+            "source = \"database\"\nfile = \"negative.json\"",
+        ),
+    );
+    let expected = format!(
+        "{}:{line}: invalid drift[2].omega = -1.1: must be greater than zero",
+        negative.display()
+    );
+    let err = slowdrift::problem::load(&config).unwrap_err().to_string();
+    assert!(err.starts_with(&expected), "{err}");
+
+    let gravity_line = text
+        .lines()
+        .position(|l| l.contains("\"gravity\""))
+        .unwrap()
+        + 1;
+    let negative_gravity = write(
+        &dir,
+        "gravity.json",
+        &text.replace("\"gravity\": 9.80665", "\"gravity\": -9.8"),
+    );
+    let err = HydroDatabase::load(&negative_gravity)
+        .unwrap_err()
+        .to_string();
+    assert_eq!(
+        err,
+        format!(
+            "{}:{gravity_line}: invalid gravity = -9.8: must be greater than zero",
+            negative_gravity.display()
+        )
+    );
+}
+
 #[test]
 fn database_from_synthetic_wamit_files_prefers_the_momentum_drift() {
     let dir = temp_dir("import");

@@ -32,7 +32,9 @@ use super::wamit::{
     read_added_mass_damping, read_difference_qtf, read_hydrostatics, read_mean_drift,
     DifferenceQtf, WamitOptions,
 };
-use crate::error::{require_finite, require_finite_matrix, require_positive, Error, Result};
+use crate::error::{
+    require_finite, require_finite_matrix, require_positive, Error, Location, Result,
+};
 use crate::hydro::bidirectional::BidirectionalTable;
 use crate::hydro::qtf::{Qtf, QtfBlock};
 use crate::hydro::{DriftRow, DriftTable};
@@ -47,6 +49,39 @@ pub const FORMAT_VERSION: u32 = 1;
 
 /// WAMIT DOFs of surge, sway and yaw.
 const SLOW_DOFS: [usize; 3] = [1, 2, 6];
+
+/// An error about the content of a database read from `text` (`name`: where the text came
+/// from), from [`HydroDatabase::validate`] or the drift table made from it: located at the
+/// line of the value it names, the field named as the file spells it (`drift[3].omega`).
+/// Other errors are returned unchanged.
+pub fn locate(error: Error, text: &str, name: &str) -> Error {
+    match error {
+        Error::InvalidValue {
+            field,
+            value,
+            reason,
+            at: None,
+        } => {
+            let field = field.strip_prefix("database.").unwrap_or(&field);
+            // The drift table's rows are the database's `drift` entries, in order.
+            let field = match field.strip_prefix("drift.rows[") {
+                Some(rest) => format!("drift[{rest}"),
+                None => field.to_string(),
+            };
+            let line = super::json_position::line_of(text, &field);
+            Error::InvalidValue {
+                field,
+                value,
+                reason,
+                at: Some(Location {
+                    path: name.to_string(),
+                    line,
+                }),
+            }
+        }
+        other => other,
+    }
+}
 
 /// A platform's hydrodynamic data for the slow-drift DOFs (surge, sway, yaw).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -194,11 +229,7 @@ impl HydroDatabase {
             });
         }
         let database: HydroDatabase = serde_json::from_str(text).map_err(at)?;
-        database.validate().map_err(|e| Error::Parse {
-            path: name.to_string(),
-            line: None,
-            message: e.to_string(),
-        })?;
+        database.validate().map_err(|e| locate(e, text, name))?;
         Ok(database)
     }
 

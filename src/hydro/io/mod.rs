@@ -4,4 +4,5 @@
 
 pub mod database;
 pub mod drift_csv;
+mod json_position;
 pub mod wamit;
