@@ -16,7 +16,7 @@ cd "$repo"
 venv="$repo/target/client-venv"
 source "$repo/tests/venv.sh"
 ensure_venv "$venv" fmpy==0.3.32 fmu-manipulation-toolbox==2.0 libcosimpy==0.0.6 moordyn==2.7.2 \
-    ecospy==0.7.2 xmlschema==4.3.2 dask==2026.8.0 distributed==2026.8.0 numpy pytest
+    ecospy==0.7.2 xmlschema==4.3.2 moorpy==1.3.0 dask==2026.8.0 distributed==2026.8.0 numpy pytest
 
 # ecos (ecospy's libecosc.so) links against Intel TBB 12, which Debian ships as libtbb12.
 if ! /sbin/ldconfig -p | grep -q 'libtbb\.so\.12 '; then
