@@ -51,6 +51,9 @@ pub enum Error {
         what: String,
         cause: Cause,
     },
+    /// A time where a double no longer resolves the step (`problem::time_resolved`): the
+    /// run cannot go on.
+    TimeUnresolved { time: f64, step: f64 },
     /// The body's yaw left the range covered by the yaw-following records (rad); they are
     /// never extrapolated.
     YawOutsideRecords {
@@ -149,6 +152,13 @@ impl Error {
                 write!(f, "{what} at t = {time} s: ")?;
                 cause.describe(f, name)
             }
+            Error::TimeUnresolved { time, step } => write!(
+                f,
+                "the run reached t = {time:e} s, where a double resolves time only to {:e} s: \
+                 too coarse for steps of {step} s ({}); the run cannot go on",
+                time.abs() * f64::EPSILON,
+                name("run.time_step")
+            ),
             Error::YawOutsideRecords { time, yaw, covered } => write!(
                 f,
                 "yaw {yaw:.6} rad ({:.4} deg) at t = {time} s is outside the yaw-following \

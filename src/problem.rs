@@ -64,6 +64,26 @@ impl Hydro {
 /// Everything one simulation needs: the scenario with its hydrodynamics resolved.
 pub type Problem = Scenario<Hydro>;
 
+/// The finest fraction of a step a time must resolve: times t with |t| eps <=
+/// TIME_RESOLUTION h (eps the double's relative spacing, 2.2e-16), so that the step count,
+/// the communication points and the records' sample index stay exact.
+pub const TIME_RESOLUTION: f64 = 1e-6;
+
+/// The spacing of doubles near `t`, s (an upper bound: |t| eps).
+pub fn time_spacing(t: f64) -> f64 {
+    t.abs() * f64::EPSILON
+}
+
+/// Whether a double resolves times near `t` to [`TIME_RESOLUTION`] of a step `h`.
+pub fn time_resolved(t: f64, h: f64) -> bool {
+    time_spacing(t) <= TIME_RESOLUTION * h
+}
+
+/// The largest |t| that [`time_resolved`] accepts for a step `h`, s (4.5e9 h).
+pub fn largest_resolved_time(h: f64) -> f64 {
+    TIME_RESOLUTION * h / f64::EPSILON
+}
+
 /// Resolves the scenario's drift source into data: reads its file or runs its solver, once.
 /// (The problem is checked where the records are planned, [`Problem::check`].)
 pub fn resolve(scenario: &Scenario) -> Result<Problem> {
@@ -273,6 +293,34 @@ impl Problem {
         Ok(steps as usize)
     }
 
+    /// Times a double resolves to [`TIME_RESOLUTION`] of a step: the start time and, for a
+    /// run with an end, the end (`start_time + duration`); an open-ended run is checked as
+    /// it goes (`Simulation`). Refused naming the setting that moves the time out of reach.
+    fn check_time_resolution(&self) -> Result<()> {
+        let run = &self.run;
+        let end = run.start_time + run.duration;
+        for (key, value, time) in [
+            ("run.start_time", run.start_time, run.start_time),
+            ("run.duration", run.duration, end),
+        ] {
+            if time.is_finite() && !time_resolved(time, run.time_step) {
+                return Err(Error::invalid(
+                    key,
+                    value,
+                    format!(
+                        "reaches t = {time:e} s, where a double resolves time only to {:e} s: \
+                         too coarse for steps of {} s (times within +-{:e} s keep a \
+                         millionth of a step)",
+                        time_spacing(time),
+                        run.time_step,
+                        largest_resolved_time(run.time_step)
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
     /// [`Problem::validate`], the error located where the user wrote the value.
     pub fn check(&self) -> Result<()> {
         self.validate().map_err(|e| self.origins.locate(e))
@@ -318,6 +366,7 @@ impl Problem {
             ));
         }
         require_finite("run.start_time", self.run.start_time)?;
+        self.check_time_resolution()?;
         if self.run.time_step > self.run.duration {
             return Err(Error::invalid(
                 "run.time_step",

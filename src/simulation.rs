@@ -209,9 +209,17 @@ impl Simulation {
 
     /// Makes the records of the segment that time `t` is in, if they are not the current
     /// ones ([`RecordPlan::move_segment`]: no allocation).
+    /// An open-ended run stops where a double no longer resolves its time
+    /// ([`crate::problem::time_resolved`]), checked when a segment is entered.
     fn ensure_segment(&mut self, t: f64) -> Result<()> {
         let k = self.segment_of(t)?;
-        self.plan.move_segment(&self.problem, &mut self.segment, k);
+        if k != self.segment.index {
+            let step = self.problem.run.time_step;
+            if !crate::problem::time_resolved(t, step) {
+                return Err(Error::TimeUnresolved { time: t, step });
+            }
+            self.plan.move_segment(&self.problem, &mut self.segment, k);
+        }
         Ok(())
     }
 

@@ -1438,6 +1438,31 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
         }
     }
 
+    /// A CSV table cut inside its last number (no newline after it, fewer digits than the
+    /// line above: "9.0e2" cut to "9.0") is refused at that line; the same line ended by
+    /// a newline, or with as many digits, is whole.
+    #[test]
+    fn a_csv_cut_inside_its_last_number_is_refused() {
+        let head = "omega,beta_deg,sway,yaw,surge\n0.3,0,0,0,1.0e2\n";
+        for (tail, cut) in [
+            ("2.0,0,0,0,9.0", true),
+            ("2.0,0,0,0,9.0\n", false),
+            ("2.0,0,0,0,9.0e2", false),
+        ] {
+            let csv = temp_file("cut.csv", &format!("{head}{tail}"));
+            let result = parse_text(&minimal_with_csv(&csv));
+            std::fs::remove_file(&csv).expect("remove temporary file");
+            match (result, cut) {
+                (Err(Error::Parse { line, message, .. }), true) => {
+                    assert_eq!(line, Some(3));
+                    assert!(message.contains("\"9.0\" has fewer digits"), "{message}");
+                }
+                (Ok(_), false) => {}
+                (other, _) => panic!("{tail:?}: {other:?}"),
+            }
+        }
+    }
+
     #[test]
     fn csv_missing_a_column_names_it() {
         let csv = temp_file(

@@ -427,3 +427,45 @@ fn non_positive_advance_intervals_are_refused() {
         assert_eq!(sim.snapshot(), before);
     }
 }
+
+/// Times a double cannot resolve to a millionth of a step are refused: doubles near t are
+/// spaced |t| 2^-52 apart, so with h = 1 s times beyond 2^52 x 1e-6 s = 4.5e9 s (143
+/// years) are too coarse. A start time of 1e16 s (where doubles are 2 s apart) and a run
+/// that ends past the limit are refused naming the setting; a run just inside is accepted;
+/// an open-ended run restored at 5e9 s cannot go on.
+#[test]
+fn times_a_double_cannot_resolve_are_refused() {
+    let limit = 2f64.powi(52) * 1e-6;
+    let err = refused(
+        with(|c| c.run.start_time = 1e16),
+        "run.start_time",
+        "10000000000000000",
+    );
+    assert!(
+        err.to_string().contains("resolves time only to 2.22"),
+        "{err}"
+    );
+    refused(
+        with(|c| {
+            c.run.start_time = limit - 100.0;
+            c.run.duration = 200.0;
+        }),
+        "run.duration",
+        "200",
+    );
+    let mut sim = Simulation::new(with(|c| {
+        c.run.start_time = limit - 300.0;
+        c.run.duration = f64::INFINITY;
+    }))
+    .unwrap();
+    sim.step([0.0; 3]).unwrap();
+    // A state at 5e9 s (origin 5e9, no steps), restored: its segment is refused.
+    let mut bytes = sim.snapshot().to_bytes();
+    bytes[..8].copy_from_slice(&5e9f64.to_le_bytes());
+    bytes[8..16].copy_from_slice(&0u64.to_le_bytes());
+    let far = slowdrift::Snapshot::from_bytes(&bytes).unwrap();
+    match sim.restore(&far) {
+        Err(Error::TimeUnresolved { time, step }) => assert_eq!((time, step), (5e9, 1.0)),
+        other => panic!("{other:?}"),
+    }
+}

@@ -568,6 +568,63 @@ fn malformed_lines_name_the_file_and_line() {
     );
 }
 
+/// Strict numbers (issue #15): a `.1` file cut inside its last number (the exponent lost:
+/// it would read A66 = 6.27 kg m^2 instead of 6.27e9), an exponent cut short inside a file,
+/// a number cut on an unterminated last line of a column without exponents, and a `.1`
+/// file with no frequency at all are refused naming the file and line.
+#[test]
+fn cut_numbers_and_files_without_frequencies_are_refused() {
+    let dir = temp_dir("cut");
+    let lines = [
+        " -0.100000E+01     1     1  8.526887E+03\n",
+        "  0.126168E+01     1     1  8.526887E+03  1.621425E+04\n",
+        " -0.100000E+01     6     6  6.273170E+09\n",
+    ];
+    let good = lines.concat();
+    read_added_mass_damping(&write(&dir, "good.1", &good), &WamitOptions::default()).unwrap();
+    let cut_exponent = good.replace("6.273170E+09\n", "6.273170");
+    let wrong_digits = good.replace("E+09", "E+9");
+    for (name, text, field) in [
+        ("lost.1", cut_exponent, "field 4 (\"6.273170\")"),
+        ("short.1", wrong_digits, "field 4 (\"6.273170E+9\")"),
+    ] {
+        let path = write(&dir, name, &text);
+        let err = read_added_mass_damping(&path, &WamitOptions::default())
+            .unwrap_err()
+            .to_string();
+        assert!(
+            err.starts_with(&format!(
+                "{}:3: {field} has fewer digits than",
+                path.display()
+            )) && err.contains("on line 1 (\"8.526887E+03\")")
+                && err.contains("looks cut"),
+            "{err}"
+        );
+    }
+    // A column without exponents: decimals count on an unterminated last line only.
+    let f_format =
+        "  10.000   0.0   0.0  1  0.500  0.0  0.500  0.000\n  10.000   0.0   0.0  2  0.500  0.0  0.500  0.0";
+    let path = write(&dir, "cut.8", f_format);
+    let err = read_mean_drift(&path, &WamitOptions::default())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.starts_with(&format!(
+            "{}:2: field 8 (\"0.0\") has fewer digits",
+            path.display()
+        )) && err.contains("ends in this line without a newline"),
+        "{err}"
+    );
+    let limits_only = write(&dir, "limits.1", lines[0]);
+    let err = read_added_mass_damping(&limits_only, &WamitOptions::default())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.starts_with(&format!("{}: no frequency", limits_only.display())),
+        "{err}"
+    );
+}
+
 #[test]
 fn added_mass_damping_and_hydrostatics_scale_with_ulen() {
     let dir = temp_dir("scale");

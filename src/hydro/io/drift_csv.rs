@@ -8,6 +8,7 @@
 //! increasing frequencies. In a CSV file, blank lines and lines starting with `#` are
 //! skipped, fields are trimmed, and quoting follows RFC 4180 (the `csv` crate).
 
+use super::written::Written;
 use crate::error::{Error, Location, Result};
 use crate::hydro::{DriftRow, DriftTable};
 use std::path::Path;
@@ -154,9 +155,27 @@ pub fn read(path: &Path) -> Result<DriftTable> {
     let names: Vec<&str> = header.iter().collect();
     let fields = DriftFields::new(&names, &header_at)?;
     let mut rows = Vec::new();
-    for record in reader.records() {
+    let unterminated = !text.ends_with('\n');
+    let mut records = reader.records().peekable();
+    let mut previous: Option<csv::StringRecord> = None;
+    while let Some(record) = records.next() {
         let record = record.map_err(io)?;
         let line_at = at(record.position().map(csv::Position::line));
+        if let (true, None, Some(before)) = (unterminated, records.peek(), &previous) {
+            let cut = record
+                .iter()
+                .zip(before.iter())
+                .position(|(text, was)| Written::of(text).is_cut(&Written::of(was), true));
+            if let Some(f) = cut {
+                return Err(line_at.error(format!(
+                    "field \"{}\": \"{}\" has fewer digits than on the line before (\"{}\") \
+                     and the file ends in this line without a newline: the number looks cut",
+                    names.get(f).unwrap_or(&"(extra)"),
+                    &record[f],
+                    &before[f]
+                )));
+            }
+        }
         let values = record
             .iter()
             .zip(names.iter().chain(std::iter::repeat(&"(extra)")))
@@ -167,6 +186,7 @@ pub fn read(path: &Path) -> Result<DriftTable> {
             })
             .collect::<Result<Vec<f64>>>()?;
         rows.push(fields.row(&values, &line_at)?);
+        previous = Some(record);
     }
     DriftTable::from_rows(&rows)
 }

@@ -6,3 +6,4 @@ pub mod database;
 pub mod drift_csv;
 mod json_position;
 pub mod wamit;
+mod written;

@@ -62,6 +62,16 @@ pub fn read_added_mass_damping(path: &Path, options: &WamitOptions) -> Result<Ad
         }
     }
     let omegas = super::unique_sorted(finite, super::same_frequency);
+    if omegas.is_empty() {
+        return Err(crate::error::Error::Parse {
+            path: file.path.clone(),
+            line: None,
+            message: "no frequency (no line with PER > 0), only the limits PER = -1 (omega = \
+                      0) and 0 (omega = infinity): WAMIT writes them beside the frequencies it \
+                      computed; is the file cut?"
+                .into(),
+        });
+    }
     let mut zero = None;
     let mut infinite = None;
     let mut added_mass = vec![[[0.0; 6]; 6]; omegas.len()];

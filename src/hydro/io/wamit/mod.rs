@@ -18,7 +18,10 @@
 //! What the readers assume about a file: nothing about the order of its lines or of its
 //! DOFs. A first line that does not start with a number is a header and is skipped; blank
 //! lines are skipped; any other line must hold the documented count of numbers, or the
-//! error names the file, the 1-based line and what is wrong. An entry given twice is an
+//! error names the file, the 1-based line and what is wrong. A number written with fewer
+//! exponent digits than the same field of the first line of its length (an exponent lost:
+//! `6.273170` where the column writes `6.273170E+09`), or, on a last line that ends the
+//! file without a newline, with fewer decimals, is cut: an error. An entry given twice is an
 //! error naming both lines. Only single-body files (DOFs 1 to 6) are read.
 //!
 //! Time convention: WAMIT writes complex amplitudes for e^{i omega t}, the crate's own
@@ -38,6 +41,7 @@ pub use hydrostatics::{read_hydrostatics, Hydrostatics};
 pub use mean_drift::{read_mean_drift, DriftBlock, MeanDrift};
 pub use qtf::{read_difference_qtf, DifferenceQtf, QtfBlock};
 
+use super::written::Written;
 use crate::error::{require_positive, Error, Result};
 use crate::model::HEADING_MATCH_TOLERANCE;
 use std::f64::consts::PI;
@@ -154,6 +158,11 @@ impl NumericFile {
         let text = crate::files::read_text(path)?;
         let mut records = Vec::new();
         let mut seen_content = false;
+        // How the first numeric line of each field count writes its numbers: a later number
+        // written with less than that is cut (issue #15).
+        let mut references: Vec<(usize, Vec<(Written, &str)>)> = Vec::new();
+        let unterminated = !text.ends_with('\n');
+        let last_line = text.lines().count();
         for (k, line) in text.lines().enumerate() {
             let fields: Vec<&str> = line.split_whitespace().collect();
             if fields.is_empty() {
@@ -191,6 +200,29 @@ impl NumericFile {
                     ))),
                 })
                 .collect::<Result<Vec<f64>>>()?;
+            match references.iter().find(|(_, r)| r.len() == fields.len()) {
+                None => {
+                    references.push((k + 1, fields.iter().map(|t| (Written::of(t), *t)).collect()))
+                }
+                Some((reference_line, reference)) => {
+                    let last = unterminated && k + 1 == last_line;
+                    for (f, (text, (was, was_text))) in fields.iter().zip(reference).enumerate() {
+                        if Written::of(text).is_cut(was, last) {
+                            return Err(at(format!(
+                                "field {} (\"{text}\") has fewer digits than the same field \
+                                 on line {reference_line} (\"{was_text}\"){}: the number looks \
+                                 cut",
+                                f + 1,
+                                if last {
+                                    ", and the file ends in this line without a newline"
+                                } else {
+                                    ""
+                                }
+                            )));
+                        }
+                    }
+                }
+            }
             records.push(Record {
                 line: k + 1,
                 values,
