@@ -2,7 +2,8 @@
 libcosim on OspSystemStructure.xml, ecos and fmpy on MooredPlatform.ssp, three hours each
 (SlowDrift's default experiment, 1 s macro step, default sea, seed 1), against the fmpy-glue
 loop of mooring_loop.py (the same FMUs, the same sea: SlowDrift's records depend on the
-seed, not on the stop time, which no master here passes).
+seed, not on the stop time, so a master that passes the SSD's stop time of 10800 s and one
+that passes none, as libcosim and the glue loop, run the same sea).
 
 How the schemes differ, and what agreement they allow:
 - libcosim, ecos and fmpy's SSP master are Jacobi masters: every model steps from the same
