@@ -4,11 +4,14 @@
 //! resources/platform_drift.json, documentation/index.html), then loads the library from the
 //! archive through its C ABI, as a master would, runs the default platform in the default
 //! sea state for three hours and prints a short summary. Then the same for the mooring FMU,
-//! `target/fmu/Mooring.fmu` ([`mooring`]).
+//! `target/fmu/Mooring.fmu` ([`mooring`]), and last the coupled system for a co-simulation
+//! master, `target/fmu/system/` ([`system`]: both FMUs, their OSP model descriptions, the OSP
+//! system structure and the SSP package).
 
 mod archive;
 mod master;
 mod mooring;
+mod system;
 
 use slowdrift::fmi2::resources::{write_resources, RESOURCE_CONFIG, RESOURCE_DRIFT};
 use slowdrift::stats::summarize;
@@ -50,7 +53,8 @@ fn run() -> Result<(), String> {
         // A packed FMU that fails its own check must not be left for a master to find.
         let _ = std::fs::remove_file(&fmu_path);
     })?;
-    mooring::pack_and_check(&root, &target)
+    mooring::pack_and_check(&root, &target)?;
+    system::write(&root, &target.join("fmu"))
 }
 
 /// `cargo build --release --lib` with `args` (the package and its features).
@@ -99,7 +103,8 @@ fn pack(root: &Path, library: &Path, resources: &Path, fmu_path: &Path) -> Resul
     write_fmu(fmu_path, &entries)
 }
 
-/// Writes the archive of `entries` at `fmu_path`, creating its folder.
+/// Writes the archive of `entries` at `fmu_path` (an FMU or an SSP package: both are ZIP
+/// archives), creating its folder.
 fn write_fmu(fmu_path: &Path, entries: &[archive::Entry]) -> Result<(), String> {
     std::fs::create_dir_all(fmu_path.parent().expect("has a parent")).map_err(|e| e.to_string())?;
     let file =

@@ -6,10 +6,16 @@
 //!   MoorDyn's six coupled degrees of freedom: the frame and sign conventions, in one place.
 //! - [`moordyn`]: MoorDyn's C library, loaded at run time from beside this library, behind
 //!   a safe type (one mooring system, closed when dropped).
+//! - [`catenary`], [`lines_file`], [`quasi_static`]: the quasi-static alternative to
+//!   MoorDyn's dynamic lines (`mooringModel` = 1): each line an elastic catenary on a
+//!   frictionless seabed, read from the same MoorDyn input file.
 //! - [`fmi2`]: the C ABI (the 34 FMI 2.0 functions), its variables, and the state machine
 //!   and C types shared with SlowDrift's FMU (`src/fmi2/machine.rs`, `src/fmi2/types.rs` of
 //!   the workspace root).
 
+pub mod catenary;
 pub mod fmi2;
+pub mod lines_file;
 pub mod moordyn;
 pub mod planar;
+pub mod quasi_static;

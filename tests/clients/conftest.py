@@ -59,3 +59,35 @@ def unzipdir(fmu):
     d = extract(fmu)
     yield d
     shutil.rmtree(d, ignore_errors=True)
+
+
+@pytest.fixture(scope="session")
+def glue_runs(fmu, stiffness):
+    """The fmpy-glue loop for the FMU's default experiment (three hours at 1 s), once per
+    session: "moored", SlowDrift (internal stiffness off) moored by MoorDyn's Python API in
+    the Gauss-Seidel scheme (mooring_loop.run_loop); "linear", SlowDrift alone with its
+    internal stiffness set to the lines' static stiffness diagonal (mooring_stiffness.py).
+    Records as mooring_loop.COLUMNS, also written to target/client-tests/."""
+    import time
+
+    import numpy as np
+
+    from mooring_loop import COLUMNS, LINES_ONLY, REPO, FmuBody, default_experiment, run_free, run_loop
+
+    k = np.array(stiffness["K"])
+    duration, dt = default_experiment(fmu)
+    t0 = time.perf_counter()
+    with FmuBody(fmu, LINES_ONLY, instance_name="moored") as body:
+        moored = run_loop(body, duration, dt)
+    t1 = time.perf_counter()
+    with FmuBody(fmu, {"stiffnessSurge": k[0, 0], "stiffnessSway": k[1, 1], "stiffnessYaw": k[2, 2]},
+                 instance_name="linear") as body:
+        linear = run_free(body, duration, dt)
+    t2 = time.perf_counter()
+    out = os.path.join(REPO, "target", "client-tests")
+    os.makedirs(out, exist_ok=True)
+    for name, rec in (("mooring_loop_moored.csv", moored), ("mooring_loop_linear.csv", linear)):
+        np.savetxt(os.path.join(out, name), rec, delimiter=",", header=",".join(COLUMNS), comments="")
+    print(f"\nmooring loop: {duration:.0f} s in steps of {dt:g} s; moored run {t1 - t0:.1f} s, "
+          f"linear run {t2 - t1:.1f} s (records in {out})")
+    return {"moored": moored, "linear": linear, "K": k, "dt": dt}

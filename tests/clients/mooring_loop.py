@@ -1,16 +1,26 @@
-"""Closed mooring loop: SlowDrift FMU (or any body with the same interface) + MoorDyn (issue #4).
+"""Closed mooring loop: SlowDrift FMU (or any body with the same interface) + MoorDyn (issue #4),
+in the two explicit coupling schemes a co-simulation master uses (issue #12).
 
-Coupling scheme (explicit, one MoorDyn call and one body step per communication step, no
-iteration): at the communication point t_n the body's state (X, Y, theta) and velocity
-(Xdot, Ydot, thetadot) are read; MoorDyn advances its lines from t_n to t_n + dt while moving
-the fairleads from that state along that velocity (MoorDyn's coupled-body kinematics are
-linear over a step), and returns the line force at t_n + dt; that force (Fx, Fy and Mz, the
-moment about z, index 5 of MoorDyn's 6 components) is set on Fx_ext, Fy_ext, Mz_ext and held
-over the body's step from t_n to t_n + dt. So the force applied over a step depends only on
-the body's state at the start of that step (the previous step's result). Holding the force
-computed for the end of the step is a lead of about dt / 2 on the average force over the
-step: for a linear spring K it adds a numerical damping K dt / 2 (7e4 N s/m here, a damping
-ratio of 0.7 % of critical at the 210 s surge period), and it does not move the mean.
+One MoorDyn call and one body step per communication step, no iteration. At the
+communication point t_n the body's state (X, Y, theta) and velocity (Xdot, Ydot, thetadot)
+are read; MoorDyn advances its lines from t_n to t_n + dt while moving the fairleads from
+that state along that velocity (MoorDyn's coupled-body kinematics are linear over a step),
+and returns the line force at t_n + dt (Fx, Fy and Mz, the moment about z, index 5 of
+MoorDyn's 6 components). The schemes differ in which force the body holds over its step
+from t_n to t_n + dt:
+
+- Gauss-Seidel (scheme="gauss-seidel", the default; the fmpy-glue loop of
+  test_mooring_loop.py): the mooring steps first and the body holds the force it has just
+  returned, the line force at t_n + dt. Holding the force computed for the end of the step
+  is a lead of about dt / 2 on the average force over the step: for a linear spring K it
+  adds a numerical damping K dt / 2 (7e4 N s/m here, a damping ratio of pi dt / (2 T_n),
+  0.8 % of critical at the 207 s surge period), and it does not move the mean.
+- Jacobi (scheme="jacobi"; libcosim, ecos and fmpy's SSP master, which step every model
+  from the same communication point and pass the outputs on afterwards): both step from
+  t_n, and the body holds the force the mooring returned at the end of the previous step,
+  the line force at t_n (at t_0: the mooring's output after its initialisation). That is
+  one step later than Gauss-Seidel: a lag of about dt / 2, a numerical damping of
+  -K dt / 2, the same size with the opposite sign, and again no mean force.
 
 The body interface: state() -> (q, qdot) as arrays (X, Y, theta), (Xdot, Ydot, thetadot);
 set_force(F) with F = (Fx, Fy, Mz) in the inertial frame; do_step(t, dt).
@@ -32,6 +42,21 @@ INPUT_NAMES = ("Fx_ext", "Fy_ext", "Mz_ext")
 
 # Columns of the record returned by run_loop / run_free.
 COLUMNS = ("t", "X", "Y", "theta", "Xdot", "Ydot", "thetadot", "Fx", "Fy", "Mz")
+
+
+# SlowDrift's parameters that switch its internal linear mooring off (the system files set
+# the same: its mooring is then the lines alone).
+LINES_ONLY = {"stiffnessSurge": 0.0, "stiffnessSway": 0.0, "stiffnessYaw": 0.0}
+
+
+def default_experiment(path):
+    """(stop time, step size) of an FMU's DefaultExperiment (SlowDrift: three hours at 1 s)."""
+    from fmpy import read_model_description
+
+    de = read_model_description(path).defaultExperiment
+    stop = float(de.stopTime) if de is not None and de.stopTime is not None else 10800.0
+    step = float(de.stepSize) if de is not None and de.stepSize is not None else 1.0
+    return stop, step
 
 
 def fmu_path():
@@ -134,6 +159,10 @@ class MooringFmu:
         self.fmu.setReal(self.in_vr, [float(x) for x in (*q0, *qdot0)])
         self.fmu.exitInitializationMode()
 
+    def initial_force(self):
+        """The outputs (Fx, Fy, Mz) after initialisation: the static line force at q0."""
+        return np.array(self.fmu.getReal(self.out_vr))
+
     def step(self, q, qdot, t, dt):
         self.fmu.setReal(self.in_vr, [float(x) for x in (*q, *qdot)])
         self.fmu.doStep(currentCommunicationPoint=t, communicationStepSize=dt)
@@ -155,25 +184,32 @@ class MooringFmu:
         self.close()
 
 
-def run_loop(body, duration, dt=1.0, dat=DEFAULT_DAT, mooring=Mooring):
+def run_loop(body, duration, dt=1.0, dat=DEFAULT_DAT, mooring=Mooring, scheme="gauss-seidel"):
     """Couple body and the MoorDyn mooring explicitly for duration seconds of steps dt.
     mooring: the class of the mooring model (MoorDyn through its Python API, Mooring, or
-    through the mooring FMU, MooringFmu).
+    through the mooring FMU, MooringFmu; the Jacobi scheme needs MooringFmu's
+    initial_force). scheme: "gauss-seidel" or "jacobi" (module docstring).
 
     Returns an array with COLUMNS: row n holds the state at t_n and the force applied over
-    the step from t_n (the last row's force is the one MoorDyn returns at the end).
+    the step from t_n (the last row's force is the last one MoorDyn returned).
     """
+    if scheme not in ("gauss-seidel", "jacobi"):
+        raise ValueError(f"scheme must be gauss-seidel or jacobi, not {scheme!r}")
     n = int(round(duration / dt))
     rec = np.empty((n + 1, len(COLUMNS)))
     q, qd = body.state()
     with mooring(dat, q0=q, qdot0=qd) as mooring:
+        held = mooring.initial_force() if scheme == "jacobi" else None
         for k in range(n):
             t = k * dt
             q, qd = body.state()
             f = mooring.step(q, qd, t, dt)
-            rec[k] = (t, *q, *qd, *f)
-            body.set_force(f)
+            if scheme == "gauss-seidel":
+                held = f
+            rec[k] = (t, *q, *qd, *held)
+            body.set_force(held)
             body.do_step(t, dt)
+            held = f
         q, qd = body.state()
         rec[n] = (n * dt, *q, *qd, *f)
     return rec

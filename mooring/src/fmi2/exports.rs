@@ -324,7 +324,7 @@ pub unsafe extern "C" fn fmi2SetReal(
     }
 }
 
-/// This FMU has no Integer or Boolean variable: any value reference is unknown.
+/// This FMU has no Boolean variable: any value reference is unknown.
 unsafe fn no_variable(c: fmi2Component, call: Call, nvr: usize, kind: &str) -> fmi2Status {
     // SAFETY: see the module docs.
     unsafe {
@@ -341,23 +341,40 @@ unsafe fn no_variable(c: fmi2Component, call: Call, nvr: usize, kind: &str) -> f
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetInteger(
     c: fmi2Component,
-    _vr: *const fmi2ValueReference,
+    vr: *const fmi2ValueReference,
     nvr: usize,
-    _value: *mut fmi2Integer,
+    value: *mut fmi2Integer,
 ) -> fmi2Status {
     // SAFETY: see the module docs.
-    unsafe { no_variable(c, Call::GetInteger, nvr, "Integer") }
+    unsafe {
+        with_instance(c, Call::GetInteger, |inst| {
+            let vr = slice(vr, nvr, "vr")?;
+            let value = slice_mut(value, nvr, "value")?;
+            for (v, out) in vr.iter().zip(value) {
+                *out = inst.get_integer(*v)?;
+            }
+            Ok(())
+        })
+    }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SetInteger(
     c: fmi2Component,
-    _vr: *const fmi2ValueReference,
+    vr: *const fmi2ValueReference,
     nvr: usize,
-    _value: *const fmi2Integer,
+    value: *const fmi2Integer,
 ) -> fmi2Status {
     // SAFETY: see the module docs.
-    unsafe { no_variable(c, Call::SetInteger, nvr, "Integer") }
+    unsafe {
+        with_instance(c, Call::SetInteger, |inst| {
+            let vr = slice(vr, nvr, "vr")?;
+            let value = slice(value, nvr, "value")?;
+            vr.iter()
+                .zip(value)
+                .try_for_each(|(v, x)| inst.set_integer(*v, *x))
+        })
+    }
 }
 
 #[no_mangle]

@@ -1,20 +1,25 @@
-//! One instance of the mooring FMU: its FMI state, parameter, inputs and outputs, and the
-//! MoorDyn system it drives.
+//! One instance of the mooring FMU: its FMI state, parameters, inputs and outputs, and the
+//! lines it drives: MoorDyn's dynamic lines or the quasi-static catenaries
+//! (`mooringModel`).
 //!
-//! Coupling per communication step (`fmi2DoStep(t, h)`): MoorDyn advances its lines from t
-//! to t + h while it moves the fairleads from the inputs' position at t along their velocity
-//! (its coupled-body kinematics are linear over a call), and the outputs become the line
-//! force at t + h. An input set after a step therefore reaches the outputs only through the
-//! next step (`dependencies=""`). At initialisation the lines are brought to static
-//! equilibrium (MoorDyn_Init) at the inputs' position, and the outputs are their force there:
-//! the system is made when an output is first read in initialisation mode or at
-//! `fmi2ExitInitializationMode`, and made again if an input or the parameter changed since.
+//! Coupling per communication step (`fmi2DoStep(t, h)`): the fairleads move from the
+//! inputs' position at t along their velocity (MoorDyn's coupled-body kinematics are linear
+//! over a call) and the outputs become the line force at t + h: MoorDyn advances its lines
+//! from t to t + h; the quasi-static lines are in equilibrium at the position reached,
+//! q + h qdot. An input set after a step therefore reaches the outputs only through the
+//! next step (`dependencies=""`). At initialisation the lines are in static equilibrium at
+//! the inputs' position (MoorDyn_Init, or the catenaries), and the outputs are their force
+//! there: the lines are made when an output is first read in initialisation mode or at
+//! `fmi2ExitInitializationMode`, and made again if an input or a parameter changed since.
 
 use super::logger::Logger;
 use super::machine::{Call, MachineState};
-use super::variables::{Real, DEFAULT_MOORING, INPUTS, MOORING_FILE, OUTPUTS};
+use super::variables::{
+    Real, DEFAULT_MOORING, DYNAMIC, INPUTS, MOORING_FILE, MOORING_MODEL, OUTPUTS, QUASI_STATIC,
+};
 use crate::moordyn::{Library, System};
 use crate::planar::{body6, planar_force};
+use crate::quasi_static::QuasiStatic;
 use std::ffi::{c_char, CString};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -23,6 +28,12 @@ use std::sync::Arc;
 /// max(1, |t|).
 const TIME_TOLERANCE: f64 = 1e-9;
 
+/// The lines of one instance, as `mooringModel` chose.
+enum Lines {
+    Dynamic(System),
+    QuasiStatic(QuasiStatic),
+}
+
 pub struct Instance {
     pub logger: Logger,
     state: MachineState,
@@ -30,12 +41,13 @@ pub struct Instance {
     /// The unpacked FMU's `resources` folder.
     resources: PathBuf,
     mooring_file: String,
+    mooring_model: i32,
     time: f64,
     inputs: [f64; INPUTS.len()],
     outputs: [f64; OUTPUTS.len()],
-    system: Option<System>,
-    /// The inputs and file the system was initialised with, while in initialisation mode.
-    made_for: Option<([f64; INPUTS.len()], String)>,
+    lines: Option<Lines>,
+    /// The inputs, file and model the lines were made for, while in initialisation mode.
+    made_for: Option<([f64; INPUTS.len()], String, i32)>,
     /// The last String handed to the host by `fmi2GetString`.
     string_out: CString,
 }
@@ -48,10 +60,11 @@ impl Instance {
             library: Arc::new(library),
             resources,
             mooring_file: String::new(),
+            mooring_model: DYNAMIC,
             time: 0.0,
             inputs: [0.0; INPUTS.len()],
             outputs: [0.0; OUTPUTS.len()],
-            system: None,
+            lines: None,
             made_for: None,
             string_out: CString::default(),
         }
@@ -88,7 +101,7 @@ impl Instance {
     }
 
     pub fn exit_initialization_mode(&mut self) -> Result<(), String> {
-        self.make_system()?;
+        self.make_lines()?;
         self.made_for = None;
         self.state = MachineState::StepComplete;
         Ok(())
@@ -98,11 +111,12 @@ impl Instance {
         self.state = MachineState::Terminated;
     }
 
-    /// As freshly instantiated: start values, no system.
+    /// As freshly instantiated: start values, no lines.
     pub fn reset(&mut self) {
-        self.system = None;
+        self.lines = None;
         self.made_for = None;
         self.mooring_file.clear();
+        self.mooring_model = DYNAMIC;
         self.time = 0.0;
         self.inputs = [0.0; INPUTS.len()];
         self.outputs = [0.0; OUTPUTS.len()];
@@ -126,7 +140,7 @@ impl Instance {
             Some(Real::Input(i)) => Ok(self.inputs[i]),
             Some(Real::Output(i)) => {
                 if self.state == MachineState::InitializationMode {
-                    self.make_system()?;
+                    self.make_lines()?;
                 }
                 Ok(self.outputs[i])
             }
@@ -134,18 +148,48 @@ impl Instance {
         }
     }
 
+    /// Parameters are fixed: settable until `fmi2ExitInitializationMode`.
+    fn check_parameter(&self, name: &str) -> Result<(), String> {
+        if matches!(
+            self.state,
+            MachineState::Instantiated | MachineState::InitializationMode
+        ) {
+            Ok(())
+        } else {
+            Err(format!(
+                "{name} is a fixed parameter: set it before fmi2ExitInitializationMode"
+            ))
+        }
+    }
+
+    pub fn set_integer(&mut self, vr: u32, value: i32) -> Result<(), String> {
+        if vr != MOORING_MODEL {
+            return Err(format!("no Integer variable has value reference {vr}"));
+        }
+        self.check_parameter("mooringModel")?;
+        if value != DYNAMIC && value != QUASI_STATIC {
+            return Err(format!(
+                "invalid FMU parameter mooringModel = {value}: must be {DYNAMIC} (dynamic, \
+                 MoorDyn's lines) or {QUASI_STATIC} (quasi-static catenaries)"
+            ));
+        }
+        self.mooring_model = value;
+        Ok(())
+    }
+
+    pub fn get_integer(&self, vr: u32) -> Result<i32, String> {
+        if vr == MOORING_MODEL {
+            Ok(self.mooring_model)
+        } else {
+            Err(format!("no Integer variable has value reference {vr}"))
+        }
+    }
+
     pub fn set_string(&mut self, vr: u32, value: &str) -> Result<(), String> {
         if vr != MOORING_FILE {
             return Err(format!("no String variable has value reference {vr}"));
         }
-        if !matches!(
-            self.state,
-            MachineState::Instantiated | MachineState::InitializationMode
-        ) {
-            return Err("mooringFile is a fixed parameter: set it before \
-                        fmi2ExitInitializationMode"
-                .into());
-        }
+        self.check_parameter("mooringFile")?;
         if value.contains('\0') {
             return Err("mooringFile contains a NUL byte".into());
         }
@@ -172,21 +216,30 @@ impl Instance {
         }
     }
 
-    /// Makes the MoorDyn system at the inputs' position (unless it was made for the same
-    /// inputs and file) and sets the outputs to its static force.
-    fn make_system(&mut self) -> Result<(), String> {
-        let key = (self.inputs, self.mooring_file.clone());
-        if self.system.is_some() && self.made_for.as_ref() == Some(&key) {
+    /// Makes the lines at the inputs' position (unless they were made for the same inputs,
+    /// file and model) and sets the outputs to their static force.
+    fn make_lines(&mut self) -> Result<(), String> {
+        let key = (self.inputs, self.mooring_file.clone(), self.mooring_model);
+        if self.lines.is_some() && self.made_for.as_ref() == Some(&key) {
             return Ok(());
         }
-        self.system = None;
-        let (x, xd) = self.kinematics();
+        self.lines = None;
         let input = self.input_file();
-        let mut system = System::new(Arc::clone(&self.library), &input, x, xd)
-            .map_err(|e| with_parameter(&self.mooring_file, &input, e))?;
-        let force = system.step(x, xd, self.time, 0.0)?;
-        self.set_outputs(&system, force)?;
-        self.system = Some(system);
+        let lines = if self.mooring_model == QUASI_STATIC {
+            let lines = QuasiStatic::read(&input)
+                .map_err(|e| with_parameter(&self.mooring_file, &input, e))?;
+            let q = [self.inputs[0], self.inputs[1], self.inputs[2]];
+            self.set_quasi_static_outputs(&lines, q)?;
+            Lines::QuasiStatic(lines)
+        } else {
+            let (x, xd) = self.kinematics();
+            let mut system = System::new(Arc::clone(&self.library), &input, x, xd)
+                .map_err(|e| with_parameter(&self.mooring_file, &input, e))?;
+            let force = system.step(x, xd, self.time, 0.0)?;
+            self.set_outputs(&system, force)?;
+            Lines::Dynamic(system)
+        };
+        self.lines = Some(lines);
         self.made_for = Some(key);
         Ok(())
     }
@@ -199,10 +252,20 @@ impl Instance {
     fn set_outputs(&mut self, system: &System, force: [f64; 6]) -> Result<(), String> {
         let [fx, fy, mz] = planar_force(force);
         let tension = system.max_fairlead_tension()?;
-        let outputs = [fx, fy, mz, tension];
+        self.check_and_set([fx, fy, mz, tension], "MoorDyn")
+    }
+
+    /// The outputs: the quasi-static lines' force with the platform at q.
+    fn set_quasi_static_outputs(&mut self, lines: &QuasiStatic, q: [f64; 3]) -> Result<(), String> {
+        let f = lines.force(q)?;
+        let [fx, fy, mz] = f.planar;
+        self.check_and_set([fx, fy, mz, f.max_tension], "the quasi-static lines")
+    }
+
+    fn check_and_set(&mut self, outputs: [f64; OUTPUTS.len()], from: &str) -> Result<(), String> {
         if let Some(i) = outputs.iter().position(|v| !v.is_finite()) {
             return Err(format!(
-                "MoorDyn returned {} = {} at t = {} s",
+                "{from} returned {} = {} at t = {} s",
                 OUTPUTS[i], outputs[i], self.time
             ));
         }
@@ -220,13 +283,24 @@ impl Instance {
                 self.time
             ));
         }
-        let (x, xd) = self.kinematics();
-        let mut system = self.system.take().ok_or("no MoorDyn system")?;
-        let result = system
-            .step(x, xd, t, h)
-            .map_err(|e| format!("{e} in the step from t = {t} s"))
-            .and_then(|force| self.set_outputs(&system, force));
-        self.system = Some(system);
+        let mut lines = self.lines.take().ok_or("no mooring lines")?;
+        let result = match &mut lines {
+            Lines::Dynamic(system) => {
+                let (x, xd) = self.kinematics();
+                system
+                    .step(x, xd, t, h)
+                    .map_err(|e| format!("{e} in the step from t = {t} s"))
+                    .and_then(|force| self.set_outputs(system, force))
+            }
+            Lines::QuasiStatic(quasi_static) => {
+                // The position the fairleads reach at t + h, as MoorDyn moves them.
+                let i = self.inputs;
+                let q = [i[0] + h * i[3], i[1] + h * i[4], i[2] + h * i[5]];
+                self.set_quasi_static_outputs(quasi_static, q)
+                    .map_err(|e| format!("{e} in the step from t = {t} s"))
+            }
+        };
+        self.lines = Some(lines);
         result?;
         self.time = t + h;
         Ok(())

@@ -6,6 +6,10 @@ pub const GUID: &str = "{28340ea3-9278-444d-aad1-d64fa1e238e1}";
 pub const MODEL_IDENTIFIER: &str = "Mooring";
 /// The String parameter `mooringFile`.
 pub const MOORING_FILE: u32 = 0;
+/// The Integer parameter `mooringModel` and its codes.
+pub const MOORING_MODEL: u32 = 0;
+pub const DYNAMIC: i32 = 0;
+pub const QUASI_STATIC: i32 = 1;
 /// The Real inputs X, Y, theta, Xdot, Ydot, thetadot: value references 0..6, in this order.
 pub const INPUTS: [&str; 6] = ["X", "Y", "theta", "Xdot", "Ydot", "thetadot"];
 /// The Real outputs Fx, Fy, Mz, fairleadTensionMax: value references 10..14, in this order.
@@ -101,6 +105,12 @@ mod tests {
         for (i, n) in OUTPUTS.iter().enumerate() {
             expected.push((n.to_string(), FIRST_OUTPUT + i as u32, "output", "Real"));
         }
+        expected.push((
+            "mooringModel".to_string(),
+            MOORING_MODEL,
+            "parameter",
+            "Integer",
+        ));
         let found: Vec<_> = vars
             .iter()
             .map(|(n, vr, c, t, _)| (n.clone(), *vr, c.as_str(), t.as_str()))
