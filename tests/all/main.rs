@@ -21,6 +21,7 @@ mod fmi2_state;
 mod fmi2_symbols;
 mod full_qtf;
 mod full_qtf_directions;
+mod fuzz;
 mod montecarlo;
 mod nemoh;
 mod newman;

@@ -42,7 +42,7 @@ pub fn read_added_mass_damping(path: &Path, options: &WamitOptions) -> Result<Ad
     for r in &file.records {
         let period = r.values[0];
         if period > 0.0 {
-            finite.push(super::omega_of_period(period));
+            finite.push(file.frequency(r, 0, "PER")?);
         } else if period != 0.0 && period != -1.0 {
             return Err(file.error(
                 r.line,

@@ -315,12 +315,16 @@ impl NumericFile {
     /// Field `k` of `record` as a positive period, converted to omega = 2 pi / PER.
     fn frequency(&self, record: &Record, k: usize, name: &str) -> Result<f64> {
         let period = record.values[k];
-        if period > 0.0 {
-            Ok(omega_of_period(period))
+        let omega = omega_of_period(period);
+        if period > 0.0 && omega.is_finite() {
+            Ok(omega)
         } else {
             Err(self.error(
                 record.line,
-                format!("{name} = {period}: the period must be greater than zero"),
+                format!(
+                    "{name} = {period}: the period must be greater than zero (and give a finite \
+                     frequency 2 pi / PER)"
+                ),
             ))
         }
     }
