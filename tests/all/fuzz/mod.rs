@@ -55,11 +55,14 @@ pub enum Outcome {
     Finding(String),
 }
 
+/// What a target does with one input (and its working directory).
+pub type Run = Box<dyn Fn(&[u8], &Path) -> Outcome>;
+
 /// A fuzz target: its seeds and what it does with one input.
 pub struct Target {
     pub name: &'static str,
     pub seeds: Vec<Vec<u8>>,
-    pub run: Box<dyn Fn(&[u8], &Path) -> Outcome>,
+    pub run: Run,
 }
 
 fn seconds() -> f64 {

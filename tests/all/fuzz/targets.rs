@@ -66,7 +66,7 @@ fn exercise(problem: Problem) -> Outcome {
 /// bi-directional table), as JSON.
 fn small_database() -> String {
     let mut drift = Vec::new();
-    for h in [0.0, 1.5707963267948966, 3.141592653589793, 4.71238898038469] {
+    for h in [0.0, 0.5, 1.0, 1.5].map(|turns| turns * std::f64::consts::PI) {
         for w in [0.2, 0.8, 2.5] {
             drift.push(format!(
                 "{{\"omega\": {w}, \"heading\": {h}, \"surge\": {}, \"sway\": 1.5e3, \"yaw\": -2.0e4, \
@@ -84,7 +84,7 @@ fn small_database() -> String {
          \"stiffness\": null,\n\"drift\": [\n{}\n],\n\
          \"qtf\": {{\"omegas\": [0.2, 0.8], \"blocks\": [{{\"dof\": \"surge\", \"heading\": 0.0, \
          \"re\": [[2.0e3, 1.0e3], [1.0e3, 8.0e3]], \"im\": [[0.0, 5.0e2], [-5.0e2, 0.0]]}}]}},\n\
-         \"bidirectional_drift\": {{\"omegas\": [0.2, 2.5], \"headings\": [0.0, 1.5707963267948966], \
+         \"bidirectional_drift\": {{\"omegas\": [0.2, 2.5], \"headings\": [0.0, 1.5], \
          \"re\": [{pairs}, {pairs}], \"im\": [{pairs}, {pairs}]}}\n}}\n",
         drift.join(",\n")
     )
