@@ -20,7 +20,6 @@ mod plot;
 use clap::{Args, CommandFactory, Parser, Subcommand};
 use cli::args::Checked;
 use cli::Failure;
-use slowdrift::problem::{self, default_problem};
 use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
 use slowdrift::stats::{summarize, Summary};
 use slowdrift::{Outputs, Simulation};
@@ -71,6 +70,10 @@ struct SimulateArgs {
     /// periods, at most half the run]
     #[arg(long, value_name = "SECONDS", allow_hyphen_values = true, value_parser = Checked(transient))]
     transient: Option<f64>,
+    /// Memory the records may take, GB (1e9 bytes): larger estimates are refused [default:
+    /// the configuration's run.memory_limit_gb, 4]
+    #[arg(long, value_name = "GB", allow_hyphen_values = true, value_parser = cli::args::gigabytes())]
+    memory_limit_gb: Option<f64>,
 }
 
 /// `--transient SECONDS` of `simulate`.
@@ -114,13 +117,10 @@ fn run(cli: Cli) -> Result<(), Failure> {
 }
 
 fn simulate(args: SimulateArgs) -> Result<(), String> {
-    let config = match &args.config {
-        Some(path) => problem::load(path).map_err(|e| e.to_string())?,
-        None => {
-            println!("embedded default platform; drift: {DEFAULT_DRIFT_LABEL}");
-            default_problem().map_err(|e| e.to_string())?
-        }
-    };
+    if args.config.is_none() {
+        println!("embedded default platform; drift: {DEFAULT_DRIFT_LABEL}");
+    }
+    let config = cli::args::load_problem(args.config.as_deref(), args.memory_limit_gb)?;
     let transient = args.transient.unwrap_or_else(|| config.default_transient());
     if let Some(trim) = config.band_trim() {
         println!(

@@ -64,3 +64,29 @@ pub fn seconds(positive: bool) -> Checked<impl Fn(&str, &str) -> Result<f64, Str
 pub fn all_cores() -> usize {
     std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)
 }
+
+/// `--memory-limit-gb GB`, a finite positive number of gigabytes.
+pub fn gigabytes() -> Checked<impl Fn(&str, &str) -> Result<f64, String> + Clone> {
+    Checked(|flag: &str, value: &str| match value.parse::<f64>() {
+        Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
+        _ => Err(format!("{flag} {value}: must be a positive number of GB")),
+    })
+}
+
+/// The problem of `--config` (else the embedded default), `--memory-limit-gb` (when given)
+/// written over its `run.memory_limit_gb` before it is resolved, so that a column solver's
+/// table is budgeted against it too.
+pub fn load_problem(
+    config: Option<&std::path::Path>,
+    memory_limit_gb: Option<f64>,
+) -> Result<slowdrift::Problem, String> {
+    let mut scenario = match config {
+        Some(path) => slowdrift::scenario::file::load(path),
+        None => slowdrift::scenario::default::default_scenario(),
+    }
+    .map_err(|e| e.to_string())?;
+    if let Some(gb) = memory_limit_gb {
+        scenario.run.memory_limit = gb * slowdrift::error::BYTES_PER_GB;
+    }
+    slowdrift::problem::resolve(&scenario).map_err(|e| e.to_string())
+}

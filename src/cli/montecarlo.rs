@@ -13,7 +13,7 @@
 //! ([`super::interrupt`]): the summary of the runs done is written and the command to
 //! resume printed.
 
-use super::args::{all_cores, seconds, whole};
+use super::args::{all_cores, gigabytes, load_problem, seconds, whole};
 use super::interrupt::{this_command, Interrupts, Signal};
 use super::Failure;
 use clap::Args;
@@ -21,7 +21,6 @@ use slowdrift::fmi2::campaign;
 use slowdrift::montecarlo::cases::{open_case_table, CaseRow};
 use slowdrift::montecarlo::runs_file::{self, RunRow, RunsFile};
 use slowdrift::montecarlo::{run_jobs, seed_statistics, Case, Job, DOFS, STATISTICS};
-use slowdrift::problem::{self, default_problem};
 use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
 use slowdrift::Problem;
 use std::io::{IsTerminal, Write};
@@ -67,6 +66,11 @@ pub struct MontecarloArgs {
     /// Threads, at least 1 (the results do not depend on it) [default: all cores]
     #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = whole(1usize))]
     threads: Option<usize>,
+    /// Memory one run's records may take, GB (1e9 bytes): larger estimates are refused; a
+    /// campaign holds up to one run per thread [default: the configuration's
+    /// run.memory_limit_gb, 4]
+    #[arg(long, value_name = "GB", allow_hyphen_values = true, value_parser = gigabytes())]
+    memory_limit_gb: Option<f64>,
     /// The summary, one line per case and DOF; the runs go to RESULTS.runs.csv beside it,
     /// appended as they finish, and a restart with the same --out resumes (required unless
     /// --print-cases)
@@ -93,6 +97,7 @@ struct Options {
     duration: Option<f64>,
     transient: Option<f64>,
     threads: usize,
+    memory_limit_gb: Option<f64>,
     out: PathBuf,
 }
 
@@ -113,6 +118,7 @@ fn command(args: MontecarloArgs) -> Result<Command, String> {
         duration,
         transient,
         threads,
+        memory_limit_gb,
         out,
         print_cases,
     } = args;
@@ -126,6 +132,7 @@ fn command(args: MontecarloArgs) -> Result<Command, String> {
             duration,
             transient,
             threads: 1,
+            memory_limit_gb,
             out: PathBuf::new(),
         }));
     }
@@ -145,6 +152,7 @@ fn command(args: MontecarloArgs) -> Result<Command, String> {
         duration,
         transient,
         threads: threads.unwrap_or_else(all_cores),
+        memory_limit_gb,
         out,
     }))
 }
@@ -166,15 +174,10 @@ pub fn run(args: MontecarloArgs) -> Result<(), Failure> {
 /// The base configuration as the file gives it (else the embedded default), and the one
 /// the cases are made on (with `--duration` applied).
 fn load_base(options: &Options, announce: bool) -> Result<(Problem, Problem), String> {
-    let file_base = match &options.config {
-        Some(path) => problem::load(path).map_err(|e| e.to_string())?,
-        None => {
-            if announce {
-                println!("embedded default platform; drift: {DEFAULT_DRIFT_LABEL}");
-            }
-            default_problem().map_err(|e| e.to_string())?
-        }
-    };
+    if announce && options.config.is_none() {
+        println!("embedded default platform; drift: {DEFAULT_DRIFT_LABEL}");
+    }
+    let file_base = load_problem(options.config.as_deref(), options.memory_limit_gb)?;
     let mut base = file_base.clone();
     if let Some(duration) = options.duration {
         base.run.duration = duration;

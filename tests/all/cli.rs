@@ -626,3 +626,29 @@ fn study_refuses_bad_arguments() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `--memory-limit-gb` (of `simulate`, as of `montecarlo`) is the budget of the records: the
+/// default's (tens of MB) are refused at 0.001 GB naming the limit as set, and run at 1 GB;
+/// a limit that is not a positive number is a usage error naming the option.
+#[test]
+fn the_memory_limit_is_a_cli_option() {
+    let refused = slowdrift(&["simulate", "--memory-limit-gb", "0.001"]);
+    let stderr = String::from_utf8_lossy(&refused.stderr);
+    assert_eq!(refused.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("needs ")
+            && stderr.contains("the limit is 1.000 MB (run.memory_limit_gb = 0.001)"),
+        "{stderr}"
+    );
+    let accepted = slowdrift(&["simulate", "--memory-limit-gb", "1"]);
+    assert_eq!(
+        accepted.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&accepted.stderr)
+    );
+    let bad = slowdrift(&["simulate", "--memory-limit-gb", "-1"]);
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&bad.stderr)
+        .contains("--memory-limit-gb -1: must be a positive number of GB"));
+}
