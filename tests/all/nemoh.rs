@@ -464,3 +464,51 @@ fn the_cli_writes_the_library_import() {
     assert!(!missing.status.success());
     assert!(String::from_utf8_lossy(&missing.stderr).contains("no Nemoh.cal"));
 }
+
+/// Numbers cut short (issue #15 part 5) in NEMOH's matrix files: a mantissa whose exponent
+/// was lost in `CM.dat` (a value 1e7 times too small that would parse), and `Inertia.dat`
+/// ending inside its last number without a newline, are refused naming `file:line` and the
+/// field; the intact files read.
+#[test]
+fn nemoh_matrices_with_a_number_cut_are_refused_at_file_and_line() {
+    let Some(dir) = oc3_dir_or_skip() else {
+        return;
+    };
+    let copy = temp_dir("nemoh-cut");
+    let cm = std::fs::read_to_string(dir.join("results/CM.dat")).unwrap();
+    assert!(nemoh::matrices::read_frequency_matrices(&dir.join("results/CM.dat"), 6).is_ok());
+    // Line 5 is the third row of the first matrix; its third field loses its exponent.
+    let mut lines: Vec<String> = cm.lines().map(str::to_string).collect();
+    let fields: Vec<&str> = lines[4].split_whitespace().collect();
+    let (mantissa, exponent) = fields[2].split_once('E').expect("a Fortran E exponent");
+    assert!(!exponent.is_empty());
+    let cut = lines[4].replacen(fields[2], mantissa, 1);
+    lines[4] = cut;
+    let path = copy.join("CM.dat");
+    std::fs::write(&path, lines.join("\n") + "\n").unwrap();
+    let message = nemoh::matrices::read_frequency_matrices(&path, 6)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        message.contains("CM.dat:5:") && message.contains("field 3") && message.contains("cut"),
+        "{message}"
+    );
+
+    let inertia = std::fs::read_to_string(dir.join("Mechanics/Inertia.dat")).unwrap();
+    assert!(nemoh::matrices::read_matrix6(&dir.join("Mechanics/Inertia.dat")).is_ok());
+    let whole = inertia.trim_end();
+    let last_line = whole.lines().count();
+    // Cut inside the last number: drop its exponent's last digit and everything after.
+    let cut = &whole[..whole.len() - 1];
+    let path = copy.join("Inertia.dat");
+    std::fs::write(&path, cut).unwrap();
+    let message = nemoh::matrices::read_matrix6(&path)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        message.contains(&format!("Inertia.dat:{last_line}:"))
+            && message.contains("field 6")
+            && message.contains("without a newline"),
+        "{message}"
+    );
+}

@@ -37,3 +37,44 @@ impl Written {
         exponent_lost || (last && shorter)
     }
 }
+
+/// A field read as a cut copy of the same field of a reference row: its 0-based index, its
+/// text and the reference's text.
+pub struct Cut<'a> {
+    pub field: usize,
+    pub text: &'a str,
+    pub was: &'a str,
+}
+
+impl Cut<'_> {
+    /// The message a reader gives, naming the field (1-based) and the reference row's line;
+    /// `last` says the file ends in this row without a newline.
+    pub fn message(&self, reference_line: usize, last: bool) -> String {
+        format!(
+            "field {} (\"{}\") has fewer digits than the same field on line {reference_line} \
+             (\"{}\"){}: the number looks cut",
+            self.field + 1,
+            self.text,
+            self.was,
+            if last {
+                ", and the file ends in this line without a newline"
+            } else {
+                ""
+            }
+        )
+    }
+}
+
+/// The first field of `fields` that is a cut copy of the same field of `reference` (see
+/// [`Written::is_cut`]); fields beyond the reference's are not compared.
+pub fn first_cut<'a>(fields: &[&'a str], reference: &[&'a str], last: bool) -> Option<Cut<'a>> {
+    fields
+        .iter()
+        .zip(reference)
+        .position(|(text, was)| Written::of(text).is_cut(&Written::of(was), last))
+        .map(|field| Cut {
+            field,
+            text: fields[field],
+            was: reference[field],
+        })
+}

@@ -4,6 +4,7 @@
 //! columns follow Nemoh.cal's degrees of freedom. Errors name `file:line` and the field.
 
 use crate::error::{Error, Result};
+use crate::hydro::io::written::first_cut;
 use std::path::Path;
 
 /// Matrices at frequencies, as `CM.dat` and `CA.dat` hold them: a header line ending with
@@ -17,30 +18,88 @@ pub struct FrequencyMatrices {
     pub matrices: Vec<Vec<Vec<f64>>>,
 }
 
-/// The numbers of one line, or an error naming `path:line` and the token.
-fn numbers(path: &str, line: usize, text: &str) -> Result<Vec<f64>> {
-    text.split_whitespace()
-        .enumerate()
-        .map(|(k, t)| match t.parse::<f64>() {
-            Ok(v) if v.is_finite() => Ok(v),
-            _ => Err(Error::Parse {
-                path: path.to_string(),
-                line: Some(line),
-                message: format!("field {} (\"{t}\") is not a finite number", k + 1),
-            }),
-        })
-        .collect()
+/// How the first row of a file writes its numbers (issue #15): a later row's number written
+/// with less (its exponent lost; on a last line without a newline, fewer digits) is cut.
+struct Reference<'a> {
+    line: usize,
+    fields: Vec<&'a str>,
+}
+
+/// A file's text split into its non-empty lines (1-based line numbers), and whether the
+/// file ends without a newline (so its last line may be cut inside a number).
+struct Lines<'a> {
+    path: String,
+    rows: Vec<(usize, &'a str)>,
+    unterminated_last: Option<usize>,
+}
+
+impl<'a> Lines<'a> {
+    fn new(path: String, text: &'a str) -> Self {
+        let rows: Vec<(usize, &str)> = text
+            .lines()
+            .enumerate()
+            .map(|(k, l)| (k + 1, l))
+            .filter(|(_, l)| !l.trim().is_empty())
+            .collect();
+        let unterminated_last = if text.ends_with('\n') {
+            None
+        } else {
+            rows.last().map(|&(line, _)| line)
+        };
+        Lines {
+            path,
+            rows,
+            unterminated_last,
+        }
+    }
+
+    /// The numbers of `line`, or an error naming `path:line` and the field: not a finite
+    /// number, or a cut copy of the same field of `reference`'s row. The first row read
+    /// becomes the reference.
+    fn numbers(
+        &self,
+        line: usize,
+        text: &'a str,
+        reference: &mut Option<Reference<'a>>,
+    ) -> Result<Vec<f64>> {
+        let at = |message: String| Error::Parse {
+            path: self.path.clone(),
+            line: Some(line),
+            message,
+        };
+        let fields: Vec<&str> = text.split_whitespace().collect();
+        let values = fields
+            .iter()
+            .enumerate()
+            .map(|(k, t)| match t.parse::<f64>() {
+                Ok(v) if v.is_finite() => Ok(v),
+                _ => Err(at(format!(
+                    "field {} (\"{t}\") is not a finite number",
+                    k + 1
+                ))),
+            })
+            .collect::<Result<Vec<f64>>>()?;
+        match reference {
+            None => *reference = Some(Reference { line, fields }),
+            Some(r) => {
+                let last = self.unterminated_last == Some(line);
+                if let Some(cut) = first_cut(&fields, &r.fields, last) {
+                    return Err(at(cut.message(r.line, last)));
+                }
+            }
+        }
+        Ok(values)
+    }
 }
 
 /// Reads `CM.dat` or `CA.dat`: `size` x `size` matrices (the body's DOF count).
 pub fn read_frequency_matrices(path: &Path, size: usize) -> Result<FrequencyMatrices> {
     let name = path.display().to_string();
     let text = crate::files::read_text(path)?;
-    let mut lines = text
-        .lines()
-        .enumerate()
-        .map(|(k, l)| (k + 1, l))
-        .filter(|(_, l)| !l.trim().is_empty());
+    let file = Lines::new(name.clone(), &text);
+    let mut lines = file.rows.iter().copied();
+    let mut frequency_reference = None;
+    let mut row_reference = None;
     let at = |line: usize, message: String| Error::Parse {
         path: name.clone(),
         line: Some(line),
@@ -73,7 +132,7 @@ pub fn read_frequency_matrices(path: &Path, size: usize) -> Result<FrequencyMatr
             line: None,
             message: format!("the header announces {count} frequencies, the file ends after {k}"),
         })?;
-        let w = numbers(&name, line, text)?;
+        let w = file.numbers(line, text, &mut frequency_reference)?;
         if w.len() != 1 {
             return Err(at(
                 line,
@@ -88,7 +147,7 @@ pub fn read_frequency_matrices(path: &Path, size: usize) -> Result<FrequencyMatr
                 line: None,
                 message: format!("the matrix at frequency {} ends early", w[0]),
             })?;
-            let row = numbers(&name, line, text)?;
+            let row = file.numbers(line, text, &mut row_reference)?;
             if row.len() != size {
                 return Err(at(
                     line,
@@ -118,12 +177,8 @@ pub fn read_frequency_matrices(path: &Path, size: usize) -> Result<FrequencyMatr
 pub fn read_matrix6(path: &Path) -> Result<[[f64; 6]; 6]> {
     let name = path.display().to_string();
     let text = crate::files::read_text(path)?;
-    let rows: Vec<(usize, &str)> = text
-        .lines()
-        .enumerate()
-        .map(|(k, l)| (k + 1, l))
-        .filter(|(_, l)| !l.trim().is_empty())
-        .collect();
+    let file = Lines::new(name.clone(), &text);
+    let rows = &file.rows;
     if rows.len() != 6 {
         return Err(Error::Parse {
             path: name,
@@ -135,8 +190,9 @@ pub fn read_matrix6(path: &Path) -> Result<[[f64; 6]; 6]> {
         });
     }
     let mut out = [[0.0; 6]; 6];
+    let mut reference = None;
     for (i, &(line, text)) in rows.iter().enumerate() {
-        let v = numbers(&name, line, text)?;
+        let v = file.numbers(line, text, &mut reference)?;
         if v.len() != 6 {
             return Err(Error::Parse {
                 path: name,

@@ -42,7 +42,7 @@ pub use mean_drift::{read_mean_drift, DriftBlock, MeanDrift, PairBlock};
 pub(in crate::hydro::io) use qtf::{assemble_qtf, QtfEntry};
 pub use qtf::{read_difference_qtf, DifferenceQtf, QtfBlock};
 
-use super::written::Written;
+use super::written::first_cut;
 use crate::error::{require_positive, Error, Result};
 use crate::model::{FREQUENCY_MATCH_TOLERANCE, HEADING_MATCH_TOLERANCE};
 use std::f64::consts::PI;
@@ -164,7 +164,7 @@ impl NumericFile {
         let mut seen_content = false;
         // How the first numeric line of each field count writes its numbers: a later number
         // written with less than that is cut (issue #15).
-        let mut references: Vec<(usize, Vec<(Written, &str)>)> = Vec::new();
+        let mut references: Vec<(usize, Vec<&str>)> = Vec::new();
         let unterminated = !text.ends_with('\n');
         let last_line = text.lines().count();
         for (k, line) in text.lines().enumerate() {
@@ -205,25 +205,11 @@ impl NumericFile {
                 })
                 .collect::<Result<Vec<f64>>>()?;
             match references.iter().find(|(_, r)| r.len() == fields.len()) {
-                None => {
-                    references.push((k + 1, fields.iter().map(|t| (Written::of(t), *t)).collect()))
-                }
+                None => references.push((k + 1, fields.clone())),
                 Some((reference_line, reference)) => {
                     let last = unterminated && k + 1 == last_line;
-                    for (f, (text, (was, was_text))) in fields.iter().zip(reference).enumerate() {
-                        if Written::of(text).is_cut(was, last) {
-                            return Err(at(format!(
-                                "field {} (\"{text}\") has fewer digits than the same field \
-                                 on line {reference_line} (\"{was_text}\"){}: the number looks \
-                                 cut",
-                                f + 1,
-                                if last {
-                                    ", and the file ends in this line without a newline"
-                                } else {
-                                    ""
-                                }
-                            )));
-                        }
+                    if let Some(cut) = first_cut(&fields, reference, last) {
+                        return Err(at(cut.message(*reference_line, last)));
                     }
                 }
             }
