@@ -20,9 +20,9 @@ pub use budget::{MemoryEstimate, Term};
 
 use crate::error::{Error, Result};
 use crate::forces::{
-    direction_pairs, plan_inverse_fft, transfers_on_grid, yaw_transfers, DirectionTransfer,
-    ForceRecords, InverseFft, Join, QtfFactorisation, QtfGroup, RecordOptions, RecordWork,
-    Segments, Synthesizer, YawGrid,
+    direction_pairs, plan_inverse_fft, transfers_on_grid, yaw_transfers, DepthBasis,
+    DirectionTransfer, ForceRecords, InverseFft, Join, QtfFactorisation, QtfGroup, RecordOptions,
+    RecordWork, Segments, Synthesizer, YawGrid,
 };
 
 use crate::hydro::bidirectional::DirectionPairs;
@@ -32,6 +32,7 @@ use crate::model::{
 use crate::problem::{Hydro, Problem};
 use crate::sea_state::{Direction, FrequencyGrid, Spreading, WaveComponents};
 use serde::Serialize;
+use std::sync::Arc;
 
 /// Duration of the cross-fade between two blocks of the stream, s: far longer than the
 /// correlation time of the wave-frequency signals (tens of seconds), and a small fraction of
@@ -102,6 +103,10 @@ pub struct RecordPlan {
     /// The full QTF on the grid by groups of directions (second_order = "full-qtf").
     full_qtf: Option<Vec<QtfGroup>>,
     ranks: Vec<QtfRank>,
+    /// The drag kinematics' depth kernels of the problem's drafts on the grid and spectrum
+    /// (issue #16: made once here, not per seed); a seed whose spectrum, strips or drafts
+    /// differ makes its own.
+    depth_bases: Vec<Arc<DepthBasis>>,
 }
 
 /// What the yaw-following records need besides the seed.
@@ -242,8 +247,10 @@ impl RecordPlan {
                 (config.model.yaw_following.is_none().then_some(qtf), ranks)
             }
         };
+        let depth_bases = depth_bases(config, &grid);
         Ok(RecordPlan {
             key: PlanKey::of(config),
+            depth_bases,
             segments,
             fft: plan_inverse_fft(&grid),
             grid,
@@ -283,7 +290,7 @@ impl RecordPlan {
         let mut segment = Segment {
             index: 0,
             records: ForceRecords::empty(),
-            work: RecordWork::new(synth, &self.grid),
+            work: RecordWork::with_bases(synth, &self.grid, self.depth_bases.clone()),
             components: WaveComponents::generate_block(&config.sea, self.grid.clone(), 0),
         };
         self.build(config, &mut segment, 0, true);
@@ -360,6 +367,29 @@ pub(crate) struct Segment {
     pub records: ForceRecords,
     work: RecordWork,
     components: WaveComponents,
+}
+
+/// The depth kernel of every distinct draft of `config`'s drag columns on `grid` (none
+/// without drag).
+fn depth_bases(config: &Problem, grid: &FrequencyGrid) -> Vec<Arc<DepthBasis>> {
+    if config.model.drag == crate::model::DragModel::Off {
+        return Vec::new();
+    }
+    let power = WaveComponents::expected_power_of(&config.sea, grid);
+    let mut bases: Vec<Arc<DepthBasis>> = Vec::new();
+    for column in &config.platform.columns {
+        let strips = config.model.strips_per_column;
+        if !bases.iter().any(|b| b.fits_draft(column.draft, strips)) {
+            bases.push(Arc::new(DepthBasis::new(
+                grid,
+                &power,
+                column.draft,
+                strips,
+                config.environment.gravity,
+            )));
+        }
+    }
+    bases
 }
 
 /// The segments of a stream with blocks of `block_duration` seconds sampled at `dt`: B =
