@@ -39,45 +39,46 @@ use std::sync::Arc;
 /// a block (docs/theory.md, "Open-ended records").
 pub const JOIN_DURATION: f64 = 512.0;
 
-/// What a plan's contents depend on: a plan serves every problem with the same key.
+/// What a plan's contents depend on: a plan serves every problem with the same key. It
+/// borrows from the problem, so that comparing a problem with a plan's copies nothing.
 #[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct PlanKey {
+pub struct PlanKey<'a> {
     start_time: f64,
     block_duration: f64,
     time_step: f64,
     band: (f64, f64),
-    spreading: Spreading,
+    spreading: &'a Spreading,
     mean_direction: f64,
     n_directions: usize,
-    environment: Environment,
-    hydro: Hydro,
-    columns: Vec<Cylinder>,
+    environment: &'a Environment,
+    hydro: &'a Hydro,
+    columns: &'a [Cylinder],
     second_order: SecondOrder,
     qtf_tolerance: f64,
     interaction: Interaction,
     drift_damping: DriftDamping,
-    yaw_following: Option<YawFollowing>,
+    yaw_following: &'a Option<YawFollowing>,
 }
 
-impl PlanKey {
+impl PlanKey<'_> {
     /// The key of `problem`.
-    pub fn of(problem: &Problem) -> PlanKey {
+    pub fn of(problem: &Problem) -> PlanKey<'_> {
         PlanKey {
             start_time: problem.run.start_time,
             block_duration: problem.run.block_duration,
             time_step: problem.run.time_step,
             band: problem.band(),
-            spreading: problem.sea.spreading.clone(),
+            spreading: &problem.sea.spreading,
             mean_direction: problem.sea.mean_direction,
             n_directions: problem.sea.n_directions,
-            environment: problem.environment.clone(),
-            hydro: problem.hydro.clone(),
-            columns: problem.platform.columns.clone(),
+            environment: &problem.environment,
+            hydro: &problem.hydro,
+            columns: &problem.platform.columns,
             second_order: problem.model.second_order,
             qtf_tolerance: problem.model.qtf_tolerance,
             interaction: problem.model.interaction,
             drift_damping: problem.model.drift_damping,
-            yaw_following: problem.model.yaw_following.clone(),
+            yaw_following: &problem.model.yaw_following,
         }
     }
 }
@@ -85,7 +86,8 @@ impl PlanKey {
 /// The seed-independent part of a problem's records. It serves every problem with the key
 /// of the one it was made from ([`PlanKey`]).
 pub struct RecordPlan {
-    key: PlanKey,
+    /// The problem the plan was made from (its [`PlanKey`] is the plan's).
+    problem: Problem,
     /// Records sampled at h/2, so that every RK4 stage of a regular step is a sample; one
     /// block's span long (`forces::stream`).
     grid: FrequencyGrid,
@@ -249,7 +251,7 @@ impl RecordPlan {
         };
         let depth_bases = depth_bases(config, &grid);
         Ok(RecordPlan {
-            key: PlanKey::of(config),
+            problem: config.clone(),
             depth_bases,
             segments,
             fft: plan_inverse_fft(&grid),
@@ -264,7 +266,7 @@ impl RecordPlan {
 
     /// Whether this plan serves `config` (it has the plan's key).
     pub fn serves(&self, config: &Problem) -> bool {
-        PlanKey::of(config) == self.key
+        PlanKey::of(config) == PlanKey::of(&self.problem)
     }
 
     /// The frequency grid of the records (one block's span).

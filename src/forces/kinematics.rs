@@ -129,12 +129,16 @@ pub struct KinematicsWork {
     zero: Vec<Complex64>,
     cx: Vec<Complex64>,
     cy: Vec<Complex64>,
-    sums: [Vec<Complex64>; 3],
+    /// The direction sums (A_x, A_y, A) of every group of columns that share their records.
+    sums: Vec<[Vec<Complex64>; 3]>,
+    /// The first column of every such group.
+    groups: Vec<usize>,
     /// The depth kernel of every draft built so far on these components' grid and spectrum
     /// (or given by the record plan).
     bases: Vec<Arc<DepthBasis>>,
-    /// The elevation series and the depth terms' series one after the other, in single
-    /// precision.
+    /// The groups' elevation series, two per transform (groups 2p and 2p + 1 as the real
+    /// and imaginary parts of pair p's N samples), and one group's depth terms' series one
+    /// after the other, in single precision.
     eta: Vec<Complex32>,
     terms: Vec<Complex32>,
     /// V_jq of the basis in single precision, each twice (for u_x and u_y), in blocks of
@@ -170,7 +174,8 @@ impl KinematicsWork {
     /// transform per strip; the depth kernel's few leading terms ([`DepthBasis`], at a
     /// relative rms error of 1e-6) take one transform each
     /// ([`Synthesizer::append_two_real_series`]: u_x + i u_y of the term), and every row's
-    /// strip velocities are recombined from them.
+    /// strip velocities are recombined from them. The elevations (real) of two groups of
+    /// columns share one transform.
     pub fn build(
         &mut self,
         components: &WaveComponents,
@@ -205,11 +210,32 @@ impl KinematicsWork {
                 .map(|c| KinematicsKey::of(&components.directions, c))
                 .collect();
         }
+        // The groups' direction sums, and their elevations two to a transform (each is
+        // real).
+        let keys = &self.keys;
+        self.groups.clear();
+        self.groups
+            .extend((0..columns.len()).filter(|&c| !keys[..c].contains(&keys[c])));
+        if self.sums.len() < self.groups.len() {
+            self.sums.resize_with(self.groups.len(), Default::default);
+        }
+        for (sums, &c) in self.sums.iter_mut().zip(&self.groups) {
+            direction_sums(components, &columns[c], gravity, sums);
+        }
+        self.eta.clear();
+        for pair in self.sums[..self.groups.len()].chunks(2) {
+            let second = pair.get(1).map_or(&self.zero[..], |sums| &sums[2][..]);
+            synth.append_two_real_series(&pair[0][2], second, &mut Narrowing(&mut self.eta));
+        }
         for (c, column) in columns.iter().enumerate() {
             let shared = (0..c).find(|&d| self.keys[d] == self.keys[c]);
             let rows = match shared {
                 Some(d) => Arc::clone(&out[d].rows),
-                None => self.rows(components, column, strips, gravity, n, synth),
+                None => {
+                    let group = self.groups.iter().position(|&first| first == c);
+                    let group = group.expect("a column that shares no records leads a group");
+                    self.rows(components, group, column, strips, gravity, synth)
+                }
             };
             out.push(ColumnKinematics {
                 column: column.clone(),
@@ -222,18 +248,17 @@ impl KinematicsWork {
         self.spare_rows.reserve(columns.len());
     }
 
-    /// The rows of one column.
+    /// The rows of one column, which leads group `group`.
     fn rows(
         &mut self,
         components: &WaveComponents,
+        group: usize,
         column: &Cylinder,
         strips: usize,
         gravity: f64,
-        n: usize,
         synth: &mut Synthesizer,
     ) -> Arc<Vec<Complex32>> {
-        let count = components.grid.count;
-        direction_sums(components, column, gravity, &mut self.sums);
+        let (n, count) = (synth.output_len(), components.grid.count);
         let basis = match self
             .bases
             .iter()
@@ -255,9 +280,7 @@ impl KinematicsWork {
         };
         let basis = &self.bases[basis];
         let rank = basis.rank();
-        let [ax, ay, a] = &self.sums;
-        self.eta.clear();
-        synth.append_two_real_series(a, &self.zero, &mut Narrowing(&mut self.eta));
+        let [ax, ay, _] = &self.sums[group];
         self.terms.clear();
         for q in 0..rank {
             for (j, &p) in basis.profile(q).iter().enumerate().take(count) {
@@ -295,8 +318,10 @@ impl KinematicsWork {
         // below the storage's own and the truncation's 1e-6), summed over q in order.
         // The row is accumulated as interleaved (u_x, u_y) floats, LANES at a time in
         // registers: lane i of a block takes mix * (re, im, re, im, ...)_q.
-        for (m, &eta) in self.eta.iter().enumerate() {
-            buffer.push(eta);
+        let eta = self.eta[group / 2 * n..][..n].iter();
+        let real = group.is_multiple_of(2);
+        for (m, eta) in eta.enumerate() {
+            buffer.push(Complex32::new(if real { eta.re } else { eta.im }, 0.0));
             for (q, pattern) in self.samples.chunks_exact_mut(LANES).enumerate() {
                 let g = self.terms[q * n + m];
                 for pair in pattern.chunks_exact_mut(2) {
@@ -582,7 +607,7 @@ mod tests {
             );
             let basis = DepthBasis::new(&c.grid, c.expected_power(), draft, strips, GRAVITY);
             assert!(basis.rank() < strips, "a truncation: rank {}", basis.rank());
-            let mut sums = Default::default();
+            let mut sums: [Vec<Complex64>; 3] = Default::default();
             direction_sums(&c, &column, GRAVITY, &mut sums);
             let [ax, ay, _] = &sums;
             let n = c.grid.len;

@@ -159,7 +159,8 @@ impl ForceRecords {
     /// (from [`transfers_on_grid`]), over the grid's period (N samples). Cost: one FFT per
     /// direction for the elevation, one or two per non-zero coefficient record and direction
     /// (with the full QTF: one per retained term, DOF and direction instead, for the force),
-    /// one per strip and column (columns with the same phases share theirs).
+    /// per group of columns that share their kinematics (same phases) one per retained depth
+    /// term and half a transform for the elevation (`forces::kinematics`).
     /// `options.full_qtf`, when given, covers every direction of `components`.
     pub fn build(
         components: &WaveComponents,
