@@ -328,7 +328,8 @@ impl KinematicsWork {
                     pair.copy_from_slice(&[g.re, g.im]);
                 }
             }
-            let blocks = self.mix.chunks_exact(LANES * rank);
+            // (A basis of rank 0, a sea without power, leaves the velocities zero.)
+            let blocks = self.mix.chunks_exact(LANES * rank.max(1));
             for (out, mix) in self.row.chunks_exact_mut(LANES).zip(blocks) {
                 let mut sum = [0.0f32; LANES];
                 let terms = mix
