@@ -702,9 +702,21 @@ fn depth_ranks(report: &mut Vec<String>) {
         components.grid.count, KINEMATICS_TOLERANCE
     ));
     for (draft, strips) in [(30.0, 20), (120.0, 20), (120.0, 40)] {
-        let basis = DepthBasis::new(&components, draft, strips, gravity);
+        let basis = DepthBasis::new(
+            &components.grid,
+            components.expected_power(),
+            draft,
+            strips,
+            gravity,
+        );
         let t = median_time(11, || {
-            black_box(DepthBasis::new(&components, draft, strips, gravity));
+            black_box(DepthBasis::new(
+                &components.grid,
+                components.expected_power(),
+                draft,
+                strips,
+                gravity,
+            ));
         });
         report.push(format!(
             "  draft {draft} m, {strips} strips: rank {} (expected relative rms error {:.1e}): \

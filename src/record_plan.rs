@@ -20,9 +20,9 @@ pub use budget::{MemoryEstimate, Term};
 
 use crate::error::{Error, Result};
 use crate::forces::{
-    direction_pairs, plan_inverse_fft, transfers_on_grid, yaw_transfers, DirectionTransfer,
-    ForceRecords, InverseFft, Join, QtfFactorisation, QtfGroup, RecordOptions, RecordWork,
-    Segments, Synthesizer, YawGrid,
+    direction_pairs, plan_inverse_fft, transfers_on_grid, yaw_transfers, DepthBasis,
+    DirectionTransfer, ForceRecords, InverseFft, Join, QtfFactorisation, QtfGroup, RecordOptions,
+    RecordWork, Segments, Synthesizer, YawGrid,
 };
 
 use crate::hydro::bidirectional::DirectionPairs;
@@ -32,51 +32,53 @@ use crate::model::{
 use crate::problem::{Hydro, Problem};
 use crate::sea_state::{Direction, FrequencyGrid, Spreading, WaveComponents};
 use serde::Serialize;
+use std::sync::Arc;
 
 /// Duration of the cross-fade between two blocks of the stream, s: far longer than the
 /// correlation time of the wave-frequency signals (tens of seconds), and a small fraction of
 /// a block (docs/theory.md, "Open-ended records").
 pub const JOIN_DURATION: f64 = 512.0;
 
-/// What a plan's contents depend on: a plan serves every problem with the same key.
+/// What a plan's contents depend on: a plan serves every problem with the same key. It
+/// borrows from the problem, so that comparing a problem with a plan's copies nothing.
 #[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct PlanKey {
+pub struct PlanKey<'a> {
     start_time: f64,
     block_duration: f64,
     time_step: f64,
     band: (f64, f64),
-    spreading: Spreading,
+    spreading: &'a Spreading,
     mean_direction: f64,
     n_directions: usize,
-    environment: Environment,
-    hydro: Hydro,
-    columns: Vec<Cylinder>,
+    environment: &'a Environment,
+    hydro: &'a Hydro,
+    columns: &'a [Cylinder],
     second_order: SecondOrder,
     qtf_tolerance: f64,
     interaction: Interaction,
     drift_damping: DriftDamping,
-    yaw_following: Option<YawFollowing>,
+    yaw_following: &'a Option<YawFollowing>,
 }
 
-impl PlanKey {
+impl PlanKey<'_> {
     /// The key of `problem`.
-    pub fn of(problem: &Problem) -> PlanKey {
+    pub fn of(problem: &Problem) -> PlanKey<'_> {
         PlanKey {
             start_time: problem.run.start_time,
             block_duration: problem.run.block_duration,
             time_step: problem.run.time_step,
             band: problem.band(),
-            spreading: problem.sea.spreading.clone(),
+            spreading: &problem.sea.spreading,
             mean_direction: problem.sea.mean_direction,
             n_directions: problem.sea.n_directions,
-            environment: problem.environment.clone(),
-            hydro: problem.hydro.clone(),
-            columns: problem.platform.columns.clone(),
+            environment: &problem.environment,
+            hydro: &problem.hydro,
+            columns: &problem.platform.columns,
             second_order: problem.model.second_order,
             qtf_tolerance: problem.model.qtf_tolerance,
             interaction: problem.model.interaction,
             drift_damping: problem.model.drift_damping,
-            yaw_following: problem.model.yaw_following.clone(),
+            yaw_following: &problem.model.yaw_following,
         }
     }
 }
@@ -84,7 +86,8 @@ impl PlanKey {
 /// The seed-independent part of a problem's records. It serves every problem with the key
 /// of the one it was made from ([`PlanKey`]).
 pub struct RecordPlan {
-    key: PlanKey,
+    /// The problem the plan was made from (its [`PlanKey`] is the plan's).
+    problem: Problem,
     /// Records sampled at h/2, so that every RK4 stage of a regular step is a sample; one
     /// block's span long (`forces::stream`).
     grid: FrequencyGrid,
@@ -102,6 +105,10 @@ pub struct RecordPlan {
     /// The full QTF on the grid by groups of directions (second_order = "full-qtf").
     full_qtf: Option<Vec<QtfGroup>>,
     ranks: Vec<QtfRank>,
+    /// The drag kinematics' depth kernels of the problem's drafts on the grid and spectrum
+    /// (issue #16: made once here, not per seed); a seed whose spectrum, strips or drafts
+    /// differ makes its own.
+    depth_bases: Vec<Arc<DepthBasis>>,
 }
 
 /// What the yaw-following records need besides the seed.
@@ -242,8 +249,10 @@ impl RecordPlan {
                 (config.model.yaw_following.is_none().then_some(qtf), ranks)
             }
         };
+        let depth_bases = depth_bases(config, &grid);
         Ok(RecordPlan {
-            key: PlanKey::of(config),
+            problem: config.clone(),
+            depth_bases,
             segments,
             fft: plan_inverse_fft(&grid),
             grid,
@@ -257,7 +266,7 @@ impl RecordPlan {
 
     /// Whether this plan serves `config` (it has the plan's key).
     pub fn serves(&self, config: &Problem) -> bool {
-        PlanKey::of(config) == self.key
+        PlanKey::of(config) == PlanKey::of(&self.problem)
     }
 
     /// The frequency grid of the records (one block's span).
@@ -283,7 +292,7 @@ impl RecordPlan {
         let mut segment = Segment {
             index: 0,
             records: ForceRecords::empty(),
-            work: RecordWork::new(synth, &self.grid),
+            work: RecordWork::with_bases(synth, &self.grid, self.depth_bases.clone()),
             components: WaveComponents::generate_block(&config.sea, self.grid.clone(), 0),
         };
         self.build(config, &mut segment, 0, true);
@@ -360,6 +369,29 @@ pub(crate) struct Segment {
     pub records: ForceRecords,
     work: RecordWork,
     components: WaveComponents,
+}
+
+/// The depth kernel of every distinct draft of `config`'s drag columns on `grid` (none
+/// without drag).
+fn depth_bases(config: &Problem, grid: &FrequencyGrid) -> Vec<Arc<DepthBasis>> {
+    if config.model.drag == crate::model::DragModel::Off {
+        return Vec::new();
+    }
+    let power = WaveComponents::expected_power_of(&config.sea, grid);
+    let mut bases: Vec<Arc<DepthBasis>> = Vec::new();
+    for column in &config.platform.columns {
+        let strips = config.model.strips_per_column;
+        if !bases.iter().any(|b| b.fits_draft(column.draft, strips)) {
+            bases.push(Arc::new(DepthBasis::new(
+                grid,
+                &power,
+                column.draft,
+                strips,
+                config.environment.gravity,
+            )));
+        }
+    }
+    bases
 }
 
 /// The segments of a stream with blocks of `block_duration` seconds sampled at `dt`: B =

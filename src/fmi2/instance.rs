@@ -24,11 +24,13 @@ use std::path::{Path, PathBuf};
 /// stop time), times max(1, |t|).
 const TIME_TOLERANCE: f64 = 1e-9;
 
-/// The simulation with the fingerprint of the configuration it was built from.
+/// The simulation with the fingerprint of the configuration it was built from, computed
+/// when a state first asks for it (hashing the problem's JSON, drift table included, takes
+/// about a millisecond: not part of the initialisation).
 #[derive(Debug)]
 struct Built {
     simulation: Simulation,
-    fingerprint: u64,
+    fingerprint: std::cell::OnceCell<u64>,
 }
 
 /// One FMU instance.
@@ -190,7 +192,7 @@ impl Instance {
 
     fn current_fingerprint(&self) -> Result<u64, FmuError> {
         match &self.built {
-            Some(b) => Ok(b.fingerprint),
+            Some(b) => Ok(b.fingerprint()),
             None => Ok(fingerprint(&self.problem()?)),
         }
     }
@@ -462,7 +464,7 @@ impl Instance {
         let reuse = self
             .built
             .as_ref()
-            .is_some_and(|b| b.fingerprint == state.fingerprint);
+            .is_some_and(|b| b.fingerprint() == state.fingerprint);
         let (mut rebuilt, event) = if reuse {
             (None, "state restored".to_string())
         } else {
@@ -472,7 +474,7 @@ impl Instance {
             let problem = state.check_problem(&base, problem)?;
             let built = Built {
                 simulation: Simulation::new(problem)?,
-                fingerprint: state.fingerprint,
+                fingerprint: state.fingerprint.into(),
             };
             let event =
                 format!("state restored: records rebuilt from the state's parameters and {base}");
@@ -513,13 +515,19 @@ impl Instance {
 }
 
 impl Built {
-    /// The simulation of `problem` (its records precomputed) and its fingerprint.
+    /// The simulation of `problem` (its records precomputed).
     fn new(problem: Problem) -> Result<Built, FmuError> {
-        let fingerprint = fingerprint(&problem);
         Ok(Built {
             simulation: Simulation::new(problem)?,
-            fingerprint,
+            fingerprint: std::cell::OnceCell::new(),
         })
+    }
+
+    /// The fingerprint of the problem the simulation was built from.
+    fn fingerprint(&self) -> u64 {
+        *self
+            .fingerprint
+            .get_or_init(|| fingerprint(self.simulation.problem()))
     }
 }
 

@@ -20,9 +20,10 @@
 //!
 //! The basis depends on the grid, the spectrum, the draft and the strips, never on the block
 //! or the seed: consecutive blocks' terms join as the strips' series would (the
-//! recombination by V is linear and fixed).
+//! recombination by V is linear and fixed). The [`crate::RecordPlan`] makes it once for all
+//! the seeds and segments it serves.
 
-use crate::sea_state::WaveComponents;
+use crate::sea_state::{FrequencyGrid, WaveComponents};
 use nalgebra::{DMatrix, SymmetricEigen};
 
 /// Relative rms velocity error the truncated depth kernel allows (see the module notes).
@@ -45,11 +46,17 @@ pub struct DepthBasis {
 }
 
 impl DepthBasis {
-    /// The basis of a column of `draft` (m) with `strips` strips on `components`' grid and
-    /// spectrum, truncated at [`KINEMATICS_TOLERANCE`].
-    pub fn new(components: &WaveComponents, draft: f64, strips: usize, gravity: f64) -> Self {
-        let grid = &components.grid;
-        let power = components.expected_power();
+    /// The basis of a column of `draft` (m) with `strips` strips on `grid` for the
+    /// components' expected power `power` ([`WaveComponents::expected_power`]), truncated at
+    /// [`KINEMATICS_TOLERANCE`].
+    pub fn new(
+        grid: &FrequencyGrid,
+        power: &[f64],
+        draft: f64,
+        strips: usize,
+        gravity: f64,
+    ) -> Self {
+        debug_assert_eq!(power.len(), grid.count);
         let count = grid.count;
         // K_ij by e^{k z_j} = e^{k z_0} (e^{k dz})^j: two exponentials per frequency;
         // strip-major, `kernel[j * count + i]`.
@@ -126,7 +133,13 @@ impl DepthBasis {
     /// Whether this is the basis of a column of `draft` with `strips` strips on these
     /// components' grid and spectrum.
     pub fn fits(&self, components: &WaveComponents, draft: f64, strips: usize) -> bool {
-        self.draft == draft && self.strips == strips && self.is_on(components)
+        self.fits_draft(draft, strips) && self.is_on(components)
+    }
+
+    /// Whether this is the basis of a column of `draft` with `strips` strips (on whatever
+    /// grid and spectrum).
+    pub fn fits_draft(&self, draft: f64, strips: usize) -> bool {
+        self.draft == draft && self.strips == strips
     }
 
     /// Whether this basis was made on these components' grid and spectrum (their expected

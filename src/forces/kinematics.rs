@@ -129,19 +129,25 @@ pub struct KinematicsWork {
     zero: Vec<Complex64>,
     cx: Vec<Complex64>,
     cy: Vec<Complex64>,
-    sums: [Vec<Complex64>; 3],
-    /// The depth kernel of every draft built so far on these components' grid and spectrum.
-    bases: Vec<DepthBasis>,
-    /// The elevation series and the depth terms' series one after the other, in single
-    /// precision.
+    /// The direction sums (A_x, A_y, A) of every group of columns that share their records.
+    sums: Vec<[Vec<Complex64>; 3]>,
+    /// The first column of every such group.
+    groups: Vec<usize>,
+    /// The depth kernel of every draft built so far on these components' grid and spectrum
+    /// (or given by the record plan).
+    bases: Vec<Arc<DepthBasis>>,
+    /// The groups' elevation series, two per transform (groups 2p and 2p + 1 as the real
+    /// and imaginary parts of pair p's N samples), and one group's depth terms' series one
+    /// after the other, in single precision.
     eta: Vec<Complex32>,
     terms: Vec<Complex32>,
-    /// V_jq of the basis in single precision, term-major.
+    /// V_jq of the basis in single precision, each twice (for u_x and u_y), in blocks of
+    /// [`LANES`] floats, block-major.
     mix: Vec<f32>,
-    /// One row's strip velocities u_x and u_y, each strip-contiguous, accumulated over the
-    /// terms.
-    velocity_x: Vec<f32>,
-    velocity_y: Vec<f32>,
+    /// One row's strip velocities, interleaved (u_x, u_y), padded to whole [`LANES`].
+    row: Vec<f32>,
+    /// One sample of every term as (re, im) repeated over [`LANES`], term-major.
+    samples: Vec<f32>,
     /// The key of every column, and the rows of the previous build to write again.
     keys: Vec<KinematicsKey>,
     /// (Each held once; written in place when no other records hold it.)
@@ -149,6 +155,16 @@ pub struct KinematicsWork {
 }
 
 impl KinematicsWork {
+    /// Buffers whose builds take the depth kernels from `bases` when they fit the column,
+    /// the grid and the spectrum (a record plan's, made once for all its seeds), else make
+    /// their own.
+    pub fn with_bases(bases: Vec<Arc<DepthBasis>>) -> Self {
+        KinematicsWork {
+            bases,
+            ..KinematicsWork::default()
+        }
+    }
+
     /// The kinematics records of every column with `strips` strips each, into `out` (whose
     /// previous records' buffers are reused).
     ///
@@ -158,7 +174,8 @@ impl KinematicsWork {
     /// transform per strip; the depth kernel's few leading terms ([`DepthBasis`], at a
     /// relative rms error of 1e-6) take one transform each
     /// ([`Synthesizer::append_two_real_series`]: u_x + i u_y of the term), and every row's
-    /// strip velocities are recombined from them.
+    /// strip velocities are recombined from them. The elevations (real) of two groups of
+    /// columns share one transform.
     pub fn build(
         &mut self,
         components: &WaveComponents,
@@ -193,11 +210,32 @@ impl KinematicsWork {
                 .map(|c| KinematicsKey::of(&components.directions, c))
                 .collect();
         }
+        // The groups' direction sums, and their elevations two to a transform (each is
+        // real).
+        let keys = &self.keys;
+        self.groups.clear();
+        self.groups
+            .extend((0..columns.len()).filter(|&c| !keys[..c].contains(&keys[c])));
+        if self.sums.len() < self.groups.len() {
+            self.sums.resize_with(self.groups.len(), Default::default);
+        }
+        for (sums, &c) in self.sums.iter_mut().zip(&self.groups) {
+            direction_sums(components, &columns[c], gravity, sums);
+        }
+        self.eta.clear();
+        for pair in self.sums[..self.groups.len()].chunks(2) {
+            let second = pair.get(1).map_or(&self.zero[..], |sums| &sums[2][..]);
+            synth.append_two_real_series(&pair[0][2], second, &mut Narrowing(&mut self.eta));
+        }
         for (c, column) in columns.iter().enumerate() {
             let shared = (0..c).find(|&d| self.keys[d] == self.keys[c]);
             let rows = match shared {
                 Some(d) => Arc::clone(&out[d].rows),
-                None => self.rows(components, column, strips, gravity, n, synth),
+                None => {
+                    let group = self.groups.iter().position(|&first| first == c);
+                    let group = group.expect("a column that shares no records leads a group");
+                    self.rows(components, group, column, strips, gravity, synth)
+                }
             };
             out.push(ColumnKinematics {
                 column: column.clone(),
@@ -210,18 +248,17 @@ impl KinematicsWork {
         self.spare_rows.reserve(columns.len());
     }
 
-    /// The rows of one column.
+    /// The rows of one column, which leads group `group`.
     fn rows(
         &mut self,
         components: &WaveComponents,
+        group: usize,
         column: &Cylinder,
         strips: usize,
         gravity: f64,
-        n: usize,
         synth: &mut Synthesizer,
     ) -> Arc<Vec<Complex32>> {
-        let count = components.grid.count;
-        direction_sums(components, column, gravity, &mut self.sums);
+        let (n, count) = (synth.output_len(), components.grid.count);
         let basis = match self
             .bases
             .iter()
@@ -231,16 +268,19 @@ impl KinematicsWork {
             None => {
                 // Another grid or sea: its bases will not be asked for again.
                 self.bases.retain(|b| b.is_on(components));
-                self.bases
-                    .push(DepthBasis::new(components, column.draft, strips, gravity));
+                self.bases.push(Arc::new(DepthBasis::new(
+                    &components.grid,
+                    components.expected_power(),
+                    column.draft,
+                    strips,
+                    gravity,
+                )));
                 self.bases.len() - 1
             }
         };
         let basis = &self.bases[basis];
         let rank = basis.rank();
-        let [ax, ay, a] = &self.sums;
-        self.eta.clear();
-        synth.append_two_real_series(a, &self.zero, &mut Narrowing(&mut self.eta));
+        let [ax, ay, _] = &self.sums[group];
         self.terms.clear();
         for q in 0..rank {
             for (j, &p) in basis.profile(q).iter().enumerate().take(count) {
@@ -249,10 +289,20 @@ impl KinematicsWork {
             }
             synth.append_two_real_series(&self.cx, &self.cy, &mut Narrowing(&mut self.terms));
         }
-        refill(
-            &mut self.mix,
-            (0..rank).flat_map(|q| basis.mix(q).iter().map(|&v| v as f32)),
-        );
+        // V_jq duplicated for u_x and u_y (the row's interleaved layout) and padded with
+        // zeros to whole blocks of LANES floats; block-major, then term: the block b of
+        // term q is `mix[(b * rank + q) * LANES..][..LANES]`.
+        let width = LANES * (2 * strips).div_ceil(LANES);
+        let duplicated = |q: usize| {
+            let v = basis.mix(q).iter().flat_map(|&v| [v as f32; 2]);
+            v.chain(std::iter::repeat_n(0.0, width - 2 * strips))
+        };
+        refill(&mut self.mix, std::iter::repeat_n(0.0, width * rank));
+        for q in 0..rank {
+            for (i, v) in duplicated(q).enumerate() {
+                self.mix[((i / LANES) * rank + q) * LANES + i % LANES] = v;
+            }
+        }
         let mut rows = self.spare_rows.pop().unwrap_or_default();
         if Arc::get_mut(&mut rows).is_none() {
             // Still held by records cloned from these (a cloned simulation): new rows.
@@ -261,33 +311,50 @@ impl KinematicsWork {
         let buffer = Arc::get_mut(&mut rows).expect("rows held only here");
         buffer.clear();
         buffer.reserve((1 + strips) * n);
-        refill(&mut self.velocity_x, std::iter::repeat_n(0.0, strips));
-        refill(&mut self.velocity_y, std::iter::repeat_n(0.0, strips));
+        refill(&mut self.row, std::iter::repeat_n(0.0, width));
+        refill(&mut self.samples, std::iter::repeat_n(0.0, LANES * rank));
         // Row m: the elevation, then u_j(m) = sum_q V_jq g_q(m) for every strip j, in
         // single precision (the terms' rounding and the sum's, a few 1e-8 relative, are
-        // below the storage's own and the truncation's 1e-6). x and y are summed apart, each
-        // over contiguous strips (packed without shuffles), and interleaved once per row.
-        let (ux, uy) = (&mut self.velocity_x, &mut self.velocity_y);
-        for (m, &eta) in self.eta.iter().enumerate() {
-            buffer.push(eta);
-            ux.fill(0.0);
-            uy.fill(0.0);
-            for (q, mix) in self.mix.chunks_exact(strips).enumerate() {
+        // below the storage's own and the truncation's 1e-6), summed over q in order.
+        // The row is accumulated as interleaved (u_x, u_y) floats, LANES at a time in
+        // registers: lane i of a block takes mix * (re, im, re, im, ...)_q.
+        let eta = self.eta[group / 2 * n..][..n].iter();
+        let real = group.is_multiple_of(2);
+        for (m, eta) in eta.enumerate() {
+            buffer.push(Complex32::new(if real { eta.re } else { eta.im }, 0.0));
+            for (q, pattern) in self.samples.chunks_exact_mut(LANES).enumerate() {
                 let g = self.terms[q * n + m];
-                for ((x, y), &v) in ux.iter_mut().zip(uy.iter_mut()).zip(mix) {
-                    *x += g.re * v;
-                    *y += g.im * v;
+                for pair in pattern.chunks_exact_mut(2) {
+                    pair.copy_from_slice(&[g.re, g.im]);
                 }
             }
+            // (A basis of rank 0, a sea without power, leaves the velocities zero.)
+            let blocks = self.mix.chunks_exact(LANES * rank.max(1));
+            for (out, mix) in self.row.chunks_exact_mut(LANES).zip(blocks) {
+                let mut sum = [0.0f32; LANES];
+                let terms = mix
+                    .chunks_exact(LANES)
+                    .zip(self.samples.chunks_exact(LANES));
+                for (mix, pattern) in terms {
+                    for ((s, &v), &g) in sum.iter_mut().zip(mix).zip(pattern) {
+                        *s += g * v;
+                    }
+                }
+                out.copy_from_slice(&sum);
+            }
             buffer.extend(
-                ux.iter()
-                    .zip(uy.iter())
-                    .map(|(&x, &y)| Complex32::new(x, y)),
+                self.row[..2 * strips]
+                    .chunks_exact(2)
+                    .map(|u| Complex32::new(u[0], u[1])),
             );
         }
         rows
     }
 }
+
+/// Floats the recombination of the strips' velocities sums at a time (two SSE registers;
+/// the compiler keeps them in registers over the terms).
+const LANES: usize = 8;
 
 /// Clears `v` and fills it from `values` (its capacity kept).
 fn refill<T>(v: &mut Vec<T>, values: impl Iterator<Item = T>) {
@@ -539,9 +606,9 @@ mod tests {
                 GRAVITY,
                 &mut synth,
             );
-            let basis = DepthBasis::new(&c, draft, strips, GRAVITY);
+            let basis = DepthBasis::new(&c.grid, c.expected_power(), draft, strips, GRAVITY);
             assert!(basis.rank() < strips, "a truncation: rank {}", basis.rank());
-            let mut sums = Default::default();
+            let mut sums: [Vec<Complex64>; 3] = Default::default();
             direction_sums(&c, &column, GRAVITY, &mut sums);
             let [ax, ay, _] = &sums;
             let n = c.grid.len;

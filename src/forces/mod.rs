@@ -88,6 +88,16 @@ pub struct RecordWork {
 impl RecordWork {
     /// The buffers of builds through `synth` on `grid`.
     pub fn new(synth: Synthesizer, grid: &FrequencyGrid) -> Self {
+        Self::with_bases(synth, grid, Vec::new())
+    }
+
+    /// [`RecordWork::new`] whose kinematics take the depth kernels from `bases` where they
+    /// fit ([`KinematicsWork::with_bases`]).
+    pub fn with_bases(
+        synth: Synthesizer,
+        grid: &FrequencyGrid,
+        bases: Vec<std::sync::Arc<DepthBasis>>,
+    ) -> Self {
         let n = synth.output_len();
         RecordWork {
             synth,
@@ -96,7 +106,7 @@ impl RecordWork {
             elevation_coefficients: Vec::new(),
             qtf_coefficients: Vec::new(),
             qtf_series: Vec::new(),
-            kinematics: KinematicsWork::default(),
+            kinematics: KinematicsWork::with_bases(bases),
             cross: CrossWork::default(),
             yaw: YawWork::default(),
         }
@@ -149,7 +159,8 @@ impl ForceRecords {
     /// (from [`transfers_on_grid`]), over the grid's period (N samples). Cost: one FFT per
     /// direction for the elevation, one or two per non-zero coefficient record and direction
     /// (with the full QTF: one per retained term, DOF and direction instead, for the force),
-    /// one per strip and column (columns with the same phases share theirs).
+    /// per group of columns that share their kinematics (same phases) one per retained depth
+    /// term and half a transform for the elevation (`forces::kinematics`).
     /// `options.full_qtf`, when given, covers every direction of `components`.
     pub fn build(
         components: &WaveComponents,

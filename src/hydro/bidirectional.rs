@@ -67,7 +67,7 @@ pub struct BidirectionalTable {
 }
 
 /// Where the bi-directional drift of a configuration comes from.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, Serialize)]
 pub enum BidirectionalSource {
     /// The column-array solver at the data frequencies `omegas` (those of the drift table it
     /// also made), evaluated at the sea's exact directions.
@@ -86,6 +86,33 @@ pub enum BidirectionalSource {
         #[serde(skip)]
         json: &'static str,
     },
+}
+
+/// Equal sources: as derived, except that two embedded tables at the same address are
+/// equal without comparing their 5.6 MB of text (a record plan compares the problem's
+/// hydrodynamics with its own for every seed it serves).
+impl PartialEq for BidirectionalSource {
+    fn eq(&self, other: &Self) -> bool {
+        use BidirectionalSource::*;
+        match (self, other) {
+            (
+                ColumnArray { array, omegas },
+                ColumnArray {
+                    array: other_array,
+                    omegas: other_omegas,
+                },
+            ) => array == other_array && omegas == other_omegas,
+            (Table(table), Table(other)) => table == other,
+            (
+                Embedded { name, json },
+                Embedded {
+                    name: other_name,
+                    json: other_json,
+                },
+            ) => name == other_name && (std::ptr::eq(*json, *other_json) || json == other_json),
+            _ => false,
+        }
+    }
 }
 
 impl BidirectionalSource {

@@ -211,6 +211,19 @@ impl WaveComponents {
         &self.power
     }
 
+    /// [`WaveComponents::expected_power`] of `sea` on `grid` without drawing the amplitudes
+    /// (the same sums in the same order, so the same bits).
+    pub fn expected_power_of(sea: &SeaState, grid: &FrequencyGrid) -> Vec<f64> {
+        let mut power = vec![0.0; grid.count];
+        for dir in &sea.directions() {
+            for (j, p) in power.iter_mut().enumerate() {
+                let variance = sea.spectrum.density(grid.omega(j)) * dir.weight * grid.d_omega;
+                *p += 2.0 * variance;
+            }
+        }
+        power
+    }
+
     /// Amplitudes of direction k, indexed by component j.
     pub fn of_direction(&self, k: usize) -> &[Complex64] {
         &self.amplitudes[k * self.grid.count..(k + 1) * self.grid.count]
@@ -236,6 +249,42 @@ fn standard_normal_pair(rng: &mut Xoshiro256PlusPlus) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The power of a sea computed without drawing equals the drawn components' (bit for
+    /// bit: a record plan's depth kernels are reused only on equal power), for a spread sea
+    /// and another seed and block.
+    #[test]
+    fn expected_power_without_drawing() {
+        use crate::sea_state::{Spectrum, Spreading};
+        let sea = SeaState {
+            spectrum: Spectrum::Jonswap {
+                hs: 5.0,
+                tp: 11.0,
+                gamma: Some(2.0),
+            },
+            spreading: Spreading::CosN { n: 2.0 },
+            mean_direction: 0.3,
+            n_directions: 7,
+            seed: 11,
+            band: None,
+        };
+        let grid = FrequencyGrid::new(0.0, 900.0, 0.5, sea.band()).unwrap();
+        let power = WaveComponents::expected_power_of(&sea, &grid);
+        assert_eq!(power.len(), grid.count);
+        assert!(power.iter().any(|&p| p > 0.0));
+        assert_eq!(
+            WaveComponents::generate(&sea, grid.clone()).expected_power(),
+            power
+        );
+        let other = SeaState {
+            seed: 12,
+            ..sea.clone()
+        };
+        assert_eq!(
+            WaveComponents::generate_block(&other, grid, 3).expected_power(),
+            power
+        );
+    }
 
     #[test]
     fn smooth_lengths() {
