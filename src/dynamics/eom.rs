@@ -12,7 +12,7 @@
 //! S is orthogonal, q'' = S (M + A)^{-1} S^T (right-hand side).
 
 use crate::error::{Error, Result};
-use crate::forces::{drag_force, ForceRecords, SamplePoint, StripKernel, YawPoint};
+use crate::forces::{drag_force, ForceRecords, SamplePoint, YawPoint};
 use crate::model::DragModel;
 use crate::problem::Problem;
 use nalgebra::{Matrix3, Vector3};
@@ -40,8 +40,6 @@ pub struct SlowDriftModel {
     linear_damping: Matrix3<f64>,
     quadratic_damping: Matrix3<f64>,
     drag: DragModel,
-    /// The loop of the drag's strip sums: packed where this CPU allows.
-    strip_kernel: StripKernel,
     water_density: f64,
     /// Current velocity, inertial frame (X, Y), m/s.
     current: [f64; 2],
@@ -98,7 +96,6 @@ impl SlowDriftModel {
             linear_damping: matrix(&p.linear_damping),
             quadratic_damping: matrix(&p.quadratic_damping),
             drag: config.model.drag,
-            strip_kernel: StripKernel::detect(),
             water_density: config.environment.water_density,
             current: [config.current.speed * c, config.current.speed * s],
         })
@@ -170,7 +167,6 @@ impl SlowDriftModel {
             &records.kinematics,
             at,
             self.drag,
-            self.strip_kernel,
             self.water_density,
             velocity.into(),
             [current[0], current[1]],

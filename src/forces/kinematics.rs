@@ -96,35 +96,16 @@ impl ColumnState<'_> {
         [u.re, u.im]
     }
 
-    /// Where the strips' velocities are read at this time: one stored row, or the four rows
-    /// of the cubic stencil and their weights (each a contiguous slice of the strips'
-    /// u_x + i u_y in strip order, single precision, m/s).
+    /// The strips' velocities u_x + i u_y in strip order when the time falls on a sample
+    /// (one contiguous slice of the row, single precision), m/s.
     #[inline]
-    pub fn strip_rows(&self) -> StripRows<'_> {
+    pub fn velocities_on_sample(&self) -> Option<&[Complex32]> {
         let k = self.kinematics;
-        let row = |m: usize| &k.rows[m * k.width + 1..(m + 1) * k.width];
-        match self.at.stencil(k.len) {
-            None => StripRows::Sample(row(self.at.index())),
-            Some((samples, weights)) => StripRows::Between {
-                rows: samples.map(row),
-                weights,
-            },
-        }
+        let start = self.at.index() * k.width;
+        self.at
+            .on_sample()
+            .then(|| &k.rows[start + 1..start + k.width])
     }
-}
-
-/// The stored rows a column's strip velocities come from at one located time
-/// ([`ColumnState::strip_rows`]).
-#[derive(Debug, Clone, Copy)]
-pub enum StripRows<'a> {
-    /// On a sample: u_j is `row[j]`.
-    Sample(&'a [Complex32]),
-    /// Between samples: u_j = sum_r weights[r] rows[r][j], the cubic Lagrange interpolation
-    /// of the records (record.rs), summed in stencil order.
-    Between {
-        rows: [&'a [Complex32]; 4],
-        weights: [f64; 4],
-    },
 }
 
 /// [`KinematicsWork::build`] into new buffers (the tests' shorthand).
@@ -509,10 +490,7 @@ mod tests {
                     let state = record.at(&clock.locate(t).unwrap());
                     let eta = expected(&c, column, 0.0, t)[0];
                     assert!((state.eta() - eta).abs() < STORED, "t {t}: {}", state.eta());
-                    let on_sample = match state.strip_rows() {
-                        StripRows::Sample(row) => Some(row),
-                        StripRows::Between { .. } => None,
-                    };
+                    let on_sample = state.velocities_on_sample();
                     assert_eq!(on_sample.is_some(), (t / c.grid.dt).fract() == 0.0);
                     for j in 0..strips {
                         let z = -30.0 + (j as f64 + 0.5) * 30.0 / strips as f64;

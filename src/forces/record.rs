@@ -81,25 +81,14 @@ impl SamplePoint {
     where
         T: Copy + Mul<f64, Output = T> + Add<Output = T>,
     {
-        match self.stencil(len) {
-            None => sample(self.index),
-            Some(([a, b, c, d], w)) => {
-                sample(a) * w[0] + sample(b) * w[1] + sample(c) * w[2] + sample(d) * w[3]
-            }
-        }
-    }
-
-    /// Between samples, the four samples of the cubic stencil of a periodic record of `len`
-    /// samples (wrapping at sample 0) and their Lagrange weights; `None` on a sample.
-    #[inline]
-    pub fn stencil(&self, len: usize) -> Option<([usize; 4], [f64; 4])> {
         let m = self.index;
         if self.on_sample() {
-            return None;
+            return sample(m);
         }
         let before = if m == 0 { len - 1 } else { m - 1 };
         let after = if m + 2 == len { 0 } else { m + 2 };
-        Some(([before, m, m + 1, after], self.weights))
+        let w = &self.weights;
+        sample(before) * w[0] + sample(m) * w[1] + sample(m + 1) * w[2] + sample(after) * w[3]
     }
 }
 
