@@ -21,6 +21,10 @@ order of the force terms (semi_bem.far_field_drift, the formula the default plat
 come from), conjugates it to SlowDrift's convention and writes it with Capytaine's own
 `export_to_wamit`.
 
+Deep water only (semi_bem.solve_body solves in deep water): Capytaine 3.0's far-field drift in
+finite depth falls short of the closed form at low kh (docs/bem.md, measured by the route's
+last test).
+
 Usage (a library function; the test and tests/bem's scripts call it):
     bem = semi_bem.solve_body(body, omegas, headings, n_theta)   # headings on the theta grid
     export_drift(bem, motions, "PATH/NAME")                      # writes PATH/NAME.8
