@@ -825,6 +825,28 @@ fn database_errors_name_the_file() {
         err.contains("v2.json") && err.contains("format_version = 2"),
         "{err}"
     );
+    // Another version whose content does not fit this version's types is still refused
+    // for its version, and so is a file without one.
+    let other_layout = write(
+        &dir,
+        "v2-other.json",
+        &text.replace(
+            "\"format_version\": 1",
+            "\"format_version\": 2, \"panels\": []",
+        ),
+    );
+    let err = HydroDatabase::load(&other_layout).unwrap_err().to_string();
+    assert!(
+        err.contains("format_version = 2: this program reads version 1"),
+        "{err}"
+    );
+    let absent = write(
+        &dir,
+        "unversioned.json",
+        &text.replace("\"format_version\": 1,", ""),
+    );
+    let err = HydroDatabase::load(&absent).unwrap_err().to_string();
+    assert!(err.contains("format_version = (absent)"), "{err}");
     let broken = write(
         &dir,
         "broken.json",

@@ -207,32 +207,39 @@ impl HydroDatabase {
             line: (e.line() > 0).then(|| e.line()),
             message: e.to_string(),
         };
-        // The version first (every other field skipped), so that a file of another
-        // version is refused as such; then the file straight into its types (one pass,
-        // errors with their line).
-        #[derive(Deserialize)]
-        struct Version {
-            format_version: Option<serde_json::Value>,
+        // One pass straight into the types (errors with their line). A file of another
+        // version is refused as such: by the version read in that pass, or, when the pass
+        // fails, by a second one that reads the version alone (every other field skipped).
+        let version_refused = |format_version: Option<serde_json::Value>| Error::Parse {
+            path: name.to_string(),
+            line: None,
+            message: format!(
+                "format_version = {}: this program reads version {FORMAT_VERSION}",
+                format_version.map_or("(absent)".to_string(), |v| v.to_string())
+            ),
+        };
+        let database: HydroDatabase = match serde_json::from_str(text) {
+            Ok(database) => database,
+            Err(error) => {
+                #[derive(Deserialize)]
+                struct Version {
+                    format_version: Option<serde_json::Value>,
+                }
+                let version: Version = serde_json::from_str(text).map_err(at)?;
+                if version
+                    .format_version
+                    .as_ref()
+                    .and_then(serde_json::Value::as_u64)
+                    != Some(u64::from(FORMAT_VERSION))
+                {
+                    return Err(version_refused(version.format_version));
+                }
+                return Err(at(error));
+            }
+        };
+        if database.format_version != FORMAT_VERSION {
+            return Err(version_refused(Some(database.format_version.into())));
         }
-        let version: Version = serde_json::from_str(text).map_err(at)?;
-        if version
-            .format_version
-            .as_ref()
-            .and_then(serde_json::Value::as_u64)
-            != Some(u64::from(FORMAT_VERSION))
-        {
-            return Err(Error::Parse {
-                path: name.to_string(),
-                line: None,
-                message: format!(
-                    "format_version = {}: this program reads version {FORMAT_VERSION}",
-                    version
-                        .format_version
-                        .map_or("(absent)".to_string(), |v| v.to_string())
-                ),
-            });
-        }
-        let database: HydroDatabase = serde_json::from_str(text).map_err(at)?;
         database.validate().map_err(|e| locate(e, text, name))?;
         Ok(database)
     }
