@@ -1,5 +1,5 @@
-//! The lines of a MoorDyn v2 input file, read for the quasi-static model
-//! ([`crate::quasi_static`]): each line's type (diameter, mass per length, EA), its anchor
+//! The lines of a MoorDyn v2 input file, read for the quasi-static model (which uses this
+//! reader; this module knows nothing of it): each line's type (diameter, mass per length, EA), its anchor
 //! (a `Fixed` point on the seabed) and its fairlead (a point on `Body1`, in the body's
 //! frame), and the options `g`, `rho` (or `WtrDnsty`) and `WtrDpth` (or `depth`).
 //!
