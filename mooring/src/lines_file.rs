@@ -1,6 +1,7 @@
 //! The lines of a MoorDyn v2 input file, read for the quasi-static line model: each line's
 //! type (diameter, mass per length, EA), its anchor (a `Fixed` point on the seabed) and its
-//! fairlead (a point on `Body1`, in the body's frame), and the options `g`, `rho` (or `WtrDnsty`) and `WtrDpth` (or `depth`).
+//! fairlead (a point on `Body1`, in the body's frame), and the options `g`, `rho` (or
+//! `WtrDnsty`) and `WtrDpth` (or `depth`).
 //!
 //! Only what a quasi-static spread mooring has is accepted: every line from a fixed point on
 //! the seabed to a point on body 1; a free point, a rod, a second body, a nonlinear EA (a
