@@ -176,26 +176,29 @@ file = "{database}"
     assert float(sway.split()[2]) > 0.0, sway
 
 
+def capytaines_own_drift(body, omegas, headings, depth, theta):
+    """Capytaine 3.0's own solution (its dataset, Kochin functions on `theta` included) and
+    its own `far_field_mean_drift_force` of `body` held fixed, as Capytaine gives them."""
+    import capytaine as cpt
+    from capytaine.post_pro.mean_drift_force import far_field_mean_drift_force
+    test_matrix = xr.Dataset(coords={
+        "omega": omegas, "wave_direction": headings, "radiating_dof": list(body.dofs),
+        "water_depth": depth, "rho": semi_bem.RHO, "g": semi_bem.G, "theta": theta})
+    ds = cpt.BEMSolver().fill_dataset(test_matrix, body, progress_bar=False, hydrostatics=False)
+    fixed = xr.DataArray(np.zeros((len(omegas), len(headings), len(body.dofs)), complex),
+                         coords={"omega": omegas, "wave_direction": headings,
+                                 "radiating_dof": list(body.dofs)},
+                         dims=("omega", "wave_direction", "radiating_dof"))
+    return ds, far_field_mean_drift_force(fixed, ds)
+
+
 def test_capytaines_own_two_heading_yaw_misses_the_moment_identity():
     """What the converter corrects: Capytaine 3.0's own `far_field_mean_drift_force` on the
     offset cylinder (its forces conjugated to SlowDrift's convention; the yaw as it comes)
     misses M = x_c F_y - y_c F_x for two headings, by far more than the mesh's error, in a way
     no conjugation of the yaw term repairs."""
-    import capytaine as cpt
-    from capytaine.post_pro.mean_drift_force import far_field_mean_drift_force
-    body = cylinder(*OFFSET)
-    headings = np.radians(HEADINGS_DEG)
-    omegas = OMEGAS[1:2]
-    test_matrix = xr.Dataset(coords={
-        "omega": omegas, "wave_direction": headings, "radiating_dof": list(body.dofs),
-        "water_depth": np.inf, "rho": semi_bem.RHO, "g": semi_bem.G,
-        "theta": np.linspace(0.0, 2 * np.pi, 361)})
-    ds = cpt.BEMSolver().fill_dataset(test_matrix, body, progress_bar=False, hydrostatics=False)
-    motion = xr.DataArray(np.zeros((len(omegas), len(headings), len(body.dofs)), complex),
-                          coords={"omega": omegas, "wave_direction": headings,
-                                  "radiating_dof": list(body.dofs)},
-                          dims=("omega", "wave_direction", "radiating_dof"))
-    drift = far_field_mean_drift_force(motion, ds)
+    _, drift = capytaines_own_drift(cylinder(*OFFSET), OMEGAS[1:2], np.radians(HEADINGS_DEG),
+                                    np.inf, np.linspace(0.0, 2 * np.pi, 361))
     fx, fy = np.conj(drift["drift_force_surge"].values[0]), np.conj(drift["drift_force_sway"].values[0])
     mz = drift["drift_force_yaw"].values[0]
     about = OFFSET[0] * fy - OFFSET[1] * fx
@@ -229,7 +232,6 @@ def test_capytaines_finite_depth_drift_falls_short_at_low_kh():
       but not, by itself, the closed form.
     If a later Capytaine corrects this, this test fails and docs/bem.md must say so."""
     import capytaine as cpt
-    from capytaine.post_pro.mean_drift_force import far_field_mean_drift_force
     from scipy.optimize import brentq
     from scipy.special import h1vp
     depth, rho, g = 20.0, semi_bem.RHO, semi_bem.G
@@ -240,17 +242,10 @@ def test_capytaines_finite_depth_drift_falls_short_at_low_kh():
                                if c[2] > -depth + 1e-6])
     body = cpt.FloatingBody(mesh=mesh, dofs=cpt.rigid_body_dofs(rotation_center=(0, 0, 0)),
                             center_of_mass=(0.0, 0.0, 0.0))
-    omegas, headings = np.array([0.5, 0.7, 1.0, 1.3]), np.array([0.0])
-    theta = np.linspace(-0.1, 2 * np.pi + 0.1, 721)
-    test_matrix = xr.Dataset(coords={
-        "omega": omegas, "wave_direction": headings, "radiating_dof": list(body.dofs),
-        "water_depth": depth, "rho": rho, "g": g, "theta": theta})
-    ds = cpt.BEMSolver().fill_dataset(test_matrix, body, progress_bar=False, hydrostatics=False)
-    fixed = xr.DataArray(np.zeros((len(omegas), 1, len(body.dofs)), complex),
-                         coords={"omega": omegas, "wave_direction": headings,
-                                 "radiating_dof": list(body.dofs)},
-                         dims=("omega", "wave_direction", "radiating_dof"))
-    drift = far_field_mean_drift_force(fixed, ds)["drift_force_surge"].values[:, 0, 0]
+    omegas = np.array([0.5, 0.7, 1.0, 1.3])
+    theta = np.linspace(-0.1, 2 * np.pi + 0.1, 721)  # heading 0 inside, as Capytaine asks
+    ds, drift = capytaines_own_drift(body, omegas, np.array([0.0]), depth, theta)
+    drift = drift["drift_force_surge"].values[:, 0, 0]
     excitation = (ds["diffraction_force"] + ds["Froude_Krylov_force"]).sel(
         influenced_dof="Surge", wave_direction=0.0).values
     kochin = 1j * ds["kochin_diffraction"].sel(wave_direction=0.0).values
