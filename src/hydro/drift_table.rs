@@ -58,26 +58,18 @@ impl DriftTable {
         for (r, row) in rows.iter().enumerate() {
             validate_row(r, row, has_damping)?;
         }
-        let mut headings: Vec<f64> = Vec::new();
-        for row in rows {
-            if !headings.iter().any(|&h| same(h, row.heading)) {
-                headings.push(row.heading);
-            }
-        }
+        // The headings, sorted, one per direction (within GRID_TOLERANCE), and the rows
+        // grouped by heading in the order given: O(R log R) for R rows.
+        let mut headings: Vec<f64> = rows.iter().map(|r| r.heading).collect();
         headings.sort_by(f64::total_cmp);
-        let first_heading = headings[0];
-        let omegas: Vec<f64> = rows
-            .iter()
-            .filter(|r| same(r.heading, first_heading))
-            .map(|r| r.omega)
-            .collect();
-        for (ih, &h) in headings.iter().enumerate() {
-            let these: Vec<(usize, &DriftRow)> = rows
-                .iter()
-                .enumerate()
-                .filter(|(_, r)| same(r.heading, h))
-                .collect();
-            check_frequencies(h, &these, &omegas)?;
+        headings.dedup_by(|later, kept| same(*kept, *later));
+        let mut groups: Vec<Vec<(usize, &DriftRow)>> = vec![Vec::new(); headings.len()];
+        for (r, row) in rows.iter().enumerate() {
+            groups[heading_index(&headings, r, row.heading)?].push((r, row));
+        }
+        let omegas: Vec<f64> = groups[0].iter().map(|(_, r)| r.omega).collect();
+        for (ih, (&h, these)) in headings.iter().zip(&groups).enumerate() {
+            check_frequencies(h, these, &omegas)?;
             if ih > 0 && h - headings[ih - 1] <= GRID_TOLERANCE {
                 return Err(Error::invalid(
                     "drift.heading",
@@ -86,23 +78,13 @@ impl DriftTable {
                 ));
             }
         }
-        let nw = omegas.len();
-        let mut drift = vec![[0.0; 3]; headings.len() * nw];
-        let mut damping = has_damping.then(|| vec![[[0.0; 3]; 3]; headings.len() * nw]);
-        for row in rows {
-            let ih = headings
-                .iter()
-                .position(|&h| same(h, row.heading))
-                .expect("heading listed");
-            let iw = omegas
-                .iter()
-                .position(|&w| same(w, row.omega))
-                .expect("frequency checked");
-            drift[ih * nw + iw] = row.drift;
-            if let (Some(table), Some(b)) = (damping.as_mut(), row.damping) {
-                table[ih * nw + iw] = b;
-            }
-        }
+        // Every heading's rows now list the frequencies of `omegas` in order.
+        let drift = groups.iter().flatten().map(|(_, row)| row.drift).collect();
+        let damping = has_damping.then(|| {
+            let rows = groups.iter().flatten();
+            rows.map(|(_, row)| row.damping.unwrap_or_default())
+                .collect()
+        });
         if headings.last().expect("non-empty") - headings[0] > 2.0 * PI + GRID_TOLERANCE {
             return Err(Error::invalid(
                 "drift.heading",
@@ -443,6 +425,15 @@ fn check_frequencies(heading: f64, rows: &[(usize, &DriftRow)], reference: &[f64
             ));
         }
     }
+    // Both lists increase: they hold the same frequencies exactly when they pair up in order.
+    if rows.len() == reference.len()
+        && rows
+            .iter()
+            .zip(reference)
+            .all(|((_, row), &w)| same(row.omega, w))
+    {
+        return Ok(());
+    }
     for &w in reference {
         if !rows.iter().any(|(_, row)| same(row.omega, w)) {
             return Err(Error::invalid(
@@ -452,18 +443,36 @@ fn check_frequencies(heading: f64, rows: &[(usize, &DriftRow)], reference: &[f64
             ));
         }
     }
-    if rows.len() != reference.len() {
-        let (r, extra) = rows
-            .iter()
-            .find(|(_, row)| !reference.iter().any(|&w| same(w, row.omega)))
-            .expect("an extra frequency exists");
+    if let Some((r, extra)) = rows
+        .iter()
+        .find(|(_, row)| !reference.iter().any(|&w| same(w, row.omega)))
+    {
         return Err(Error::invalid(
             format!("drift.rows[{r}].omega"),
             extra.omega,
             "hole in the drift table: this frequency is missing at the other headings",
         ));
     }
-    Ok(())
+    Err(Error::invalid(
+        "drift.rows",
+        format!("heading = {:.3} deg", heading.to_degrees()),
+        "frequencies closer than the matching tolerance within one heading",
+    ))
+}
+
+/// The index in `headings` (sorted, one per direction) of row `r`'s `heading`.
+fn heading_index(headings: &[f64], r: usize, heading: f64) -> Result<usize> {
+    let i = headings.partition_point(|&h| h < heading);
+    [i, i.wrapping_sub(1)]
+        .into_iter()
+        .find(|&k| headings.get(k).is_some_and(|&h| same(h, heading)))
+        .ok_or_else(|| {
+            Error::invalid(
+                format!("drift.rows[{r}].heading"),
+                heading.to_degrees(),
+                "heading within the matching tolerance of two listed headings",
+            )
+        })
 }
 
 #[cfg(test)]
