@@ -142,12 +142,12 @@ pub struct KinematicsWork {
     eta: Vec<Complex32>,
     terms: Vec<Complex32>,
     /// V_jq of the basis in single precision, each twice (for u_x and u_y), in blocks of
-    /// [`LANES`] floats, block-major.
+    /// [`LANES`] floats, in chunks of [`BLOCKS_AT_ONCE`] blocks, term-major within a chunk.
     mix: Vec<f32>,
     /// One row's strip velocities, interleaved (u_x, u_y), padded to whole [`LANES`].
     row: Vec<f32>,
-    /// One sample of every term as (re, im) repeated over [`LANES`], term-major.
-    samples: Vec<f32>,
+    /// One sample of every term.
+    samples: Vec<Complex32>,
     /// The key of every column, and the rows of the previous build to write again.
     keys: Vec<KinematicsKey>,
     /// (Each held once; written in place when no other records hold it.)
@@ -223,6 +223,8 @@ impl KinematicsWork {
             direction_sums(components, &columns[c], gravity, sums);
         }
         self.eta.clear();
+        self.eta
+            .reserve(self.groups.len().div_ceil(2) * synth.output_len());
         for pair in self.sums[..self.groups.len()].chunks(2) {
             let second = pair.get(1).map_or(&self.zero[..], |sums| &sums[2][..]);
             synth.append_two_real_series(&pair[0][2], second, &mut Narrowing(&mut self.eta));
@@ -282,6 +284,7 @@ impl KinematicsWork {
         let rank = basis.rank();
         let [ax, ay, _] = &self.sums[group];
         self.terms.clear();
+        self.terms.reserve(rank * n);
         for q in 0..rank {
             for (j, &p) in basis.profile(q).iter().enumerate().take(count) {
                 self.cx[j] = ax[j] * p;
@@ -290,17 +293,18 @@ impl KinematicsWork {
             synth.append_two_real_series(&self.cx, &self.cy, &mut Narrowing(&mut self.terms));
         }
         // V_jq duplicated for u_x and u_y (the row's interleaved layout) and padded with
-        // zeros to whole blocks of LANES floats; block-major, then term: the block b of
-        // term q is `mix[(b * rank + q) * LANES..][..LANES]`.
+        // zeros to whole blocks of LANES floats; the blocks in chunks of BLOCKS_AT_ONCE,
+        // each chunk term-major, then block (the order in which `recombine` reads them).
         let width = LANES * (2 * strips).div_ceil(LANES);
-        let duplicated = |q: usize| {
-            let v = basis.mix(q).iter().flat_map(|&v| [v as f32; 2]);
-            v.chain(std::iter::repeat_n(0.0, width - 2 * strips))
-        };
-        refill(&mut self.mix, std::iter::repeat_n(0.0, width * rank));
-        for q in 0..rank {
-            for (i, v) in duplicated(q).enumerate() {
-                self.mix[((i / LANES) * rank + q) * LANES + i % LANES] = v;
+        self.mix.clear();
+        for first in (0..width).step_by(BLOCKS_AT_ONCE * LANES) {
+            let floats = first..(first + BLOCKS_AT_ONCE * LANES).min(width);
+            for q in 0..rank {
+                let v = basis.mix(q);
+                let duplicated = floats
+                    .clone()
+                    .map(|i| v.get(i / 2).map_or(0.0, |&v| v as f32));
+                self.mix.extend(duplicated);
             }
         }
         let mut rows = self.spare_rows.pop().unwrap_or_default();
@@ -312,35 +316,33 @@ impl KinematicsWork {
         buffer.clear();
         buffer.reserve((1 + strips) * n);
         refill(&mut self.row, std::iter::repeat_n(0.0, width));
-        refill(&mut self.samples, std::iter::repeat_n(0.0, LANES * rank));
+        refill(
+            &mut self.samples,
+            std::iter::repeat_n(Complex32::default(), rank),
+        );
         // Row m: the elevation, then u_j(m) = sum_q V_jq g_q(m) for every strip j, in
         // single precision (the terms' rounding and the sum's, a few 1e-8 relative, are
         // below the storage's own and the truncation's 1e-6), summed over q in order.
-        // The row is accumulated as interleaved (u_x, u_y) floats, LANES at a time in
-        // registers: lane i of a block takes mix * (re, im, re, im, ...)_q.
+        // The row is accumulated as interleaved (u_x, u_y) floats, BLOCKS_AT_ONCE blocks
+        // of LANES at a time in registers: lane i of a block takes mix * (re, im, ...)_q.
         let eta = self.eta[group / 2 * n..][..n].iter();
         let real = group.is_multiple_of(2);
         for (m, eta) in eta.enumerate() {
             buffer.push(Complex32::new(if real { eta.re } else { eta.im }, 0.0));
-            for (q, pattern) in self.samples.chunks_exact_mut(LANES).enumerate() {
-                let g = self.terms[q * n + m];
-                for pair in pattern.chunks_exact_mut(2) {
-                    pair.copy_from_slice(&[g.re, g.im]);
-                }
+            for (q, g) in self.samples.iter_mut().enumerate() {
+                *g = self.terms[q * n + m];
             }
             // (A basis of rank 0, a sea without power, leaves the velocities zero.)
-            let blocks = self.mix.chunks_exact(LANES * rank.max(1));
-            for (out, mix) in self.row.chunks_exact_mut(LANES).zip(blocks) {
-                let mut sum = [0.0f32; LANES];
-                let terms = mix
-                    .chunks_exact(LANES)
-                    .zip(self.samples.chunks_exact(LANES));
-                for (mix, pattern) in terms {
-                    for ((s, &v), &g) in sum.iter_mut().zip(mix).zip(pattern) {
-                        *s += g * v;
-                    }
+            let mut mix = &self.mix[..];
+            for out in self.row.chunks_mut(BLOCKS_AT_ONCE * LANES) {
+                let (this, rest) = mix.split_at(rank * out.len());
+                mix = rest;
+                match out.len() / LANES {
+                    BLOCKS_AT_ONCE => recombine::<BLOCKS_AT_ONCE>(this, &self.samples, out),
+                    3 => recombine::<3>(this, &self.samples, out),
+                    2 => recombine::<2>(this, &self.samples, out),
+                    _ => recombine::<1>(this, &self.samples, out),
                 }
-                out.copy_from_slice(&sum);
             }
             buffer.extend(
                 self.row[..2 * strips]
@@ -352,9 +354,30 @@ impl KinematicsWork {
     }
 }
 
-/// Floats the recombination of the strips' velocities sums at a time (two SSE registers;
-/// the compiler keeps them in registers over the terms).
+/// Floats of one block of a row's strip velocities (two SSE registers).
 const LANES: usize = 8;
+/// Blocks the recombination sums at a time (eight SSE registers, which the compiler keeps
+/// over the terms); 4 is the most that fits beside the operands.
+const BLOCKS_AT_ONCE: usize = 4;
+
+/// `out` (K blocks of [`LANES`] floats) = sum over the terms q, in order, of the term's
+/// sample (re, im, re, im, ...) times its K blocks of `mix` (term-major, then block).
+#[inline(always)]
+fn recombine<const K: usize>(mix: &[f32], samples: &[Complex32], out: &mut [f32]) {
+    let mut sum = [[0.0f32; LANES]; K];
+    for (mix, g) in mix.chunks_exact(K * LANES).zip(samples) {
+        let pattern: [f32; LANES] = std::array::from_fn(|i| if i % 2 == 0 { g.re } else { g.im });
+        for (sum, mix) in sum.iter_mut().zip(mix.chunks_exact(LANES)) {
+            for ((s, &v), &p) in sum.iter_mut().zip(mix).zip(&pattern) {
+                *s += p * v;
+            }
+        }
+    }
+    // Block by block: a copy of a known length, kept inline.
+    for (out, sum) in out.chunks_exact_mut(LANES).zip(&sum) {
+        out.copy_from_slice(sum);
+    }
+}
 
 /// Clears `v` and fills it from `values` (its capacity kept).
 fn refill<T>(v: &mut Vec<T>, values: impl Iterator<Item = T>) {
@@ -584,13 +607,15 @@ mod tests {
     /// [`KINEMATICS_TOLERANCE`] of the rms velocity (the basis promises the tolerance in
     /// expectation; the factor covers one realisation, and the single-precision storage
     /// adds some 1e-8), for the default platform's draft (30 m, 20 strips) in a spread sea
-    /// and a spar's (120 m, 40 strips) in head seas.
+    /// and a spar's (120 m, 40 strips; 60 m, 28 strips) in head seas.
     #[test]
     fn rows_from_the_depth_terms_match_one_transform_per_strip() {
         use super::super::depth_basis::KINEMATICS_TOLERANCE;
         for (c, draft, strips) in [
             (components(PI / 6.0, Spreading::CosN { n: 2.0 }), 30.0, 20),
             (components(0.0, Spreading::LongCrested), 120.0, 40),
+            // 7 blocks of 8 floats: recombined as 4 + 3.
+            (components(0.0, Spreading::LongCrested), 60.0, 28),
         ] {
             let column = Cylinder {
                 x: 35.0,
