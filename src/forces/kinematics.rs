@@ -141,6 +141,8 @@ pub struct KinematicsWork {
     /// after the other, in single precision.
     eta: Vec<Complex32>,
     terms: Vec<Complex32>,
+    /// Two terms' series in one transform (waves along x).
+    pair: Vec<Complex64>,
     /// V_jq of the basis in single precision, each twice (for u_x and u_y), in blocks of
     /// [`LANES`] floats, in chunks of [`BLOCKS_AT_ONCE`] blocks, term-major within a chunk.
     mix: Vec<f32>,
@@ -173,9 +175,10 @@ impl KinematicsWork {
     /// elevation). Strip j's coefficients would be omega_n e^{k_n z_j} (A_x, A_y)_n, one
     /// transform per strip; the depth kernel's few leading terms ([`DepthBasis`], at a
     /// relative rms error of 1e-6) take one transform each
-    /// ([`Synthesizer::append_two_real_series`]: u_x + i u_y of the term), and every row's
-    /// strip velocities are recombined from them. The elevations (real) of two groups of
-    /// columns share one transform.
+    /// ([`Synthesizer::append_two_real_series`]: u_x + i u_y of the term; in waves along x,
+    /// where u_y = 0, two terms' u_x share one), and every row's strip velocities are
+    /// recombined from them. The elevations (real) of two groups of columns share one
+    /// transform.
     pub fn build(
         &mut self,
         components: &WaveComponents,
@@ -285,12 +288,32 @@ impl KinematicsWork {
         let [ax, ay, _] = &self.sums[group];
         self.terms.clear();
         self.terms.reserve(rank * n);
-        for q in 0..rank {
-            for (j, &p) in basis.profile(q).iter().enumerate().take(count) {
-                self.cx[j] = ax[j] * p;
-                self.cy[j] = ay[j] * p;
+        if ay[..count].iter().all(|&a| a == Complex64::default()) {
+            // Waves along x (long-crested head seas): u_y = 0 on every strip, so two terms'
+            // u_x share a transform as its real and imaginary parts (half the transforms).
+            for q in (0..rank).step_by(2) {
+                let second = (q + 1 < rank).then(|| basis.profile(q + 1));
+                for (j, &p) in basis.profile(q).iter().enumerate().take(count) {
+                    self.cx[j] = ax[j] * p;
+                    self.cy[j] = second.map_or(Complex64::default(), |s| ax[j] * s[j]);
+                }
+                self.pair.clear();
+                synth.append_two_real_series(&self.cx, &self.cy, &mut self.pair);
+                let along_x = |u: f64| Complex32::new(u as f32, 0.0);
+                self.terms.extend(self.pair.iter().map(|g| along_x(g.re)));
+                if second.is_some() {
+                    self.terms.extend(self.pair.iter().map(|g| along_x(g.im)));
+                }
             }
-            synth.append_two_real_series(&self.cx, &self.cy, &mut Narrowing(&mut self.terms));
+        } else {
+            for q in 0..rank {
+                for (j, &p) in basis.profile(q).iter().enumerate().take(count) {
+                    self.cx[j] = ax[j] * p;
+                    self.cy[j] = ay[j] * p;
+                }
+                let terms = &mut Narrowing(&mut self.terms);
+                synth.append_two_real_series(&self.cx, &self.cy, terms);
+            }
         }
         // V_jq duplicated for u_x and u_y (the row's interleaved layout) and padded with
         // zeros to whole blocks of LANES floats; the blocks in chunks of BLOCKS_AT_ONCE,
