@@ -143,10 +143,12 @@ pub struct KinematicsWork {
     terms: Vec<Complex32>,
     /// Two terms' series in one transform (waves along x).
     pair: Vec<Complex64>,
-    /// V_jq of the basis in single precision, each twice (for u_x and u_y), in blocks of
-    /// [`LANES`] floats, in chunks of [`BLOCKS_AT_ONCE`] blocks, term-major within a chunk.
+    /// V_jq of the basis in single precision, each twice (for u_x and u_y; once in waves
+    /// along x), in blocks of [`LANES`] floats, in chunks of [`BLOCKS_AT_ONCE`] blocks,
+    /// term-major within a chunk.
     mix: Vec<f32>,
-    /// One row's strip velocities, interleaved (u_x, u_y), padded to whole [`LANES`].
+    /// One row's strip velocities, interleaved (u_x, u_y) (u_x alone in waves along x),
+    /// padded to whole [`LANES`].
     row: Vec<f32>,
     /// One sample of every term.
     samples: Vec<Complex32>,
@@ -288,7 +290,8 @@ impl KinematicsWork {
         let [ax, ay, _] = &self.sums[group];
         self.terms.clear();
         self.terms.reserve(rank * n);
-        if ay[..count].iter().all(|&a| a == Complex64::default()) {
+        let along_x = ay[..count].iter().all(|&a| a == Complex64::default());
+        if along_x {
             // Waves along x (long-crested head seas): u_y = 0 on every strip, so two terms'
             // u_x share a transform as its real and imaginary parts (half the transforms).
             for q in (0..rank).step_by(2) {
@@ -315,21 +318,23 @@ impl KinematicsWork {
                 synth.append_two_real_series(&self.cx, &self.cy, terms);
             }
         }
-        // V_jq duplicated for u_x and u_y (the row's interleaved layout) and padded with
-        // zeros to whole blocks of LANES floats; the blocks in chunks of BLOCKS_AT_ONCE,
-        // each chunk term-major, then block (the order in which `recombine` reads them).
-        let width = LANES * (2 * strips).div_ceil(LANES);
+        // V_jq for u_x and u_y (the row's interleaved layout), or for u_x alone in waves
+        // along x, padded with zeros to whole blocks of LANES floats; the blocks in chunks
+        // of BLOCKS_AT_ONCE, each chunk term-major, then block (as `recombine` reads them).
+        let per_strip = if along_x { 1 } else { 2 };
+        let width = LANES * (per_strip * strips).div_ceil(LANES);
         self.mix.clear();
         for first in (0..width).step_by(BLOCKS_AT_ONCE * LANES) {
             let floats = first..(first + BLOCKS_AT_ONCE * LANES).min(width);
             for q in 0..rank {
                 let v = basis.mix(q);
-                let duplicated = floats
+                let repeated = floats
                     .clone()
-                    .map(|i| v.get(i / 2).map_or(0.0, |&v| v as f32));
-                self.mix.extend(duplicated);
+                    .map(|i| v.get(i / per_strip).map_or(0.0, |&v| v as f32));
+                self.mix.extend(repeated);
             }
         }
+        let pattern = if along_x { real_part } else { interleaved };
         let mut rows = self.spare_rows.pop().unwrap_or_default();
         if Arc::get_mut(&mut rows).is_none() {
             // Still held by records cloned from these (a cloned simulation): new rows.
@@ -346,8 +351,9 @@ impl KinematicsWork {
         // Row m: the elevation, then u_j(m) = sum_q V_jq g_q(m) for every strip j, in
         // single precision (the terms' rounding and the sum's, a few 1e-8 relative, are
         // below the storage's own and the truncation's 1e-6), summed over q in order.
-        // The row is accumulated as interleaved (u_x, u_y) floats, BLOCKS_AT_ONCE blocks
-        // of LANES at a time in registers: lane i of a block takes mix * (re, im, ...)_q.
+        // The row is accumulated as interleaved (u_x, u_y) floats (u_x alone in waves along
+        // x, u_y = 0), BLOCKS_AT_ONCE blocks of LANES at a time in registers: lane i of a
+        // block takes mix * (re, im, re, im, ...)_q (re, re, ... along x).
         let eta = self.eta[group / 2 * n..][..n].iter();
         let real = group.is_multiple_of(2);
         for (m, eta) in eta.enumerate() {
@@ -360,18 +366,21 @@ impl KinematicsWork {
             for out in self.row.chunks_mut(BLOCKS_AT_ONCE * LANES) {
                 let (this, rest) = mix.split_at(rank * out.len());
                 mix = rest;
+                let samples = &self.samples;
                 match out.len() / LANES {
-                    BLOCKS_AT_ONCE => recombine::<BLOCKS_AT_ONCE>(this, &self.samples, out),
-                    3 => recombine::<3>(this, &self.samples, out),
-                    2 => recombine::<2>(this, &self.samples, out),
-                    _ => recombine::<1>(this, &self.samples, out),
+                    BLOCKS_AT_ONCE => recombine::<BLOCKS_AT_ONCE>(this, samples, pattern, out),
+                    3 => recombine::<3>(this, samples, pattern, out),
+                    2 => recombine::<2>(this, samples, pattern, out),
+                    _ => recombine::<1>(this, samples, pattern, out),
                 }
             }
-            buffer.extend(
-                self.row[..2 * strips]
-                    .chunks_exact(2)
-                    .map(|u| Complex32::new(u[0], u[1])),
-            );
+            if along_x {
+                let u = self.row[..strips].iter();
+                buffer.extend(u.map(|&u| Complex32::new(u, 0.0)));
+            } else {
+                let u = self.row[..2 * strips].chunks_exact(2);
+                buffer.extend(u.map(|u| Complex32::new(u[0], u[1])));
+            }
         }
         rows
     }
@@ -384,12 +393,18 @@ const LANES: usize = 8;
 const BLOCKS_AT_ONCE: usize = 4;
 
 /// `out` (K blocks of [`LANES`] floats) = sum over the terms q, in order, of the term's
-/// sample (re, im, re, im, ...) times its K blocks of `mix` (term-major, then block).
+/// sample as `pattern` spreads it over a block, times its K blocks of `mix` (term-major,
+/// then block).
 #[inline(always)]
-fn recombine<const K: usize>(mix: &[f32], samples: &[Complex32], out: &mut [f32]) {
+fn recombine<const K: usize>(
+    mix: &[f32],
+    samples: &[Complex32],
+    pattern: fn(Complex32) -> [f32; LANES],
+    out: &mut [f32],
+) {
     let mut sum = [[0.0f32; LANES]; K];
-    for (mix, g) in mix.chunks_exact(K * LANES).zip(samples) {
-        let pattern: [f32; LANES] = std::array::from_fn(|i| if i % 2 == 0 { g.re } else { g.im });
+    for (mix, &g) in mix.chunks_exact(K * LANES).zip(samples) {
+        let pattern = pattern(g);
         for (sum, mix) in sum.iter_mut().zip(mix.chunks_exact(LANES)) {
             for ((s, &v), &p) in sum.iter_mut().zip(mix).zip(&pattern) {
                 *s += p * v;
@@ -400,6 +415,18 @@ fn recombine<const K: usize>(mix: &[f32], samples: &[Complex32], out: &mut [f32]
     for (out, sum) in out.chunks_exact_mut(LANES).zip(&sum) {
         out.copy_from_slice(sum);
     }
+}
+
+/// A sample over a block of interleaved (u_x, u_y) floats: (re, im, re, im, ...).
+#[inline(always)]
+fn interleaved(g: Complex32) -> [f32; LANES] {
+    std::array::from_fn(|i| if i % 2 == 0 { g.re } else { g.im })
+}
+
+/// A sample over a block of u_x floats (waves along x): (re, re, ...).
+#[inline(always)]
+fn real_part(g: Complex32) -> [f32; LANES] {
+    [g.re; LANES]
 }
 
 /// Clears `v` and fills it from `values` (its capacity kept).
@@ -629,16 +656,19 @@ mod tests {
     /// the rms velocity error over the record and the strips is within twice the
     /// [`KINEMATICS_TOLERANCE`] of the rms velocity (the basis promises the tolerance in
     /// expectation; the factor covers one realisation, and the single-precision storage
-    /// adds some 1e-8), for the default platform's draft (30 m, 20 strips) in a spread sea
-    /// and a spar's (120 m, 40 strips; 60 m, 28 strips) in head seas.
+    /// adds some 1e-8), for the default platform's draft (30 m, 20 strips) and a deeper
+    /// one (60 m, 28 strips) in a spread sea, and a spar's (120 m, 40 strips) and a short
+    /// column's (30 m, 12 strips) in head seas (waves along x: u_x alone).
     #[test]
     fn rows_from_the_depth_terms_match_one_transform_per_strip() {
         use super::super::depth_basis::KINEMATICS_TOLERANCE;
         for (c, draft, strips) in [
             (components(PI / 6.0, Spreading::CosN { n: 2.0 }), 30.0, 20),
             (components(0.0, Spreading::LongCrested), 120.0, 40),
-            // 7 blocks of 8 floats: recombined as 4 + 3.
-            (components(0.0, Spreading::LongCrested), 60.0, 28),
+            // Interleaved (u_x, u_y): 7 blocks of 8 floats, recombined as 4 + 3; u_x alone
+            // (waves along x): 2 blocks.
+            (components(PI / 6.0, Spreading::CosN { n: 2.0 }), 60.0, 28),
+            (components(0.0, Spreading::LongCrested), 30.0, 12),
         ] {
             let column = Cylinder {
                 x: 35.0,
