@@ -334,7 +334,6 @@ impl KinematicsWork {
                 self.mix.extend(repeated);
             }
         }
-        let pattern = if along_x { real_part } else { interleaved };
         let mut rows = self.spare_rows.pop().unwrap_or_default();
         if Arc::get_mut(&mut rows).is_none() {
             // Still held by records cloned from these (a cloned simulation): new rows.
@@ -361,23 +360,12 @@ impl KinematicsWork {
             for (q, g) in self.samples.iter_mut().enumerate() {
                 *g = self.terms[q * n + m];
             }
-            // (A basis of rank 0, a sea without power, leaves the velocities zero.)
-            let mut mix = &self.mix[..];
-            for out in self.row.chunks_mut(BLOCKS_AT_ONCE * LANES) {
-                let (this, rest) = mix.split_at(rank * out.len());
-                mix = rest;
-                let samples = &self.samples;
-                match out.len() / LANES {
-                    BLOCKS_AT_ONCE => recombine::<BLOCKS_AT_ONCE>(this, samples, pattern, out),
-                    3 => recombine::<3>(this, samples, pattern, out),
-                    2 => recombine::<2>(this, samples, pattern, out),
-                    _ => recombine::<1>(this, samples, pattern, out),
-                }
-            }
             if along_x {
+                recombine_row(&self.mix, &self.samples, real_part, &mut self.row);
                 let u = self.row[..strips].iter();
                 buffer.extend(u.map(|&u| Complex32::new(u, 0.0)));
             } else {
+                recombine_row(&self.mix, &self.samples, interleaved, &mut self.row);
                 let u = self.row[..2 * strips].chunks_exact(2);
                 buffer.extend(u.map(|u| Complex32::new(u[0], u[1])));
             }
@@ -392,6 +380,29 @@ const LANES: usize = 8;
 /// over the terms); 4 is the most that fits beside the operands.
 const BLOCKS_AT_ONCE: usize = 4;
 
+/// One row's strip velocities from the terms' `samples`, [`BLOCKS_AT_ONCE`] blocks of
+/// `row` at a time ([`recombine`]). `pattern` (a function item, so that each layout gets
+/// its own inlined loop) spreads a sample over a block. A basis of rank 0 (a sea without
+/// power) leaves the velocities zero.
+#[inline(always)]
+fn recombine_row(
+    mut mix: &[f32],
+    samples: &[Complex32],
+    pattern: impl Fn(Complex32) -> [f32; LANES] + Copy,
+    row: &mut [f32],
+) {
+    for out in row.chunks_mut(BLOCKS_AT_ONCE * LANES) {
+        let (this, rest) = mix.split_at(samples.len() * out.len());
+        mix = rest;
+        match out.len() / LANES {
+            BLOCKS_AT_ONCE => recombine::<BLOCKS_AT_ONCE>(this, samples, pattern, out),
+            3 => recombine::<3>(this, samples, pattern, out),
+            2 => recombine::<2>(this, samples, pattern, out),
+            _ => recombine::<1>(this, samples, pattern, out),
+        }
+    }
+}
+
 /// `out` (K blocks of [`LANES`] floats) = sum over the terms q, in order, of the term's
 /// sample as `pattern` spreads it over a block, times its K blocks of `mix` (term-major,
 /// then block).
@@ -399,7 +410,7 @@ const BLOCKS_AT_ONCE: usize = 4;
 fn recombine<const K: usize>(
     mix: &[f32],
     samples: &[Complex32],
-    pattern: fn(Complex32) -> [f32; LANES],
+    pattern: impl Fn(Complex32) -> [f32; LANES],
     out: &mut [f32],
 ) {
     let mut sum = [[0.0f32; LANES]; K];
