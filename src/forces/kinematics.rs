@@ -138,11 +138,10 @@ pub struct KinematicsWork {
     bases: Vec<Arc<DepthBasis>>,
     /// The groups' elevation series, two per transform (groups 2p and 2p + 1 as the real
     /// and imaginary parts of pair p's N samples), and one group's depth terms' series one
-    /// after the other, in single precision.
+    /// after the other (in waves along x two terms to a series, 2p and 2p + 1 as its real
+    /// and imaginary parts), in single precision.
     eta: Vec<Complex32>,
     terms: Vec<Complex32>,
-    /// Two terms' series in one transform (waves along x).
-    pair: Vec<Complex64>,
     /// V_jq of the basis in single precision, each twice (for u_x and u_y; once in waves
     /// along x), in blocks of [`LANES`] floats, in chunks of [`BLOCKS_AT_ONCE`] blocks,
     /// term-major within a chunk.
@@ -300,13 +299,8 @@ impl KinematicsWork {
                     self.cx[j] = ax[j] * p;
                     self.cy[j] = second.map_or(Complex64::default(), |s| ax[j] * s[j]);
                 }
-                self.pair.clear();
-                synth.append_two_real_series(&self.cx, &self.cy, &mut self.pair);
-                let along_x = |u: f64| Complex32::new(u as f32, 0.0);
-                self.terms.extend(self.pair.iter().map(|g| along_x(g.re)));
-                if second.is_some() {
-                    self.terms.extend(self.pair.iter().map(|g| along_x(g.im)));
-                }
+                let terms = &mut Narrowing(&mut self.terms);
+                synth.append_two_real_series(&self.cx, &self.cy, terms);
             }
         } else {
             for q in 0..rank {
@@ -358,7 +352,12 @@ impl KinematicsWork {
         for (m, eta) in eta.enumerate() {
             buffer.push(Complex32::new(if real { eta.re } else { eta.im }, 0.0));
             for (q, g) in self.samples.iter_mut().enumerate() {
-                *g = self.terms[q * n + m];
+                *g = if along_x {
+                    let pair = self.terms[q / 2 * n + m];
+                    Complex32::new(if q % 2 == 0 { pair.re } else { pair.im }, 0.0)
+                } else {
+                    self.terms[q * n + m]
+                };
             }
             if along_x {
                 recombine_row(&self.mix, &self.samples, real_part, &mut self.row);
