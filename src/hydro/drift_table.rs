@@ -58,14 +58,23 @@ impl DriftTable {
         for (r, row) in rows.iter().enumerate() {
             validate_row(r, row, has_damping)?;
         }
-        // The headings, sorted, one per direction (within GRID_TOLERANCE), and the rows
-        // grouped by heading in the order given: O(R log R) for R rows.
-        let mut headings: Vec<f64> = rows.iter().map(|r| r.heading).collect();
-        headings.sort_by(f64::total_cmp);
-        headings.dedup_by(|later, kept| same(*kept, *later));
+        // The headings, sorted, one per direction (within GRID_TOLERANCE), from one sweep
+        // of the rows in heading order, and the rows grouped by heading in the order given:
+        // O(R log R) for R rows.
+        let mut by_heading: Vec<usize> = (0..rows.len()).collect();
+        by_heading.sort_by(|&a, &b| rows[a].heading.total_cmp(&rows[b].heading));
+        let mut headings: Vec<f64> = Vec::new();
+        let mut group_of = vec![0; rows.len()];
+        for &r in &by_heading {
+            let h = rows[r].heading;
+            if !headings.last().is_some_and(|&kept| same(kept, h)) {
+                headings.push(h);
+            }
+            group_of[r] = headings.len() - 1;
+        }
         let mut groups: Vec<Vec<(usize, &DriftRow)>> = vec![Vec::new(); headings.len()];
         for (r, row) in rows.iter().enumerate() {
-            groups[heading_index(&headings, r, row.heading)?].push((r, row));
+            groups[group_of[r]].push((r, row));
         }
         let omegas: Vec<f64> = groups[0].iter().map(|(_, r)| r.omega).collect();
         for (ih, (&h, these)) in headings.iter().zip(&groups).enumerate() {
@@ -458,21 +467,6 @@ fn check_frequencies(heading: f64, rows: &[(usize, &DriftRow)], reference: &[f64
         format!("heading = {:.3} deg", heading.to_degrees()),
         "frequencies closer than the matching tolerance within one heading",
     ))
-}
-
-/// The index in `headings` (sorted, one per direction) of row `r`'s `heading`.
-fn heading_index(headings: &[f64], r: usize, heading: f64) -> Result<usize> {
-    let i = headings.partition_point(|&h| h < heading);
-    [i, i.wrapping_sub(1)]
-        .into_iter()
-        .find(|&k| headings.get(k).is_some_and(|&h| same(h, heading)))
-        .ok_or_else(|| {
-            Error::invalid(
-                format!("drift.rows[{r}].heading"),
-                heading.to_degrees(),
-                "heading within the matching tolerance of two listed headings",
-            )
-        })
 }
 
 #[cfg(test)]

@@ -273,10 +273,50 @@ fn malformed_drift_tables_are_refused() {
     rows.insert(5, rows[4].clone());
     table_refused(&rows, "drift.rows[5].omega", "1", "duplicated");
 
+    // Two frequencies of one heading closer than the matching tolerance (1e-9 relative):
+    // each matches a frequency of the first heading, but they cannot pair up in order.
+    let mut rows = small_rows();
+    let near = DriftRow {
+        omega: 1.0 + 1e-10,
+        ..rows[7].clone()
+    };
+    rows.insert(8, near);
+    table_refused(
+        &rows,
+        "drift.rows",
+        "heading = 20.000 deg",
+        "closer than the matching tolerance",
+    );
+
     // Damping on some rows only.
     let mut rows = small_rows();
     rows[6].damping = Some([[0.0; 3]; 3]);
     table_refused(&rows, "drift.rows[6].damping", "present", "every row");
+}
+
+/// Rows given heading by heading in any order land on their own (frequency, heading) node.
+#[test]
+fn drift_rows_in_any_heading_order_land_on_their_nodes() {
+    let value = |ih: usize, iw: usize| [ih as f64, iw as f64, (10 * ih + iw) as f64];
+    let mut rows = Vec::new();
+    for ih in [2, 0, 1] {
+        for iw in 0..3 {
+            rows.push(DriftRow {
+                omega: 0.5 * (iw + 1) as f64,
+                heading: (10.0 * ih as f64).to_radians(),
+                drift: value(ih, iw),
+                damping: None,
+            });
+        }
+    }
+    let table = DriftTable::from_rows(&rows).unwrap();
+    assert_eq!(table.headings().len(), 3);
+    for (ih, &h) in table.headings().iter().enumerate() {
+        assert!((h - (10.0 * ih as f64).to_radians()).abs() < 1e-15);
+        for iw in 0..3 {
+            assert_eq!(table.drift_at_node(ih, iw), value(ih, iw));
+        }
+    }
 }
 
 #[test]
