@@ -27,6 +27,10 @@ use crate::scenario::{file, limits, ColumnGrid, DriftSource, Platform, Scenario}
 use serde::Serialize;
 use std::path::Path;
 
+pub mod inertia;
+pub mod ranges;
+pub use inertia::{BodyData, Inertia, Origin};
+
 /// The shortest block of the record stream, in RK4 steps (the cross-fade takes a quarter of
 /// a block at most; `forces::stream`).
 const MIN_BLOCK_STEPS: f64 = 64.0;
@@ -38,6 +42,9 @@ const MAX_BLOCK_SAMPLES: f64 = 4_194_304.0;
 /// The hydrodynamic data of a problem.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Hydro {
+    /// The body data the drift source's data hold (a database's mass properties and
+    /// low-frequency added mass), for [`Problem::inertia`].
+    pub body: BodyData,
     /// Mean drift (and, when given, the wave-drift damping b_ij) per unit amplitude squared.
     pub drift: DriftTable,
     /// The full difference-frequency QTF (uni-directional headings), when the drift source
@@ -52,6 +59,7 @@ impl Hydro {
     /// A drift table alone.
     pub fn from_drift(drift: DriftTable) -> Hydro {
         Hydro {
+            body: BodyData::default(),
             drift,
             qtf: None,
             bidirectional: None,
@@ -161,6 +169,7 @@ pub fn resolve_hydro(
             let array = ColumnArray::new(platform.columns.clone(), *depth)?;
             let drift = array.drift_table(environment, &omegas, &headings)?;
             Ok(Hydro {
+                body: BodyData::default(),
                 drift,
                 qtf: None,
                 bidirectional: Some(BidirectionalSource::ColumnArray { array, omegas }),
@@ -214,6 +223,12 @@ fn from_database(
         }
     };
     Ok(Hydro {
+        body: BodyData {
+            name: name.to_string(),
+            mass_properties: database.mass_properties,
+            added_mass: database.low_frequency_added_mass,
+            provenance: database.provenance,
+        },
         drift,
         qtf,
         bidirectional,
@@ -251,6 +266,40 @@ pub struct BandTrim {
 }
 
 impl Problem {
+    /// The rigid-body mass, yaw inertia and low-frequency added mass the equations of motion
+    /// use, each from the configuration or the hydrodynamic data ([`inertia`]'s rule), or
+    /// the error that names what is missing.
+    pub fn inertia(&self) -> Result<Inertia> {
+        Inertia::resolve(&self.platform, &self.hydro.body).map_err(|missing| {
+            let data = if missing.data.is_empty() {
+                "the drift source has no body data".to_string()
+            } else {
+                format!("{} has no mass_properties", missing.data)
+            };
+            Error::invalid(
+                missing.key,
+                "(not given)",
+                format!("is required: {data}; give it in [platform]"),
+            )
+        })
+    }
+
+    /// The undamped surge natural period 2 pi sqrt((M + A11) / C11), s; `None` without
+    /// surge stiffness (or without a mass).
+    pub fn surge_natural_period(&self) -> Option<f64> {
+        self.inertia()
+            .ok()?
+            .uncoupled_periods(&self.platform.stiffness)[0]
+    }
+
+    /// The default start-up transient, s: [`crate::scenario::TRANSIENT_CYCLES`] surge
+    /// natural periods, at most half the run (0 without surge stiffness).
+    pub fn default_transient(&self) -> f64 {
+        self.surge_natural_period().map_or(0.0, |period| {
+            (crate::scenario::TRANSIENT_CYCLES * period).min(0.5 * self.run.duration)
+        })
+    }
+
     /// The simulated band (omega_min, omega_max), rad/s: `sea.band` when the user set it;
     /// otherwise the spectrum's default band ([`crate::sea_state::SeaState::band`]), limited
     /// to the frequencies the hydrodynamic data cover (the drift table, and the QTF under
@@ -410,10 +459,11 @@ impl Problem {
     /// value.
     pub fn validate(&self) -> Result<()> {
         limits::check_sizes(self, None)?;
-        require_positive("environment.gravity", self.environment.gravity)?;
-        require_positive("environment.water_density", self.environment.water_density)?;
+        ranges::GRAVITY.check("environment.gravity", self.environment.gravity)?;
+        ranges::WATER_DENSITY.check("environment.water_density", self.environment.water_density)?;
         self.sea.validate(self.environment.gravity)?;
-        require_non_negative("current.speed", self.current.speed)?;
+        self.check_sea_ranges()?;
+        ranges::CURRENT_SPEED.check("current.speed", self.current.speed)?;
         require_finite("current.direction_deg", self.current.direction.to_degrees())?;
         if self.run.duration.is_nan() || self.run.duration <= 0.0 {
             return Err(Error::invalid(
@@ -495,6 +545,23 @@ impl Problem {
         require_finite("initial.velocity[0]", vx)?;
         require_finite("initial.velocity[1]", vy)?;
         require_finite("initial.yaw_rate_deg", yaw_rate.to_degrees())?;
+        Ok(())
+    }
+
+    /// The sea's peak period and band within their physical ranges
+    /// ([`ranges`]; `SeaState::validate` has checked their signs and the steepness).
+    fn check_sea_ranges(&self) -> Result<()> {
+        use crate::sea_state::Spectrum;
+        // Hs is bounded by the breaking limit at this Tp (`SeaState::validate`).
+        if let Spectrum::Jonswap { tp, .. } | Spectrum::PiersonMoskowitz { tp, .. } =
+            self.sea.spectrum
+        {
+            ranges::PEAK_PERIOD.check("sea.tp", tp)?;
+        }
+        if let Some((lo, hi)) = self.sea.band {
+            ranges::BAND.check("sea.band[0]", lo)?;
+            ranges::BAND.check("sea.band[1]", hi)?;
+        }
         Ok(())
     }
 
@@ -645,19 +712,97 @@ impl Problem {
         }
     }
 
+    /// The platform's values: the mass and inertia within their physical ranges (named where
+    /// they came from: `platform.mass`, or the database's `mass_properties.mass`), M + A
+    /// positive definite, the stiffness storing no negative energy and resolved by the RK4
+    /// step, finite damping matrices, the columns within their ranges.
     fn validate_platform(&self) -> Result<()> {
         let p = &self.platform;
-        require_positive("platform.mass", p.mass)?;
-        require_positive("platform.yaw_inertia", p.yaw_inertia)?;
-        require_finite_matrix("platform.added_mass", &p.added_mass)?;
+        if let Some(added) = &p.added_mass {
+            require_finite_matrix("platform.added_mass", added)?;
+        }
+        let inertia = self.inertia()?;
+        let named = |key: &str, origin: &Origin, data_field: &str| match origin {
+            Origin::Data { name, .. } => format!("{data_field} of {name}"),
+            _ => key.to_string(),
+        };
+        ranges::MASS.check(
+            named(
+                "platform.mass",
+                &inertia.mass_origin,
+                "mass_properties.mass",
+            ),
+            inertia.mass,
+        )?;
+        ranges::YAW_INERTIA.check(
+            named(
+                "platform.yaw_inertia",
+                &inertia.yaw_inertia_origin,
+                "mass_properties.yaw_inertia",
+            ),
+            inertia.yaw_inertia,
+        )?;
+        let rigid = [inertia.mass, inertia.mass, inertia.yaw_inertia];
+        let total: [[f64; 3]; 3] = std::array::from_fn(|i| {
+            std::array::from_fn(|j| inertia.added_mass[i][j] + if i == j { rigid[i] } else { 0.0 })
+        });
+        if !ranges::mass_matrix_is_positive(&total) {
+            return Err(Error::invalid(
+                named(
+                    "platform.added_mass",
+                    &inertia.added_mass_origin,
+                    "low_frequency_added_mass",
+                ),
+                format!("{:?}", inertia.added_mass),
+                format!(
+                    "makes the mass matrix M + A (mass {:e} kg, yaw inertia {:e} kg m^2) not \
+                     positive definite: no body has such a kinetic energy",
+                    inertia.mass, inertia.yaw_inertia
+                ),
+            ));
+        }
         require_finite_matrix("platform.stiffness", &p.stiffness)?;
+        ranges::check_stiffness(&p.stiffness)?;
+        self.check_stiffness_against_the_step(&inertia)?;
         require_finite_matrix("platform.linear_damping", &p.linear_damping)?;
         require_finite_matrix("platform.quadratic_damping", &p.quadratic_damping)?;
         for (k, c) in p.columns.iter().enumerate() {
-            require_finite(format_args!("platform.columns[{k}].x"), c.x)?;
-            require_finite(format_args!("platform.columns[{k}].y"), c.y)?;
-            require_positive(&format!("platform.columns[{k}].diameter"), c.diameter)?;
-            require_positive(&format!("platform.columns[{k}].draft"), c.draft)?;
+            ranges::COLUMN_OFFSET.check(format!("platform.columns[{k}].x"), c.x)?;
+            ranges::COLUMN_OFFSET.check(format!("platform.columns[{k}].y"), c.y)?;
+            ranges::COLUMN_DIAMETER.check(format!("platform.columns[{k}].diameter"), c.diameter)?;
+            ranges::COLUMN_DRAFT.check(format!("platform.columns[{k}].draft"), c.draft)?;
+        }
+        Ok(())
+    }
+
+    /// Each DOF's undamped natural period must be long enough for the RK4 step to follow:
+    /// RK4 is unstable for an oscillator with omega h > 2 sqrt(2) (its stability region on
+    /// the imaginary axis), so the period must exceed 2 pi h / (2 sqrt(2)) = 2.22 h. A
+    /// stiffness that breaks it is refused naming the stiffness and the step.
+    fn check_stiffness_against_the_step(&self, inertia: &Inertia) -> Result<()> {
+        const KEYS: [&str; 3] = [
+            "platform.stiffness[0][0]",
+            "platform.stiffness[1][1]",
+            "platform.stiffness[2][2]",
+        ];
+        let h = self.run.time_step;
+        let shortest = 2.0 * std::f64::consts::PI * h / (2.0 * std::f64::consts::SQRT_2);
+        for (i, period) in inertia
+            .uncoupled_periods(&self.platform.stiffness)
+            .into_iter()
+            .enumerate()
+        {
+            if let Some(period) = period.filter(|t| *t <= shortest) {
+                return Err(Error::invalid(
+                    KEYS[i],
+                    format!("{:e}", self.platform.stiffness[i][i]),
+                    format!(
+                        "gives a natural period of {period:.3e} s, too short for RK4 steps of \
+                         {h} s (run.time_step; unstable below 2.22 steps a period): lower the \
+                         stiffness or the step"
+                    ),
+                ));
+            }
         }
         Ok(())
     }

@@ -77,15 +77,21 @@ impl Rotation {
 }
 
 impl SlowDriftModel {
-    /// Builds the model; refuses a singular mass matrix M + A.
+    /// Builds the model, with the mass and added mass of [`Problem::inertia`]; refuses a
+    /// singular mass matrix M + A.
     pub fn new(config: &Problem) -> Result<Self> {
         let p = &config.platform;
-        let rigid = Matrix3::from_diagonal(&Vector3::new(p.mass, p.mass, p.yaw_inertia));
-        let total = rigid + matrix(&p.added_mass);
+        let inertia = config.inertia()?;
+        let rigid = Matrix3::from_diagonal(&Vector3::new(
+            inertia.mass,
+            inertia.mass,
+            inertia.yaw_inertia,
+        ));
+        let total = rigid + matrix(&inertia.added_mass);
         let inverse_mass = total.try_inverse().ok_or_else(|| {
             Error::invalid(
                 "platform.added_mass",
-                format!("{:?}", p.added_mass),
+                format!("{:?}", inertia.added_mass),
                 "M + A is singular",
             )
         })?;

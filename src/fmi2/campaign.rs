@@ -319,7 +319,7 @@ mod tests {
             name: "x".into(),
             problem: {
                 let mut c = other.clone();
-                c.platform.mass *= 2.0;
+                c.platform.mass = Some(2.0 * c.inertia().unwrap().mass);
                 c
             },
             transient: 0.0,

@@ -653,7 +653,7 @@ mod tests {
             problem
         );
         let mut other = problem.clone();
-        other.platform.mass *= 2.0;
+        other.platform.mass = Some(2.0 * other.inertia().unwrap().mass);
         let base = Base::Database("/data/platform.toml");
         let message = s.check_problem(&base, Ok(other)).unwrap_err().to_string();
         assert!(
@@ -679,7 +679,7 @@ mod tests {
         let mut b = a.clone();
         b.sea.seed += 1;
         let mut c = a.clone();
-        c.platform.mass *= 1.0 + f64::EPSILON;
+        c.platform.mass = Some(c.inertia().unwrap().mass * (1.0 + f64::EPSILON));
         let mut d = a.clone();
         d.run.duration += 1.0;
         for other in [b, c, d] {

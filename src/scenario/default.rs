@@ -40,12 +40,14 @@ mod tests {
         );
     }
 
-    /// The documented natural periods follow from the numbers in the file.
+    /// The documented natural periods follow from the file's stiffness and the database's
+    /// mass and added mass.
     #[test]
     fn natural_periods_are_200_s_surge_and_100_s_yaw() {
-        let p = default_scenario().unwrap().platform;
-        let surge = 2.0 * PI * ((p.mass + p.added_mass[0][0]) / p.stiffness[0][0]).sqrt();
-        let yaw = 2.0 * PI * ((p.yaw_inertia + p.added_mass[2][2]) / p.stiffness[2][2]).sqrt();
+        let problem = crate::problem::resolve(&default_scenario().unwrap()).unwrap();
+        let (p, i) = (&problem.platform, problem.inertia().unwrap());
+        let surge = 2.0 * PI * ((i.mass + i.added_mass[0][0]) / p.stiffness[0][0]).sqrt();
+        let yaw = 2.0 * PI * ((i.yaw_inertia + i.added_mass[2][2]) / p.stiffness[2][2]).sqrt();
         assert!((surge - 200.0).abs() < 0.5, "surge period {surge}");
         assert!((yaw - 100.0).abs() < 0.5, "yaw period {yaw}");
     }
@@ -55,7 +57,8 @@ mod tests {
     /// the cusp that two pontoons share at each inner corner (r^2 - pi r^2 / 4).
     #[test]
     fn mass_is_the_displaced_water() {
-        let p = default_scenario().unwrap().platform;
+        let problem = crate::problem::resolve(&default_scenario().unwrap()).unwrap();
+        let p = problem.inertia().unwrap();
         let columns = 4.0 * PI * 10.0f64.powi(2) * 30.0;
         let pontoons = 4.0 * (20.0 * 70.0 - PI * 100.0 - (100.0 - PI * 25.0)) * 14.0;
         let mass = 1025.0 * (columns + pontoons);

@@ -39,10 +39,11 @@
 //! memory_limit_gb = 4.0      # GB (1e9 bytes) the records may take; larger estimates refused
 //!
 //! [platform]                 # matrices are 3x3, rows and columns (surge, sway, yaw)
-//! mass = 1.2e7               # kg, required
-//! yaw_inertia = 7.5e9        # kg m^2, required
+//! mass = 1.2e7               # kg; default: the drift database's mass_properties
+//! yaw_inertia = 7.5e9        # kg m^2; default: the drift database's mass_properties
 //! stiffness = [[...], [...], [...]]  # N/m, N, N m/rad on (X, Y, theta), required
-//! added_mass = [[...], ...]          # kg, kg m, kg m^2; default zeros
+//! added_mass = [[...], ...]          # kg, kg m, kg m^2; default: the drift database's
+//!                                    # low_frequency_added_mass, else zeros
 //! linear_damping = [[...], ...]      # N s/m, ...; default zeros
 //! quadratic_damping = [[...], ...]   # force_i = sum_j Bq_ij v_j |v_j|; default zeros
 //! [[platform.columns]]       # zero or more, body frame, m
@@ -474,10 +475,9 @@ impl RunFile {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct PlatformFile {
-    mass: f64,
-    yaw_inertia: f64,
-    #[serde(default)]
-    added_mass: [[f64; 3]; 3],
+    mass: Option<f64>,
+    yaw_inertia: Option<f64>,
+    added_mass: Option<[[f64; 3]; 3]>,
     stiffness: [[f64; 3]; 3],
     #[serde(default)]
     linear_damping: [[f64; 3]; 3],
@@ -1092,9 +1092,9 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
         assert_eq!(
             config.platform,
             Platform {
-                mass: 1.0e7,
-                yaw_inertia: 5.0e9,
-                added_mass: diagonal(1.0e6, 2.0e6, 3.0e9),
+                mass: Some(1.0e7),
+                yaw_inertia: Some(5.0e9),
+                added_mass: Some(diagonal(1.0e6, 2.0e6, 3.0e9)),
                 stiffness: diagonal(1.0e5, 2.0e5, 3.0e8),
                 linear_damping: diagonal(1.0e4, 1.0e4, 1.0e7),
                 quadratic_damping: diagonal(1.0e3, 1.0e3, 1.0e6),
@@ -1161,7 +1161,10 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
         assert_eq!(config.sea.band, None);
         assert_eq!(config.run.time_step, DEFAULT_TIME_STEP);
         assert_eq!(config.run.start_time, 0.0);
-        assert_eq!(config.platform.added_mass, [[0.0; 3]; 3]);
+        assert_eq!(config.platform.added_mass, None);
+        let inertia = config.inertia().unwrap();
+        assert_eq!(inertia.added_mass, [[0.0; 3]; 3]);
+        assert_eq!(inertia.added_mass_origin, crate::problem::Origin::Zero);
         assert_eq!(config.platform.linear_damping, [[0.0; 3]; 3]);
         assert_eq!(config.platform.quadratic_damping, [[0.0; 3]; 3]);
         assert!(config.platform.columns.is_empty());
@@ -1500,6 +1503,7 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
             drift: vec![point(0.3, 100.0), point(2.0, 900.0)],
             qtf: None,
             bidirectional_drift: None,
+            provenance: Default::default(),
         }
     }
 
@@ -1564,10 +1568,11 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
             .expect("writable");
         let mismatch = problem(&text, dir).expect_err("rho differs");
         std::fs::remove_file(&json).expect("remove temporary file");
-        assert_eq!(
-            from_database.expect("valid file"),
-            parse_text(MINIMAL).expect("valid file")
-        );
+        let mut from_database = from_database.expect("valid file");
+        // The database has no body data, but it is named as their source.
+        assert_eq!(from_database.hydro.body.name, json.display().to_string());
+        from_database.hydro.body = Default::default();
+        assert_eq!(from_database, parse_text(MINIMAL).expect("valid file"));
         let message = mismatch.to_string();
         assert!(
             message.starts_with("test.toml:") && message.contains("water_density = 1000"),

@@ -63,14 +63,18 @@ pub const DEFAULT_BLOCK_DURATION: f64 = 16384.0;
 ///
 /// Matrices are indexed (surge, sway, yaw). Mass, added mass and damping act in the body
 /// frame; the stiffness acts on the inertial position (X, Y, theta), as in E&S 1.
+///
+/// The mass, yaw inertia and added mass are what the configuration gives (`None`: it gives
+/// none); the values a run uses follow one rule with the hydrodynamic data
+/// (`Problem::inertia`, `problem::inertia`).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Platform {
     /// Mass, kg.
-    pub mass: f64,
+    pub mass: Option<f64>,
     /// Yaw moment of inertia about the body origin, kg m^2.
-    pub yaw_inertia: f64,
+    pub yaw_inertia: Option<f64>,
     /// Low-frequency added mass A (kg, kg m, kg m^2).
-    pub added_mass: [[f64; 3]; 3],
+    pub added_mass: Option<[[f64; 3]; 3]>,
     /// Mooring stiffness C (N/m, N, N m/rad) acting on (X, Y, theta).
     pub stiffness: [[f64; 3]; 3],
     /// Extra linear damping on the body-frame velocity (N s/m, ...).
@@ -206,22 +210,5 @@ impl<H> Scenario<H> {
             initial: self.initial,
             origins: self.origins,
         }
-    }
-
-    /// The undamped surge natural period 2 pi sqrt((M + A11) / C11), s; `None` without
-    /// surge stiffness.
-    pub fn surge_natural_period(&self) -> Option<f64> {
-        let p = &self.platform;
-        (p.stiffness[0][0] > 0.0).then(|| {
-            2.0 * std::f64::consts::PI * ((p.mass + p.added_mass[0][0]) / p.stiffness[0][0]).sqrt()
-        })
-    }
-
-    /// The default start-up transient, s: [`TRANSIENT_CYCLES`] surge natural periods, at
-    /// most half the run (0 without surge stiffness).
-    pub fn default_transient(&self) -> f64 {
-        self.surge_natural_period().map_or(0.0, |period| {
-            (TRANSIENT_CYCLES * period).min(0.5 * self.run.duration)
-        })
     }
 }

@@ -88,14 +88,14 @@ fn an_absurd_block_is_refused() {
 
 #[test]
 fn non_positive_platform_and_run_parameters_are_refused() {
-    refused(with(|c| c.platform.mass = 0.0), "platform.mass", "0");
+    refused(with(|c| c.platform.mass = Some(0.0)), "platform.mass", "0");
     refused(
-        with(|c| c.platform.mass = -1.0e7),
+        with(|c| c.platform.mass = Some(-1.0e7)),
         "platform.mass",
-        "-10000000",
+        "-1e7",
     );
     refused(
-        with(|c| c.platform.yaw_inertia = 0.0),
+        with(|c| c.platform.yaw_inertia = Some(0.0)),
         "platform.yaw_inertia",
         "0",
     );
@@ -104,7 +104,7 @@ fn non_positive_platform_and_run_parameters_are_refused() {
     refused(with(|c| c.run.duration = 0.0), "run.duration", "0");
     refused(with(|c| c.run.duration = -100.0), "run.duration", "-100");
     refused(
-        with(|c| c.platform.added_mass[0][0] = -1.0e7),
+        with(|c| c.platform.added_mass = Some([[-1.0e7, 0.0, 0.0], [0.0; 3], [0.0; 3]])),
         "platform.added_mass",
         "[[-10000000.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]]",
     );
@@ -150,14 +150,22 @@ fn non_finite_values_are_refused() {
         "sea.direction_deg",
         "inf",
     );
-    refused(with(|c| c.platform.mass = nan), "platform.mass", "NaN");
     refused(
-        with(|c| c.platform.yaw_inertia = inf),
+        with(|c| c.platform.mass = Some(nan)),
+        "platform.mass",
+        "NaN",
+    );
+    refused(
+        with(|c| c.platform.yaw_inertia = Some(inf)),
         "platform.yaw_inertia",
         "inf",
     );
     refused(
-        with(|c| c.platform.added_mass[2][1] = nan),
+        with(|c| {
+            let mut a = [[0.0; 3]; 3];
+            a[2][1] = nan;
+            c.platform.added_mass = Some(a)
+        }),
         "platform.added_mass[2][1]",
         "NaN",
     );

@@ -99,10 +99,16 @@ fn over_the_limit_is_refused_naming_the_setting_and_the_limit() {
     spread(&mut p, 360);
     p.run.memory_limit = 3e8;
     let message = Simulation::new(p).unwrap_err().to_string();
+    let sea_line = slowdrift::scenario::default::DEFAULT_CONFIG_TOML
+        .lines()
+        .position(|line| line == "[sea]")
+        .unwrap()
+        + 1;
     // The largest part: 360^2 pairs x 75 frequencies x 3 DOFs x 16 bytes = 467 MB.
     assert!(
-        message.starts_with("embedded default.toml:31: invalid [sea] n_directions = 360: needs ")
-            && message.contains("of which 467 MB: the drift of 360 x 360 direction pairs")
+        message.starts_with(&format!(
+            "embedded default.toml:{sea_line}: invalid [sea] n_directions = 360: needs "
+        )) && message.contains("of which 467 MB: the drift of 360 x 360 direction pairs")
             && message.contains("the limit is 300 MB (run.memory_limit_gb = 0.3)"),
         "{message}"
     );

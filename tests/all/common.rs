@@ -86,9 +86,9 @@ pub fn oscillator_platform(mass: f64, yaw_inertia: f64, periods: [f64; 3], zeta:
         damping[i][i] = 2.0 * zeta * inertia[i] * wn;
     }
     Platform {
-        mass,
-        yaw_inertia,
-        added_mass: [[0.0; 3]; 3],
+        mass: Some(mass),
+        yaw_inertia: Some(yaw_inertia),
+        added_mass: Some([[0.0; 3]; 3]),
         stiffness,
         linear_damping: damping,
         quadratic_damping: [[0.0; 3]; 3],
@@ -141,9 +141,9 @@ pub fn simpson(f: impl Fn(f64) -> f64, a: f64, b: f64, panels: usize) -> f64 {
 /// var x = integral S_F(mu) |H(mu)|^2 dmu with S_F(mu) = 8 integral S(w) S(w + mu)
 /// T(w) T(w + mu) dw over the simulated band (physics.md section 8).
 pub fn oscillator_surge_variance(config: &Problem) -> f64 {
-    let p = &config.platform;
+    let (p, inertia) = (&config.platform, config.inertia().unwrap());
     let (mass, stiffness, damping) = (
-        p.mass + p.added_mass[0][0],
+        inertia.mass + inertia.added_mass[0][0],
         p.stiffness[0][0],
         p.linear_damping[0][0],
     );

@@ -150,11 +150,10 @@ fn undamped_platform_conserves_energy_up_to_rk4_dissipation() {
     config.hydro.drift = drift_table(|_, _| [0.0; 3]);
     config.platform.linear_damping = [[0.0; 3]; 3];
     config.initial.position = [1.0, 0.5, 0.01];
-    let inertia = [
-        config.platform.mass,
-        config.platform.mass,
-        config.platform.yaw_inertia,
-    ];
+    let inertia = {
+        let i = config.inertia().unwrap();
+        [i.mass, i.mass, i.yaw_inertia]
+    };
     let stiffness: Vec<f64> = (0..3).map(|i| config.platform.stiffness[i][i]).collect();
     let mut sim = Simulation::new(config).unwrap();
     assert!(sim

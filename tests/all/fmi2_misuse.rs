@@ -703,7 +703,10 @@ fn hydro_database_files() {
         assert_error(&fmu, status, &[expected]);
     }
 
-    let heavy = DEFAULT_TOML.replace("mass = 9.9737e7", "mass = 2.0e8");
+    let heavy = DEFAULT_TOML.replace(
+        "\nstiffness = [[1.5807e5",
+        "\nmass = 2.0e8\nstiffness = [[1.5807e5",
+    );
     assert_ne!(heavy, DEFAULT_TOML);
     let good = scratch.write("heavy platform.toml", &heavy);
     let expected = native_fifty_steps(problem::load(&good).unwrap());
@@ -739,7 +742,10 @@ fn hydro_database_files() {
 #[test]
 fn resources_platform_toml_is_the_default() {
     let scratch = Scratch::new("resources");
-    let heavy = DEFAULT_TOML.replace("mass = 9.9737e7", "mass = 2.0e8");
+    let heavy = DEFAULT_TOML.replace(
+        "\nstiffness = [[1.5807e5",
+        "\nmass = 2.0e8\nstiffness = [[1.5807e5",
+    );
     let path = scratch.write(slowdrift::fmi2::resources::RESOURCE_CONFIG, &heavy);
     let expected = native_fifty_steps(problem::load(&path).unwrap());
     let dir = scratch.0.display().to_string();

@@ -420,13 +420,15 @@ pub(crate) fn oc4_config(
 ) -> Problem {
     let mut config = base_config(3.0 * 3600.0, 1.0, seed);
     let p = &mut config.platform;
-    p.mass = 1.4073e7;
-    p.yaw_inertia = 1.2264e10;
-    p.added_mass = database.low_frequency_added_mass.unwrap();
+    let (mass, yaw_inertia) = (1.4073e7, 1.2264e10);
+    let added = database.low_frequency_added_mass.unwrap();
+    p.mass = Some(mass);
+    p.yaw_inertia = Some(yaw_inertia);
+    p.added_mass = Some(added);
     let inertia = [
-        p.mass + p.added_mass[0][0],
-        p.mass + p.added_mass[1][1],
-        p.yaw_inertia + p.added_mass[2][2],
+        mass + added[0][0],
+        mass + added[1][1],
+        yaw_inertia + added[2][2],
     ];
     let wn = 2.0 * PI / 100.0;
     p.stiffness = [[0.0; 3]; 3];

@@ -316,6 +316,7 @@ fn oc3_runs_in_full_qtf_and_newman_modes() {
             water_density: db.water_density,
         };
         c.hydro = Hydro {
+            body: Default::default(),
             drift: db.to_drift_table().unwrap(),
             qtf: db.qtf.as_ref().map(|q| q.to_qtf()),
             bidirectional: None,
@@ -324,9 +325,9 @@ fn oc3_runs_in_full_qtf_and_newman_modes() {
         c.sea.band = Some((0.25, 1.5));
         let mass = db.mass_properties.as_ref().unwrap();
         let added = db.low_frequency_added_mass.unwrap();
-        c.platform.mass = mass.mass;
-        c.platform.yaw_inertia = mass.yaw_inertia;
-        c.platform.added_mass = added;
+        c.platform.mass = Some(mass.mass);
+        c.platform.yaw_inertia = Some(mass.yaw_inertia);
+        c.platform.added_mass = Some(added);
         let periods = [120.0, 120.0, 8.0];
         let inertia = [
             mass.mass + added[0][0],

@@ -84,6 +84,7 @@ fn printed_period_problem(name: &str, top: f64) -> (Problem, Vec<f64>) {
         .database;
     let mut problem = base_config(600.0, 1.0, 1);
     problem.hydro = Hydro {
+        body: Default::default(),
         drift: database.to_drift_table().unwrap(),
         qtf: database.qtf.as_ref().map(|q| q.to_qtf()),
         bidirectional: None,

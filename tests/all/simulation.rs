@@ -179,7 +179,7 @@ fn a_plan_serves_problems_that_differ_outside_its_key() {
     }
     other.model.drag = slowdrift::model::DragModel::Combined { cd: 1.2 };
     other.current.speed = 0.5;
-    other.platform.mass *= 1.1;
+    other.platform.mass = Some(1.1 * other.inertia().unwrap().mass);
     let mut planned = Simulation::with_plan(other.clone(), &plan).unwrap();
     let mut fresh = Simulation::new(other).unwrap();
     assert!(planned.records() == fresh.records());

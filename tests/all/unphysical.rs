@@ -19,27 +19,36 @@ use slowdrift::problem::Hydro;
 use slowdrift::{Error, Simulation, Snapshot};
 use std::f64::consts::PI;
 
-/// The undamped oscillator of `common::base_config` with surge period `period` stepped by
-/// h: RK4 is stable for omega h below 2 sqrt(2) = 2.83 (the boundary of its stability
-/// region on the imaginary axis), so a period of 2 s at h = 1 s (omega h = 3.14) grows
-/// without bound and the error blames the step, while a period of 4 s (omega h = 1.57)
-/// stays bounded.
+/// The oscillator of `common::base_config` with surge period `period` and linear damping
+/// rate c/m = `rate` (1/s) stepped by h = 1 s. RK4 is stable for an undamped oscillator
+/// with omega h below 2 sqrt(2) = 2.83 (the boundary of its stability region on the
+/// imaginary axis): a stiffness with a period of 2 s (omega h = 3.14) is refused before the
+/// run, naming the stiffness and the step, while a period of 4 s (omega h = 1.57) stays
+/// bounded. On the real axis the region ends at -2.785: a damping rate of 4/s at that
+/// period (roots -0.76 and -3.24 1/s) grows without bound, and the error blames the step.
 #[test]
 fn an_unstable_step_is_blamed_on_the_step() {
-    let run = |period: f64| {
+    let run = |period: f64, rate: f64| {
         let mut p = base_config(20_000.0, 1.0, 1);
-        let m = p.platform.mass;
+        let m = p.inertia().unwrap().mass;
         p.platform.stiffness[0][0] = m * (2.0 * PI / period).powi(2);
         p.platform.linear_damping = [[0.0; 3]; 3];
+        p.platform.linear_damping[0][0] = rate * m;
         p.initial.velocity[0] = 0.1;
-        let mut sim = Simulation::new(p).unwrap();
+        let mut sim = Simulation::new(p)?;
         for _ in 0..2000 {
             sim.step([0.0; 3])?;
         }
         Ok::<_, Error>(sim.position()[0])
     };
-    assert!(run(4.0).unwrap().abs() < 1.0);
-    match run(2.0) {
+    assert!(run(4.0, 0.0).unwrap().abs() < 1.0);
+    let refused = run(2.0, 0.0).unwrap_err().to_string();
+    assert!(
+        refused.contains("invalid platform.stiffness[0][0]")
+            && refused.contains("natural period of 2.000e0 s, too short for RK4 steps of 1 s"),
+        "{refused}"
+    );
+    match run(4.0, 4.0) {
         Err(Error::Unphysical {
             cause: Cause::Step,
             what,
@@ -49,7 +58,7 @@ fn an_unstable_step_is_blamed_on_the_step() {
         }
         other => panic!("{other:?}"),
     }
-    let message = run(2.0).unwrap_err().to_string();
+    let message = run(4.0, 4.0).unwrap_err().to_string();
     assert!(message.ends_with("reduce run.time_step"), "{message}");
 }
 
@@ -59,7 +68,7 @@ fn an_unstable_step_is_blamed_on_the_step() {
 #[test]
 fn an_excessive_input_is_blamed_on_the_input() {
     let mut sim = Simulation::new(base_config(1000.0, 1.0, 1)).unwrap();
-    let mass = sim.problem().platform.mass;
+    let mass = sim.problem().inertia().unwrap().mass;
     assert_eq!(mass, 1.0e7);
     let force = 2.0 * MAX_SPEED * mass;
     let error = sim.step([force, 0.0, 0.0]).unwrap_err();
@@ -78,14 +87,14 @@ fn an_excessive_input_is_blamed_on_the_input() {
 }
 
 /// Drift coefficients near 1e307 N/m^2 (finite: the largest double is 1.8e308) in a sea of
-/// Hs = 2000 m, Tp = 100 s (steepness 0.128, below the breaking limit 1/7) make the mean
-/// wave force m0 T = (Hs^2 / 16) T = 2.5e5 x 1e307 overflow: the outputs are refused
+/// Hs = 500 m, Tp = 50 s (steepness 0.128, below the breaking limit 1/7) make the mean
+/// wave force m0 T = (Hs^2 / 16) T = 1.6e4 x 1e307 overflow: the outputs are refused
 /// (never an infinite force returned as a value), naming the wave force and the settings
 /// it grows with.
 #[test]
 fn an_infinite_force_is_refused_naming_the_wave_force() {
     let mut p = base_config(1000.0, 1.0, 1);
-    p.sea.spectrum = crate::common::jonswap(2000.0, 100.0);
+    p.sea.spectrum = crate::common::jonswap(500.0, 50.0);
     p.hydro = Hydro::from_drift(drift_table(|w, b| smooth_drift(w, b).map(|v| v * 5e302)));
     let mut sim = Simulation::new(p).unwrap();
     let error = sim.outputs().unwrap_err();
@@ -211,7 +220,7 @@ fn the_fmu_refuses_an_hs_steeper_than_waves_can_be() {
 }
 
 /// Through the FMU, an overflow: a `hydroDatabase` configuration with drift of 1e307 N/m^2
-/// in a sea of Hs = 2000 m, Tp = 100 s, whose Aranha damping (from the drift's frequency
+/// in a sea of Hs = 500 m, Tp = 50 s, whose Aranha damping (from the drift's frequency
 /// derivative, times the 0.5 m/s current) overflows: initialisation, whose first outputs
 /// would be infinite, is fmi2Error naming the output and the force, never fmi2OK.
 #[test]
@@ -219,10 +228,10 @@ fn the_fmu_never_returns_an_infinite_output() {
     let example = include_str!("../data/example.toml");
     let drift_start = example.find("[drift]").unwrap();
     let mut text = example[..drift_start]
-        .replace("hs = 3.0 ", "hs = 2000.0 ")
-        .replace("tp = 9.0 ", "tp = 100.0 ")
-        .replace("band = [0.3, 2.0]", "band = [0.03, 0.3]");
-    assert!(text.contains("hs = 2000.0") && text.contains("band = [0.03, 0.3]"));
+        .replace("hs = 3.0 ", "hs = 500.0 ")
+        .replace("tp = 9.0 ", "tp = 50.0 ")
+        .replace("band = [0.3, 2.0]", "band = [0.06, 0.5]");
+    assert!(text.contains("hs = 500.0") && text.contains("band = [0.06, 0.5]"));
     text.push_str(
         "[drift]\nsource = \"table\"\nfields = [\"omega\", \"beta_deg\", \"surge\", \"sway\", \"yaw\"]\n\
          rows = [[0.02, 0.0, 1e307, 0.0, 0.0], [0.5, 0.0, 1e307, 0.0, 0.0],\n\

@@ -794,6 +794,11 @@ fn small_database() -> HydroDatabase {
             }],
         }),
         bidirectional_drift: None,
+        provenance: slowdrift::hydro::io::database::Provenance {
+            mass_properties: Some("hand-written".into()),
+            low_frequency_added_mass: None,
+            stiffness: Some("zero \"by construction\"".into()),
+        },
     }
 }
 

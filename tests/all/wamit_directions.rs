@@ -111,6 +111,7 @@ fn bidirectional_rows_fill_the_database_table_and_reach_a_spread_sea() {
 
     let mut problem = base_config(1200.0, 1.0, 3);
     problem.hydro = Hydro {
+        body: Default::default(),
         drift: database.to_drift_table().unwrap(),
         qtf: None,
         bidirectional: database

@@ -183,6 +183,12 @@ def main():
         "stiffness": None,
         "drift": drift,
         "qtf": None,
+        "provenance": {
+            "mass_properties": "a uniformly dense hull of the displaced volume "
+                               "(tests/bem/semi_bem.py)",
+            "low_frequency_added_mass": f"Capytaine {bem['capytaine_version']} (tests/bem) at "
+                                        f"omega = {float(bem['omega'][np.argmin(np.abs(bem['omega'] - SLOW))])} rad/s",
+        },
     }
     bidirectional = {
         "omegas": [float(w) for w in omegas[keep]],

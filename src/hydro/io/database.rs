@@ -20,9 +20,16 @@
 //!                  "blocks": [{"dof": "surge" | "sway" | "yaw", "heading": rad,
 //!                              "re": n x n, "im": n x n}, ...]},
 //!   "bidirectional_drift": (optional) {"omegas": [rad/s], "headings": [rad],
-//!                  "re": n_omega x n_heading x n_heading x [surge, sway, yaw], "im": same}
+//!                  "re": n_omega x n_heading x n_heading x [surge, sway, yaw], "im": same},
+//!   "provenance": (optional) {"mass_properties": "...", "low_frequency_added_mass": "...",
+//!                  "stiffness": "..."}   where each came from, one phrase each
 //! }
 //! ```
+//!
+//! A simulation that names the database takes its `mass_properties` and
+//! `low_frequency_added_mass` for the model's mass, yaw inertia and added mass where the
+//! configuration's `[platform]` does not give its own (`problem::inertia`); `provenance`
+//! then says where they came from in the run's summary.
 //!
 //! `re[i][j] + i im[i][j]` = T(w_i, w_j), the full difference-frequency QTF per unit
 //! amplitude squared with F(t) = Re sum a_i a_j* T_ij e^{i (w_i - w_j) t} (physics.md
@@ -112,6 +119,30 @@ pub struct HydroDatabase {
     /// (optional; absent from older files and not written when `None`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub bidirectional_drift: Option<BidirectionalTable>,
+    /// Where the mass properties, the added mass and the stiffness came from (optional;
+    /// absent from older files and not written when empty).
+    #[serde(default, skip_serializing_if = "Provenance::is_empty")]
+    pub provenance: Provenance,
+}
+
+/// Where a database's body data came from, one phrase each (`WAMIT .1 at omega = 0 (PER =
+/// -1)`), as its importer wrote it; `None` where the importer said nothing.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Provenance {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mass_properties: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub low_frequency_added_mass: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stiffness: Option<String>,
+}
+
+impl Provenance {
+    /// Whether it says nothing (then it is not written).
+    pub fn is_empty(&self) -> bool {
+        self == &Provenance::default()
+    }
 }
 
 /// Rigid-body mass properties.
@@ -322,6 +353,7 @@ impl HydroDatabase {
             drift,
             qtf: None,
             bidirectional_drift: None,
+            provenance: Provenance::default(),
         }
     }
 
@@ -541,6 +573,13 @@ impl HydroDatabase {
             drift,
             qtf,
             bidirectional_drift,
+            provenance: Provenance {
+                mass_properties: None,
+                low_frequency_added_mass: low_frequency_added_mass
+                    .is_some()
+                    .then(|| "WAMIT .1 at omega = 0 (PER = -1)".to_string()),
+                stiffness: stiffness.is_some().then(|| "WAMIT .hst".to_string()),
+            },
         };
         database.validate()?;
         Ok(WamitImport { database, files })

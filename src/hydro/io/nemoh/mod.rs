@@ -17,7 +17,7 @@ pub mod cal;
 pub mod matrices;
 pub mod qtf;
 
-use super::database::{self, HydroDatabase, MassProperties, FORMAT_VERSION};
+use super::database::{self, HydroDatabase, MassProperties, Provenance, FORMAT_VERSION};
 use crate::error::{Error, Result};
 use crate::hydro::reference_point::ReferencePoint;
 use cal::{FrequencyUnit, Generalised, NemohCal};
@@ -80,11 +80,15 @@ pub fn import(dir: &Path) -> Result<NemohImport> {
         |m: &[Vec<f64>]| -> [[f64; 3]; 3] { motion.map(|i| motion.map(|j| m[i - 1][j - 1])) };
 
     let mut low_frequency_added_mass = None;
+    let mut provenance = Provenance::default();
     let path = project.join("results/CM.dat");
     if path.is_file() {
         let cm = matrices::read_frequency_matrices(&path, cal.dofs.len())?;
         let (k, lowest) = lowest_frequency(&cm.frequencies, cal.first_order_unit);
         low_frequency_added_mass = Some(point.matrix_to_origin(&restrict(&cm.matrices[k])));
+        provenance.low_frequency_added_mass = Some(format!(
+            "NEMOH results/CM.dat at its lowest frequency, {lowest:.4} rad/s"
+        ));
         let (count, min, max) = cal.first_order;
         files.push(format!(
             "{}: {} frequencies; low-frequency added mass from the lowest, {lowest:.4} rad/s \
@@ -132,6 +136,7 @@ pub fn import(dir: &Path) -> Result<NemohImport> {
                 mass: m[0][0],
                 yaw_inertia: m[2][2],
             });
+            provenance.mass_properties = Some("NEMOH Mechanics/Inertia.dat".to_string());
         }
     } else {
         files.push(format!("{}: absent", path.display()));
@@ -149,6 +154,7 @@ pub fn import(dir: &Path) -> Result<NemohImport> {
             c[2][2]
         ));
         stiffness = Some(c);
+        provenance.stiffness = Some("NEMOH Mechanics/Kh.dat".to_string());
     } else {
         files.push(format!("{}: absent", path.display()));
     }
@@ -232,6 +238,7 @@ pub fn import(dir: &Path) -> Result<NemohImport> {
         drift,
         qtf: qtf_data,
         bidirectional_drift,
+        provenance,
     };
     database.validate()?;
     Ok(NemohImport { database, files })
