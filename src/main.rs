@@ -20,7 +20,6 @@ mod plot;
 use clap::{Args, CommandFactory, Parser, Subcommand};
 use cli::args::Checked;
 use cli::Failure;
-use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
 use slowdrift::stats::{summarize, Summary};
 use slowdrift::{Outputs, Simulation};
 use std::io::{BufWriter, Write};
@@ -117,10 +116,14 @@ fn run(cli: Cli) -> Result<(), Failure> {
 }
 
 fn simulate(args: SimulateArgs) -> Result<(), String> {
-    if args.config.is_none() {
-        println!("embedded default platform; drift: {DEFAULT_DRIFT_LABEL}");
+    match &args.config {
+        Some(path) => println!("configuration: {}", path.display()),
+        None => println!("configuration: the embedded default platform"),
     }
     let config = cli::args::load_problem(args.config.as_deref(), args.memory_limit_gb)?;
+    for line in config.summary().map_err(|e| e.to_string())? {
+        println!("{line}");
+    }
     let transient = args.transient.unwrap_or_else(|| config.default_transient());
     if let Some(trim) = config.band_trim() {
         println!(

@@ -22,13 +22,14 @@ use crate::hydro::io::drift_csv;
 use crate::hydro::qtf::{check_tolerance, Qtf};
 use crate::hydro::DriftTable;
 use crate::model::{Dof, DragModel, DriftDamping, Environment, Interaction, SecondOrder};
-use crate::scenario::default::default_scenario;
+use crate::scenario::default::{default_scenario, DEFAULT_DRIFT_LABEL};
 use crate::scenario::{file, limits, ColumnGrid, DriftSource, Platform, Scenario};
 use serde::Serialize;
 use std::path::Path;
 
 pub mod inertia;
 pub mod ranges;
+mod summary;
 pub use inertia::{BodyData, Inertia, Origin};
 
 /// The shortest block of the record stream, in RK4 steps (the cross-fade takes a quarter of
@@ -42,6 +43,9 @@ const MAX_BLOCK_SAMPLES: f64 = 4_194_304.0;
 /// The hydrodynamic data of a problem.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Hydro {
+    /// What the data are and where they come from, one phrase for the run's summary
+    /// ([`Problem::summary`]).
+    pub source: String,
     /// The body data the drift source's data hold (a database's mass properties and
     /// low-frequency added mass), for [`Problem::inertia`].
     pub body: BodyData,
@@ -59,6 +63,7 @@ impl Hydro {
     /// A drift table alone.
     pub fn from_drift(drift: DriftTable) -> Hydro {
         Hydro {
+            source: "a drift table".to_string(),
             body: BodyData::default(),
             drift,
             qtf: None,
@@ -115,9 +120,16 @@ pub fn resolve_hydro(
     platform: &Platform,
     environment: &Environment,
 ) -> Result<Hydro> {
+    let described = |hydro: Hydro, source: String| Hydro { source, ..hydro };
     match source {
-        DriftSource::Table(table) => Ok(Hydro::from_drift(table.clone())),
-        DriftSource::Csv(path) => Ok(Hydro::from_drift(drift_csv::read(path)?)),
+        DriftSource::Table(table) => Ok(described(
+            Hydro::from_drift(table.clone()),
+            "the configuration's [drift] table".to_string(),
+        )),
+        DriftSource::Csv(path) => Ok(described(
+            Hydro::from_drift(drift_csv::read(path)?),
+            format!("the CSV drift table {}", path.display()),
+        )),
         DriftSource::Database {
             path,
             bidirectional_from_columns,
@@ -141,6 +153,7 @@ pub fn resolve_hydro(
                 environment,
             )?;
             Ok(Hydro {
+                source: format!("the embedded default platform's {DEFAULT_DRIFT_LABEL}"),
                 bidirectional: Some(BidirectionalSource::Embedded {
                     name: default_platform::BIDIRECTIONAL_NAME,
                     json: default_platform::BIDIRECTIONAL,
@@ -157,18 +170,32 @@ pub fn resolve_hydro(
                 ));
             }
             let (omegas, headings) = grid_nodes(grid);
-            Ok(Hydro::from_drift(isolated_columns_table(
-                &platform.columns,
-                environment,
-                &omegas,
-                &headings,
-            )?))
+            Ok(described(
+                Hydro::from_drift(isolated_columns_table(
+                    &platform.columns,
+                    environment,
+                    &omegas,
+                    &headings,
+                )?),
+                format!(
+                    "the closed-form drift of the {} columns, each alone in deep water (no \
+                     interaction)",
+                    platform.columns.len()
+                ),
+            ))
         }
         DriftSource::ColumnArray { grid, depth } => {
             let (omegas, headings) = grid_nodes(grid);
             let array = ColumnArray::new(platform.columns.clone(), *depth)?;
             let drift = array.drift_table(environment, &omegas, &headings)?;
             Ok(Hydro {
+                source: format!(
+                    "the column-array solver (Linton & Evans 1990) on the {} columns, {}",
+                    platform.columns.len(),
+                    depth.map_or("deep water".to_string(), |h| format!(
+                        "bottom-mounted in {h} m of water"
+                    ))
+                ),
                 body: BodyData::default(),
                 drift,
                 qtf: None,
@@ -222,7 +249,18 @@ fn from_database(
             ))
         }
     };
+    let source = format!(
+        "the database {name} (\"{}\"{}{})",
+        database.name,
+        if qtf.is_some() { "; with a QTF" } else { "" },
+        if bidirectional.is_some() {
+            "; with bi-directional drift"
+        } else {
+            ""
+        }
+    );
     Ok(Hydro {
+        source,
         body: BodyData {
             name: name.to_string(),
             mass_properties: database.mass_properties,
@@ -272,7 +310,7 @@ impl Problem {
     pub fn inertia(&self) -> Result<Inertia> {
         Inertia::resolve(&self.platform, &self.hydro.body).map_err(|missing| {
             let data = if missing.data.is_empty() {
-                "the drift source has no body data".to_string()
+                format!("{} holds no mass properties", self.hydro.source)
             } else {
                 format!("{} has no mass_properties", missing.data)
             };

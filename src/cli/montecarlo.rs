@@ -21,7 +21,6 @@ use slowdrift::fmi2::campaign;
 use slowdrift::montecarlo::cases::{open_case_table, CaseRow};
 use slowdrift::montecarlo::runs_file::{self, RunRow, RunsFile};
 use slowdrift::montecarlo::{run_jobs, seed_statistics, Case, Job, DOFS, STATISTICS};
-use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
 use slowdrift::Problem;
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
@@ -174,10 +173,16 @@ pub fn run(args: MontecarloArgs) -> Result<(), Failure> {
 /// The base configuration as the file gives it (else the embedded default), and the one
 /// the cases are made on (with `--duration` applied).
 fn load_base(options: &Options, announce: bool) -> Result<(Problem, Problem), String> {
-    if announce && options.config.is_none() {
-        println!("embedded default platform; drift: {DEFAULT_DRIFT_LABEL}");
-    }
     let file_base = load_problem(options.config.as_deref(), options.memory_limit_gb)?;
+    if announce {
+        match &options.config {
+            Some(path) => println!("base configuration: {}", path.display()),
+            None => println!("base configuration: the embedded default platform"),
+        }
+        for line in file_base.summary().map_err(|e| e.to_string())? {
+            println!("{line}");
+        }
+    }
     let mut base = file_base.clone();
     if let Some(duration) = options.duration {
         base.run.duration = duration;

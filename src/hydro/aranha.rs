@@ -262,6 +262,71 @@ mod tests {
         assert!(err.contains("single heading"), "{err}");
     }
 
+    /// At a table's end frequencies (and at the end headings of a table that does not
+    /// cover the circle) the derivative is the one-sided second-order difference: for the
+    /// cubic F_1 = c w^3 cos(beta) the error of b_11 at the first and last node falls as h^2
+    /// (4x when the spacing halves; a first-order one-sided difference's would fall 2x).
+    /// Likewise b_21 at the last heading of a table over 0-45 deg, which takes dF_2/dbeta.
+    #[test]
+    fn end_nodes_are_second_order() {
+        let (c, g) = (1.0e4, 9.80665);
+        let table = |spacing: f64| {
+            let headings = [0.0, PI / 8.0, PI / 4.0];
+            let mut rows = Vec::new();
+            for &beta in &headings {
+                for k in 0..=((0.4 / spacing).round() as usize) {
+                    let w = 0.4 + k as f64 * spacing;
+                    rows.push(DriftRow {
+                        omega: w,
+                        heading: beta,
+                        drift: [c * w.powi(3) * beta.cos(), c * w.powi(3) * beta.sin(), 0.0],
+                        damping: None,
+                    });
+                }
+            }
+            aranha_damping(&DriftTable::from_rows(&rows).unwrap(), g, &[]).unwrap()
+        };
+        // Exact, for F = c w^3 (cos b, sin b): 4F + w F' = 7 c w^3 (cos b, sin b); at b = 0
+        // b_11 = (w/g) 7 c w^3, whatever dF/db.
+        let exact_11 = |w: f64| w / g * 7.0 * c * w.powi(3);
+        for w in [0.4, 0.8] {
+            let errors: Vec<f64> = [0.05, 0.025]
+                .iter()
+                .map(|&h| {
+                    let b = table(h).damping_at_node(0, ((w - 0.4) / h).round() as usize);
+                    (b.unwrap()[0][0] - exact_11(w)).abs()
+                })
+                .collect();
+            let ratio = errors[0] / errors[1];
+            assert!(
+                (3.5..4.5).contains(&ratio),
+                "w {w}: errors {errors:?}, ratio {ratio}"
+            );
+        }
+        // The heading derivative at the last heading (45 deg, the table's end: no wrap), for
+        // F = c w^2 (cos b, sin b), whose frequency derivative the stencil takes exactly:
+        // b_21 = (w/g)(cos b 6 c w^2 sin b - 2 sin b c w^2 cos b) = (w/g) 4 c w^2 sin b cos b.
+        let exact_21 = |w: f64, b: f64| w / g * 4.0 * c * w * w * b.sin() * b.cos();
+        let coarse = |n: usize| {
+            let headings: Vec<f64> = (0..=n).map(|k| PI / 4.0 * k as f64 / n as f64).collect();
+            let rows: Vec<DriftRow> = headings
+                .iter()
+                .flat_map(|&beta| {
+                    [0.5, 0.6, 0.7].map(|w: f64| DriftRow {
+                        omega: w,
+                        heading: beta,
+                        drift: [c * w * w * beta.cos(), c * w * w * beta.sin(), 0.0],
+                        damping: None,
+                    })
+                })
+                .collect();
+            let t = aranha_damping(&DriftTable::from_rows(&rows).unwrap(), g, &[]).unwrap();
+            (t.damping_at_node(n, 1).unwrap()[1][0] - exact_21(0.6, PI / 4.0)).abs()
+        };
+        let ratio = coarse(2) / coarse(4);
+        assert!((3.0..5.0).contains(&ratio), "heading ends: ratio {ratio}");
+    }
+
     #[test]
     fn quadratic_weights_differentiate_quadratics_exactly() {
         let x = [0.1, 0.4, 1.0];

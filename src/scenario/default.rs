@@ -15,7 +15,7 @@ pub const DEFAULT_CONFIG_TOML: &str = include_str!("default.toml");
 
 /// One line that says where the default platform's drift comes from.
 pub const DEFAULT_DRIFT_LABEL: &str = "radiation-diffraction database of the columns on their \
-     pontoons, freely floating (Capytaine; the column solver above 1.6-2.0 rad/s), Aranha damping";
+     pontoons, freely floating (Capytaine; the column solver above 1.6-2.0 rad/s)";
 
 /// The default scenario (parsed from [`DEFAULT_CONFIG_TOML`]; its database is read when it
 /// is resolved).

@@ -32,6 +32,7 @@ mod simulation;
 mod stream;
 mod studies;
 mod unphysical;
+mod user_data;
 mod wamit;
 mod wamit_directions;
 mod yaw_following;

@@ -316,10 +316,9 @@ fn oc3_runs_in_full_qtf_and_newman_modes() {
             water_density: db.water_density,
         };
         c.hydro = Hydro {
-            body: Default::default(),
-            drift: db.to_drift_table().unwrap(),
             qtf: db.qtf.as_ref().map(|q| q.to_qtf()),
             bidirectional: None,
+            ..Hydro::from_drift(db.to_drift_table().unwrap())
         };
         c.sea = long_crested(jonswap(6.0, 12.0), seed);
         c.sea.band = Some((0.25, 1.5));

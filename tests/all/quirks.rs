@@ -84,10 +84,9 @@ fn printed_period_problem(name: &str, top: f64) -> (Problem, Vec<f64>) {
         .database;
     let mut problem = base_config(600.0, 1.0, 1);
     problem.hydro = Hydro {
-        body: Default::default(),
-        drift: database.to_drift_table().unwrap(),
         qtf: database.qtf.as_ref().map(|q| q.to_qtf()),
         bidirectional: None,
+        ..Hydro::from_drift(database.to_drift_table().unwrap())
     };
     problem.sea = long_crested(jonswap(6.0, 10.0), 1);
     problem.model.second_order = SecondOrder::FullQtf;

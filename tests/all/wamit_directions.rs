@@ -111,13 +111,12 @@ fn bidirectional_rows_fill_the_database_table_and_reach_a_spread_sea() {
 
     let mut problem = base_config(1200.0, 1.0, 3);
     problem.hydro = Hydro {
-        body: Default::default(),
-        drift: database.to_drift_table().unwrap(),
         qtf: None,
         bidirectional: database
             .bidirectional_drift
             .clone()
             .map(slowdrift::hydro::bidirectional::BidirectionalSource::Table),
+        ..Hydro::from_drift(database.to_drift_table().unwrap())
     };
     problem.sea.spectrum = jonswap(3.0, 8.0);
     problem.sea.band = Some((0.4, 1.2));
