@@ -121,6 +121,8 @@ fn simulate(args: SimulateArgs) -> Result<(), String> {
         None => println!("configuration: the embedded default platform"),
     }
     let config = cli::args::load_problem(args.config.as_deref(), args.memory_limit_gb)?;
+    // Checked before the summary, so that an invalid configuration prints only its error.
+    config.check().map_err(|e| e.to_string())?;
     for line in config.summary().map_err(|e| e.to_string())? {
         println!("{line}");
     }

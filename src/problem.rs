@@ -499,8 +499,9 @@ impl Problem {
         limits::check_sizes(self, None)?;
         ranges::GRAVITY.check("environment.gravity", self.environment.gravity)?;
         ranges::WATER_DENSITY.check("environment.water_density", self.environment.water_density)?;
-        self.sea.validate(self.environment.gravity)?;
+        // The ranges first: a Tp of 1e-6 s is named as such, not as the steep sea it makes.
         self.check_sea_ranges()?;
+        self.sea.validate(self.environment.gravity)?;
         ranges::CURRENT_SPEED.check("current.speed", self.current.speed)?;
         require_finite("current.direction_deg", self.current.direction.to_degrees())?;
         if self.run.duration.is_nan() || self.run.duration <= 0.0 {
@@ -591,10 +592,16 @@ impl Problem {
     fn check_sea_ranges(&self) -> Result<()> {
         use crate::sea_state::Spectrum;
         // Hs is bounded by the breaking limit at this Tp (`SeaState::validate`).
-        if let Spectrum::Jonswap { tp, .. } | Spectrum::PiersonMoskowitz { tp, .. } =
-            self.sea.spectrum
-        {
-            ranges::PEAK_PERIOD.check("sea.tp", tp)?;
+        match &self.sea.spectrum {
+            Spectrum::Jonswap { tp, .. } | Spectrum::PiersonMoskowitz { tp, .. } => {
+                ranges::PEAK_PERIOD.check("sea.tp", *tp)?;
+            }
+            Spectrum::Tabulated { omega, .. } => {
+                if let (Some(first), Some(last)) = (omega.first(), omega.last()) {
+                    ranges::BAND.check("sea.omega", *first)?;
+                    ranges::BAND.check("sea.omega", *last)?;
+                }
+            }
         }
         if let Some((lo, hi)) = self.sea.band {
             ranges::BAND.check("sea.band[0]", lo)?;

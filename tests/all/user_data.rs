@@ -299,7 +299,7 @@ fn example_line(needle: &str) -> usize {
 }
 
 /// A negative or indefinite stiffness is refused in the configuration file at its line;
-/// gravity, water density and mass beyond their physical ranges likewise.
+/// gravity, water density, mass, Tp, band and draft beyond their physical ranges likewise.
 #[test]
 fn configuration_values_beyond_physics_are_refused_at_their_line() {
     let rows = "  [8.0e4, 0.0,   0.0],\n  [0.0,   8.0e4, 0.0],\n  [0.0,   0.0,   7.7e7],";
@@ -339,6 +339,18 @@ fn configuration_values_beyond_physics_are_refused_at_their_line() {
             "[environment] water_density = 1",
         ),
         ("mass = 1.2e7", "mass = 1e-300", "[platform] mass = 1e-300"),
+        // Named as written, not as the steep sea or the Nyquist limit it would make.
+        ("tp = 9.0", "tp = 1e-6", "[sea] tp = 1e-6"),
+        (
+            "band = [0.3, 2.0]",
+            "band = [0.3, 1e300]",
+            "[sea] band[1] = 1e300",
+        ),
+        (
+            "draft = 20.0",
+            "draft = 1e300",
+            "[platform] columns[0].draft = 1e300",
+        ),
     ] {
         let at = example_line(old);
         let message = example_error(old, new);
