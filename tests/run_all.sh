@@ -1,9 +1,29 @@
 #!/usr/bin/env bash
 # Every test: the Rust workspace (unit, integration, FMU ABI), the Python FMI masters
-# (fmpy, fmu-manipulation-toolbox, libcosimpy, MoorDyn loop) and the checks of the default
-# platform's radiation-diffraction data (Capytaine), each in its own virtual environment.
+# (fmpy, fmu-manipulation-toolbox, libcosimpy, ecospy, the MoorDyn loop, the coupled system)
+# and the checks of the default platform's radiation-diffraction data (Capytaine), each in
+# its own virtual environment. Each artefact is built once: fmu-pack builds and checks the
+# FMUs and the system folder, which the Python masters then use as they are; the Python
+# environments are installed from PyPI while cargo compiles.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
+repo="$(pwd)"
+source tests/venvs.sh
+
+venv_log="$repo/target/venvs.log"
+mkdir -p target
+( client_venv "$repo" && bem_venv "$repo" ) >"$venv_log" 2>&1 &
+venvs=$!
+
+cargo run --release -p fmu-pack
 cargo test --release --workspace
-bash tests/clients/run_clients.sh
+
+if ! wait "$venvs"; then
+    cat "$venv_log" >&2
+    echo "run_all.sh: the Python environments could not be made (log above)" >&2
+    exit 1
+fi
+target_dir="${CARGO_TARGET_DIR:-$repo/target}"
+[[ "$target_dir" = /* ]] || target_dir="$repo/$target_dir"
+SLOWDRIFT_FMU="$target_dir/fmu/SlowDrift.fmu" bash tests/clients/run_clients.sh
 bash tests/bem/run_bem.sh

@@ -42,7 +42,11 @@ fn run() -> Result<(), String> {
     let target = std::env::var_os("CARGO_TARGET_DIR")
         .map(PathBuf::from)
         .unwrap_or_else(|| root.join("target"));
-    cargo_build(&root, &["--no-default-features", "-p", "slowdrift"])?;
+    // The cdylib is built as fmu-pack's own dependency (`slowdrift` without its `cli`
+    // feature), with the features of fmu-pack's build: under `cargo run -p fmu-pack` this
+    // finds it built already, and building it any other way would compile the library a
+    // second time with another feature set.
+    cargo_build(&root, &["-p", "fmu-pack"])?;
     let fmu_path = target.join("fmu").join(format!("{MODEL_IDENTIFIER}.fmu"));
     let library = target.join("release").join("libslowdrift.so");
     let resources = target.join("fmu").join("resources");
@@ -57,11 +61,11 @@ fn run() -> Result<(), String> {
     system::write(&root, &target.join("fmu"))
 }
 
-/// `cargo build --release --lib` with `args` (the package and its features).
+/// `cargo build --release` with `args` (the package and its targets).
 fn cargo_build(root: &Path, args: &[&str]) -> Result<(), String> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let status = Command::new(cargo)
-        .args(["build", "--release", "--lib"])
+        .args(["build", "--release"])
         .args(args)
         .current_dir(root)
         .status()
@@ -69,7 +73,7 @@ fn cargo_build(root: &Path, args: &[&str]) -> Result<(), String> {
     status
         .success()
         .then_some(())
-        .ok_or_else(|| format!("cargo build of the library failed ({})", args.join(" ")))
+        .ok_or_else(|| format!("cargo build failed ({})", args.join(" ")))
 }
 
 fn read(path: &Path) -> Result<Vec<u8>, String> {

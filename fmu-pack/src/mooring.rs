@@ -34,7 +34,7 @@ const CHECK_OFFSET: f64 = 10.0;
 const CHECK_SECONDS: f64 = 60.0;
 
 pub fn pack_and_check(root: &Path, target: &Path) -> Result<(), String> {
-    cargo_build(root, &["-p", "slowdrift-mooring"])?;
+    cargo_build(root, &["--lib", "-p", "slowdrift-mooring"])?;
     let (moordyn, licence) = moordyn_library(&target.join("moordyn-wheel"))?;
     let fmu_path = target.join("fmu").join(format!("{MODEL_IDENTIFIER}.fmu"));
     let coupling = String::from_utf8_lossy(&read(&root.join("docs/coupling.md"))?).into_owned();

@@ -7,6 +7,6 @@ set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 venv="$repo/target/bem-venv"
-source "$repo/tests/venv.sh"
-ensure_venv "$venv" capytaine==3.0.0 pytest
+source "$repo/tests/venvs.sh"
+bem_venv "$repo"
 exec "$venv/bin/python" -m pytest -ra "$repo/tests/bem" "$@"

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Python client tests of SlowDrift.fmu (issue #4) and the coupled system (issue #12): fmpy,
 # fmu-manipulation-toolbox, libcosimpy, ecospy, the closed mooring loop with MoorDyn and the
-# masters running target/fmu/system/. Creates target/client-venv from PyPI on first use,
-# installs Debian's libtbb12 (ecos needs it) when missing, (re)builds the FMUs and the
-# system folder with fmu-pack, runs pytest on tests/clients.
+# masters running target/fmu/system/. Creates target/client-venv from PyPI on first use and
+# installs Debian's libtbb12 (ecos needs it) when missing (tests/venvs.sh), (re)builds the
+# FMUs and the system folder with fmu-pack unless SLOWDRIFT_FMU names a packed FMU (as
+# tests/run_all.sh does after packing it once), runs pytest on tests/clients.
 #   tests/clients/run_clients.sh              # all client tests
 #   tests/clients/run_clients.sh -k mooring   # extra arguments go to pytest
 # Environment: SLOWDRIFT_FMU (another FMU file: no packing), PYTHON (interpreter for the venv,
@@ -14,17 +15,8 @@ repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 cd "$repo"
 
 venv="$repo/target/client-venv"
-source "$repo/tests/venv.sh"
-ensure_venv "$venv" fmpy==0.3.32 fmu-manipulation-toolbox==2.0 libcosimpy==0.0.6 moordyn==2.7.2 \
-    ecospy==0.7.2 xmlschema==4.3.2 moorpy==1.3.0 dask==2026.8.0 distributed==2026.8.0 numpy pytest
-
-# ecos (ecospy's libecosc.so) links against Intel TBB 12, which Debian ships as libtbb12.
-if ! /sbin/ldconfig -p | grep -q 'libtbb\.so\.12 '; then
-    echo "installing libtbb12 (ecospy's libecosc.so needs libtbb.so.12)" >&2
-    apt-get install -y -q libtbb12 >/dev/null 2>&1 \
-        || { apt-get update -q >/dev/null && apt-get install -y -q libtbb12 >/dev/null; } \
-        || { echo "run_clients.sh: could not install libtbb12 (apt-get, as root)" >&2; exit 1; }
-fi
+source "$repo/tests/venvs.sh"
+client_venv "$repo"
 
 if [[ -z "${SLOWDRIFT_FMU:-}" ]]; then
     # Always pack the current sources (cargo only rebuilds what changed); fmu-pack checks

@@ -21,7 +21,7 @@
 //!
 //! ```sh
 //! SLOWDRIFT_FUZZ_SECONDS=600 SLOWDRIFT_FUZZ_SEED=$RANDOM \
-//!     cargo test --release --test all fuzz:: -- --nocapture --test-threads=1
+//!     cargo test --release --workspace --test all fuzz:: -- --nocapture --test-threads=1
 //! ```
 
 mod fmi;
