@@ -45,10 +45,10 @@ fn run() -> Result<(), String> {
     // The cdylib is built as fmu-pack's own dependency (`slowdrift` without its `cli`
     // feature), with the features of fmu-pack's build: under `cargo run -p fmu-pack` this
     // finds it built already, and building it any other way would compile the library a
-    // second time with another feature set.
-    cargo_build(&root, &["-p", "fmu-pack"])?;
+    // second time with another feature set. A dependency's library stays in cargo's `deps`
+    // folder under a name cargo chooses, so its path is taken from cargo's own report.
+    let library = cdylib(&root, &["-p", "fmu-pack"], "slowdrift")?;
     let fmu_path = target.join("fmu").join(format!("{MODEL_IDENTIFIER}.fmu"));
-    let library = target.join("release").join("libslowdrift.so");
     let resources = target.join("fmu").join("resources");
     write_resources(&resources).map_err(|e| e.to_string())?;
     pack(&root, &library, &resources, &fmu_path)?;
@@ -61,19 +61,49 @@ fn run() -> Result<(), String> {
     system::write(&root, &target.join("fmu"))
 }
 
-/// `cargo build --release` with `args` (the package and its targets).
-fn cargo_build(root: &Path, args: &[&str]) -> Result<(), String> {
+/// `cargo build --release` with `args` (the package and its targets), and the path of the
+/// shared library (`cdylib`) it built of the library target `name`, as cargo reports it
+/// (`--message-format=json`: one JSON message a line on stdout; diagnostics still go to
+/// stderr as text).
+fn cdylib(root: &Path, args: &[&str], name: &str) -> Result<PathBuf, String> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-    let status = Command::new(cargo)
-        .args(["build", "--release"])
+    let output = Command::new(cargo)
+        .args([
+            "build",
+            "--release",
+            "--message-format=json-render-diagnostics",
+        ])
         .args(args)
         .current_dir(root)
-        .status()
+        .stderr(std::process::Stdio::inherit())
+        .output()
         .map_err(|e| format!("running cargo: {e}"))?;
-    status
-        .success()
-        .then_some(())
-        .ok_or_else(|| format!("cargo build failed ({})", args.join(" ")))
+    if !output.status.success() {
+        return Err(format!("cargo build failed ({})", args.join(" ")));
+    }
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    cdylib_in_messages(&stdout, name).ok_or_else(|| {
+        format!(
+            "cargo build ({}) reported no shared library of {name}",
+            args.join(" ")
+        )
+    })
+}
+
+/// The `cdylib` file of library target `name` among cargo's JSON messages.
+fn cdylib_in_messages(messages: &str, name: &str) -> Option<PathBuf> {
+    messages
+        .lines()
+        .filter_map(|line| serde_json::from_str::<serde_json::Value>(line).ok())
+        .filter(|m| m["reason"] == "compiler-artifact" && m["target"]["name"] == name)
+        .filter(|m| {
+            m["target"]["kind"]
+                .as_array()
+                .is_some_and(|kinds| kinds.iter().any(|k| k == "cdylib"))
+        })
+        .flat_map(|m| m["filenames"].as_array().cloned().unwrap_or_default())
+        .filter_map(|f| f.as_str().map(PathBuf::from))
+        .find(|f| f.extension().is_some_and(|e| e == "so"))
 }
 
 fn read(path: &Path) -> Result<Vec<u8>, String> {
@@ -191,6 +221,23 @@ fn check_by_running(fmu_path: &Path, unpack_dir: &Path) -> Result<(), String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A dependency's shared library is found where cargo says it put it (its `deps` folder),
+    /// and only a `cdylib` of the named target counts.
+    #[test]
+    fn the_shared_library_is_taken_from_cargos_report() {
+        let messages = concat!(
+            "{\"reason\":\"compiler-artifact\",\"target\":{\"name\":\"other\",\"kind\":[\"cdylib\"]},\"filenames\":[\"/t/release/deps/libother.so\"]}\n",
+            "{\"reason\":\"compiler-artifact\",\"target\":{\"name\":\"slowdrift\",\"kind\":[\"cdylib\",\"rlib\"]},\"filenames\":[\"/t/release/deps/libslowdrift.so\",\"/t/release/deps/libslowdrift-0123.rlib\"]}\n",
+            "not json\n",
+            "{\"reason\":\"build-finished\",\"success\":true}\n",
+        );
+        assert_eq!(
+            cdylib_in_messages(messages, "slowdrift"),
+            Some(PathBuf::from("/t/release/deps/libslowdrift.so"))
+        );
+        assert_eq!(cdylib_in_messages(messages, "mooring"), None);
+    }
 
     #[test]
     fn resource_uris_are_percent_encoded() {

@@ -17,7 +17,7 @@
 //! platform 10 m off in surge for 60 s and must pull it back (Fx < 0, Fy and Mz nil by
 //! symmetry), with a fairlead tension above zero.
 
-use crate::{archive, cargo_build, file_uri, master, read, write_fmu};
+use crate::{archive, cdylib, file_uri, master, read, write_fmu};
 use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -34,7 +34,11 @@ const CHECK_OFFSET: f64 = 10.0;
 const CHECK_SECONDS: f64 = 60.0;
 
 pub fn pack_and_check(root: &Path, target: &Path) -> Result<(), String> {
-    cargo_build(root, &["--lib", "-p", "slowdrift-mooring"])?;
+    let library = cdylib(
+        root,
+        &["--lib", "-p", "slowdrift-mooring"],
+        "slowdrift_mooring",
+    )?;
     let (moordyn, licence) = moordyn_library(&target.join("moordyn-wheel"))?;
     let fmu_path = target.join("fmu").join(format!("{MODEL_IDENTIFIER}.fmu"));
     let coupling = String::from_utf8_lossy(&read(&root.join("docs/coupling.md"))?).into_owned();
@@ -45,7 +49,7 @@ pub fn pack_and_check(root: &Path, target: &Path) -> Result<(), String> {
         },
         archive::Entry {
             path: format!("binaries/linux64/{MODEL_IDENTIFIER}.so"),
-            data: read(&target.join("release").join("libslowdrift_mooring.so"))?,
+            data: read(&library)?,
         },
         archive::Entry {
             path: format!("binaries/linux64/{LIBRARY_FILE}"),
