@@ -102,7 +102,7 @@ pub fn parameters_for<H: Clone + PartialEq>(
     hydro_database: &str,
 ) -> Result<(Parameters, Experiment), String> {
     let mut parameters = Parameters::default();
-    let variables: Vec<_> = parameters.iter().map(|(v, _)| v).collect();
+    let variables: Vec<_> = parameters.iter().map(|(v, _, _)| v).collect();
     for variable in variables {
         let (name, ty) = (variable.name, variable.var_type);
         let value = if name == HYDRO_DATABASE {
@@ -161,7 +161,11 @@ fn fmu_json(parameters: &Parameters, experiment: &Experiment, steps: f64, h: f64
         });
     }
     let mut values = Map::new();
-    for (v, value) in parameters.iter().filter(|(v, _)| v.name != SEED) {
+    // The parameters a master sets; the others keep the configuration's value.
+    for (v, value, _) in parameters
+        .iter()
+        .filter(|(v, _, set)| *set && v.name != SEED)
+    {
         let value = match value {
             FmuValue::Real(x) => json!(*x),
             FmuValue::Integer(i) => json!(*i),
@@ -243,6 +247,8 @@ mod tests {
                         assert!(value.is_null());
                         true
                     }
+                    // Left to the configuration (a setting out of force: cd under separate drag).
+                    _ if value.is_null() => true,
                     VariableType::Real => p.set(v.name, FmuValue::Real(value.as_f64().unwrap())),
                     VariableType::Integer => {
                         p.set(v.name, FmuValue::Integer(value.as_i64().unwrap() as i32))

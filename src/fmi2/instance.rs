@@ -10,15 +10,16 @@
 use super::fmu_error::FmuError;
 use super::logger::{c_text, Logger};
 use super::machine::{Call, MachineState};
-use super::parameters::{Experiment, Parameters, MAX_STRING_BYTES};
+use super::parameters::{Experiment, FmuValue, Parameters, HYDRO_DATABASE, MAX_STRING_BYTES};
 use super::state::{fingerprint, FmuState};
 use super::types::fmi2Status;
 use crate::error::Error;
 use crate::fmi2::model_description::{find, log_category, vr, Causality, VariableType, VARIABLES};
-use crate::problem::{resolve, Problem};
+use crate::problem::Problem;
+use crate::scenario::Scenario;
 use crate::simulation::{Outputs, Simulation};
 use std::ffi::CString;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 /// Relative tolerance of the communication point against the internal time (and of the
 /// stop time), times max(1, |t|).
@@ -52,6 +53,9 @@ pub struct Instance {
     last_successful_time: f64,
     /// The strings last returned by `fmi2GetString`; valid until the next call.
     strings: Vec<CString>,
+    /// The base configuration the parameters name, read when a parameter the master did not
+    /// set is read (its value is the configuration's); dropped when `hydroDatabase` changes.
+    base: Option<Scenario>,
 }
 
 impl Instance {
@@ -69,6 +73,7 @@ impl Instance {
             outputs: None,
             last_successful_time: experiment.start_time,
             strings: Vec::new(),
+            base: None,
         }
     }
 
@@ -167,13 +172,21 @@ impl Instance {
         Ok(())
     }
 
+    /// The base configuration the parameters name, read once (and again after
+    /// `hydroDatabase` changes): what the problem is built on and what a parameter the
+    /// master did not set reads back, so that both are the same file's, read at one time.
+    fn base_scenario(&mut self) -> Result<&Scenario, FmuError> {
+        if self.base.is_none() {
+            self.base = Some(self.parameters.base_scenario(self.resources.as_deref())?);
+        }
+        Ok(self.base.as_ref().expect("read above"))
+    }
+
     /// The problem of the current parameters and experiment.
-    fn problem(&self) -> Result<Problem, FmuError> {
-        Ok(problem_of(
-            &self.parameters,
-            self.resources.as_deref(),
-            &self.experiment,
-        )?)
+    fn problem(&mut self) -> Result<Problem, FmuError> {
+        self.base_scenario()?;
+        let base = self.base.as_ref().expect("read above");
+        Ok(self.parameters.to_problem(base, &self.experiment)?)
     }
 
     /// The simulation, built now if needed.
@@ -190,7 +203,7 @@ impl Instance {
         Ok(())
     }
 
-    fn current_fingerprint(&self) -> Result<u64, FmuError> {
+    fn current_fingerprint(&mut self) -> Result<u64, FmuError> {
         match &self.built {
             Some(b) => Ok(b.fingerprint()),
             None => Ok(fingerprint(&self.problem()?)),
@@ -273,6 +286,58 @@ impl Instance {
         )))
     }
 
+    /// The value a master reads for the parameter of `ty` with value reference `vr`: its own
+    /// where it set it, else the configuration's ([`Parameters::value_for`]).
+    fn parameter_value(&mut self, ty: VariableType, vr: u32) -> Result<FmuValue, FmuError> {
+        let info = find(ty, vr).expect("a parameter of modelDescription.xml");
+        if self.parameters.is_set(ty, vr) || info.name == HYDRO_DATABASE {
+            return Ok(self
+                .parameters
+                .iter()
+                .find(|(v, _, _)| v.value_reference == vr && v.var_type == ty)
+                .expect("a parameter")
+                .1
+                .clone());
+        }
+        self.base_scenario()?;
+        let base = self.base.as_ref().expect("read above");
+        Ok(self.parameters.value_for(info, base))
+    }
+
+    /// May the parameter or input of `causality` with value reference `vr` take `value`
+    /// now? A fixed parameter after initialisation only when `value` is the one it has (a
+    /// master that writes its start values back after `fmi2SetFMUstate`, as fmusim does).
+    fn may_set(
+        &mut self,
+        causality: Causality,
+        ty: VariableType,
+        vr: u32,
+        value: &FmuValue,
+    ) -> Result<(), FmuError> {
+        if causality == Causality::Parameter
+            && self.settable(causality, vr).is_err()
+            && self.parameter_value(ty, vr).ok().as_ref() == Some(value)
+        {
+            return Ok(());
+        }
+        self.settable(causality, vr)
+    }
+
+    /// Whether the parameters are fixed now (after `fmi2ExitInitializationMode`): a set
+    /// that [`Instance::may_set`] accepts then keeps the value it has, and writes nothing.
+    fn parameters_fixed(&self) -> bool {
+        !matches!(
+            self.state,
+            MachineState::Instantiated | MachineState::InitializationMode
+        )
+    }
+
+    /// Whether the variable of `ty` with value reference `vr` is a parameter that is fixed
+    /// now (a set of it was accepted because it keeps its value: nothing to write).
+    fn kept(&self, ty: VariableType, vr: u32) -> bool {
+        self.parameters_fixed() && find(ty, vr).is_some_and(|v| v.causality == Causality::Parameter)
+    }
+
     /// May a variable of this causality be set now?
     fn settable(&self, causality: Causality, vr: u32) -> Result<(), FmuError> {
         let name = VARIABLES
@@ -281,16 +346,10 @@ impl Instance {
             .map_or("?", |v| v.name);
         match causality {
             Causality::Input => Ok(()),
-            Causality::Parameter
-                if matches!(
-                    self.state,
-                    MachineState::Instantiated | MachineState::InitializationMode
-                ) =>
-            {
-                Ok(())
-            }
+            Causality::Parameter if !self.parameters_fixed() => Ok(()),
             Causality::Parameter => Err(FmuError::Argument(format!(
-                "parameter {name} is fixed: set it before fmi2ExitInitializationMode"
+                "parameter {name} is fixed: set it before fmi2ExitInitializationMode (after \
+                 it, only to the value it has)"
             ))),
             other => Err(FmuError::Argument(format!(
                 "{name} (value reference {vr}) is an {other:?} and cannot be set"
@@ -301,7 +360,10 @@ impl Instance {
     pub fn get_real(&mut self, vrs: &[u32], values: &mut [f64]) -> Result<(), FmuError> {
         for (&vr, value) in vrs.iter().zip(values) {
             *value = match self.variable(VariableType::Real, vr)? {
-                Causality::Parameter => *self.parameters.real_mut(vr).expect("a Real parameter"),
+                Causality::Parameter => match self.parameter_value(VariableType::Real, vr)? {
+                    FmuValue::Real(x) => x,
+                    _ => unreachable!("a Real parameter"),
+                },
                 Causality::Input => self.inputs[input_index(vr)],
                 _ => self.output(vr)?,
             };
@@ -328,7 +390,7 @@ impl Instance {
     pub fn set_real(&mut self, vrs: &[u32], values: &[f64]) -> Result<(), FmuError> {
         for (&vr, &value) in vrs.iter().zip(values) {
             let causality = self.variable(VariableType::Real, vr)?;
-            self.settable(causality, vr)?;
+            self.may_set(causality, VariableType::Real, vr, &FmuValue::Real(value))?;
             if !value.is_finite() {
                 let field = name_of(VariableType::Real, vr).to_string();
                 return Err(match causality {
@@ -339,13 +401,13 @@ impl Instance {
             }
         }
         for (&vr, &value) in vrs.iter().zip(values) {
-            if let Some(p) = self.parameters.real_mut(vr) {
-                if *p != value {
-                    *p = value;
-                    self.parameters_changed();
-                }
-            } else {
-                self.inputs[input_index(vr)] = value;
+            if self.kept(VariableType::Real, vr) {
+                continue;
+            }
+            match self.parameters.write(vr, FmuValue::Real(value)) {
+                Some(true) => self.parameters_changed(),
+                Some(false) => {}
+                None => self.inputs[input_index(vr)] = value,
             }
         }
         Ok(())
@@ -354,26 +416,28 @@ impl Instance {
     pub fn get_integer(&mut self, vrs: &[u32], values: &mut [i32]) -> Result<(), FmuError> {
         for (&vr, value) in vrs.iter().zip(values) {
             self.variable(VariableType::Integer, vr)?;
-            *value = *self
-                .parameters
-                .integer_mut(vr)
-                .expect("an Integer parameter");
+            *value = match self.parameter_value(VariableType::Integer, vr)? {
+                FmuValue::Integer(i) => i,
+                _ => unreachable!("an Integer parameter"),
+            };
         }
         Ok(())
     }
 
     pub fn set_integer(&mut self, vrs: &[u32], values: &[i32]) -> Result<(), FmuError> {
-        for &vr in vrs {
+        for (&vr, &value) in vrs.iter().zip(values) {
             let causality = self.variable(VariableType::Integer, vr)?;
-            self.settable(causality, vr)?;
+            self.may_set(
+                causality,
+                VariableType::Integer,
+                vr,
+                &FmuValue::Integer(value),
+            )?;
         }
         for (&vr, &value) in vrs.iter().zip(values) {
-            let p = self
-                .parameters
-                .integer_mut(vr)
-                .expect("an Integer parameter");
-            if *p != value {
-                *p = value;
+            if !self.kept(VariableType::Integer, vr)
+                && self.parameters.write(vr, FmuValue::Integer(value)) == Some(true)
+            {
                 self.parameters_changed();
             }
         }
@@ -394,7 +458,7 @@ impl Instance {
         for &vr in vrs {
             self.variable(VariableType::String, vr)?;
             strings.push(c_text(
-                self.parameters.string_mut(vr).expect("a String parameter"),
+                self.parameters.string(vr).expect("a String parameter"),
             ));
         }
         self.strings = strings;
@@ -406,7 +470,12 @@ impl Instance {
     pub fn set_string(&mut self, vrs: &[u32], values: &[&str]) -> Result<(), FmuError> {
         for (&vr, value) in vrs.iter().zip(values) {
             let causality = self.variable(VariableType::String, vr)?;
-            self.settable(causality, vr)?;
+            self.may_set(
+                causality,
+                VariableType::String,
+                vr,
+                &FmuValue::String(value.to_string()),
+            )?;
             if value.len() > MAX_STRING_BYTES {
                 return Err(FmuError::Argument(format!(
                     "{} is {} bytes long: at most {MAX_STRING_BYTES} bytes are accepted",
@@ -416,9 +485,12 @@ impl Instance {
             }
         }
         for (&vr, &value) in vrs.iter().zip(values) {
-            let p = self.parameters.string_mut(vr).expect("a String parameter");
-            if p != value {
-                *p = value.to_string();
+            if !self.kept(VariableType::String, vr)
+                && self
+                    .parameters
+                    .write(vr, FmuValue::String(value.to_string()))
+                    == Some(true)
+            {
                 self.parameters_changed();
             }
         }
@@ -428,6 +500,8 @@ impl Instance {
     fn parameters_changed(&mut self) {
         self.built = None;
         self.outputs = None;
+        // `hydroDatabase` may name another configuration.
+        self.base = None;
     }
 
     /// `fmi2GetFMUstate`: a copy of everything needed to continue from here.
@@ -465,12 +539,21 @@ impl Instance {
             .built
             .as_ref()
             .is_some_and(|b| b.fingerprint() == state.fingerprint);
+        let same_base = state.parameters.hydro_database() == self.parameters.hydro_database();
+        let mut scenario = self.base.take().filter(|_| same_base);
         let (mut rebuilt, event) = if reuse {
             (None, "state restored".to_string())
         } else {
             let resources = self.resources.as_deref();
             let base = state.parameters.base(resources);
-            let problem = problem_of(&state.parameters, resources, &state.experiment);
+            let problem = match state.parameters.base_scenario(resources) {
+                Ok(read) => {
+                    let problem = state.parameters.to_problem(&read, &state.experiment);
+                    scenario = Some(read);
+                    problem
+                }
+                Err(e) => Err(e),
+            };
             let problem = state.check_problem(&base, problem)?;
             let built = Built {
                 simulation: Simulation::new(problem)?,
@@ -499,6 +582,7 @@ impl Instance {
         }
         self.outputs = outputs;
         self.parameters = state.parameters.clone();
+        self.base = scenario;
         self.experiment = state.experiment;
         self.state = state.machine;
         self.last_successful_time = state.last_successful_time;
@@ -529,16 +613,6 @@ impl Built {
             .fingerprint
             .get_or_init(|| fingerprint(self.simulation.problem()))
     }
-}
-
-/// The problem of `parameters` and `experiment`: the base scenario with the parameters
-/// applied, resolved (its database read or its solver run).
-fn problem_of(
-    parameters: &Parameters,
-    resources: Option<&Path>,
-    experiment: &Experiment,
-) -> crate::error::Result<Problem> {
-    resolve(&parameters.to_scenario(resources, experiment)?)
 }
 
 fn start_inputs() -> [f64; 3] {

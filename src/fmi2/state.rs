@@ -21,7 +21,7 @@
 //! | 1 | 1 when the experiment has a stop time, else 0 |
 //! | 8 | stop time (f64, finite and after the start time; all bits 0 without a stop time) |
 //! | 4 | number of parameters (u32): modelDescription.xml's, which the reader requires |
-//! | ... | each parameter in the XML's order: its value reference (u32), its type (one byte: `R` Real, `I` Integer, `S` String), its value: Real 8 bytes (f64, finite), Integer 4 bytes (i32), String a length (u32, at most [`MAX_STRING_BYTES`]) and that many bytes of UTF-8 without NUL |
+//! | ... | each parameter in the XML's order: its value reference (u32), its type (one byte: `R` Real, `I` Integer, `S` String), whether the master set it (one byte, 0 or 1: an unset parameter takes the configuration's value), its value: Real 8 bytes (f64, finite), Integer 4 bytes (i32), String a length (u32, at most [`MAX_STRING_BYTES`]) and that many bytes of UTF-8 without NUL |
 //! | 96 | the snapshot, when present ([`Snapshot::to_bytes`]) |
 //! | 8 | checksum: FNV-1a (u64) of every byte before it |
 //!
@@ -51,8 +51,9 @@ pub const MAGIC: [u8; 4] = *b"SDFS";
 /// Version of the byte format; a state of any other version is refused. Version 2: the
 /// fingerprint is the serde-JSON FNV-1a of the problem (version 1 hashed its `Debug` text).
 /// Version 3: the state carries the parameters and the experiment, and a checksum (and no
-/// terminated flag: the FMU never ends a run itself).
-pub const FORMAT_VERSION: u32 = 3;
+/// terminated flag: the FMU never ends a run itself). Version 4: whether the master set each
+/// parameter (an unset one takes the configuration's value).
+pub const FORMAT_VERSION: u32 = 4;
 /// Bytes of the fixed fields before the parameters (magic to the parameter count).
 const FIXED_BYTES: usize = 4 + 4 + 8 + 2 + 8 + 24 + 8 + 1 + 8 + 4;
 /// Bytes of the checksum at the end.
@@ -83,8 +84,9 @@ impl FmuState {
         let parameters: usize = self
             .parameters
             .iter()
-            .map(|(_, value)| {
+            .map(|(_, value, _)| {
                 4 + 1
+                    + 1
                     + match value {
                         FmuValue::Real(_) => 8,
                         FmuValue::Integer(_) => 4,
@@ -116,15 +118,17 @@ impl FmuState {
         out.extend_from_slice(&self.experiment.stop_time.unwrap_or(0.0).to_le_bytes());
         let count = u32::try_from(Parameters::variables().count()).expect("a few parameters");
         out.extend_from_slice(&count.to_le_bytes());
-        for (info, value) in self.parameters.iter() {
+        for (info, value, set) in self.parameters.iter() {
             out.extend_from_slice(&info.value_reference.to_le_bytes());
             match value {
                 FmuValue::Real(x) => {
                     out.push(REAL);
+                    out.push(u8::from(set));
                     out.extend_from_slice(&x.to_le_bytes());
                 }
                 FmuValue::Integer(i) => {
                     out.push(INTEGER);
+                    out.push(u8::from(set));
                     out.extend_from_slice(&i.to_le_bytes());
                 }
                 FmuValue::String(s) => {
@@ -136,6 +140,7 @@ impl FmuState {
                         ));
                     }
                     out.push(STRING);
+                    out.push(u8::from(set));
                     let len = u32::try_from(s.len()).expect("bounded above");
                     out.extend_from_slice(&len.to_le_bytes());
                     out.extend_from_slice(s.as_bytes());
@@ -397,12 +402,16 @@ impl<'a> Reader<'a> {
                     &format!("must be {wanted} ({})", char::from(wanted)),
                 ));
             }
+            let set = self.flag(&format!("set flag of {name}"))?;
             let value = match tag {
                 REAL => FmuValue::Real(self.finite(name)?),
                 INTEGER => FmuValue::Integer(i32::from_le_bytes(self.array(name)?)),
                 _ => FmuValue::String(self.text(name)?),
             };
             assert!(parameters.set(name, value), "the type was checked");
+            if !set {
+                parameters.unset(name);
+            }
         }
         Ok(parameters)
     }
@@ -477,11 +486,12 @@ mod tests {
         bytes[n..].copy_from_slice(&sum.to_le_bytes());
     }
 
-    /// Offset of the first byte of parameter `name`'s value (after its reference and type).
+    /// Offset of the first byte of parameter `name`'s value (after its reference, type and
+    /// set flag).
     fn value_offset(s: &FmuState, name: &str) -> usize {
         let mut at = FIXED_BYTES;
-        for (info, value) in s.parameters.iter() {
-            at += 5;
+        for (info, value, _) in s.parameters.iter() {
+            at += 6;
             if info.name == name {
                 return at;
             }
@@ -531,16 +541,18 @@ mod tests {
             first.value_reference
         );
         let hs = value_offset(&s, "Hs");
-        assert_eq!((b[hs - 1], f64_at(hs)), (REAL, 5.25));
+        assert_eq!((b[hs - 2], b[hs - 1], f64_at(hs)), (REAL, 1, 5.25));
+        // Tp is left to the configuration: its set flag is 0.
+        assert_eq!(b[value_offset(&s, "Tp") - 1], 0);
         let seed = value_offset(&s, "seed");
-        assert_eq!(b[seed - 1], INTEGER);
+        assert_eq!((b[seed - 2], b[seed - 1]), (INTEGER, 1));
         assert_eq!(
             i32::from_le_bytes(b[seed..seed + 4].try_into().unwrap()),
             -7
         );
         let db = value_offset(&s, "hydroDatabase");
         let len = u32::from_le_bytes(b[db..db + 4].try_into().unwrap()) as usize;
-        assert_eq!((b[db - 1], len), (STRING, "/tmp/é x.toml".len()));
+        assert_eq!((b[db - 2], len), (STRING, "/tmp/é x.toml".len()));
         assert_eq!(&b[db + 4..db + 4 + len], "/tmp/é x.toml".as_bytes());
         let n = b.len();
         assert_eq!(
@@ -585,7 +597,8 @@ mod tests {
         patch(67, &3u32.to_le_bytes(), "3 parameters");
         patch(71, &99_999u32.to_le_bytes(), "value reference 99999");
         let hs = value_offset(&s, "Hs");
-        patch(hs - 1, b"I", "type byte");
+        patch(hs - 2, b"I", "type byte");
+        patch(hs - 1, &[2], "set flag of Hs = 2");
         patch(hs, &f64::NEG_INFINITY.to_le_bytes(), "Hs");
         let db = value_offset(&s, "hydroDatabase");
         patch(

@@ -112,9 +112,15 @@ pub const DEFAULT_SEED: u64 = 1;
 /// Reads the configuration file at `path`. A CSV or database file it names is looked up
 /// relative to the directory of `path` (and read when the scenario is resolved).
 pub fn load(path: &Path) -> Result<Scenario> {
+    load_named(path, &path.display().to_string())
+}
+
+/// [`load`], with errors in the file naming it `origin` (the FMU's embedded configuration,
+/// not the temporary folder a master unpacked it to).
+pub fn load_named(path: &Path, origin: &str) -> Result<Scenario> {
     let text = crate::files::read_text(path)?;
     let base_dir = path.parent().unwrap_or_else(|| Path::new(""));
-    parse(&text, &path.display().to_string(), base_dir)
+    parse(&text, origin, base_dir)
 }
 
 /// Parses configuration text. `origin` names the text in error messages (normally the file

@@ -19,6 +19,7 @@ mod fmi2_limits;
 mod fmi2_misuse;
 mod fmi2_state;
 mod fmi2_symbols;
+mod fmu_configuration;
 mod full_qtf;
 mod full_qtf_directions;
 mod fuzz;

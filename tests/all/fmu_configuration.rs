@@ -1,0 +1,230 @@
+//! The FMU runs the configuration it is given (#27 section 2): a parameter the master does
+//! not set takes the value of the configuration in `hydroDatabase` (or the FMU's embedded
+//! one), a parameter it sets wins, every value of the file is checked even where a set
+//! parameter replaces it, and a fixed parameter set to the value it has after a restored
+//! state is accepted. The independent route is the configuration file read and run natively,
+//! as `slowdrift simulate --config` does.
+
+use crate::fmu::*;
+use slowdrift::fmi2::model_description::vr;
+use slowdrift::fmi2::types::*;
+use slowdrift::problem::resolve;
+use slowdrift::scenario::file;
+use slowdrift::sea_state::{Spectrum, Spreading};
+use slowdrift::Simulation;
+use std::path::PathBuf;
+
+const STOP: f64 = 600.0;
+
+/// The example configuration with `edits` (old, new) made, written to a file of its own.
+fn configuration(name: &str, edits: &[(&str, &str)]) -> PathBuf {
+    let mut text = include_str!("../data/example.toml").to_string();
+    for (old, new) in edits {
+        assert!(text.contains(old), "{old}");
+        text = text.replacen(old, new, 1);
+    }
+    let path = std::env::temp_dir().join(format!(
+        "slowdrift-fmu-configuration-{name}-{}.toml",
+        std::process::id()
+    ));
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// A user's sea: Hs 5 m, 30 degrees (the example's), cos^2 spreading over 9 directions, and
+/// drag other than the FMU's start values (combined, C_D 0.7 in the example); the example's
+/// drift table given at every heading the spread sea reaches (its rows at 0 and 90 degrees
+/// mirrored to 180 and -90).
+fn users_sea(name: &str) -> PathBuf {
+    configuration(
+        name,
+        &[
+            ("hs = 3.0 ", "hs = 5.0 "),
+            ("spreading = \"long-crested\"", "spreading = \"cos-n\""),
+            ("# spreading_exponent = 2.0", "spreading_exponent = 2.0"),
+            ("# n_directions = 15 ", "n_directions = 9 "),
+            ("duration = 10800.0", "duration = 600.0"),
+            (
+                "  [0.30,   90.0, ",
+                "  [0.30, -90.0, 0.0, -1.6e3, 0.0], [0.50, -90.0, 0.0, -6.3e3, 0.0],\n\
+                 [0.75, -90.0, 0.0, -2.3e4, 0.0], [1.00, -90.0, 0.0, -4.3e4, 0.0],\n\
+                 [1.50, -90.0, 0.0, -6.0e4, 0.0], [2.00, -90.0, 0.0, -6.8e4, 0.0],\n\
+                 [0.30, 180.0, -1.5e3, 0.0, 0.0], [0.50, 180.0, -6.0e3, 0.0, 0.0],\n\
+                 [0.75, 180.0, -2.2e4, 0.0, 0.0], [1.00, 180.0, -4.1e4, 0.0, 0.0],\n\
+                 [1.50, 180.0, -5.8e4, 0.0, 0.0], [2.00, 180.0, -6.6e4, 0.0, 0.0],\n\
+                 [0.30,   90.0, ",
+            ),
+        ],
+    )
+}
+
+/// An instance with `hydroDatabase` = `path` and nothing else set, initialised for
+/// [0, STOP].
+fn fmu_of(name: &str, path: &std::path::Path) -> Fmu {
+    let fmu = Fmu::new(name);
+    assert_eq!(fmu.setup(0.0, Some(STOP)), fmi2Status::fmi2OK);
+    assert_eq!(
+        fmu.set_string(vr::HYDRO_DATABASE, path.to_str().unwrap()),
+        fmi2Status::fmi2OK,
+        "{}",
+        fmu.messages()
+    );
+    fmu
+}
+
+fn enter_initialization(fmu: &Fmu) -> fmi2Status {
+    unsafe { slowdrift::fmi2::exports::fmi2EnterInitializationMode(fmu.c) }
+}
+
+fn exit_initialization(fmu: &Fmu) -> fmi2Status {
+    unsafe { slowdrift::fmi2::exports::fmi2ExitInitializationMode(fmu.c) }
+}
+
+/// With only `hydroDatabase` set, the FMU runs the file's sea and drag: its outputs equal
+/// the file run natively bit for bit, and a master reads the file's values back.
+#[test]
+fn a_configuration_file_runs_as_written() {
+    let path = users_sea("runs-as-written");
+    let fmu = fmu_of("users-sea", &path);
+    // In initialisation mode a master already reads the file's values, not the start values.
+    assert_eq!(enter_initialization(&fmu), fmi2Status::fmi2OK);
+    let (status, read) = fmu.get_reals(&[
+        vr::HS,
+        vr::WAVE_DIRECTION,
+        vr::SPREADING_EXPONENT,
+        vr::CURRENT_SPEED,
+        vr::CD,
+        vr::STIFFNESS_SURGE,
+    ]);
+    assert_eq!(status, fmi2Status::fmi2OK, "{}", fmu.messages());
+    assert_eq!(read, [5.0, 30f64.to_radians(), 2.0, 0.5, 0.7, 8.0e4]);
+    assert_eq!(
+        exit_initialization(&fmu),
+        fmi2Status::fmi2OK,
+        "{}",
+        fmu.messages()
+    );
+
+    let mut problem = resolve(&file::load(&path).unwrap()).unwrap();
+    assert_eq!(problem.sea.spreading, Spreading::CosN { n: 2.0 });
+    assert_eq!(problem.sea.n_directions, 9);
+    problem.run.start_time = 0.0;
+    problem.run.duration = STOP;
+    let mut native = Simulation::new(problem).unwrap();
+    for n in 0..300 {
+        let t = n as f64;
+        assert_eq!(
+            bits(&fmu.outputs()),
+            bits(&native_outputs(&native.outputs().unwrap())),
+            "t = {t} s"
+        );
+        fmu.step_with(t, 1.0, [0.0; 3]);
+        native.advance(1.0, [0.0; 3]).unwrap();
+    }
+    // Short-crested at 30 degrees: sway and yaw move.
+    let last = fmu.outputs();
+    assert!(last[1] != 0.0 && last[2] != 0.0, "{last:?}");
+    std::fs::remove_file(&path).ok();
+}
+
+/// A parameter the master sets wins over the file; the others keep the file's values.
+#[test]
+fn a_parameter_the_master_sets_wins() {
+    let path = users_sea("set-hs");
+    let fmu = fmu_of("set-hs", &path);
+    assert_eq!(fmu.set_real(vr::HS, 4.0), fmi2Status::fmi2OK);
+    assert_eq!(fmu.init(), fmi2Status::fmi2OK, "{}", fmu.messages());
+    let (status, read) = fmu.get_reals(&[vr::HS, vr::SPREADING_EXPONENT]);
+    assert_eq!(status, fmi2Status::fmi2OK, "{}", fmu.messages());
+    assert_eq!(read, [4.0, 2.0]);
+
+    let mut problem = resolve(&file::load(&path).unwrap()).unwrap();
+    match &mut problem.sea.spectrum {
+        Spectrum::Jonswap { hs, .. } => *hs = 4.0,
+        other => panic!("{other:?}"),
+    }
+    problem.run.duration = STOP;
+    let mut native = Simulation::new(problem).unwrap();
+    for n in 0..50 {
+        fmu.step_with(n as f64, 1.0, [0.0; 3]);
+        native.advance(1.0, [0.0; 3]).unwrap();
+    }
+    assert_eq!(
+        bits(&fmu.outputs()),
+        bits(&native_outputs(&native.outputs().unwrap()))
+    );
+    std::fs::remove_file(&path).ok();
+}
+
+/// A master that switches the drag model without its coefficients gets the coefficients'
+/// start values (what it reads back), not an error about the file's empty setting.
+#[test]
+fn a_mode_the_master_chooses_takes_the_start_values_it_shows() {
+    let path = users_sea("separate");
+    let fmu = fmu_of("separate", &path);
+    assert_eq!(fmu.set_int(vr::DRAG_MODEL, 1), fmi2Status::fmi2OK);
+    assert_eq!(enter_initialization(&fmu), fmi2Status::fmi2OK);
+    let (status, shown) = fmu.get_reals(&[vr::CD_SLOW, vr::CD_FAST]);
+    assert_eq!(status, fmi2Status::fmi2OK, "{}", fmu.messages());
+    assert_eq!(
+        exit_initialization(&fmu),
+        fmi2Status::fmi2OK,
+        "{}",
+        fmu.messages()
+    );
+    assert_eq!(
+        shown,
+        [0.6, 0.6],
+        "the start values of modelDescription.xml"
+    );
+    std::fs::remove_file(&path).ok();
+}
+
+/// Every value of the file is checked, even one a set parameter replaces: `hs = nan` is an
+/// error naming the file's line, as `simulate --config` gives it.
+#[test]
+fn the_file_is_checked_where_a_parameter_replaces_it() {
+    let path = configuration("nan-hs", &[("hs = 3.0 ", "hs = nan ")]);
+    let fmu = fmu_of("nan-hs", &path);
+    assert_eq!(fmu.set_real(vr::HS, 4.0), fmi2Status::fmi2OK);
+    assert_eq!(fmu.init(), fmi2Status::fmi2Error);
+    let message = fmu.last_message().message;
+    let line = format!("{}:14", path.display());
+    assert!(
+        message.contains("[sea] hs") && message.contains(&line),
+        "{message}"
+    );
+    std::fs::remove_file(&path).ok();
+}
+
+/// After `fmi2SetFMUstate` a fixed parameter set to the value it has is accepted (fmusim
+/// writes start values back after restoring); another value is refused.
+#[test]
+fn a_fixed_parameter_takes_only_its_own_value_after_a_restore() {
+    let fmu = Fmu::running("restore", 3, 0.0, 0.0, Some(STOP));
+    let state = get_state(&fmu);
+    fmu.step_with(0.0, 1.0, [0.0; 3]);
+    assert_eq!(
+        unsafe { slowdrift::fmi2::exports::fmi2SetFMUstate(fmu.c, state) },
+        fmi2Status::fmi2OK
+    );
+    assert_eq!(
+        fmu.set_int(vr::SEED, 3),
+        fmi2Status::fmi2OK,
+        "{}",
+        fmu.messages()
+    );
+    assert_eq!(
+        fmu.set_real(vr::HS, 7.0),
+        fmi2Status::fmi2OK,
+        "{}",
+        fmu.messages()
+    );
+    assert_eq!(fmu.set_real(vr::HS, 6.0), fmi2Status::fmi2Error);
+    assert!(
+        fmu.last_message().message.contains("parameter Hs is fixed"),
+        "{}",
+        fmu.messages()
+    );
+    free_state(&fmu, state);
+}
