@@ -570,7 +570,8 @@ impl Problem {
             return Err(Error::invalid(
                 "model.drift_damping",
                 "table",
-                "the drift table has no b_ij columns",
+                "this drift data has no wave-drift damping table (b11 .. b33; the embedded \
+                 default has none): the damping choices that work with it are aranha and off",
             ));
         }
         self.validate_yaw_following()?;

@@ -2,7 +2,7 @@
 
 use super::machine::{Call, MachineState};
 use super::types::fmi2Status;
-use crate::error::Error;
+use crate::error::{bytes_text, Error, Location, OverBudget, BYTES_PER_GB};
 use crate::scenario::overrides;
 use std::fmt;
 
@@ -53,6 +53,9 @@ impl fmt::Display for FmuError {
                 call.name()
             ),
             FmuError::Argument(m) => f.write_str(m),
+            FmuError::Core(Error::OverBudget(excess)) if excess.at.is_some() => {
+                over_memory_limit(f, excess)
+            }
             FmuError::Core(e) => e.describe(f, &fmu_name),
             FmuError::Unsupported(why) => write!(f, "not supported: {why}"),
             FmuError::StatusUnavailable(why) => write!(f, "status not available: {why}"),
@@ -63,6 +66,38 @@ impl fmt::Display for FmuError {
             FmuError::Panic(m) => write!(f, "internal error (panic caught): {m}"),
         }
     }
+}
+
+/// Records over the memory budget because of a setting of the configuration file (the
+/// embedded one, or `hydroDatabase`'s), which the FMU's user may not have written: named
+/// by what they set, `memoryLimit`, with what it must be raised to, and the file's setting
+/// that makes the estimate as the cause.
+fn over_memory_limit(f: &mut fmt::Formatter<'_>, excess: &OverBudget) -> fmt::Result {
+    let OverBudget {
+        field,
+        value,
+        at,
+        needs,
+        what,
+        limit,
+    } = excess;
+    let at = match at {
+        Some(Location {
+            path,
+            line: Some(line),
+        }) => format!("{path}:{line}"),
+        Some(Location { path, line: None }) => path.clone(),
+        None => String::new(),
+    };
+    write!(
+        f,
+        "invalid FMU parameter memoryLimit = {} ({}): the records need {} of memory ({what}, \
+         from {field} = {value} in {at}); raise memoryLimit to at least {} (GB)",
+        limit / BYTES_PER_GB,
+        bytes_text(*limit),
+        bytes_text(*needs),
+        (needs / BYTES_PER_GB * 1000.0).ceil() / 1000.0
+    )
 }
 
 /// A setting as the FMU's user sets it: its parameter, else its configuration key (set in

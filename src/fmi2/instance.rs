@@ -301,7 +301,15 @@ impl Instance {
         }
         self.base_scenario()?;
         let base = self.base.as_ref().expect("read above");
-        Ok(self.parameters.value_for(info, base))
+        // What runs: the configuration with the master's parameters over it (a set
+        // `spreadingExponent` spreads a long-crested sea over 15 directions, and an unset
+        // `nDirections` then reads 15). Parameters the run would refuse leave the
+        // configuration's values to read.
+        let running = self
+            .parameters
+            .apply(base.clone(), &self.experiment)
+            .unwrap_or_else(|_| base.clone());
+        Ok(self.parameters.value_for(info, &running))
     }
 
     /// May the parameter or input of `causality` with value reference `vr` take `value`

@@ -23,18 +23,30 @@ impl Logger {
         name: &str,
         logging_on: bool,
     ) -> Logger {
+        let mut enabled = [logging_on; LOG_CATEGORIES.len()];
+        enabled[log_category::LOG_ALL] = false;
         Logger {
             callback,
             environment,
             name: c_text(name),
-            enabled: [logging_on; LOG_CATEGORIES.len()],
+            enabled,
         }
     }
 
-    /// Whether messages of `category` go to the host. Errors always do (the standard asks
-    /// the FMU to say why it returned fmi2Error); the rest obey `fmi2SetDebugLogging`.
+    /// Whether messages of `category` go to the host. Errors, warnings and discards always
+    /// do (they say why a call did not return fmi2OK); events obey `loggingOn` and
+    /// `fmi2SetDebugLogging`; the trace of every call (`logAll`, a line per call and so
+    /// per step) only `fmi2SetDebugLogging`, which switches it on when it names it or names
+    /// no category. `loggingOn = fmi2True` alone leaves it off: masters such as libcosim
+    /// instantiate with logging on and write every line the FMU sends (FMI 2.0.4 section
+    /// 2.1.5 leaves the categories that `loggingOn` enables to the FMU).
     pub fn enabled(&self, category: usize) -> bool {
-        category == log_category::LOG_STATUS_ERROR || self.enabled[category]
+        matches!(
+            category,
+            log_category::LOG_STATUS_ERROR
+                | log_category::LOG_STATUS_WARNING
+                | log_category::LOG_STATUS_DISCARD
+        ) || self.enabled[category]
     }
 
     /// `fmi2SetDebugLogging`: no categories = all of them; an unknown one changes nothing

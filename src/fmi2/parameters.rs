@@ -176,10 +176,10 @@ impl Parameters {
     }
 
     /// The value a master reads for the parameter `info`: its own where it set it, else the
-    /// configuration's, `base` (what it runs); the start value where the configuration's
-    /// choice leaves the setting out of force (`cd` under separate drag) and for
-    /// `hydroDatabase`, which names the configuration.
-    pub fn value_for(&self, info: &VariableInfo, base: &Scenario) -> FmuValue {
+    /// one `running` has (the configuration with the set parameters written over it: what
+    /// runs); the start value where the choice made leaves the setting out of force (`cd`
+    /// under separate drag) and for `hydroDatabase`, which names the configuration.
+    pub fn value_for(&self, info: &VariableInfo, running: &Scenario) -> FmuValue {
         let (_, value, set) = self
             .iter()
             .find(|(v, _, _)| {
@@ -189,7 +189,7 @@ impl Parameters {
         let Some(setting) = by_fmu(info.name).filter(|_| !set) else {
             return value.clone();
         };
-        match (setting.get(base), value) {
+        match (setting.get(running), value) {
             (Value::Number(x), _) if x.is_nan() => value.clone(),
             (Value::Number(x), FmuValue::Real(_)) => FmuValue::Real(x),
             // An Integer setting's value is a whole number within i32 (the table's `whole`).
@@ -222,6 +222,10 @@ impl Parameters {
             }
             let written = Written::Fmu {
                 variable: info.name,
+                code: match value {
+                    FmuValue::Integer(code) if setting.takes_words() => Some(*code),
+                    _ => None,
+                },
             };
             let refuse = |shown: String, why: String| {
                 Error::invalid(format!("FMU parameter {name}"), shown, why)
@@ -248,12 +252,14 @@ impl Parameters {
             "run.start_time",
             Written::Fmu {
                 variable: "startTime",
+                code: None,
             },
         );
         c.origins.record(
             "run.duration",
             Written::Fmu {
                 variable: "stopTime",
+                code: None,
             },
         );
         Ok(c)

@@ -14,8 +14,13 @@ use std::ops::Range;
 /// One setting written over the configuration: by an FMU parameter or a case-table cell.
 #[derive(Debug, Clone)]
 pub enum Written {
-    /// An FMU parameter (its variable name); FMU angles are in radians.
-    Fmu { variable: &'static str },
+    /// An FMU parameter: its variable name and, for a mode (an Integer of the override
+    /// table's words), the code the master wrote, which messages show beside the word
+    /// (`driftDamping = 1 (table)`). FMU angles are in radians.
+    Fmu {
+        variable: &'static str,
+        code: Option<i32>,
+    },
     /// A cell of a case table.
     CaseTable {
         at: Location,
@@ -105,9 +110,12 @@ impl Origins {
             .find(|(key, _)| covers(key, &field))
         {
             return match written {
-                Written::Fmu { variable } => (
+                Written::Fmu { variable, code } => (
                     format!("FMU parameter {variable}"),
-                    in_radians(key, value),
+                    match code {
+                        Some(code) => format!("{code} ({value})"),
+                        None => in_radians(key, value),
+                    },
                     None,
                 ),
                 Written::CaseTable { at, row, column } => (
@@ -247,7 +255,13 @@ mod tests {
     #[test]
     fn an_override_is_named_where_it_was_written() {
         let mut origins = Origins::of_file("p.toml", TEXT);
-        origins.record("sea.hs", Written::Fmu { variable: "Hs" });
+        origins.record(
+            "sea.hs",
+            Written::Fmu {
+                variable: "Hs",
+                code: None,
+            },
+        );
         assert_eq!(
             origins.locate(invalid("sea.hs")).to_string(),
             "invalid FMU parameter Hs = -1: must be greater than zero"
@@ -273,6 +287,7 @@ mod tests {
             "current.direction_deg",
             Written::Fmu {
                 variable: "currentDirection",
+                code: None,
             },
         );
         let e = Error::invalid("current.direction_deg", 180.0, "why");

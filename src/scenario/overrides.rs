@@ -766,7 +766,10 @@ mod tests {
         for setting in &SETTINGS {
             let mut s = base.clone();
             let v = setting.get(&s);
-            let written = Written::Fmu { variable: "x" };
+            let written = Written::Fmu {
+                variable: "x",
+                code: None,
+            };
             match setting.apply(&mut s, v, written) {
                 Ok(()) => assert_eq!(s, base, "{}", setting.key),
                 Err(Refusal::NotInForce(_)) => {}
@@ -807,7 +810,14 @@ mod tests {
             let from_file = parse(&edited, "edited.toml", Path::new(".")).unwrap();
             let mut from_override = base.clone();
             setting
-                .apply(&mut from_override, value, Written::Fmu { variable: "x" })
+                .apply(
+                    &mut from_override,
+                    value,
+                    Written::Fmu {
+                        variable: "x",
+                        code: None,
+                    },
+                )
                 .unwrap();
             assert_eq!(from_override, from_file, "{key}");
         }
@@ -816,7 +826,10 @@ mod tests {
     #[test]
     fn a_setting_out_of_its_choice_is_not_in_force() {
         let mut s = default_scenario().unwrap();
-        let at = || Written::Fmu { variable: "x" };
+        let at = || Written::Fmu {
+            variable: "x",
+            code: None,
+        };
         let cd_slow = SETTINGS.iter().find(|s| s.key == "model.cd_slow").unwrap();
         assert!(matches!(
             cd_slow.apply(&mut s, Value::Number(0.5), at()),

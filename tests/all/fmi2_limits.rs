@@ -90,7 +90,11 @@ const HOSTILE: [Case; 5] = [
     Case {
         name: "memoryLimit = 0.001 (1 MB) with the default's 31 MB",
         set: |f, _| assert_eq!(f.set_real(vr::MEMORY_LIMIT, 0.001), fmi2Status::fmi2OK),
-        expected: &["strips_per_column = 20: needs", "the limit is 1.000 MB"],
+        expected: &[
+            "invalid FMU parameter memoryLimit = 0.001 (1.000 MB): the records need 31",
+            "from [model] strips_per_column = 20 in the FMU's embedded configuration",
+            "raise memoryLimit to at least 0.032 (GB)",
+        ],
     },
 ];
 

@@ -228,3 +228,131 @@ fn a_fixed_parameter_takes_only_its_own_value_after_a_restore() {
     );
     free_state(&fmu, state);
 }
+
+/// `spreadingExponent` alone spreads the embedded default's long-crested sea as the case
+/// table's `spreading_exponent` does: cos^N over 15 directions (the override table's rule),
+/// which `nDirections` then reads; the run equals the native one with that sea.
+#[test]
+fn a_spreading_exponent_alone_spreads_the_sea_over_15_directions() {
+    let fmu = Fmu::new("spread");
+    assert_eq!(fmu.setup(0.0, Some(STOP)), fmi2Status::fmi2OK);
+    assert_eq!(
+        fmu.set_real(vr::SPREADING_EXPONENT, 2.0),
+        fmi2Status::fmi2OK
+    );
+    assert_eq!(enter_initialization(&fmu), fmi2Status::fmi2OK);
+    let mut n = -1;
+    let status =
+        unsafe { slowdrift::fmi2::exports::fmi2GetInteger(fmu.c, &vr::N_DIRECTIONS, 1, &mut n) };
+    assert_eq!((status, n), (fmi2Status::fmi2OK, 15), "{}", fmu.messages());
+    assert_eq!(
+        exit_initialization(&fmu),
+        fmi2Status::fmi2OK,
+        "{}",
+        fmu.messages()
+    );
+
+    let mut problem = native_config(1, 0.0, 0.0, STOP);
+    assert_eq!(problem.sea.spreading, Spreading::LongCrested);
+    problem.sea.spreading = Spreading::CosN { n: 2.0 };
+    problem.sea.n_directions = 15;
+    let mut native = Simulation::new(problem).unwrap();
+    for n in 0..20 {
+        fmu.step_with(n as f64, 1.0, [0.0; 3]);
+        native.advance(1.0, [0.0; 3]).unwrap();
+    }
+    assert_eq!(
+        bits(&fmu.outputs()),
+        bits(&native_outputs(&native.outputs().unwrap()))
+    );
+}
+
+/// `driftDamping = 1` (table) on the embedded default, whose data has no damping table,
+/// fails by design: the message names the parameter as the master set it and the codes
+/// that work with this data, and the variable's description says so.
+#[test]
+fn table_damping_on_the_default_names_the_choices_that_work() {
+    let fmu = Fmu::new("table-damping");
+    assert_eq!(fmu.setup(0.0, Some(STOP)), fmi2Status::fmi2OK);
+    assert_eq!(fmu.set_int(vr::DRIFT_DAMPING, 1), fmi2Status::fmi2OK);
+    assert_eq!(fmu.init(), fmi2Status::fmi2Error);
+    let message = fmu.last_message().message;
+    assert!(
+        message.contains("FMU parameter driftDamping = 1 (table)")
+            && message.contains("the damping choices that work with it are aranha and off"),
+        "{message}"
+    );
+    let xml = include_str!("../../modelDescription/modelDescription.xml");
+    let variable = &xml[xml.find("name=\"driftDamping\"").unwrap()..];
+    let description = &variable[..variable.find('>').unwrap()];
+    assert!(
+        description.contains("not on the embedded default"),
+        "{description}"
+    );
+}
+
+/// Messages name what the FMU's user set, never a setting of the embedded configuration
+/// they cannot see (`[run] block_duration`) or the master's temporary folder.
+#[test]
+fn messages_name_the_parameters_the_user_set() {
+    assert_refusal_names(
+        vr::MEMORY_LIMIT,
+        1e-6,
+        "FMU parameter memoryLimit = 0.000001 (1.000 kB)",
+    );
+}
+
+/// Initialising with the Real parameter `vr` set to `value` is refused, naming `named` and
+/// nothing the FMU's user cannot set or see.
+fn assert_refusal_names(vr: u32, value: f64, named: &str) {
+    let resources = packed_resources().trim_start_matches("file://").to_string();
+    let fmu = Fmu::new("named");
+    assert_eq!(fmu.setup(0.0, Some(3600.0)), fmi2Status::fmi2OK);
+    assert_eq!(fmu.set_real(vr, value), fmi2Status::fmi2OK);
+    assert_eq!(fmu.init(), fmi2Status::fmi2Error, "{value}");
+    let message = fmu.last_message().message;
+    assert!(message.contains(named), "{message}");
+    assert!(
+        !message.contains("block_duration")
+            && !message.contains("[run]")
+            && !message.contains(&resources),
+        "{message}"
+    );
+}
+
+/// With `loggingOn` (as libcosim and FMI Library instantiate) a run logs its events, not a
+/// line per call; the trace of every call comes when `fmi2SetDebugLogging` names `logAll`.
+/// Errors are reported with logging off.
+#[test]
+fn logging_on_alone_logs_events_not_every_step() {
+    let fmu = Fmu::running("quiet-steps", 1, 0.0, 0.0, Some(STOP));
+    fmu.clear_log();
+    for n in 0..200 {
+        fmu.step_with(n as f64, 1.0, [0.0; 3]);
+    }
+    assert!(fmu.entries().is_empty(), "{}", fmu.messages());
+    let category = std::ffi::CString::new("logAll").unwrap();
+    let categories = [category.as_ptr()];
+    assert_eq!(
+        unsafe {
+            slowdrift::fmi2::exports::fmi2SetDebugLogging(fmu.c, fmi2True, 1, categories.as_ptr())
+        },
+        fmi2Status::fmi2OK
+    );
+    fmu.step_with(200.0, 1.0, [0.0; 3]);
+    assert!(
+        fmu.entries()
+            .iter()
+            .any(|e| e.category == "logAll" && e.message == "fmi2DoStep: ok"),
+        "{}",
+        fmu.messages()
+    );
+
+    let silent = Fmu::instantiate("silent", Some(packed_resources()), false);
+    assert_eq!(silent.set_real(vr::HS, -1.0), fmi2Status::fmi2OK);
+    assert_eq!(silent.setup(0.0, Some(STOP)), fmi2Status::fmi2OK);
+    assert_eq!(silent.init(), fmi2Status::fmi2Error);
+    let entries = silent.entries();
+    assert_eq!(entries.len(), 1, "{entries:?}");
+    assert_eq!(entries[0].category, "logStatusError");
+}

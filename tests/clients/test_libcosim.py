@@ -176,3 +176,37 @@ def test_libcosim_two_days(fmu, md):
     assert list(numbers[59::60]) == list(range(60, steps + 1, 60))
     assert np.array_equal(np.array(values)[59::60], reference["X"][1:])
     assert np.max(np.abs(reference["X"][reference["time"] > 16384.0])) > 0.0
+
+
+LOG_SCRIPT = """
+import sys
+from libcosimpy.CosimExecution import CosimExecution
+from libcosimpy.CosimSlave import CosimLocalSlave
+ex = CosimExecution.from_step_size(step_size={step})
+slave = CosimLocalSlave(fmu_path=sys.argv[1], instance_name="slowdrift")
+index = ex.add_local_slave(local_slave=slave)
+assert index >= 0
+assert ex.simulate_until(target_time={steps} * {step})
+print("simulated", flush=True)
+"""
+
+
+def test_libcosim_default_log_level_is_not_flooded(fmu):
+    """Under libcosim's default log level (no log_output_level call) a run writes the FMU's
+    events and nothing per step: libcosim instantiates with loggingOn and writes every line
+    the FMU sends, so the per-call trace (logAll) stays off unless a master names it in
+    fmi2SetDebugLogging. 600 steps: before, a line a step at least (fmi2DoStep: ok); now the
+    events only (initialised, terminated)."""
+    import subprocess
+    import sys
+
+    script = LOG_SCRIPT.format(step=STEP_NS, steps=N_STEPS)
+    run = subprocess.run([sys.executable, "-c", script, fmu], capture_output=True,
+                         text=True, timeout=300)
+    assert run.returncode == 0, run.stderr[-2000:]
+    assert "simulated" in run.stdout
+    # libcosim writes each line the FMU sends as "[FMI status=ok, category=logAll] ...".
+    lines = (run.stdout + run.stderr).splitlines()
+    fmu_lines = [line for line in lines if "[FMI status=" in line]
+    assert 0 < len(fmu_lines) < 30, "\n".join(fmu_lines[:40])
+    assert not any("category=logAll" in line for line in fmu_lines)
