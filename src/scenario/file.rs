@@ -109,6 +109,13 @@ pub const LONG_CRESTED_DIRECTIONS: usize = 1;
 /// Default seed of the random wave amplitudes.
 pub const DEFAULT_SEED: u64 = 1;
 
+/// Why a hydrodynamic database (JSON) is not a configuration, and what to do with it.
+pub const DATABASE_NOT_CONFIGURATION: &str = "this is a hydrodynamic database (JSON, as \
+    `slowdrift hydro wamit` or `hydro nemoh` writes it), not a configuration (TOML): it has no \
+    sea, mooring or run; name it in a configuration's [drift] section (source = \"database\", \
+    file = \"NAME.json\") beside the platform's stiffness and sea, and give that \
+    configuration instead (docs/configuration.md)";
+
 /// Reads the configuration file at `path`. A CSV or database file it names is looked up
 /// relative to the directory of `path` (and read when the scenario is resolved).
 pub fn load(path: &Path) -> Result<Scenario> {
@@ -128,6 +135,15 @@ pub fn load_named(path: &Path, origin: &str) -> Result<Scenario> {
 /// the problem is (`problem::Problem::check`); this reader refuses what does not fit
 /// the format: unknown keys, wrong types, keys that the section's choice does not use.
 pub fn parse(text: &str, origin: &str, base_dir: &Path) -> Result<Scenario> {
+    // A TOML document cannot start with '{'; a JSON object does: most likely the database
+    // that `slowdrift hydro` writes, given where a configuration belongs.
+    if text.trim_start().starts_with('{') {
+        return Err(Error::Parse {
+            path: origin.to_string(),
+            line: Some(1),
+            message: DATABASE_NOT_CONFIGURATION.to_string(),
+        });
+    }
     let file: ConfigFile = toml::from_str(text).map_err(|e| Error::Parse {
         path: origin.to_string(),
         line: e.span().map(|span| line_of(text, span.start)),
@@ -1283,6 +1299,23 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
         assert!(
             err.to_string().starts_with(&format!("test.toml:{line}: ")),
             "{err}"
+        );
+    }
+
+    /// A JSON database given as a configuration is named for what it is, with the remedy.
+    #[test]
+    fn a_database_is_not_a_configuration() {
+        let err = parse(
+            "\n  {\"format_version\": 1, \"drift\": []}",
+            "iea.json",
+            Path::new(""),
+        )
+        .expect_err("a JSON database");
+        let text = err.to_string();
+        assert!(
+            text.starts_with("iea.json:1: this is a hydrodynamic database")
+                && text.contains("source = \"database\""),
+            "{text}"
         );
     }
 

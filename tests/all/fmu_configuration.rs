@@ -356,3 +356,22 @@ fn logging_on_alone_logs_events_not_every_step() {
     assert_eq!(entries.len(), 1, "{entries:?}");
     assert_eq!(entries[0].category, "logStatusError");
 }
+
+/// A JSON database (as `slowdrift hydro` writes it) given as `hydroDatabase` is refused with
+/// the remedy, naming the file: it has no sea, mooring or run to make a configuration.
+#[test]
+fn a_json_database_as_hydro_database_is_refused_with_the_remedy() {
+    let path = std::env::temp_dir().join(format!("slowdrift-db-{}.json", std::process::id()));
+    std::fs::write(&path, "{\"format_version\": 1}\n").unwrap();
+    let fmu = fmu_of("json", &path);
+    assert_eq!(fmu.init(), fmi2Status::fmi2Error);
+    let message = fmu.last_message().message;
+    std::fs::remove_file(&path).ok();
+    assert!(
+        message.contains(&format!(
+            "{}:1: this is a hydrodynamic database",
+            path.display()
+        )) && message.contains("name it in a configuration's [drift] section"),
+        "{message}"
+    );
+}
