@@ -9,10 +9,12 @@
 //! system structure and the SSP package).
 
 mod archive;
+mod configured;
 mod master;
 mod mooring;
 mod system;
 
+use clap::Parser;
 use slowdrift::fmi2::resources::{write_resources, RESOURCE_CONFIG, RESOURCE_DRIFT};
 use slowdrift::stats::summarize;
 use std::path::{Path, PathBuf};
@@ -21,11 +23,30 @@ use std::process::{Command, ExitCode};
 const MODEL_IDENTIFIER: &str = "SlowDrift";
 const THREE_HOURS: f64 = 3.0 * 3600.0;
 const COMMUNICATION_STEP: f64 = 1.0;
-/// Samples dropped before the statistics: ten 200 s surge periods of the default platform.
+/// Samples dropped before the statistics: ten 200 s surge periods of the default platform
+/// (at most half the checked run).
 const TRANSIENT: f64 = 2000.0;
 
+/// Packs SlowDrift's FMUs and checks each by running it through its C ABI.
+///
+/// Without options: target/fmu/SlowDrift.fmu (the embedded default platform),
+/// target/fmu/Mooring.fmu and the coupled system, target/fmu/system/. With --config: one
+/// FMU of that configuration only.
+#[derive(Parser)]
+#[command(name = "fmu-pack")]
+struct Args {
+    /// A configuration file (TOML, as `slowdrift simulate --config` reads it) to pack as an
+    /// FMU of its own: its configuration embedded, its values as the start values
+    #[arg(long, value_name = "FILE")]
+    config: Option<PathBuf>,
+    /// Where to write that FMU [default: target/fmu/<the configuration's file stem>.fmu]
+    #[arg(long, value_name = "FILE", requires = "config")]
+    out: Option<PathBuf>,
+}
+
 fn main() -> ExitCode {
-    match run() {
+    let args = Args::parse();
+    match run(&args) {
         Ok(()) => ExitCode::SUCCESS,
         Err(message) => {
             eprintln!("fmu-pack: {message}");
@@ -34,7 +55,7 @@ fn main() -> ExitCode {
     }
 }
 
-fn run() -> Result<(), String> {
+fn run(args: &Args) -> Result<(), String> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"))
         .parent()
         .ok_or("no workspace root")?
@@ -48,17 +69,75 @@ fn run() -> Result<(), String> {
     // second time with another feature set. A dependency's library stays in cargo's `deps`
     // folder under a name cargo chooses, so its path is taken from cargo's own report.
     let library = cdylib(&root, &["-p", "fmu-pack"], "slowdrift")?;
-    let fmu_path = target.join("fmu").join(format!("{MODEL_IDENTIFIER}.fmu"));
-    let resources = target.join("fmu").join("resources");
+    let fmu_dir = target.join("fmu");
+    if let Some(config) = &args.config {
+        let stem = config
+            .file_stem()
+            .ok_or_else(|| format!("--config {}: not a file name", config.display()))?
+            .to_string_lossy()
+            .into_owned();
+        let out = args
+            .out
+            .clone()
+            .unwrap_or_else(|| fmu_dir.join(format!("{stem}.fmu")));
+        return pack_configuration(&root, &library, config, &stem, &out, &fmu_dir);
+    }
+    let fmu_path = fmu_dir.join(format!("{MODEL_IDENTIFIER}.fmu"));
+    let resources = fmu_dir.join("resources");
     write_resources(&resources).map_err(|e| e.to_string())?;
-    pack(&root, &library, &resources, &fmu_path)?;
-    println!("wrote {}", fmu_path.display());
-    check_by_running(&fmu_path, &target.join("fmu").join("unpacked")).inspect_err(|_| {
-        // A packed FMU that fails its own check must not be left for a master to find.
-        let _ = std::fs::remove_file(&fmu_path);
-    })?;
+    let xml = read(&root.join("modelDescription/modelDescription.xml"))?;
+    let files = [RESOURCE_CONFIG, RESOURCE_DRIFT].map(String::from);
+    pack(&root, &library, xml, (&resources, &files), &fmu_path)?;
+    check(
+        &fmu_path,
+        &fmu_dir.join("unpacked"),
+        (0.0, Some(THREE_HOURS)),
+    )?;
     mooring::pack_and_check(&root, &target)?;
-    system::write(&root, &target.join("fmu"))
+    system::write(&root, &library, &fmu_dir)
+}
+
+/// The FMU of the configuration file `config`, named `model_name`, at `out`, checked by
+/// running it (its folders for the resources and the check under `work`).
+fn pack_configuration(
+    root: &Path,
+    library: &Path,
+    config: &Path,
+    model_name: &str,
+    out: &Path,
+    work: &Path,
+) -> Result<(), String> {
+    let resources = work.join(format!("{model_name}-resources"));
+    let xml = String::from_utf8(read(&root.join("modelDescription/modelDescription.xml"))?)
+        .map_err(|e| e.to_string())?;
+    let configured = configured::prepare(config, &resources, &xml, model_name)?;
+    pack(
+        root,
+        library,
+        configured.model_description.into_bytes(),
+        (&resources, &configured.resources),
+        out,
+    )?;
+    let stop = configured
+        .experiment
+        .1
+        .unwrap_or(configured.experiment.0 + THREE_HOURS)
+        .min(configured.experiment.0 + THREE_HOURS);
+    check(
+        out,
+        &work.join(format!("{model_name}-unpacked")),
+        (configured.experiment.0, Some(stop)),
+    )
+}
+
+/// Checks the FMU at `fmu_path` by running it ([`check_by_running`]) over `experiment`
+/// (start, stop); a packed FMU that fails its own check is removed, so that no master finds
+/// it.
+fn check(fmu_path: &Path, unpack_dir: &Path, experiment: (f64, Option<f64>)) -> Result<(), String> {
+    println!("wrote {}", fmu_path.display());
+    check_by_running(fmu_path, unpack_dir, experiment).inspect_err(|_| {
+        let _ = std::fs::remove_file(fmu_path);
+    })
 }
 
 /// `cargo build --release` with `args` (the package and its targets), and the path of the
@@ -110,30 +189,36 @@ fn read(path: &Path) -> Result<Vec<u8>, String> {
     std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))
 }
 
-fn pack(root: &Path, library: &Path, resources: &Path, fmu_path: &Path) -> Result<(), String> {
+/// Writes the SlowDrift FMU at `fmu_path`: the model description `xml`, the library, the
+/// named files of the resources folder and the documentation.
+fn pack(
+    root: &Path,
+    library: &Path,
+    xml: Vec<u8>,
+    (resources, files): (&Path, &[String]),
+    fmu_path: &Path,
+) -> Result<(), String> {
     let fmu_reference = String::from_utf8_lossy(&read(&root.join("docs/fmu.md"))?).into_owned();
-    let entries = vec![
+    let mut entries = vec![
         archive::Entry {
             path: "modelDescription.xml".into(),
-            data: read(&root.join("modelDescription/modelDescription.xml"))?,
+            data: xml,
         },
         archive::Entry {
             path: format!("binaries/linux64/{MODEL_IDENTIFIER}.so"),
             data: read(library)?,
         },
-        archive::Entry {
-            path: format!("resources/{RESOURCE_CONFIG}"),
-            data: read(&resources.join(RESOURCE_CONFIG))?,
-        },
-        archive::Entry {
-            path: format!("resources/{RESOURCE_DRIFT}"),
-            data: read(&resources.join(RESOURCE_DRIFT))?,
-        },
-        archive::Entry {
-            path: "documentation/index.html".into(),
-            data: documentation("SlowDrift", &fmu_reference).into_bytes(),
-        },
     ];
+    for name in files {
+        entries.push(archive::Entry {
+            path: format!("resources/{name}"),
+            data: read(&resources.join(name))?,
+        });
+    }
+    entries.push(archive::Entry {
+        path: "documentation/index.html".into(),
+        data: documentation("SlowDrift", &fmu_reference).into_bytes(),
+    });
     write_fmu(fmu_path, &entries)
 }
 
@@ -180,8 +265,13 @@ fn documentation(title: &str, readme: &str) -> String {
 }
 
 /// Unpacks the whole archive, as a master would (refusing entries that would land outside
-/// the folder), loads the library from it and runs three hours of the default platform.
-fn check_by_running(fmu_path: &Path, unpack_dir: &Path) -> Result<(), String> {
+/// the folder), loads the library from it and runs it over `(start, stop)` (three hours
+/// when open-ended) with no parameter set, as the model description describes it.
+fn check_by_running(
+    fmu_path: &Path,
+    unpack_dir: &Path,
+    (start, stop): (f64, Option<f64>),
+) -> Result<(), String> {
     archive::unpack(fmu_path, unpack_dir)?;
     let resources = unpack_dir.join("resources");
     let library = unpack_dir.join(format!("binaries/linux64/{MODEL_IDENTIFIER}.so"));
@@ -192,24 +282,30 @@ fn check_by_running(fmu_path: &Path, unpack_dir: &Path) -> Result<(), String> {
     let fmu = master::Fmu::load(&library)?;
     let uri = file_uri(&resources.canonicalize().map_err(|e| e.to_string())?)?;
     let names = ["X", "Y", "theta"];
+    let stop = stop.unwrap_or(start + THREE_HOURS);
     let started = std::time::Instant::now();
     let samples = master::run(
         &fmu,
         &description,
         &uri,
         (&[], &names),
-        (0.0, THREE_HOURS, COMMUNICATION_STEP),
+        (start, stop, COMMUNICATION_STEP),
     )?;
     let elapsed = started.elapsed().as_secs_f64();
-    println!("ran the packed FMU through its C ABI: 3 hours at a {COMMUNICATION_STEP} s communication step in {elapsed:.3} s");
-    println!("statistics after {TRANSIENT} s:");
+    let transient = TRANSIENT.min(0.5 * (stop - start));
+    println!(
+        "ran the packed FMU through its C ABI: {} s at a {COMMUNICATION_STEP} s communication \
+         step in {elapsed:.3} s",
+        stop - start
+    );
+    println!("statistics after {transient} s:");
     println!(
         "{:<10} {:>12} {:>12} {:>12}",
         "output", "mean", "rms", "max"
     );
     for (name, values) in names.iter().zip(&samples) {
         // Sample m is the output after step m + 1; the same samples as the CLI's statistics.
-        let s = summarize(values, COMMUNICATION_STEP, TRANSIENT).map_err(|e| e.to_string())?;
+        let s = summarize(values, COMMUNICATION_STEP, transient).map_err(|e| e.to_string())?;
         println!(
             "{name:<10} {:>12.4} {:>12.4} {:>12.4}",
             s.mean, s.rms, s.max

@@ -22,6 +22,7 @@ use super::instance::Instance;
 use super::logger::Logger;
 use super::machine::{Call, MachineState};
 use super::parameters::file_uri_to_path;
+use super::resources::{holds_configuration_of, RESOURCE_CONFIG};
 use super::state::FmuState;
 use super::types::*;
 use crate::fmi2::model_description::{log_category, GUID, MODEL_IDENTIFIER};
@@ -197,16 +198,6 @@ pub unsafe extern "C" fn fmi2Instantiate(
             Ok(_) => return refuse("instanceName is empty".into()),
             Err(e) => return refuse(e.to_string()),
         };
-        match unsafe { text(fmuGUID, "fmuGUID") } {
-            Ok(guid) if guid == GUID => {}
-            Ok(guid) => {
-                return refuse(format!(
-                    "fmuGUID {guid:?} is not this FMU's {GUID:?}: the modelDescription.xml \
-                     does not belong to this binary"
-                ))
-            }
-            Err(e) => return refuse(e.to_string()),
-        }
         if fmuType != fmi2Type::fmi2CoSimulation {
             return refuse(format!(
                 "fmuType {} is not supported: {name} is a co-simulation FMU (fmi2CoSimulation = 1)",
@@ -230,6 +221,25 @@ pub unsafe extern "C" fn fmi2Instantiate(
                 }
             }
         };
+        // This binary's GUID, or that of a user's configuration packed in the resources
+        // (`fmu-pack --config`: its modelDescription.xml carries that configuration's start
+        // values, and a GUID of its own).
+        match unsafe { text(fmuGUID, "fmuGUID") } {
+            Ok(guid) if guid == GUID => {}
+            Ok(guid)
+                if resources
+                    .as_deref()
+                    .is_some_and(|r| holds_configuration_of(r, guid)) => {}
+            Ok(guid) => {
+                return refuse(format!(
+                    "fmuGUID {guid:?} is neither this binary's {GUID:?} nor that of the \
+                     configuration in the FMU's resources: the modelDescription.xml does not \
+                     belong to this FMU (was resources/{RESOURCE_CONFIG} changed after \
+                     fmu-pack packed it? pack it again)"
+                ))
+            }
+            Err(e) => return refuse(e.to_string()),
+        }
         let instance = Instance::new(logger, resources);
         Box::into_raw(Box::new(instance)).cast()
     })

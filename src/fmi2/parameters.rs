@@ -200,6 +200,19 @@ impl Parameters {
         }
     }
 
+    /// The value of every parameter that the configuration `scenario` gives, as a master
+    /// that sets nothing reads it ([`Parameters::value_for`] with no parameter set): the
+    /// start values of an FMU packed from that configuration (`fmu-pack --config`). Not
+    /// `hydroDatabase`, which names a configuration, and no setting the configuration's
+    /// choices leave out of force (`cd` under separate drag keeps its start value).
+    pub fn configuration_values(scenario: &Scenario) -> Vec<(&'static VariableInfo, FmuValue)> {
+        let unset = Parameters::default();
+        parameter_variables()
+            .filter(|v| v.name != HYDRO_DATABASE)
+            .map(|v| (v, unset.value_for(v, scenario)))
+            .collect()
+    }
+
     /// `base` with these parameters and `experiment` written over it (see the module
     /// documentation). Errors for a value the parameter's setting does not take (a mode's
     /// code outside its words, `nDirections = 0`), naming the parameter.

@@ -296,7 +296,7 @@ fn instantiate_refuses_bad_arguments() {
             Some("x"),
             cs,
             Some("{00000000-0000-0000-0000-000000000000}"),
-            "is not this FMU's",
+            "is neither this binary's",
         ),
         (Some("x"), cs, None, "fmuGUID is NULL"),
         (

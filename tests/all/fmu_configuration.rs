@@ -375,3 +375,57 @@ fn a_json_database_as_hydro_database_is_refused_with_the_remedy() {
         "{message}"
     );
 }
+
+/// An FMU packed from a user's configuration (`fmu-pack --config`) has the configuration's
+/// GUID: the library accepts it with those resources (and runs the configuration, whose
+/// values a master reads), and refuses it once the packed configuration has been changed.
+#[test]
+fn a_packed_configuration_has_its_own_guid() {
+    use slowdrift::fmi2::resources::{write_configuration, RESOURCE_CONFIG};
+    let dir = std::env::temp_dir().join(format!("slowdrift-packed-{}", std::process::id()));
+    let config = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/example.toml");
+    let packed = write_configuration(&config, &dir).unwrap();
+    let uri = format!("file://{}", dir.display());
+    let instantiate = |guid: &str| {
+        let log: Box<Log> = Box::default();
+        let functions = callbacks(&log);
+        let name = std::ffi::CString::new("packed").unwrap();
+        let guid = std::ffi::CString::new(guid).unwrap();
+        let location = std::ffi::CString::new(uri.as_str()).unwrap();
+        let c = unsafe {
+            slowdrift::fmi2::exports::fmi2Instantiate(
+                name.as_ptr(),
+                fmi2Type::fmi2CoSimulation,
+                guid.as_ptr(),
+                location.as_ptr(),
+                &functions,
+                fmi2False,
+                fmi2False,
+            )
+        };
+        (c, log)
+    };
+    let (c, log) = instantiate(&packed.guid);
+    assert!(!c.is_null(), "{:?}", log.lock().unwrap());
+    let fmu = Fmu { c, log };
+    assert_eq!(fmu.setup(0.0, Some(STOP)), fmi2Status::fmi2OK);
+    assert_eq!(enter_initialization(&fmu), fmi2Status::fmi2OK);
+    assert_eq!(fmu.get_reals(&[vr::HS]).1, [3.0], "the example's hs");
+    drop(fmu);
+    // The default's GUID is accepted with any resources.
+    let (c, _log) = instantiate(slowdrift::fmi2::model_description::GUID);
+    assert!(!c.is_null());
+    unsafe { slowdrift::fmi2::exports::fmi2FreeInstance(c) };
+    // Changed after packing: refused.
+    let path = dir.join(RESOURCE_CONFIG);
+    let text = std::fs::read_to_string(&path).unwrap();
+    std::fs::write(&path, text.replace("hs = 3.0 ", "hs = 4.0 ")).unwrap();
+    let (c, log) = instantiate(&packed.guid);
+    assert!(c.is_null());
+    let message = log.lock().unwrap()[0].message.clone();
+    assert!(
+        message.contains("is neither this binary's") && message.contains("pack it again"),
+        "{message}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
