@@ -3,7 +3,8 @@
 (docs/coupling.md), from the system files themselves: the connections and their units from
 fmu-pack/system/SystemStructure.ssd, the OSP variable groups from
 modelDescription/SlowDrift_OspModelDescription.xml, the parameter values from the SSD's
-parameter binding. So the picture shows what the files say. Standard library only; the
+parameter bindings (none: the system's SlowDrift.fmu has no internal spring by
+construction). So the picture shows what the files say. Standard library only; the
 output is the same bytes on every run (tests/clients/test_system_files.py checks that the
 committed file is this script's output).
 
@@ -111,10 +112,15 @@ def draw(rows, params, group_of):
             out.append(arrow(x2, x1, y, "#b3541e"))
         out.append(text((x1 + x2) / 2 + 40, y - 4, unit, 11, "middle", fill="#333"))
     y = top + box_h + 34
-    out.append(text(left, y, "Set by the system (the platform's internal spring off):", 12,
-                    weight="bold"))
-    for i, (comp, name, value, unit) in enumerate(params):
-        out.append(text(left + 16, y + 18 + 16 * i, f"{comp}.{name} = {value} {unit}", 12))
+    if params:
+        out.append(text(left, y, "Set by the system:", 12, weight="bold"))
+        lines = [f"{comp}.{name} = {value} {unit}" for comp, name, value, unit in params]
+    else:
+        out.append(text(left, y, "No parameter set by the system:", 12, weight="bold"))
+        lines = ["its SlowDrift.fmu is packed with no internal",
+                 "spring (stiffness 0): the lines alone moor it."]
+    for i, line in enumerate(lines):
+        out.append(text(left + 16, y + 18 + 16 * i, line, 12))
     notes = ["Jacobi masters (libcosim, ecos, fmpy's SSP):",
              "both step from t_n; over [t_n, t_n + 1 s] the",
              "platform holds the line force of t_n."]

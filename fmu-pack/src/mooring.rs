@@ -110,10 +110,21 @@ fn moordyn_library(dir: &Path) -> Result<(Vec<u8>, Vec<u8>), String> {
         &|n| n.starts_with("moordyn.libs/libmoordyn") && n.contains(".so"),
         "moordyn.libs/libmoordyn*.so*",
     )?;
+    // The licence file, not its folder's own entry (`.dist-info/licenses/`, empty), which
+    // the name alone would also match.
     let licence = entry(
-        &|n| n.contains(".dist-info/licenses/") && n.to_ascii_lowercase().contains("license"),
-        "licence in its .dist-info",
+        &|n| {
+            n.rsplit_once(".dist-info/licenses/")
+                .is_some_and(|(_, file)| file.to_ascii_lowercase().starts_with("license"))
+        },
+        "licence file in its .dist-info/licenses/",
     )?;
+    // BSD-3-Clause: a redistribution of the binary must carry the text.
+    if !String::from_utf8_lossy(&licence).contains("Redistribution and use") {
+        return Err(at(
+            &"the wheel's licence file is not MoorDyn's BSD-3-Clause text",
+        ));
+    }
     Ok((library, licence))
 }
 

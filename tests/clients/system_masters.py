@@ -8,6 +8,9 @@ MooredPlatform.ssp. Each runner returns a Run:
 - stiffness: SlowDrift's stiffnessSurge, stiffnessSway, stiffnessYaw as the master reports
   them after initialisation (None where the master cannot tell).
 
+Each master is called as a user calls it, with no parameter set named: the system's
+SlowDrift.fmu has no internal mooring by construction (fmu-pack packs it from the default
+configuration with zero stiffness), so nothing depends on a binding a master may skip.
 Where each master shows these values, and how its time stamps line up, is documented in
 each runner; test_system_masters.py compares the runs with the fmpy-glue loop.
 """
@@ -89,11 +92,10 @@ def libcosim(system, steps):
     return Run(states, forces, stiffness)
 
 
-def ecos(system, steps, parameter_set="linesOnly"):
-    """ecos runs system/MooredPlatform.ssp (EcosSimulation(ssp_path=...), step 1 s). ecos
-    applies an SSD parameter set only when init names it (init(parameter_set="linesOnly"),
-    the set's name in the SSD); parameter_set=None is what init() does by default. Values
-    are read by name ("slowdrift::X"): the states after each step; SlowDrift's inputs before
+def ecos(system, steps):
+    """ecos runs system/MooredPlatform.ssp (EcosSimulation(ssp_path=...), step 1 s), with
+    init() as a user calls it (ecos would apply an SSD parameter set only when init names
+    it; the system has none). Values are read by name ("slowdrift::X"): the states after each step; SlowDrift's inputs before
     each step (ecos passes the outputs on after a step, so they then hold what the next step
     uses)."""
     from ecospy import EcosSimulation
@@ -103,7 +105,7 @@ def ecos(system, steps, parameter_set="linesOnly"):
     states = np.empty((steps, len(OBSERVED)))
     forces = np.empty((steps, len(INPUT_NAMES)))
     with EcosSimulation(ssp_path=os.path.join(system, SSP_FILE), step_size=1.0) as sim:
-        assert sim.init(parameter_set=parameter_set), EcosLib.get_last_error()
+        assert sim.init(), EcosLib.get_last_error()
         stiffness = tuple(sim.get_real(f"slowdrift::{n}") for n in STIFFNESS)
         for k in range(steps):
             forces[k] = [sim.get_real(f"slowdrift::{n}") for n in INPUT_NAMES]
@@ -114,26 +116,10 @@ def ecos(system, steps, parameter_set="linesOnly"):
     return Run(states, forces, stiffness)
 
 
-def ssp_parameter_set(ssp):
-    """The SSD's parameter bindings as an fmpy ParameterSet, each name prefixed by its
-    component ("slowdrift.stiffnessSurge"), the form fmpy's simulate_ssp applies."""
-    from fmpy.ssp.ssd import Parameter, ParameterSet, read_ssd
-
-    out = ParameterSet(name="bindings")
-    for element in read_ssd(ssp).system.elements:
-        for binding in element.parameterBindings:
-            for values in binding.parameterValues:
-                for p in values.parameters:
-                    out.parameters.append(Parameter(name=f"{element.name}.{p.name}", type=p.type,
-                                                    value=p.value, unit=p.unit))
-    return out
-
-
-def fmpy_ssp(system, steps, bindings=True):
-    """fmpy runs system/MooredPlatform.ssp (fmpy.ssp.simulation.simulate_ssp, step 1 s).
-    fmpy does not apply the SSD's parameter bindings itself: it applies only the
-    parameter_set its caller passes, so bindings=True passes the SSD's own
-    (ssp_parameter_set) and bindings=False runs what simulate_ssp does alone. fmpy starts
+def fmpy_ssp(system, steps):
+    """fmpy runs system/MooredPlatform.ssp (fmpy.ssp.simulation.simulate_ssp, step 1 s) as a
+    user calls it, with no parameter set (simulate_ssp never applies an SSD's parameter
+    bindings itself: the system relies on none). fmpy starts
     every connector at 0 (not at the outputs after initialisation; the mooring's force at the
     origin is 0, so nothing differs here), steps every component from the same point, then
     passes the outputs on; its result row stamped t_k holds the values after the step from
@@ -142,8 +128,7 @@ def fmpy_ssp(system, steps, bindings=True):
     from fmpy.ssp.simulation import simulate_ssp
 
     ssp = os.path.join(system, SSP_FILE)
-    result = simulate_ssp(ssp, stop_time=float(steps), step_size=1.0,
-                          parameter_set=ssp_parameter_set(ssp) if bindings else None)
+    result = simulate_ssp(ssp, stop_time=float(steps), step_size=1.0)
     assert np.array_equal(result["time"], np.arange(steps, dtype=float))
     states = np.column_stack([result[f"slowdrift.{n}"] for n in OBSERVED])
     held = np.column_stack([result[f"slowdrift.{n}"] for n in INPUT_NAMES])
@@ -153,12 +138,12 @@ def fmpy_ssp(system, steps, bindings=True):
 
 def differences(run, reference):
     """Problems of a master's run against the reference run (the Jacobi glue loop): every
-    state and every held force bit for bit, and the platform's internal stiffness off as
-    the system files set it."""
+    state and every held force bit for bit, and no internal stiffness in the platform, as
+    the system's SlowDrift.fmu is built."""
     problems = []
     if run.stiffness is not None and any(k != 0.0 for k in run.stiffness):
-        problems.append(f"the master left SlowDrift's stiffness at {run.stiffness}: it ignored "
-                        "the system's parameter values (stiffness 0)")
+        problems.append(f"the master runs SlowDrift with internal stiffness {run.stiffness}: "
+                        "the platform is moored twice")
     for what, a, b in (("states", run.states, reference.states),
                        ("forces", run.forces, reference.forces)):
         if a.shape != b.shape:

@@ -29,6 +29,17 @@ from test_fmutool import run_fmutool
 OFFSETS = [(10.0, 0.0, 0.0), (0.0, -7.5, 0.0), (0.0, 0.0, 0.03), (4.0, 3.0, -0.02)]
 
 
+def test_carries_moordyns_licence_text(mooring_fmu):
+    """MoorDyn's BSD-3-Clause licence requires its text with a redistributed binary: the
+    FMU's documentation/licenses/MoorDyn.txt holds it (not an empty entry)."""
+    import zipfile
+
+    with zipfile.ZipFile(mooring_fmu) as z:
+        text = z.read("documentation/licenses/MoorDyn.txt").decode()
+    assert "Redistribution and use in source and binary forms" in text, text[:200]
+    assert "Copyright" in text and "Neither the name" in text, text[:200]
+
+
 def test_validate_and_check(mooring_fmu):
     from fmpy import read_model_description
     from fmpy.validation import validate_fmu

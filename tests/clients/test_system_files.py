@@ -5,22 +5,23 @@ target/fmu/system/: SlowDrift_OspModelDescription.xml and Mooring_OspModelDescri
 
 1. Schemas: the OSP model descriptions against OSP-IS's OspModelDescription 1.0.1 schema
    (tests/clients/schema/, from the osp-validator repository), OspSystemStructure.xml against
-   the schema compiled into libcosimc (the master's own), the SSD and its inline parameter
-   set against fmpy's SSP 1.0 schemas.
+   the schema compiled into libcosimc (the master's own), the SSD against fmpy's SSP 1.0
+   schemas.
 2. Meaning, against the two FMUs' modelDescription.xml: every grouped variable exists with
    the unit given, a group has one causality and one unit, a port's sub-groups have opposite
    causalities; every connection (the OSP group connections expanded as libcosim expands
    them, and the SSD's) joins an output to an input of the same unit and axis, and every
-   input of both FMUs is driven exactly once; the parameters set (OSP initial values, SSP
-   parameter binding) are parameters of that type and unit, and switch the platform's
-   internal stiffness off.
+   input of both FMUs is driven exactly once. No parameter is set (no OSP initial value, no
+   SSP parameter binding, which fmpy's simulate_ssp never applies and ecos only when told):
+   the system's SlowDrift.fmu has no internal stiffness by construction, its start values
+   say stiffness 0 where the default SlowDrift.fmu's say the default mooring's.
    No connection needs a unit conversion, so a master that ignores units (libcosim and ecos
    read none) runs the system right; a unit that differed would be caught here (4).
 3. The OSP structure and the SSP describe the same system: the same variable connections,
-   the same parameter values, the same 1 s macro step; the SSP's FMUs are the packed ones.
+   no parameter values, the same 1 s macro step; the SSP's FMUs are the packed ones.
 4. The checks catch broken copies: a unit changed, a variable renamed, groups of different
-   kinds connected, an input left unconnected, a parameter of the wrong type, a schema
-   violation.
+   kinds connected, an input left unconnected, an initial value of the wrong type, a
+   schema violation.
 5. The connection diagram of docs/coupling.md is drawn from these files by
    docs/figures/coupling_diagram.py: the committed SVG is the script's output.
 """
@@ -70,13 +71,6 @@ def test_schemas(system):
                               text(system, "OspSystemStructure.xml")) == []
     ssd = sf.read_ssp(os.path.join(system, sf.SSP_FILE))["SystemStructure.ssd"].decode()
     assert sf.schema_problems(sf.ssp_schema("SystemStructureDescription.xsd"), ssd) == []
-    # The inline parameter set (the SSD schema leaves the content of ParameterValues open).
-    import xml.etree.ElementTree as ET
-
-    sets = ET.fromstring(ssd).findall(".//ssv:ParameterSet", sf.NS)
-    assert len(sets) == 1
-    assert sf.schema_problems(sf.ssp_schema("SystemStructureParameterValues.xsd"),
-                              ET.tostring(sets[0], encoding="unicode")) == []
 
 
 def test_schemas_catch_a_broken_file(system):
@@ -89,7 +83,8 @@ def test_schemas_catch_a_broken_file(system):
     assert sf.schema_problems(md, good[:start] + good[end:])
     oss = sf.osp_system_structure_schema()
     good = text(system, "OspSystemStructure.xml")
-    assert sf.schema_problems(oss, good.replace("<Real value=\"0\"/>", "<Real value=\"zero\"/>", 1))
+    assert sf.schema_problems(oss, good.replace("<BaseStepSize>1.0</BaseStepSize>",
+                                                "<BaseStepSize>one</BaseStepSize>", 1))
 
 
 def test_osp_model_descriptions_match_the_fmus(system, variables_of):
@@ -112,8 +107,7 @@ def test_osp_system_structure(system, variables_of):
     step, sources, initial, connections = sf.osp_system(text(system, "OspSystemStructure.xml"))
     assert step == 1.0
     assert sources == sf.FMUS
-    assert sf.initial_value_problems(initial, variables_of) == []
-    assert initial["slowdrift"] == {n: ("Real", "0") for n in STIFFNESS}
+    assert all(values == {} for values in initial.values()), initial
     pairs, problems = sf.expand_group_connections(connections, groups_of(system), variables_of)
     assert problems == []
     assert sf.input_coverage_problems(pairs, variables_of) == []
@@ -133,9 +127,17 @@ def test_ssp(system, variables_of):
             assert entries[f"resources/{f}"] == packed.read(), f
     assert sf.ssd_problems(connectors, parameters, connections, variables_of) == []
     assert sf.input_coverage_problems(connections, variables_of) == []
-    assert {n: float(v) for n, (_k, v, _u) in parameters["slowdrift"].items()} == {
-        n: 0.0 for n in STIFFNESS}
-    assert parameters["mooring"] == {}
+    assert all(values == {} for values in parameters.values()), parameters
+
+
+def test_the_systems_platform_has_no_internal_mooring(system, variables_of, fmu):
+    """By construction, not by a binding: the system's SlowDrift.fmu starts (and, with no
+    parameter set, runs: test_system_masters.py) at stiffness 0; the default FMU beside it
+    at the default mooring's."""
+    default = sf.model_variables(fmu)
+    for name in STIFFNESS:
+        assert float(variables_of["slowdrift"][name].start) == 0.0, name
+        assert float(default[name].start) > 0.0, name
 
 
 def test_osp_and_ssp_describe_one_system(system, variables_of):
@@ -177,8 +179,6 @@ def test_the_checks_catch_broken_copies(system, variables_of):
     ssd = sf.read_ssp(os.path.join(system, sf.SSP_FILE))["SystemStructure.ssd"].decode()
     for broken in (ssd.replace('name="Mz" kind="output"><ssc:Real unit="N.m"',
                                'name="Mz" kind="output"><ssc:Real unit="kN.m"'),
-                   ssd.replace('<ssv:Real value="0" unit="N/m"/>',
-                               '<ssv:Real value="0" unit="kN/m"/>', 1),
                    ssd.replace('endConnector="Fx_ext"', 'endConnector="Fx_wave"')):
         _s, connectors, parameters, ssp_connections, _step = sf.ssd_system(broken)
         assert sf.ssd_problems(connectors, parameters, ssp_connections, variables_of)
