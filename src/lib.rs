@@ -17,6 +17,30 @@
 //! and still water at Z = 0; the body frame follows the slow yaw theta; DOF order surge,
 //! sway, yaw; wave direction beta = direction of propagation from +X, counter-clockwise;
 //! a wave component is Re[a e^{i omega t}].
+//!
+//! # Example
+//!
+//! The embedded default platform (the paper's four columns on pontoons) in its JONSWAP sea,
+//! Hs 7 m, Tp 12 s, head seas: one hour, sampled every second, and the surge statistics after
+//! a transient of 1000 s (five surge periods).
+//!
+//! ```
+//! use slowdrift::{problem, scenario, stats, Simulation};
+//!
+//! let mut scenario = scenario::default::default_scenario()?; // what the user asks for
+//! scenario.run.duration = 3600.0; // s
+//! let problem = problem::resolve(&scenario)?; // its hydrodynamic data, read once
+//! let mut simulation = Simulation::new(problem)?; // checked; the first block's records
+//! let mut surge = vec![simulation.outputs()?.position[0]]; // X at t = 0, m
+//! for _ in 0..3600 {
+//!     simulation.advance(1.0, [0.0; 3])?; // 1 s, no external force (N, N, N m)
+//!     surge.push(simulation.outputs()?.position[0]);
+//! }
+//! let summary = stats::summarize(&surge, 1.0, 1000.0)?;
+//! // Waves push the platform on average down-wave (+X) and it oscillates about that.
+//! assert!(summary.mean > 0.0 && summary.rms > 0.0 && summary.max > summary.mean);
+//! # Ok::<(), slowdrift::Error>(())
+//! ```
 
 // Unsafe code: only `fmi2::exports` (the C ABI), the logger callback in `fmi2::logger` and
 // the one `mallopt` call of `allocator` allow it (checked by tests/all/architecture.rs).

@@ -133,6 +133,25 @@ impl Outputs {
 /// holds the segment its time is in, and makes the next one when a step starts in it (or
 /// any one, when a snapshot is restored there). A segment depends only on the seed and its
 /// index, so the trajectory does not depend on the run's duration.
+///
+/// An external force closes the loop with a mooring model: here a linear spring on X of
+/// 1e5 N/m applied from outside (`advance` holds the force over its interval, as a
+/// co-simulation master holds an input over a communication step):
+///
+/// ```
+/// use slowdrift::{problem, Simulation};
+///
+/// let mut problem = problem::default_problem()?; // the embedded default platform
+/// problem.platform.stiffness = [[0.0; 3]; 3]; // no internal mooring
+/// problem.run.duration = 600.0; // s
+/// let mut simulation = Simulation::new(problem)?;
+/// for _ in 0..600 {
+///     let x = simulation.outputs()?.position[0]; // m
+///     simulation.advance(1.0, [-1.0e5 * x, 0.0, 0.0])?; // Fx_ext, Fy_ext (N), Mz_ext (N m)
+/// }
+/// assert_eq!(simulation.time(), 600.0);
+/// # Ok::<(), slowdrift::Error>(())
+/// ```
 #[derive(Clone)]
 pub struct Simulation {
     problem: Problem,
