@@ -18,6 +18,7 @@ mod fmi2_alloc;
 mod fmi2_limits;
 mod fmi2_misuse;
 mod fmi2_state;
+mod fmi2_step_bounds;
 mod fmi2_symbols;
 mod fmu_configuration;
 mod full_qtf;
