@@ -10,7 +10,9 @@
 use super::fmu_error::FmuError;
 use super::logger::{c_text, Logger};
 use super::machine::{Call, MachineState};
-use super::parameters::{Experiment, FmuValue, Parameters, HYDRO_DATABASE, MAX_STRING_BYTES};
+use super::parameters::{
+    Experiment, FmuValue, Parameters, HYDRO_DATABASE, MAX_STRING_BYTES, TIME_TOLERANCE,
+};
 use super::state::{fingerprint, FmuState};
 use super::types::fmi2Status;
 use crate::error::Error;
@@ -21,10 +23,6 @@ use crate::scenario::Scenario;
 use crate::simulation::{Outputs, Simulation};
 use std::ffi::CString;
 use std::path::PathBuf;
-
-/// Relative tolerance of the communication point against the internal time (and of the
-/// stop time), times max(1, |t|).
-const TIME_TOLERANCE: f64 = 1e-9;
 
 /// The simulation with the fingerprint of the configuration it was built from, computed
 /// when a state first asks for it (hashing the problem's JSON, drift table included, takes
@@ -223,7 +221,7 @@ impl Instance {
             )));
         }
         let inputs = self.inputs;
-        let stop = self.experiment.stop_time;
+        let experiment = self.experiment;
         let simulation = self.simulation()?;
         let t = simulation.time();
         if !point.is_finite() || (point - t).abs() > TIME_TOLERANCE * t.abs().max(1.0) {
@@ -239,13 +237,11 @@ impl Instance {
                 shown(spacing(t))
             )));
         }
-        if let Some(stop) = stop {
-            if t + h > stop + TIME_TOLERANCE * stop.abs().max(1.0) {
-                return Err(FmuError::Argument(format!(
-                    "a step of {} s from {t} s passes stopTime = {stop} s",
-                    shown(h)
-                )));
-            }
+        if let (true, Some(stop)) = (experiment.passes_stop(t + h), experiment.stop_time) {
+            return Err(FmuError::Argument(format!(
+                "a step of {} s from {t} s passes stopTime = {stop} s",
+                shown(h)
+            )));
         }
         let longest = longest_step(simulation.problem());
         if h > longest {

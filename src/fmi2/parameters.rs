@@ -138,6 +138,13 @@ impl Parameters {
             .map(|((v, value), set)| (v, value, *set))
     }
 
+    /// The value of the parameter called `name` when the master set it.
+    pub fn set_value(&self, name: &str) -> Option<&FmuValue> {
+        self.iter()
+            .find(|(v, _, set)| v.name == name && *set)
+            .map(|(_, value, _)| value)
+    }
+
     /// Sets the parameter called `name` (as a master would by its value reference); `false`
     /// when there is no such parameter of that type.
     pub fn set(&mut self, name: &str, value: FmuValue) -> bool {
@@ -324,6 +331,10 @@ fn fmu_text(value: Value) -> String {
     }
 }
 
+/// Relative tolerance of a communication point against the instance's time, and of a time
+/// against the stop time, times max(1, |t|).
+pub const TIME_TOLERANCE: f64 = 1e-9;
+
 /// What `fmi2SetupExperiment` sets.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Experiment {
@@ -360,6 +371,13 @@ impl Experiment {
             start_time,
             stop_time,
         })
+    }
+
+    /// Whether time `t` is past the stop time by more than [`TIME_TOLERANCE`] (never
+    /// without a stop time).
+    pub fn passes_stop(&self, t: f64) -> bool {
+        self.stop_time
+            .is_some_and(|stop| t > stop + TIME_TOLERANCE * stop.abs().max(1.0))
     }
 
     /// The run's duration: stop - start, or infinite without a stop time (the records
