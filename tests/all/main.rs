@@ -15,6 +15,7 @@ mod drag_current;
 mod dynamics;
 mod fmi2_abi;
 mod fmi2_alloc;
+mod fmi2_bounds;
 mod fmi2_limits;
 mod fmi2_misuse;
 mod fmi2_state;
