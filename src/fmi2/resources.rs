@@ -38,6 +38,7 @@ mod tests {
     use crate::problem::resolve;
     use crate::scenario::default::default_scenario;
     use crate::scenario::file;
+    use crate::scenario::limits::DEFAULT_MEMORY_LIMIT;
 
     /// The resources an FMU carries describe exactly the default: its configuration
     /// resolves to the default problem, and the database file, used in its place, gives the
@@ -47,7 +48,9 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("slowdrift-resources-{}", std::process::id()));
         write_resources(&dir).unwrap();
         let default = resolve(&default_scenario().unwrap()).unwrap();
-        let loaded = resolve(&file::load(&dir.join(RESOURCE_CONFIG)).unwrap()).unwrap();
+        let loaded =
+            resolve(&file::load(&dir.join(RESOURCE_CONFIG), DEFAULT_MEMORY_LIMIT).unwrap())
+                .unwrap();
         assert_eq!(loaded, default);
         let copy = dir.join("copy.toml");
         let text = DEFAULT_CONFIG_TOML.replace(
@@ -56,7 +59,7 @@ mod tests {
         );
         assert_ne!(text, DEFAULT_CONFIG_TOML);
         std::fs::write(&copy, text).unwrap();
-        let from_file = resolve(&file::load(&copy).unwrap()).unwrap();
+        let from_file = resolve(&file::load(&copy, DEFAULT_MEMORY_LIMIT).unwrap()).unwrap();
         std::fs::remove_dir_all(&dir).ok();
         assert_eq!(from_file.hydro.drift, default.hydro.drift);
         let Some(crate::hydro::bidirectional::BidirectionalSource::Table(table)) =

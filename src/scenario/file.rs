@@ -91,6 +91,7 @@ use super::{
     Run, Scenario, DEFAULT_BLOCK_DURATION, DEFAULT_N_DIRECTIONS,
 };
 use crate::error::{Error, Location, Result};
+use crate::files::Cost;
 use crate::hydro::io::drift_csv::DriftFields;
 use crate::hydro::DriftTable;
 use crate::model::{
@@ -110,16 +111,29 @@ pub const LONG_CRESTED_DIRECTIONS: usize = 1;
 /// Default seed of the random wave amplitudes.
 pub const DEFAULT_SEED: u64 = 1;
 
-/// Reads the configuration file at `path`. A CSV or database file it names is looked up
-/// relative to the directory of `path` (and read when the scenario is resolved).
-pub fn load(path: &Path) -> Result<Scenario> {
-    load_named(path, &path.display().to_string())
+/// What reading a configuration costs: the TOML reader holds up to 590 bytes of memory per
+/// byte of the file (measured on its costliest content, chains of dotted keys whose every
+/// key makes a table: `{a.b.c.d=0}`; an inline drift table of numbers takes 100), with a
+/// margin for the allocator's own overhead.
+pub const READING: Cost = Cost {
+    format: "TOML configuration",
+    per_byte: 900.0,
+};
+
+/// Reads the configuration file at `path` within `memory_limit` bytes (the limit given
+/// outside the file: the FMU's `memoryLimit`, the CLI's `--memory-limit-gb`, else
+/// [`crate::scenario::limits::DEFAULT_MEMORY_LIMIT`]; the file's own `run.memory_limit_gb`
+/// is not known before it is read). A CSV or database file it names is looked up relative
+/// to the directory of `path` (and read when the scenario is resolved, within the
+/// scenario's limit).
+pub fn load(path: &Path, memory_limit: f64) -> Result<Scenario> {
+    load_named(path, &path.display().to_string(), memory_limit)
 }
 
 /// [`load`], with errors in the file naming it `origin` (the FMU's embedded configuration,
 /// not the temporary folder a master unpacked it to).
-pub fn load_named(path: &Path, origin: &str) -> Result<Scenario> {
-    let text = crate::files::read_text(path)?;
+pub fn load_named(path: &Path, origin: &str, memory_limit: f64) -> Result<Scenario> {
+    let text = crate::files::read_text(path, &READING, memory_limit)?;
     let base_dir = path.parent().unwrap_or_else(|| Path::new(""));
     parse(&text, origin, base_dir)
 }
@@ -1701,7 +1715,9 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
     #[test]
     fn example_file_loads() {
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/example.toml");
-        let config = resolve(&load(&path).expect("the example is valid")).expect("resolves");
+        let config =
+            resolve(&load(&path, limits::DEFAULT_MEMORY_LIMIT).expect("the example is valid"))
+                .expect("resolves");
         assert_eq!(config.hydro.drift.headings().len(), 2);
         assert_eq!(config.hydro.drift.omegas().len(), 6);
         let band = config.sea.band();

@@ -10,6 +10,7 @@ use slowdrift::fmi2::model_description::vr;
 use slowdrift::fmi2::types::*;
 use slowdrift::problem::resolve;
 use slowdrift::scenario::file;
+use slowdrift::scenario::limits::DEFAULT_MEMORY_LIMIT as LIMIT;
 use slowdrift::sea_state::{Spectrum, Spreading};
 use slowdrift::Simulation;
 use std::path::PathBuf;
@@ -105,7 +106,7 @@ fn a_configuration_file_runs_as_written() {
         fmu.messages()
     );
 
-    let mut problem = resolve(&file::load(&path).unwrap()).unwrap();
+    let mut problem = resolve(&file::load(&path, LIMIT).unwrap()).unwrap();
     assert_eq!(problem.sea.spreading, Spreading::CosN { n: 2.0 });
     assert_eq!(problem.sea.n_directions, 9);
     problem.run.start_time = 0.0;
@@ -138,7 +139,7 @@ fn a_parameter_the_master_sets_wins() {
     assert_eq!(status, fmi2Status::fmi2OK, "{}", fmu.messages());
     assert_eq!(read, [4.0, 2.0]);
 
-    let mut problem = resolve(&file::load(&path).unwrap()).unwrap();
+    let mut problem = resolve(&file::load(&path, LIMIT).unwrap()).unwrap();
     match &mut problem.sea.spectrum {
         Spectrum::Jonswap { hs, .. } => *hs = 4.0,
         other => panic!("{other:?}"),

@@ -30,6 +30,7 @@ mod nemoh;
 mod newman;
 mod oscillator;
 mod quirks;
+mod reading_cost;
 mod sea_state;
 mod simulation;
 mod stream;
