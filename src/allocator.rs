@@ -28,9 +28,11 @@ pub fn can_allocate(bytes: usize) -> bool {
         return false;
     };
     // SAFETY: the layout has a non-zero size; the block, when given, is released with the
-    // same layout and never read or written.
+    // same layout and never read or written. `black_box`: an allocation that is freed unused
+    // may otherwise be removed by the optimiser, which assumes it succeeds (a probe of 1e18
+    // bytes inlined with its size answered true).
     unsafe {
-        let block = System.alloc(layout);
+        let block = std::hint::black_box(System.alloc(layout));
         if block.is_null() {
             return false;
         }
@@ -64,11 +66,14 @@ pub fn retain_freed_memory() -> bool {
 
 #[cfg(all(test, target_os = "linux", target_env = "gnu"))]
 mod tests {
-    /// A small size is given; a size beyond any address space is refused, not aborted on.
+    /// A small size is given; a size beyond any address space is refused, not aborted on:
+    /// one whose layout cannot exist, and one the allocator is asked for (2^62 bytes, a
+    /// constant the optimiser sees through inlining).
     #[test]
     fn the_probe_gives_small_sizes_and_refuses_impossible_ones() {
         assert!(super::can_allocate(1 << 20));
         assert!(!super::can_allocate(usize::MAX / 2));
+        assert!(!super::can_allocate(1 << 62));
     }
 
     /// glibc accepts both values (it refuses an mmap threshold above its maximum).

@@ -29,6 +29,9 @@ pub enum Error {
         /// The memory limit, bytes.
         limit: f64,
     },
+    /// Reading a file would take more memory than the limit allows, or than this process
+    /// can allocate ([`FileOverBudget`]).
+    FileOverBudget(Box<FileOverBudget>),
     /// A file could not be read or written.
     Io { path: String, message: String },
     /// A file could be read but not understood (`line` is 1-based when known).
@@ -126,6 +129,37 @@ impl Error {
                 name(MEMORY_LIMIT_KEY),
                 limit / BYTES_PER_GB
             ),
+            Error::FileOverBudget(excess) => {
+                let FileOverBudget {
+                    path,
+                    what,
+                    needs,
+                    limit,
+                    process,
+                } = excess.as_ref();
+                write!(
+                    f,
+                    "{path}: reading it needs {} of memory ({what})",
+                    bytes_text(*needs)
+                )?;
+                if *process {
+                    write!(
+                        f,
+                        " and this process cannot allocate them: its own memory limit (ulimit, \
+                         a container) or the machine's is lower than {} = {} GB",
+                        name(MEMORY_LIMIT_KEY),
+                        limit / BYTES_PER_GB
+                    )
+                } else {
+                    write!(
+                        f,
+                        "; the limit is {} ({} = {})",
+                        bytes_text(*limit),
+                        name(MEMORY_LIMIT_KEY),
+                        limit / BYTES_PER_GB
+                    )
+                }
+            }
             Error::Io { path, message } => write!(f, "{path}: {message}"),
             Error::Parse {
                 path,
@@ -301,6 +335,23 @@ pub struct OverBudget {
     pub what: String,
     /// The memory limit, bytes.
     pub limit: f64,
+}
+
+/// A file whose reading would take more memory than allowed: its size times the most its
+/// reader holds per byte, or what its content makes (a QTF's frequency grid), against the
+/// limit (the setting [`MEMORY_LIMIT_KEY`]); or within the limit, but more than this process
+/// can allocate.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FileOverBudget {
+    pub path: String,
+    /// What the estimate is made of (the file's size and format, or its content).
+    pub what: String,
+    /// The estimated memory, bytes.
+    pub needs: f64,
+    /// The memory limit, bytes.
+    pub limit: f64,
+    /// Within the limit, but this process cannot allocate it.
+    pub process: bool,
 }
 
 /// Result with the core's [`Error`].

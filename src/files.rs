@@ -2,15 +2,19 @@
 //! WAMIT output): a path must name a regular file no larger than [`MAX_INPUT_BYTES`]. A FIFO,
 //! a device, a socket or a directory is refused by what it is before anything reads it (a
 //! FIFO would block the reader until a writer comes, `/dev/zero` would be read until memory
-//! runs out), and reading stops at the limit whatever the file does meanwhile.
+//! runs out), and reading stops at the limit whatever the file does meanwhile. The memory
+//! its reader will take ([`Cost`], per byte of the file) must be within the memory limit and
+//! allocatable by this process before the file is read ([`budget`]).
 //!
 //! The files a program writes again and again (a campaign's summary, a study's data and
 //! figures) are written anew atomically ([`replace`]: a temporary file renamed), and a
 //! campaign's runs file is kept off by a second process ([`lock`]).
 
+pub mod budget;
 mod lock;
 mod replace;
 
+pub use budget::{afford, Cost};
 pub use lock::{lock, lock_path, Lock};
 pub use replace::replace;
 
@@ -24,18 +28,18 @@ use std::path::Path;
 /// few hundred MB).
 pub const MAX_INPUT_BYTES: u64 = 1 << 30;
 
-/// The text of the regular file at `path` (at most [`MAX_INPUT_BYTES`]); errors name the
-/// path and what is wrong.
-pub fn read_text(path: &Path) -> Result<String> {
-    read_text_within(path, MAX_INPUT_BYTES)?.ok_or_else(|| Error::Io {
+/// The text of the regular file at `path` (at most [`MAX_INPUT_BYTES`]), read by a reader
+/// of `cost` within `memory_limit` bytes; errors name the path and what is wrong.
+pub fn read_text(path: &Path, cost: &Cost, memory_limit: f64) -> Result<String> {
+    read_text_within(path, MAX_INPUT_BYTES, cost, memory_limit)?.ok_or_else(|| Error::Io {
         path: path.display().to_string(),
         message: "No such file or directory".into(),
     })
 }
 
 /// As [`read_text`], but `None` when nothing exists at `path`.
-pub fn read_text_if_exists(path: &Path) -> Result<Option<String>> {
-    read_text_within(path, MAX_INPUT_BYTES)
+pub fn read_text_if_exists(path: &Path, cost: &Cost, memory_limit: f64) -> Result<Option<String>> {
+    read_text_within(path, MAX_INPUT_BYTES, cost, memory_limit)
 }
 
 /// What a file type that is not a regular file is, in words.
@@ -55,9 +59,10 @@ fn kind(file_type: FileType) -> &'static str {
     }
 }
 
-/// The regular file at `path`, open for reading and no larger than `limit` (the module's
-/// checks); `None` when nothing exists at `path`.
-fn open_within(path: &Path, limit: u64) -> Result<Option<File>> {
+/// The regular file at `path`, open for reading, no larger than `limit` and read by a reader
+/// of `cost` within `memory_limit` bytes (the module's checks); `None` when nothing exists at
+/// `path`.
+fn open_within(path: &Path, limit: u64, cost: &Cost, memory_limit: f64) -> Result<Option<File>> {
     let io = |message: String| Error::Io {
         path: path.display().to_string(),
         message,
@@ -93,6 +98,7 @@ fn open_within(path: &Path, limit: u64) -> Result<Option<File>> {
             meta.len()
         )));
     }
+    cost.check(&path.display().to_string(), meta.len(), memory_limit)?;
     Ok(Some(file))
 }
 
@@ -120,12 +126,14 @@ impl Read for Input {
     }
 }
 
-/// The regular file at `path` as a stream ([`Input`]); errors name the path.
-pub fn open(path: &Path) -> Result<Input> {
-    let file = open_within(path, MAX_INPUT_BYTES)?.ok_or_else(|| Error::Io {
-        path: path.display().to_string(),
-        message: "No such file or directory".into(),
-    })?;
+/// The regular file at `path` as a stream ([`Input`]), read by a reader of `cost` within
+/// `memory_limit` bytes; errors name the path.
+pub fn open(path: &Path, cost: &Cost, memory_limit: f64) -> Result<Input> {
+    let file =
+        open_within(path, MAX_INPUT_BYTES, cost, memory_limit)?.ok_or_else(|| Error::Io {
+            path: path.display().to_string(),
+            message: "No such file or directory".into(),
+        })?;
     Ok(Input {
         file,
         read: 0,
@@ -133,12 +141,17 @@ pub fn open(path: &Path) -> Result<Input> {
     })
 }
 
-fn read_text_within(path: &Path, limit: u64) -> Result<Option<String>> {
+fn read_text_within(
+    path: &Path,
+    limit: u64,
+    cost: &Cost,
+    memory_limit: f64,
+) -> Result<Option<String>> {
     let io = |message: String| Error::Io {
         path: path.display().to_string(),
         message,
     };
-    let Some(file) = open_within(path, limit)? else {
+    let Some(file) = open_within(path, limit, cost, memory_limit)? else {
         return Ok(None);
     };
     let size = file.metadata().map_err(|e| io(e.to_string()))?.len();
@@ -172,6 +185,21 @@ mod tests {
 
     fn message(result: Result<String>) -> String {
         result.unwrap_err().to_string()
+    }
+
+    /// A reader that holds the text alone, within a limit no test file reaches.
+    const TEXT: Cost = Cost {
+        format: "text",
+        per_byte: 1.0,
+    };
+    const LIMIT: f64 = 1e9;
+
+    fn read_text(path: &Path) -> Result<String> {
+        super::read_text(path, &TEXT, LIMIT)
+    }
+
+    fn read_text_if_exists(path: &Path) -> Result<Option<String>> {
+        super::read_text_if_exists(path, &TEXT, LIMIT)
     }
 
     #[test]
@@ -213,12 +241,44 @@ mod tests {
     fn a_file_over_the_limit_is_refused_with_its_size() {
         let path = temp("large.txt");
         std::fs::write(&path, "0123456789").unwrap();
-        let m = read_text_within(&path, 9).unwrap_err().to_string();
-        assert_eq!(read_text_within(&path, 10).unwrap().unwrap(), "0123456789");
+        let m = read_text_within(&path, 9, &TEXT, LIMIT)
+            .unwrap_err()
+            .to_string();
+        assert_eq!(
+            read_text_within(&path, 10, &TEXT, LIMIT).unwrap().unwrap(),
+            "0123456789"
+        );
         std::fs::remove_file(&path).unwrap();
         assert!(
             m.contains("is 10 bytes, more than the 9 bytes an input file may have"),
             "{m}"
         );
+    }
+
+    /// A file whose reader would take more than the memory limit is refused before it is
+    /// read, naming its size, the estimate and the limit.
+    #[test]
+    fn a_file_its_reader_cannot_afford_is_refused_before_it_is_read() {
+        let path = temp("costly.txt");
+        std::fs::write(&path, "0123456789").unwrap();
+        let costly = Cost {
+            format: "costly text",
+            per_byte: 100.0,
+        };
+        assert_eq!(
+            super::read_text(&path, &costly, 1000.0).unwrap(),
+            "0123456789"
+        );
+        let m = message(super::read_text(&path, &costly, 999.0));
+        assert!(
+            m.contains(
+                "costly.txt: reading it needs 1.000 kB of memory (a costly text of 10 \
+                        bytes, up to 100 bytes of memory per byte); the limit is 999 bytes"
+            ),
+            "{m}"
+        );
+        let m = super::open(&path, &costly, 999.0).unwrap_err().to_string();
+        assert!(m.contains("reading it needs 1.000 kB"), "{m}");
+        std::fs::remove_file(&path).unwrap();
     }
 }

@@ -99,14 +99,20 @@ pub fn largest_resolved_time(h: f64) -> f64 {
 /// (The problem is checked where the records are planned, [`Problem::check`].)
 pub fn resolve(scenario: &Scenario) -> Result<Problem> {
     limits::check_sizes(scenario, Some(&scenario.hydro)).map_err(|e| scenario.origins.locate(e))?;
-    let hydro = resolve_hydro(&scenario.hydro, &scenario.platform, &scenario.environment)
-        .map_err(|e| scenario.origins.locate(e))?;
+    let hydro = resolve_hydro(
+        &scenario.hydro,
+        &scenario.platform,
+        &scenario.environment,
+        scenario.run.memory_limit,
+    )
+    .map_err(|e| scenario.origins.locate(e))?;
     Ok(scenario.clone().with_hydro(hydro))
 }
 
-/// The problem of the configuration file at `path`: read and resolved.
+/// The problem of the configuration file at `path`: read (within the default memory limit,
+/// none being given outside the file) and resolved (within its own).
 pub fn load(path: &Path) -> Result<Problem> {
-    resolve(&file::load(path)?)
+    resolve(&file::load(path, limits::DEFAULT_MEMORY_LIMIT)?)
 }
 
 /// The embedded default platform and sea, resolved (its column solver runs: about a second).
@@ -114,11 +120,13 @@ pub fn default_problem() -> Result<Problem> {
     resolve(&default_scenario()?)
 }
 
-/// The data of a drift source for a platform in an environment.
+/// The data of a drift source for a platform in an environment, its files read within
+/// `memory_limit` bytes.
 pub fn resolve_hydro(
     source: &DriftSource,
     platform: &Platform,
     environment: &Environment,
+    memory_limit: f64,
 ) -> Result<Hydro> {
     let described = |hydro: Hydro, source: String| Hydro { source, ..hydro };
     match source {
@@ -127,14 +135,15 @@ pub fn resolve_hydro(
             "the configuration's [drift] table".to_string(),
         )),
         DriftSource::Csv(path) => Ok(described(
-            Hydro::from_drift(drift_csv::read(path)?),
+            Hydro::from_drift(drift_csv::read(path, memory_limit)?),
             format!("the CSV drift table {}", path.display()),
         )),
         DriftSource::Database {
             path,
             bidirectional_from_columns,
         } => {
-            let (text, name) = (read_text(path)?, path.display().to_string());
+            let text = read_text(path, &database::READING, memory_limit)?;
+            let name = path.display().to_string();
             from_database(
                 HydroDatabase::parse(&text, &name)?,
                 (&text, &name),

@@ -43,6 +43,46 @@ impl Snapshot {
         self.origin + self.count as f64 * self.step
     }
 
+    /// The RK4 step h the snapshot was taken with, s.
+    pub fn step(&self) -> f64 {
+        self.step
+    }
+
+    /// Refuses a snapshot that no simulation can be in: a value that is not finite (the
+    /// time, its origin and step, the external force), a step that is not positive, a state
+    /// beyond the bounds of a physical state ([`bounds`]). [`Snapshot::from_bytes`] and
+    /// [`Simulation::restore`] both check it; whether it suits a simulation (its step, the
+    /// records at its time) is the restore's question.
+    pub fn check(&self) -> Result<()> {
+        bounds::check_restored(&self.position, &self.velocity)?;
+        let f = &self.external_force;
+        let named = [
+            ("origin", self.origin),
+            ("step", self.step),
+            ("external_force[0]", f[0]),
+            ("external_force[1]", f[1]),
+            ("external_force[2]", f[2]),
+            ("time", self.time()),
+        ];
+        for (name, value) in named {
+            if !value.is_finite() {
+                return Err(Error::invalid(
+                    format!("snapshot {name}"),
+                    value,
+                    "must be a finite number",
+                ));
+            }
+        }
+        if self.step <= 0.0 {
+            return Err(Error::invalid(
+                "snapshot step",
+                self.step,
+                "must be greater than zero",
+            ));
+        }
+        Ok(())
+    }
+
     /// Position-independent bytes, little-endian, in this order: origin (f64), count (u64),
     /// step (f64), position (3 f64), velocity (3 f64), external force (3 f64).
     pub fn to_bytes(&self) -> [u8; Self::BYTES] {
@@ -58,8 +98,8 @@ impl Snapshot {
         out
     }
 
-    /// Reads [`Snapshot::to_bytes`]; refuses any other length. (Whether the values suit a
-    /// simulation is [`Simulation::restore`]'s check.)
+    /// Reads [`Snapshot::to_bytes`]; refuses any other length and what [`Snapshot::check`]
+    /// refuses. (Whether the values suit a simulation is [`Simulation::restore`]'s check.)
     pub fn from_bytes(bytes: &[u8]) -> Result<Snapshot> {
         if bytes.len() != Self::BYTES {
             return Err(Error::invalid(
@@ -80,15 +120,16 @@ impl Snapshot {
         let position = triple();
         let velocity = triple();
         let external_force = triple();
-        bounds::check_restored(&position, &velocity)?;
-        Ok(Snapshot {
+        let snapshot = Snapshot {
             origin,
             count,
             step,
             position,
             velocity,
             external_force,
-        })
+        };
+        snapshot.check()?;
+        Ok(snapshot)
     }
 }
 
@@ -444,19 +485,7 @@ impl Simulation {
 
     /// Restores a state taken from a simulation of the same configuration.
     pub fn restore(&mut self, snapshot: &Snapshot) -> Result<()> {
-        let values = snapshot
-            .position
-            .iter()
-            .chain(&snapshot.velocity)
-            .chain(&snapshot.external_force);
-        bounds::check_restored(&snapshot.position, &snapshot.velocity)?;
-        if values.clone().any(|v| !v.is_finite()) || !snapshot.time().is_finite() {
-            return Err(Error::invalid(
-                "snapshot",
-                format!("{snapshot:?}"),
-                "holds non-finite values",
-            ));
-        }
+        snapshot.check()?;
         if snapshot.step != self.problem.run.time_step {
             return Err(Error::invalid(
                 "snapshot.step",
@@ -534,9 +563,16 @@ mod tests {
 
     #[test]
     fn snapshot_bytes_of_the_wrong_length_are_refused() {
-        let bytes = Snapshot::from_bytes(&[0u8; Snapshot::BYTES])
-            .unwrap()
-            .to_bytes();
+        let bytes = Snapshot {
+            origin: 0.0,
+            count: 0,
+            step: 1.0,
+            position: [0.0; 3],
+            velocity: [0.0; 3],
+            external_force: [0.0; 3],
+        }
+        .to_bytes();
+        assert!(Snapshot::from_bytes(&bytes).is_ok());
         for len in [0, Snapshot::BYTES - 1, Snapshot::BYTES + 1] {
             let mut v = bytes.to_vec();
             v.resize(len, 0);

@@ -156,7 +156,8 @@ mod tests {
     #[test]
     fn the_start_values_are_the_configurations() {
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/data/example.toml");
-        let scenario = file::load(&path).unwrap();
+        let scenario =
+            file::load(&path, slowdrift::scenario::limits::DEFAULT_MEMORY_LIMIT).unwrap();
         let values = Parameters::configuration_values(&scenario);
         let xml = with_configuration(XML, &values, &scenario, "{guid}", "example").unwrap();
         let number = |name: &str| start_of(&xml, name).parse::<f64>().unwrap();

@@ -75,18 +75,24 @@ pub fn gigabytes() -> Checked<impl Fn(&str, &str) -> Result<f64, String> + Clone
 
 /// The problem of `--config` (else the embedded default), `--memory-limit-gb` (when given)
 /// written over its `run.memory_limit_gb` before it is resolved, so that a column solver's
-/// table is budgeted against it too.
+/// table and the files the configuration names are budgeted against it too; the file itself
+/// is read within it (else within the default limit).
 pub fn load_problem(
     config: Option<&std::path::Path>,
     memory_limit_gb: Option<f64>,
 ) -> Result<slowdrift::Problem, String> {
+    let memory_limit = memory_limit_gb.map(|gb| gb * slowdrift::error::BYTES_PER_GB);
     let mut scenario = match config {
-        Some(path) => slowdrift::scenario::file::load(path),
+        // Read within the limit given here (the file's own is not known before).
+        Some(path) => slowdrift::scenario::file::load(
+            path,
+            memory_limit.unwrap_or(slowdrift::scenario::limits::DEFAULT_MEMORY_LIMIT),
+        ),
         None => slowdrift::scenario::default::default_scenario(),
     }
     .map_err(|e| e.to_string())?;
-    if let Some(gb) = memory_limit_gb {
-        scenario.run.memory_limit = gb * slowdrift::error::BYTES_PER_GB;
+    if let Some(limit) = memory_limit {
+        scenario.run.memory_limit = limit;
     }
     slowdrift::problem::resolve(&scenario).map_err(|e| e.to_string())
 }

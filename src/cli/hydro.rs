@@ -1,8 +1,9 @@
-//! `slowdrift hydro wamit --root PATH/NAME [--ulen L] [--rho RHO] [--g G] --out FILE.json`:
-//! imports the WAMIT files `NAME.1`, `.hst`, `.8`, `.9`, `.12d` (or `.11d`, `.10d`) that
-//! exist into a native hydro database and prints what it found.
+//! `slowdrift hydro wamit --root PATH/NAME [--ulen L] [--rho RHO] [--g G]
+//! [--memory-limit-gb GB] --out FILE.json`: imports the WAMIT files `NAME.1`, `.hst`, `.8`,
+//! `.9`, `.12d` (or `.11d`, `.10d`) that exist into a native hydro database and prints what
+//! it found.
 //!
-//! `slowdrift hydro nemoh --dir DIR --out FILE.json`: imports the NEMOH v3 results of the
+//! `slowdrift hydro nemoh --dir DIR [--memory-limit-gb GB] --out FILE.json`: imports the NEMOH v3 results of the
 //! project directory DIR (Nemoh.cal, results/CM.dat, Mechanics/, results/QTF/OUT_QTFM_N.dat)
 //! into a native hydro database and prints what it found.
 //!
@@ -14,14 +15,16 @@
 //! source on the same frequencies and headings (`tests/bem` joins it to the radiation-
 //! diffraction data above the frequencies where the pontoons and the draft still matter).
 
-use super::args::Checked;
+use super::args::{gigabytes, Checked};
 use clap::{Args, Subcommand};
+use slowdrift::error::BYTES_PER_GB;
 use slowdrift::hydro::bidirectional::{BidirectionalSource, BidirectionalTable};
 use slowdrift::hydro::io::database::HydroDatabase;
 use slowdrift::hydro::io::nemoh;
 use slowdrift::hydro::io::wamit::WamitOptions;
 use slowdrift::problem::{self, default_problem};
 use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
+use slowdrift::scenario::limits::DEFAULT_MEMORY_LIMIT;
 use std::path::PathBuf;
 
 /// `slowdrift hydro`.
@@ -65,6 +68,11 @@ struct WamitArgs {
     #[arg(long, value_name = "G", allow_hyphen_values = true,
           default_value_t = WamitOptions::default().gravity, value_parser = Checked(positive))]
     g: f64,
+    /// Memory reading each file may take, GB (1e9 bytes): a file whose reading needs more is
+    /// refused before it is read
+    #[arg(long, value_name = "GB", allow_hyphen_values = true,
+          default_value_t = DEFAULT_MEMORY_LIMIT / BYTES_PER_GB, value_parser = gigabytes())]
+    memory_limit_gb: f64,
     /// The native hydro database to write (JSON)
     #[arg(long, value_name = "FILE.json", allow_hyphen_values = true)]
     out: PathBuf,
@@ -76,6 +84,11 @@ struct NemohArgs {
     /// NEMOH's project directory (the one with Nemoh.cal; its results/ is accepted too)
     #[arg(long, value_name = "DIR", allow_hyphen_values = true)]
     dir: PathBuf,
+    /// Memory reading each file may take, GB (1e9 bytes): a file whose reading needs more is
+    /// refused before it is read
+    #[arg(long, value_name = "GB", allow_hyphen_values = true,
+          default_value_t = DEFAULT_MEMORY_LIMIT / BYTES_PER_GB, value_parser = gigabytes())]
+    memory_limit_gb: f64,
     /// The native hydro database to write (JSON)
     #[arg(long, value_name = "FILE.json", allow_hyphen_values = true)]
     out: PathBuf,
@@ -182,6 +195,7 @@ fn wamit(args: WamitArgs) -> Result<(), String> {
         ulen: args.ulen,
         rho: args.rho,
         gravity: args.g,
+        memory_limit: args.memory_limit_gb * BYTES_PER_GB,
     };
     let import = HydroDatabase::from_wamit(&root, &options).map_err(|e| e.to_string())?;
     println!(
@@ -198,7 +212,8 @@ fn wamit(args: WamitArgs) -> Result<(), String> {
 }
 
 fn nemoh(args: NemohArgs) -> Result<(), String> {
-    let import = nemoh::import(&args.dir).map_err(|e| e.to_string())?;
+    let import =
+        nemoh::import(&args.dir, args.memory_limit_gb * BYTES_PER_GB).map_err(|e| e.to_string())?;
     println!("NEMOH results {}:", args.dir.display());
     for line in &import.files {
         println!("  {line}");

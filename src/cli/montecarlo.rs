@@ -195,8 +195,9 @@ type Rows = Box<dyn Iterator<Item = slowdrift::Result<CaseRow>>>;
 
 /// The rows the options select, read as a stream, and the name of their table: every row
 /// of the table, or the one `--case` names (the table is read once before, to refuse an
-/// unknown name by listing the names); without a table the base alone, case 'base'.
-fn case_rows(options: &Options) -> Result<(Rows, String), String> {
+/// unknown name by listing the names); without a table the base alone, case 'base'. The
+/// table is read within `memory_limit` bytes (the base's).
+fn case_rows(options: &Options, memory_limit: f64) -> Result<(Rows, String), String> {
     let no_such_case = |name: &str, names: &[&str]| {
         format!(
             "--case {name}: no such case; the cases are {}",
@@ -210,7 +211,7 @@ fn case_rows(options: &Options) -> Result<(Rows, String), String> {
         }
         return Ok((Box::new(std::iter::once(Ok(base))), String::new()));
     };
-    let open = || open_case_table(path).map_err(|e| e.to_string());
+    let open = || open_case_table(path, memory_limit).map_err(|e| e.to_string());
     let rows: Rows = match &options.only {
         None => Box::new(open()?),
         Some(name) => {
@@ -243,7 +244,7 @@ fn print_cases(options: &Options) -> Result<(), String> {
             .to_string(),
         None => String::new(),
     };
-    let (rows, source) = case_rows(options)?;
+    let (rows, source) = case_rows(options, base.run.memory_limit)?;
     let cases = rows.map(|row| row.and_then(|row| row.case(&base, options.transient, &source)));
     let mut out = std::io::BufWriter::new(std::io::stdout().lock());
     campaign::write_cases_json(
@@ -258,7 +259,7 @@ fn print_cases(options: &Options) -> Result<(), String> {
 
 fn run_and_summarise(options: Options) -> Result<(), Failure> {
     let (_, base) = load_base(&options, true)?;
-    let (rows, source) = case_rows(&options)?;
+    let (rows, source) = case_rows(&options, base.run.memory_limit)?;
     let cases = rows
         .map(|row| row.and_then(|row| row.case(&base, options.transient, &source)))
         .collect::<Result<Vec<Case>, _>>()
@@ -269,8 +270,13 @@ fn run_and_summarise(options: Options) -> Result<(), Failure> {
         .flat_map(|case| seeds.clone().map(move |seed| Job { case, seed }))
         .collect();
     println!("seeds {}..={} of every case", seeds.start, seeds.end - 1);
-    let Campaign { runs, interrupted } =
-        run_campaign(&cases, &wanted, options.threads, &runs_path)?;
+    let Campaign { runs, interrupted } = run_campaign(
+        &cases,
+        &wanted,
+        options.threads,
+        &runs_path,
+        base.run.memory_limit,
+    )?;
     let total = wanted.len();
     let summaries: Vec<CaseSummary> = cases
         .iter()
@@ -337,14 +343,16 @@ impl Interrupted {
 /// hold as successful (resume; a case run before with another configuration is refused),
 /// appending each result to the file as it finishes, with a progress line on stderr;
 /// returns every run the file then holds. The file is locked meanwhile (another process
-/// on it is refused), and SIGINT or SIGTERM stops the campaign ([`super::interrupt`]).
+/// on it is refused), and SIGINT or SIGTERM stops the campaign ([`super::interrupt`]). The
+/// file is read within `memory_limit` bytes.
 pub fn run_campaign(
     cases: &[Case],
     wanted: &[Job],
     threads: usize,
     runs_path: &Path,
+    memory_limit: f64,
 ) -> Result<Campaign, String> {
-    let (done, mut file) = RunsFile::open(runs_path).map_err(|e| e.to_string())?;
+    let (done, mut file) = RunsFile::open(runs_path, memory_limit).map_err(|e| e.to_string())?;
     // Computed once per case: a fingerprint formats the whole configuration.
     let fingerprints: Vec<String> = cases.iter().map(Case::fingerprint).collect();
     check_fingerprints(cases, &fingerprints, &done, runs_path)?;

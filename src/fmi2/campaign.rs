@@ -26,10 +26,6 @@ use crate::{Problem, Scenario};
 use serde_json::{json, Map, Value as Json};
 use std::io::Write;
 
-/// Relative tolerance of the FMU's end-of-run check (`fmi2DoStep` refuses a step that ends
-/// past stopTime by more than this times max(1, |stopTime|)).
-const FMU_TIME_TOLERANCE: f64 = 1e-9;
-
 /// The FMU parameter the master sets per run.
 const SEED: &str = "seed";
 
@@ -152,7 +148,8 @@ fn fmu_json(parameters: &Parameters, experiment: &Experiment, steps: f64, h: f64
     let start = experiment.start_time;
     let stop = experiment.stop_time.unwrap_or(f64::INFINITY);
     let end = start + steps * h;
-    if end > stop + FMU_TIME_TOLERANCE * stop.abs().max(1.0) {
+    // `fmi2DoStep` refuses a step that ends past the stop time.
+    if experiment.passes_stop(end) {
         return json!({
             "unavailable": format!(
                 "the run's {steps} steps of {h} s end at {end} s, after the FMU's stopTime \

@@ -21,8 +21,8 @@ pub enum FmuError {
     /// required which cannot be retrieved by the slave it returns fmi2Discard"); the
     /// instance's state does not change.
     StatusUnavailable(String),
-    /// The step cannot be completed but the instance stays usable (the yaw left the
-    /// yaw-following records).
+    /// The step cannot be completed but the instance stays usable, its state unchanged (the
+    /// yaw left the yaw-following records; a step longer than one block of the records).
     Discard(Error),
     /// A panic caught at the boundary.
     Panic(String),

@@ -10,20 +10,19 @@
 use super::fmu_error::FmuError;
 use super::logger::{c_text, Logger};
 use super::machine::{Call, MachineState};
-use super::parameters::{Experiment, FmuValue, Parameters, HYDRO_DATABASE, MAX_STRING_BYTES};
+use super::parameters::{
+    Experiment, FmuValue, Parameters, HYDRO_DATABASE, MAX_STRING_BYTES, TIME_TOLERANCE,
+};
 use super::state::{fingerprint, FmuState};
 use super::types::fmi2Status;
 use crate::error::Error;
 use crate::fmi2::model_description::{find, log_category, vr, Causality, VariableType, VARIABLES};
+use crate::problem::ranges::shown;
 use crate::problem::Problem;
 use crate::scenario::Scenario;
 use crate::simulation::{Outputs, Simulation};
 use std::ffi::CString;
 use std::path::PathBuf;
-
-/// Relative tolerance of the communication point against the internal time (and of the
-/// stop time), times max(1, |t|).
-const TIME_TOLERANCE: f64 = 1e-9;
 
 /// The simulation with the fingerprint of the configuration it was built from, computed
 /// when a state first asks for it (hashing the problem's JSON, drift table included, takes
@@ -210,15 +209,19 @@ impl Instance {
         }
     }
 
-    /// `fmi2DoStep`: one communication step with the current inputs.
+    /// `fmi2DoStep`: one communication step with the current inputs. A step must advance
+    /// the time (else fmi2Error) and may cover at most one block of the records
+    /// ([`longest_step`]; a longer one is discarded, the state unchanged, so that a master
+    /// can retry with shorter steps as FMI 2.0.4 section 4.2.2 advises).
     pub fn do_step(&mut self, point: f64, h: f64) -> Result<(), FmuError> {
         if !(h.is_finite() && h > 0.0) {
             return Err(FmuError::Argument(format!(
-                "communicationStepSize = {h} must be finite and positive"
+                "communicationStepSize = {} must be finite and positive",
+                shown(h)
             )));
         }
         let inputs = self.inputs;
-        let stop = self.experiment.stop_time;
+        let experiment = self.experiment;
         let simulation = self.simulation()?;
         let t = simulation.time();
         if !point.is_finite() || (point - t).abs() > TIME_TOLERANCE * t.abs().max(1.0) {
@@ -226,12 +229,34 @@ impl Instance {
                 "currentCommunicationPoint = {point} s differs from the instance's time {t} s"
             )));
         }
-        if let Some(stop) = stop {
-            if t + h > stop + TIME_TOLERANCE * stop.abs().max(1.0) {
-                return Err(FmuError::Argument(format!(
-                    "a step of {h} s from {t} s passes stopTime = {stop} s"
-                )));
-            }
+        if t + h == t {
+            return Err(FmuError::Argument(format!(
+                "communicationStepSize = {} s does not advance the time: at t = {t} s, t + h \
+                 == t in double precision (doubles there are {} s apart)",
+                shown(h),
+                shown(spacing(t))
+            )));
+        }
+        if let (true, Some(stop)) = (experiment.passes_stop(t + h), experiment.stop_time) {
+            return Err(FmuError::Argument(format!(
+                "a step of {} s from {t} s passes stopTime = {stop} s",
+                shown(h)
+            )));
+        }
+        let longest = longest_step(simulation.problem());
+        if h > longest {
+            return Err(FmuError::Discard(Error::invalid(
+                "communicationStepSize",
+                format!("{} s", shown(h)),
+                format!(
+                    "longer than one block of the records, {longest} s, the longest step this \
+                     FMU takes (a step makes at most one block of records, as initialisation \
+                     does, and {} RK4 steps of stepSize = {} s); the state is unchanged: \
+                     step at most {longest} s at a time",
+                    (longest / simulation.problem().run.time_step).ceil(),
+                    simulation.problem().run.time_step
+                ),
+            )));
         }
         let advanced = simulation.advance(h, inputs).map(|()| simulation.time());
         // Outputs are computed when a getter first asks for them after the step.
@@ -621,6 +646,20 @@ impl Built {
             .fingerprint
             .get_or_init(|| fingerprint(self.simulation.problem()))
     }
+}
+
+/// The longest communication step, s: one block of the records (`run.block_duration`, the
+/// span of one segment of the record stream). Such a step crosses at most one join, so it
+/// makes at most one new segment (the work of initialisation) and block_duration /
+/// stepSize RK4 steps: its time is bounded whatever the master asks.
+pub fn longest_step(problem: &Problem) -> f64 {
+    problem.run.block_duration
+}
+
+/// The distance from `t` to the next double above |t|, s.
+fn spacing(t: f64) -> f64 {
+    let a = t.abs();
+    f64::from_bits(a.to_bits() + 1) - a
 }
 
 fn start_inputs() -> [f64; 3] {

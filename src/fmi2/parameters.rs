@@ -30,15 +30,20 @@
 //! new parameter is its XML and its line in the override table.
 
 use super::resources::RESOURCE_CONFIG;
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, BYTES_PER_GB, MEMORY_LIMIT_KEY};
 use crate::fmi2::model_description::{Causality, Start, VariableInfo, VariableType, VARIABLES};
 use crate::problem::{resolve, Problem};
+use crate::scenario::limits::{check_memory_limit, DEFAULT_MEMORY_LIMIT};
 use crate::scenario::overrides::{by_fmu, Refusal, Value, SETTINGS};
 use crate::scenario::{default, file, Scenario, Written};
 use std::path::{Path, PathBuf};
 
 /// The FMU parameter that names the base configuration file (not a setting of the table).
 pub const HYDRO_DATABASE: &str = "hydroDatabase";
+
+/// The FMU parameter of the memory limit (`run.memory_limit_gb`), within which the
+/// configuration file is read too.
+const MEMORY_LIMIT: &str = "memoryLimit";
 
 /// What messages call the configuration in the FMU's `resources` folder (not the temporary
 /// folder a master unpacked it to).
@@ -138,6 +143,13 @@ impl Parameters {
             .map(|((v, value), set)| (v, value, *set))
     }
 
+    /// The value of the parameter called `name` when the master set it.
+    pub fn set_value(&self, name: &str) -> Option<&FmuValue> {
+        self.iter()
+            .find(|(v, _, set)| v.name == name && *set)
+            .map(|(_, value, _)| value)
+    }
+
     /// Sets the parameter called `name` (as a master would by its value reference); `false`
     /// when there is no such parameter of that type.
     pub fn set(&mut self, name: &str, value: FmuValue) -> bool {
@@ -169,10 +181,34 @@ impl Parameters {
     /// they name ([`Parameters::base_scenario`]): resolved (its database read, its solver run) and checked on its own, as `slowdrift
     /// simulate --config` would take it; then the parameters the master set written over it
     /// (the result is checked where its records are planned).
+    /// The files the configuration names are read within the master's `memoryLimit` when it
+    /// set it (the configuration's own limit is checked first, as every value of the file).
     pub fn to_problem(&self, base: &Scenario, experiment: &Experiment) -> Result<Problem> {
-        let base = resolve(base)?;
+        let base = match self.memory_limit()? {
+            Some(limit) => {
+                let file = base.run.memory_limit;
+                check_memory_limit(MEMORY_LIMIT_KEY, file).map_err(|e| base.origins.locate(e))?;
+                let mut base = base.clone();
+                base.run.memory_limit = limit;
+                resolve(&base)?
+            }
+            None => resolve(base)?,
+        };
         base.check()?;
         self.apply(base, experiment)
+    }
+
+    /// The memory limit the master set (`memoryLimit`, bytes), checked; `None` when it did
+    /// not set it.
+    fn memory_limit(&self) -> Result<Option<f64>> {
+        match self.set_value(MEMORY_LIMIT) {
+            Some(FmuValue::Real(gb)) => {
+                let limit = gb * BYTES_PER_GB;
+                check_memory_limit(&format!("FMU parameter {MEMORY_LIMIT}"), limit)?;
+                Ok(Some(limit))
+            }
+            _ => Ok(None),
+        }
     }
 
     /// The value a master reads for the parameter `info`: its own where it set it, else the
@@ -293,8 +329,11 @@ impl Parameters {
         }
     }
 
-    /// The base configuration these parameters name (module doc), read but not resolved.
+    /// The base configuration these parameters name (module doc), read but not resolved:
+    /// within the master's `memoryLimit` when it set it, else within the default limit (the
+    /// file's own is not known before it is read).
     pub fn base_scenario(&self, resources: Option<&Path>) -> Result<Scenario> {
+        let limit = self.memory_limit()?.unwrap_or(DEFAULT_MEMORY_LIMIT);
         match self.base(resources) {
             Base::Database(named) => {
                 let path = if named.starts_with("file:") {
@@ -304,10 +343,10 @@ impl Parameters {
                 } else {
                     PathBuf::from(named)
                 };
-                file::load(&path)
+                file::load(&path, limit)
             }
             // Named as the FMU's, not by the master's temporary folder it was unpacked to.
-            Base::Resources(path) => file::load_named(&path, EMBEDDED_CONFIGURATION),
+            Base::Resources(path) => file::load_named(&path, EMBEDDED_CONFIGURATION, limit),
             Base::Embedded => default::default_scenario(),
         }
     }
@@ -342,6 +381,10 @@ fn fmu_text(value: Value) -> String {
         Value::Word(w) => w.to_string(),
     }
 }
+
+/// Relative tolerance of a communication point against the instance's time, and of a time
+/// against the stop time, times max(1, |t|).
+pub const TIME_TOLERANCE: f64 = 1e-9;
 
 /// What `fmi2SetupExperiment` sets.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -379,6 +422,13 @@ impl Experiment {
             start_time,
             stop_time,
         })
+    }
+
+    /// Whether time `t` is past the stop time by more than [`TIME_TOLERANCE`] (never
+    /// without a stop time).
+    pub fn passes_stop(&self, t: f64) -> bool {
+        self.stop_time
+            .is_some_and(|stop| t > stop + TIME_TOLERANCE * stop.abs().max(1.0))
     }
 
     /// The run's duration: stop - start, or infinite without a stop time (the records

@@ -9,6 +9,7 @@ use crate::error::{Error, Result};
 use crate::fingerprint;
 use crate::hydro::default_platform;
 use crate::scenario::default::DEFAULT_CONFIG_TOML;
+use crate::scenario::limits::DEFAULT_MEMORY_LIMIT;
 use crate::scenario::{file, DriftSource, Scenario};
 use std::path::{Path, PathBuf};
 
@@ -61,8 +62,13 @@ pub fn configuration_guid(text: &str) -> String {
 /// Whether `guid` is that of the configuration packed in the resources folder `dir`
 /// ([`configuration_guid`] of its [`RESOURCE_CONFIG`]); false when it cannot be read.
 pub fn holds_configuration_of(dir: &Path, guid: &str) -> bool {
-    crate::files::read_text(&dir.join(RESOURCE_CONFIG))
-        .is_ok_and(|text| configuration_guid(&text) == guid)
+    // Read before any parameter is set: within the default memory limit.
+    crate::files::read_text(
+        &dir.join(RESOURCE_CONFIG),
+        &file::READING,
+        DEFAULT_MEMORY_LIMIT,
+    )
+    .is_ok_and(|text| configuration_guid(&text) == guid)
 }
 
 /// A user's configuration packed as an FMU's embedded one ([`write_configuration`]).
@@ -79,10 +85,10 @@ pub struct PackedConfiguration {
 /// native database) copied beside it under its own file name and the `file` value rewritten
 /// to that name: every other byte of the text is the user's, so a line a message names is
 /// the line of their file. The packed configuration is read back, so a file that does not
-/// read is refused here, naming the user's file.
+/// read is refused here, naming the user's file. Read within the default memory limit.
 pub fn write_configuration(config: &Path, dir: &Path) -> Result<PackedConfiguration> {
-    let text = crate::files::read_text(config)?;
-    let scenario = file::load(config)?;
+    let text = crate::files::read_text(config, &file::READING, DEFAULT_MEMORY_LIMIT)?;
+    let scenario = file::load(config, DEFAULT_MEMORY_LIMIT)?;
     let io = |path: &Path, e: std::io::Error| Error::Io {
         path: path.display().to_string(),
         message: e.to_string(),
@@ -111,7 +117,7 @@ pub fn write_configuration(config: &Path, dir: &Path) -> Result<PackedConfigurat
     let path = dir.join(RESOURCE_CONFIG);
     std::fs::write(&path, &packed).map_err(|e| io(&path, e))?;
     Ok(PackedConfiguration {
-        scenario: file::load_named(&path, &config.display().to_string())?,
+        scenario: file::load_named(&path, &config.display().to_string(), DEFAULT_MEMORY_LIMIT)?,
         guid: configuration_guid(&packed),
     })
 }
@@ -154,6 +160,7 @@ mod tests {
     use crate::problem::resolve;
     use crate::scenario::default::default_scenario;
     use crate::scenario::file;
+    use crate::scenario::limits::DEFAULT_MEMORY_LIMIT;
 
     /// The resources an FMU carries describe exactly the default: its configuration
     /// resolves to the default problem, and the database file, used in its place, gives the
@@ -163,7 +170,9 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("slowdrift-resources-{}", std::process::id()));
         write_resources(&dir).unwrap();
         let default = resolve(&default_scenario().unwrap()).unwrap();
-        let loaded = resolve(&file::load(&dir.join(RESOURCE_CONFIG)).unwrap()).unwrap();
+        let loaded =
+            resolve(&file::load(&dir.join(RESOURCE_CONFIG), DEFAULT_MEMORY_LIMIT).unwrap())
+                .unwrap();
         assert_eq!(loaded, default);
         let copy = dir.join("copy.toml");
         let text = DEFAULT_CONFIG_TOML.replace(
@@ -172,7 +181,7 @@ mod tests {
         );
         assert_ne!(text, DEFAULT_CONFIG_TOML);
         std::fs::write(&copy, text).unwrap();
-        let from_file = resolve(&file::load(&copy).unwrap()).unwrap();
+        let from_file = resolve(&file::load(&copy, DEFAULT_MEMORY_LIMIT).unwrap()).unwrap();
         std::fs::remove_dir_all(&dir).ok();
         assert_eq!(from_file.hydro.drift, default.hydro.drift);
         let Some(crate::hydro::bidirectional::BidirectionalSource::Table(table)) =
@@ -220,7 +229,7 @@ mod tests {
             "only the file value changes"
         );
         assert!(dir.join("drift.csv").is_file());
-        let original = resolve(&file::load(&config).unwrap()).unwrap();
+        let original = resolve(&file::load(&config, DEFAULT_MEMORY_LIMIT).unwrap()).unwrap();
         let mut from_pack = resolve(&packed.scenario).unwrap();
         assert!(from_pack.hydro.source.ends_with("resources/drift.csv"));
         from_pack.hydro.source = original.hydro.source.clone();

@@ -15,14 +15,14 @@
 //! | 8 | fingerprint of the resolved problem (u64, [`fingerprint`]) |
 //! | 1 | instance state ([`MachineState::code`]; never Error) |
 //! | 1 | 1 when a simulation snapshot follows the parameters, else 0 |
-//! | 8 | last successful time (f64, finite) |
+//! | 8 | last successful time (f64, finite; from the start time to the instance's time: the snapshot's, else the start time) |
 //! | 24 | inputs Fx_ext, Fy_ext, Mz_ext (3 f64, finite) |
 //! | 8 | experiment start time (f64, finite) |
 //! | 1 | 1 when the experiment has a stop time, else 0 |
 //! | 8 | stop time (f64, finite and after the start time; all bits 0 without a stop time) |
 //! | 4 | number of parameters (u32): modelDescription.xml's, which the reader requires |
 //! | ... | each parameter in the XML's order: its value reference (u32), its type (one byte: `R` Real, `I` Integer, `S` String), whether the master set it (one byte, 0 or 1: an unset parameter takes the configuration's value), its value: Real 8 bytes (f64, finite), Integer 4 bytes (i32), String a length (u32, at most [`MAX_STRING_BYTES`]) and that many bytes of UTF-8 without NUL |
-//! | 96 | the snapshot, when present ([`Snapshot::to_bytes`]) |
+//! | 96 | the snapshot ([`Snapshot::to_bytes`]), present exactly when the instance state is StepComplete, StepFailed or Terminated: every value finite ([`Snapshot::check`]), its step positive and the `stepSize` the master set (if it did), its time from the start time to the stop time (if any), where a double resolves the step |
 //! | 8 | checksum: FNV-1a (u64) of every byte before it |
 //!
 //! The records are not saved: they are a pure function of the parameters, the experiment
@@ -34,8 +34,10 @@
 //! or that cannot be read, refuses the state, and the message says which file.
 //!
 //! `fmi2DeSerializeFMUstate` only reads and checks the bytes ([`FmuState::from_bytes`]: the
-//! magic, the version, the checksum, every length and flag, finite values where the table
-//! says so, the parameters against modelDescription.xml); resolving the problem (reading
+//! magic, the version, the checksum, every length and flag, finite values and the rules
+//! between fields where the table says so, the parameters against modelDescription.xml),
+//! every field that `fmi2SetFMUstate` would refuse without resolving the problem, so that a
+//! damaged state is refused at once; resolving the problem (reading
 //! files, running solvers) is deferred to `fmi2SetFMUstate`, which fmusim and fmpy call
 //! right after, so that it happens once.
 
@@ -43,7 +45,7 @@ use super::machine::MachineState;
 use super::parameters::{Base, Experiment, FmuValue, Parameters, MAX_STRING_BYTES};
 use crate::error::{Error, Result};
 use crate::fmi2::model_description::VariableType;
-use crate::problem::Problem;
+use crate::problem::{largest_resolved_time, time_resolved, Problem};
 use crate::simulation::Snapshot;
 
 /// First bytes of a serialized state.
@@ -58,6 +60,10 @@ pub const FORMAT_VERSION: u32 = 4;
 const FIXED_BYTES: usize = 4 + 4 + 8 + 2 + 8 + 24 + 8 + 1 + 8 + 4;
 /// Bytes of the checksum at the end.
 const CHECKSUM_BYTES: usize = 8;
+/// Offset of the last successful time.
+const LAST_SUCCESSFUL_TIME_AT: usize = 18;
+/// The parameter whose value, when the master set it, is the snapshot's step.
+const STEP_SIZE: &str = "stepSize";
 
 /// Type bytes of the parameters.
 const REAL: u8 = b'R';
@@ -232,11 +238,16 @@ impl FmuState {
         let experiment = Experiment::new(start_time, stop_time)
             .map_err(|e| refuse("its experiment".to_string(), &e.to_string()))?;
         let parameters = r.parameters()?;
-        let snapshot = if has_snapshot {
-            Some(Snapshot::from_bytes(r.take(Snapshot::BYTES, "snapshot")?)?)
-        } else {
-            None
-        };
+        let snapshot_at = r.at;
+        let snapshot =
+            if has_snapshot {
+                let bytes = r.take(Snapshot::BYTES, "snapshot")?;
+                Some(Snapshot::from_bytes(bytes).map_err(|e| {
+                    refuse(format!("snapshot at byte {snapshot_at}"), &e.to_string())
+                })?)
+            } else {
+                None
+            };
         if r.at != body.len() {
             return Err(refuse(
                 format!("{} bytes", bytes.len()),
@@ -247,7 +258,7 @@ impl FmuState {
                 ),
             ));
         }
-        Ok(FmuState {
+        let state = FmuState {
             fingerprint,
             parameters,
             experiment,
@@ -255,7 +266,85 @@ impl FmuState {
             last_successful_time,
             inputs,
             snapshot,
-        })
+        };
+        state.check_consistent(snapshot_at)?;
+        Ok(state)
+    }
+
+    /// Refuses fields that no instance can hold together (each readable alone): a snapshot
+    /// in an instance that was not initialised, or none in one that was; a snapshot time
+    /// before the start time, past the stop time, or where a double no longer resolves its
+    /// step; a snapshot step other than the `stepSize` the master set; a last successful
+    /// time before the start time or beyond the instance's time (its snapshot's, else the
+    /// start time). `snapshot_at`: the snapshot's byte offset, for the messages.
+    fn check_consistent(&self, snapshot_at: usize) -> Result<()> {
+        let initialised = matches!(
+            self.machine,
+            MachineState::StepComplete | MachineState::StepFailed | MachineState::Terminated
+        );
+        if initialised != self.snapshot.is_some() {
+            return Err(refuse(
+                format!(
+                    "instance state {:?} {} a snapshot",
+                    self.machine,
+                    if initialised { "without" } else { "with" }
+                ),
+                "an instance has a snapshot once it is initialised (StepComplete, StepFailed, \
+                 Terminated), and only then",
+            ));
+        }
+        let experiment = &self.experiment;
+        let start = experiment.start_time;
+        let time = match &self.snapshot {
+            Some(snapshot) => {
+                let (t, h) = (snapshot.time(), snapshot.step());
+                let at = |what: &str| format!("snapshot {what} at byte {snapshot_at}");
+                if t < start {
+                    return Err(refuse(
+                        at(&format!("time {t} s")),
+                        &format!("is before startTime = {start} s"),
+                    ));
+                }
+                if let (true, Some(stop)) = (experiment.passes_stop(t), experiment.stop_time) {
+                    return Err(refuse(
+                        at(&format!("time {t} s")),
+                        &format!("is past stopTime = {stop} s"),
+                    ));
+                }
+                if !time_resolved(t, h) {
+                    return Err(refuse(
+                        at(&format!("time {t:e} s")),
+                        &format!(
+                            "is where a double no longer resolves its step of {h} s (beyond \
+                             {:e} s)",
+                            largest_resolved_time(h)
+                        ),
+                    ));
+                }
+                if let Some(FmuValue::Real(step_size)) = self.parameters.set_value(STEP_SIZE) {
+                    if h != *step_size {
+                        return Err(refuse(
+                            at(&format!("step {h} s")),
+                            &format!("is not the state's stepSize = {step_size} s"),
+                        ));
+                    }
+                }
+                t
+            }
+            None => start,
+        };
+        let last = self.last_successful_time;
+        let field = format!("last successful time {last} s at byte {LAST_SUCCESSFUL_TIME_AT}");
+        if last < start {
+            return Err(refuse(field, &format!("is before startTime = {start} s")));
+        }
+        if last > time {
+            return Err(refuse(
+                field,
+                &format!("is beyond the instance's time {time} s"),
+            ));
+        }
+        Ok(())
     }
 
     /// Checks that `problem`, built now from this state's parameters and experiment on
@@ -461,6 +550,26 @@ mod tests {
     use crate::problem::resolve;
     use crate::scenario::default::default_scenario;
 
+    /// A snapshot's bytes (module doc of [`Snapshot::to_bytes`]): time origin + count step,
+    /// a state within the bounds, an external force.
+    fn snapshot_bytes(origin: f64, count: u64, step: f64) -> [u8; Snapshot::BYTES] {
+        let words = [origin.to_bits(), count, step.to_bits()]
+            .into_iter()
+            .chain([1.5, -2.0, 0.1, 0.25, -0.5, 0.01, 3e6, -4e6, 5e9].map(f64::to_bits));
+        let mut out = [0u8; Snapshot::BYTES];
+        for (chunk, word) in out.chunks_exact_mut(8).zip(words) {
+            chunk.copy_from_slice(&word.to_le_bytes());
+        }
+        out
+    }
+
+    /// Offset of the snapshot in the bytes of a state with one.
+    fn snapshot_offset(bytes: &[u8]) -> usize {
+        bytes.len() - CHECKSUM_BYTES - Snapshot::BYTES
+    }
+
+    /// A state at t = 12.5 s (-3 + 31 x 0.5), its last successful time, from a start at -3 s
+    /// to a stop at 1e4 s; with a snapshot, initialised, else in initialisation mode.
     fn state(snapshot: bool) -> FmuState {
         let mut parameters = Parameters::default();
         assert!(parameters.set("Hs", FmuValue::Real(5.25)));
@@ -471,10 +580,15 @@ mod tests {
             fingerprint: 0x0123_4567_89ab_cdef,
             parameters,
             experiment: Experiment::new(-3.0, Some(1e4)).unwrap(),
-            machine: MachineState::StepComplete,
-            last_successful_time: 12.5,
+            machine: if snapshot {
+                MachineState::StepComplete
+            } else {
+                MachineState::InitializationMode
+            },
+            last_successful_time: if snapshot { 12.5 } else { -3.0 },
             inputs: [1.0, -2.0, 3e9],
-            snapshot: snapshot.then(|| Snapshot::from_bytes(&[7u8; Snapshot::BYTES]).unwrap()),
+            snapshot: snapshot
+                .then(|| Snapshot::from_bytes(&snapshot_bytes(-3.0, 31, 0.5)).unwrap()),
         }
     }
 
@@ -507,7 +621,7 @@ mod tests {
     #[test]
     fn bytes_round_trip_with_and_without_snapshot_and_stop_time() {
         for with in [false, true] {
-            for stop in [None, Some(7.5)] {
+            for stop in [None, Some(20.0)] {
                 let mut s = state(with);
                 s.experiment = Experiment::new(-3.0, stop).unwrap();
                 let bytes = s.to_bytes().unwrap();
@@ -614,11 +728,78 @@ mod tests {
         patch(db, &60_000u32.to_le_bytes(), "only");
         patch(db + 4, &[0xff], "is not UTF-8");
         patch(db + 4, &[0], "NUL");
+        // The snapshot's fields, each finite (words: origin, count, step, X, Y, theta, X',
+        // Y', theta', Fx, Fy, Mz), and consistent with the rest.
+        let snap = snapshot_offset(&good);
+        let word = |k: usize| snap + 8 * k;
+        patch(word(0), &f64::NAN.to_le_bytes(), "snapshot origin = NaN");
+        patch(word(2), &f64::INFINITY.to_le_bytes(), "snapshot step = inf");
+        patch(word(2), &0f64.to_le_bytes(), "snapshot step = 0");
+        patch(word(2), &(-0.5f64).to_le_bytes(), "snapshot step = -0.5");
+        patch(
+            word(10),
+            &f64::INFINITY.to_le_bytes(),
+            "external_force[1] = inf",
+        );
+        patch(word(11), &f64::NAN.to_le_bytes(), "external_force[2] = NaN");
+        patch(
+            word(1),
+            &u64::MAX.to_le_bytes(),
+            "is past stopTime = 10000 s",
+        );
+        patch(word(0), &(-30f64).to_le_bytes(), "time -14.5 s at byte");
+        patch(
+            16,
+            &[MachineState::InitializationMode.code()],
+            "with a snapshot",
+        );
+        patch(
+            18,
+            &13f64.to_le_bytes(),
+            "beyond the instance's time 12.5 s",
+        );
+        patch(18, &(-4f64).to_le_bytes(), "is before startTime = -3 s");
+        let without = state(false).to_bytes().unwrap();
+        let mut b = without.clone();
+        b[16] = MachineState::StepComplete.code();
+        reseal(&mut b);
+        cases.push((b, "StepComplete without a snapshot"));
+        let mut b = without.clone();
+        b[18..26].copy_from_slice(&0.5f64.to_le_bytes());
+        reseal(&mut b);
+        cases.push((b, "last successful time 0.5 s at byte 18"));
         for (bytes, needle) in cases {
             let message = FmuState::from_bytes(&bytes).unwrap_err().to_string();
             assert!(message.contains(needle), "{needle}: {message}");
             assert!(message.contains("FMU state"), "{message}");
         }
+    }
+
+    /// A snapshot time where a double no longer resolves the step (an open-ended run stops
+    /// there), and a snapshot step other than the stepSize the master set, are refused.
+    #[test]
+    fn a_snapshot_must_suit_the_run() {
+        let mut s = state(true);
+        s.experiment = Experiment::new(-3.0, None).unwrap();
+        // Doubles near 1e10 s are 1.9e-6 s apart: more than a millionth of a 0.5-s step.
+        s.snapshot = Some(Snapshot::from_bytes(&snapshot_bytes(1e10, 0, 0.5)).unwrap());
+        let message = FmuState::from_bytes(&s.to_bytes().unwrap())
+            .unwrap_err()
+            .to_string();
+        assert!(message.contains("time 1e10 s at byte"), "{message}");
+        assert!(message.contains("no longer resolves its step"), "{message}");
+        let mut s = state(true);
+        assert!(s.parameters.set("stepSize", FmuValue::Real(0.25)));
+        let message = FmuState::from_bytes(&s.to_bytes().unwrap())
+            .unwrap_err()
+            .to_string();
+        assert!(
+            message.contains("step 0.5 s at byte")
+                && message.contains("is not the state's stepSize = 0.25 s"),
+            "{message}"
+        );
+        assert!(s.parameters.set("stepSize", FmuValue::Real(0.5)));
+        assert_eq!(FmuState::from_bytes(&s.to_bytes().unwrap()).unwrap(), s);
     }
 
     /// Every single bit flipped anywhere is refused, by the checksum or by the check in

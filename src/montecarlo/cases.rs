@@ -18,6 +18,7 @@
 
 use super::Case;
 use crate::error::{Error, Location, Result};
+use crate::files::Cost;
 use crate::model::DragModel;
 use crate::scenario::overrides::{by_column, Refusal, Setting, Value, SETTINGS};
 use crate::scenario::Written;
@@ -55,14 +56,26 @@ fn columns() -> String {
     names.join(", ")
 }
 
-/// Reads a case table file (every row; [`open_case_table`] reads them one at a time).
-pub fn read_case_table(path: &Path) -> Result<Vec<CaseRow>> {
-    open_case_table(path)?.collect()
+/// What reading a case table costs, every row kept ([`read_case_table`]): up to 160 bytes of
+/// memory per byte of the file (measured on its costliest content: a column of one-digit
+/// numbers, each a row with its generated name), with a margin for the allocator's own
+/// overhead. Read as a stream, it keeps less: the names.
+pub const READING: Cost = Cost {
+    format: "case table",
+    per_byte: 240.0,
+};
+
+/// Reads a case table file within `memory_limit` bytes (every row; [`open_case_table`]
+/// reads them one at a time).
+pub fn read_case_table(path: &Path, memory_limit: f64) -> Result<Vec<CaseRow>> {
+    open_case_table(path, memory_limit)?.collect()
 }
 
-/// The rows of the case table file at `path`, read as they are asked for ([`CaseRows`]).
-pub fn open_case_table(path: &Path) -> Result<CaseRows<crate::files::Input>> {
-    CaseRows::new(crate::files::open(path)?, &path.display().to_string())
+/// The rows of the case table file at `path`, read as they are asked for ([`CaseRows`]),
+/// within `memory_limit` bytes (every row kept: [`READING`]).
+pub fn open_case_table(path: &Path, memory_limit: f64) -> Result<CaseRows<crate::files::Input>> {
+    let input = crate::files::open(path, &READING, memory_limit)?;
+    CaseRows::new(input, &path.display().to_string())
 }
 
 /// Parses the text of a case table; `source` names it in errors.

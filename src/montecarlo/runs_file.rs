@@ -17,10 +17,18 @@
 
 use super::{Case, DofStats, DOFS, STATISTICS};
 use crate::error::{Error, Result};
-use crate::files::Lock;
+use crate::files::{Cost, Lock};
 use std::fs::{File, OpenOptions};
 use std::io::{Seek, SeekFrom, Write};
 use std::path::{Path, PathBuf};
+
+/// What reading a per-run file costs: up to 12 bytes of memory per byte of the file
+/// (measured on its costliest content: the shortest lines of failed runs, each a run), with
+/// a margin for the allocator's own overhead.
+pub const READING: Cost = Cost {
+    format: "per-run file",
+    per_byte: 18.0,
+};
 
 /// One line of the per-run file.
 #[derive(Debug, Clone, PartialEq)]
@@ -95,6 +103,8 @@ fn quote(text: &str) -> String {
 /// A per-run file open for appending, locked against other processes.
 #[derive(Debug)]
 pub struct RunsFile {
+    /// The memory reading the file may take, bytes.
+    memory_limit: f64,
     path: PathBuf,
     file: File,
     _lock: Lock,
@@ -104,14 +114,15 @@ impl RunsFile {
     /// Locks the per-run file at `path` (an error naming the process that holds it), opens
     /// or creates it for appending (a cut-off last line removed, a header written to a new
     /// file) and returns the runs it already holds (the last line of each (case, seed), in
-    /// file order).
-    pub fn open(path: &Path) -> Result<(Vec<RunRow>, RunsFile)> {
+    /// file order). The file is read within `memory_limit` bytes, whenever it is read.
+    pub fn open(path: &Path, memory_limit: f64) -> Result<(Vec<RunRow>, RunsFile)> {
         let lock = crate::files::lock(path)?;
         let io = |e: std::io::Error| Error::Io {
             path: path.display().to_string(),
             message: e.to_string(),
         };
-        let text = crate::files::read_text_if_exists(path)?.unwrap_or_default();
+        let text =
+            crate::files::read_text_if_exists(path, &READING, memory_limit)?.unwrap_or_default();
         let complete = text.rfind('\n').map_or(0, |i| i + 1);
         let runs = parse(&text[..complete], &path.display().to_string())?;
         let mut file = OpenOptions::new()
@@ -128,6 +139,7 @@ impl RunsFile {
             file.flush().map_err(io)?;
         }
         let runs_file = RunsFile {
+            memory_limit,
             path: path.to_path_buf(),
             file,
             _lock: lock,
@@ -149,7 +161,7 @@ impl RunsFile {
 
     /// Every run the file holds now ([`parse`]).
     pub fn runs(&self) -> Result<Vec<RunRow>> {
-        let text = crate::files::read_text(&self.path)?;
+        let text = crate::files::read_text(&self.path, &READING, self.memory_limit)?;
         parse(&text, &self.path.display().to_string())
     }
 }

@@ -103,7 +103,7 @@ pub const COLUMN_OFFSET: Range = Range {
 };
 
 /// The value shown in a message: as written in the file's unit (`1e300`, `0.5`).
-fn shown(value: f64) -> String {
+pub fn shown(value: f64) -> String {
     if value != 0.0 && !(1e-3..1e6).contains(&value.abs()) {
         format!("{value:e}")
     } else {

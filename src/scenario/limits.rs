@@ -9,11 +9,9 @@
 //! that no solve runs for hours.
 
 use super::{DriftSource, Run, Scenario};
-use crate::error::{Error, OverBudget, Result, BYTES_PER_GB, MEMORY_LIMIT_KEY};
+use crate::error::{Error, OverBudget, Result, MEMORY_LIMIT_KEY};
 
-/// Default [`Run::memory_limit`]: 4 GB (4e9 bytes), for a workstation that runs a few
-/// simulations at once.
-pub const DEFAULT_MEMORY_LIMIT: f64 = 4.0e9;
+pub use crate::files::budget::{check_memory_limit, DEFAULT_MEMORY_LIMIT};
 
 /// The largest number of discrete directions of a short-crested sea (half a degree apart
 /// over the half circle). The cross-direction terms cost D^2 per record component: 1000
@@ -60,13 +58,7 @@ pub fn over_budget(
 /// before any of them is used. Errors name the setting by its key.
 pub fn check_sizes<H>(scenario: &Scenario<H>, source: Option<&DriftSource>) -> Result<()> {
     let run = &scenario.run;
-    if !(run.memory_limit.is_finite() && run.memory_limit > 0.0) {
-        return Err(Error::invalid(
-            MEMORY_LIMIT_KEY,
-            run.memory_limit / BYTES_PER_GB,
-            "must be a finite number greater than zero",
-        ));
-    }
+    check_memory_limit(MEMORY_LIMIT_KEY, run.memory_limit)?;
     let count = |key: &str, value: usize, max: usize| {
         if value > max {
             Err(Error::invalid(key, value, format!("must be at most {max}")))

@@ -11,6 +11,7 @@
 pub mod default;
 pub mod file;
 pub mod limits;
+mod lines;
 mod origin;
 pub mod overrides;
 

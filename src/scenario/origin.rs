@@ -7,6 +7,7 @@
 //! key path (`sea.hs`, `platform.columns[2].draft`, `current.direction_deg`, in the file's
 //! units); [`Origins::locate`] rewrites such an error for the place the value came from.
 
+use super::lines::LineIndex;
 use crate::error::{Error, Location, OverBudget};
 use std::collections::BTreeMap;
 use std::ops::Range;
@@ -48,11 +49,11 @@ impl PartialEq for Origins {
 impl Origins {
     /// The keys of configuration text `text` (already known to parse) read from `path`: the
     /// line of every table, key and array element, by key path (`sea`, `sea.hs`,
-    /// `platform.columns[1]`, `platform.columns[1].draft`).
-    pub fn of_file(path: &str, text: &str) -> Origins {
+    /// `platform.columns[1]`, `platform.columns[1].draft`); `index` is the text's lines.
+    pub fn of_file(path: &str, text: &str, index: &LineIndex) -> Origins {
         let mut lines = BTreeMap::new();
         if let Ok(table) = toml::de::DeTable::parse(text) {
-            index_table(text, "", table.get_ref(), &mut lines);
+            index_table(index, "", table.get_ref(), &mut lines);
         }
         Origins {
             file: Some((path.to_string(), lines)),
@@ -170,18 +171,9 @@ fn in_radians(key: &str, value: String) -> String {
     }
 }
 
-/// 1-based line of byte `offset` in `text`.
-fn line_of(text: &str, offset: usize) -> usize {
-    let end = offset.min(text.len());
-    text.as_bytes()[..end]
-        .iter()
-        .filter(|&&b| b == b'\n')
-        .count()
-        + 1
-}
-
+/// Records the line of every key of `table` (and of what it holds) under `prefix`.
 fn index_table(
-    text: &str,
+    index: &LineIndex,
     prefix: &str,
     table: &toml::de::DeTable,
     lines: &mut BTreeMap<String, usize>,
@@ -192,20 +184,20 @@ fn index_table(
         } else {
             format!("{prefix}.{}", key.get_ref())
         };
-        lines.insert(path.clone(), line_of(text, key.span().start));
-        index_value(text, &path, value.get_ref(), value.span(), lines);
+        lines.insert(path.clone(), index.line(key.span().start));
+        index_value(index, &path, value.get_ref(), value.span(), lines);
     }
 }
 
 fn index_value(
-    text: &str,
+    index: &LineIndex,
     path: &str,
     value: &toml::de::DeValue,
     span: Range<usize>,
     lines: &mut BTreeMap<String, usize>,
 ) {
     match value {
-        toml::de::DeValue::Table(table) => index_table(text, path, table, lines),
+        toml::de::DeValue::Table(table) => index_table(index, path, table, lines),
         toml::de::DeValue::Array(items) => {
             for (k, item) in items.iter().enumerate() {
                 let element = format!("{path}[{k}]");
@@ -214,8 +206,8 @@ fn index_value(
                 } else {
                     item.span().start
                 };
-                lines.entry(element.clone()).or_insert(line_of(text, start));
-                index_value(text, &element, item.get_ref(), item.span(), lines);
+                lines.entry(element.clone()).or_insert(index.line(start));
+                index_value(index, &element, item.get_ref(), item.span(), lines);
             }
         }
         _ => {}
@@ -234,7 +226,7 @@ mod tests {
 
     #[test]
     fn a_file_key_is_named_with_its_section_and_line() {
-        let origins = Origins::of_file("p.toml", TEXT);
+        let origins = Origins::of_file("p.toml", TEXT, &LineIndex::new(TEXT));
         assert_eq!(
             origins.locate(invalid("sea.hs")).to_string(),
             "p.toml:3: invalid [sea] hs = -1: must be greater than zero"
@@ -254,7 +246,7 @@ mod tests {
 
     #[test]
     fn an_override_is_named_where_it_was_written() {
-        let mut origins = Origins::of_file("p.toml", TEXT);
+        let mut origins = Origins::of_file("p.toml", TEXT, &LineIndex::new(TEXT));
         origins.record(
             "sea.hs",
             Written::Fmu {

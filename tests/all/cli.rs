@@ -4,6 +4,7 @@ use slowdrift::hydro::aranha::aranha_damping;
 use slowdrift::hydro::io::database::HydroDatabase;
 use slowdrift::model::DriftDamping;
 use slowdrift::problem;
+use slowdrift::scenario::limits::DEFAULT_MEMORY_LIMIT as LIMIT;
 use std::path::Path;
 use std::process::Command;
 
@@ -35,7 +36,7 @@ fn hydro_columns_writes_the_configuration_drift_table() {
         "{}",
         String::from_utf8_lossy(&run.stderr)
     );
-    let database = HydroDatabase::load(&out).unwrap();
+    let database = HydroDatabase::load(&out, LIMIT).unwrap();
     std::fs::remove_file(&out).ok();
     let problem = problem::load(&config).unwrap();
     assert_eq!(problem.model.drift_damping, DriftDamping::Aranha);

@@ -41,8 +41,30 @@ fn database_with(dir: &std::path::Path, from: &str, to: &str) -> String {
     path.display().to_string()
 }
 
+/// The embedded default configuration with its `[drift]` section (the last) made of
+/// `drift`, written to `dir` as `name`; its path.
+fn configuration_with_drift(dir: &std::path::Path, name: &str, drift: &str) -> String {
+    let start = DEFAULT_TOML.find("\n[drift]\n").unwrap();
+    assert!(
+        !DEFAULT_TOML[start + 1..].contains("\n["),
+        "[drift] is the last section"
+    );
+    let path = dir.join(name);
+    std::fs::write(
+        &path,
+        format!("{}\n[drift]\n{drift}", &DEFAULT_TOML[..start]),
+    )
+    .unwrap();
+    path.display().to_string()
+}
+
+/// `unit` repeated to `bytes`.
+fn repeated(unit: &str, bytes: usize) -> String {
+    unit.repeat(bytes / unit.len())
+}
+
 /// The sizes of issue #15 that aborted or hung a master, at the default memory budget.
-const HOSTILE: [Case; 5] = [
+const HOSTILE: [Case; 6] = [
     Case {
         name: "nDirections = 100000",
         set: |f, _| spread(f, 100_000),
@@ -87,13 +109,36 @@ const HOSTILE: [Case; 5] = [
             "[model] strips_per_column = 10000000: must be at most 1000",
         ],
     },
+    // (10 MB, not less: reading the packed 3 kB configuration may take 2.9 MB.)
     Case {
-        name: "memoryLimit = 0.001 (1 MB) with the default's 31 MB",
-        set: |f, _| assert_eq!(f.set_real(vr::MEMORY_LIMIT, 0.001), fmi2Status::fmi2OK),
+        name: "memoryLimit = 0.01 (10 MB) with the default's 31 MB",
+        set: |f, _| assert_eq!(f.set_real(vr::MEMORY_LIMIT, 0.01), fmi2Status::fmi2OK),
         expected: &[
-            "invalid FMU parameter memoryLimit = 0.001 (1.000 MB): the records need 31",
+            "invalid FMU parameter memoryLimit = 0.01 (10.000 MB): the records need 31",
             "from [model] strips_per_column = 20 in the FMU's embedded configuration",
             "raise memoryLimit to at least 0.032 (GB)",
+        ],
+    },
+    Case {
+        name: "a valid 100 kB hydroDatabase with memoryLimit = 0.05 (50 MB)",
+        set: |f, dir| {
+            // The default configuration, padded with comments to 100 000 bytes: reading it
+            // may take 900 bytes per byte (the TOML reader's stated cost), 90 MB.
+            let path = dir.join("padded.toml");
+            let padding = repeated("# a comment\n", 100_000 - DEFAULT_TOML.len());
+            let text = format!("{DEFAULT_TOML}{padding}");
+            let text = format!("{text}{}", "#".repeat(100_000 - text.len()));
+            std::fs::write(&path, text).unwrap();
+            assert_eq!(
+                f.set_string(vr::HYDRO_DATABASE, path.to_str().unwrap()),
+                fmi2Status::fmi2OK
+            );
+            assert_eq!(f.set_real(vr::MEMORY_LIMIT, 0.05), fmi2Status::fmi2OK);
+        },
+        expected: &[
+            "padded.toml: reading it needs 90.000 MB of memory (a TOML configuration of \
+             100000 bytes (100 kB), up to 900 bytes of memory per byte); the limit is \
+             50.000 MB (the parameter memoryLimit = 0.05)",
         ],
     },
 ];
@@ -157,7 +202,7 @@ const CHILD_ADDRESS_SPACE_KB: u64 = 1_500_000;
 
 /// Sizes within a raised budget (memoryLimit = 1000 GB) but beyond the process's own limit:
 /// the probe of the allocator finds it, fmi2Error instead of an abort.
-const BEYOND_THE_PROCESS: [Case; 2] = [
+const BEYOND_THE_PROCESS: [Case; 4] = [
     Case {
         name: "yawFollowingHeadings = 720 under a 1.5 GB process limit",
         set: |f, _| {
@@ -185,6 +230,47 @@ const BEYOND_THE_PROCESS: [Case; 2] = [
             assert_eq!(f.set_string(vr::HYDRO_DATABASE, &path), fmi2Status::fmi2OK)
         },
         expected: &["this process cannot allocate them"],
+    },
+    // Files within the budget whose reading this process cannot hold (issue #27, part 5):
+    // before, the readers aborted the process (the TOML reader took 2.2 GB for this file,
+    // the CSV reader 1.7 GB for this table).
+    Case {
+        name: "a 4 MB hydroDatabase of dotted keys (2.2 GB to read) under a 1.5 GB process \
+               limit",
+        set: |f, dir| {
+            let path = dir.join("dotted.toml");
+            let chain = vec!["a"; 40].join(".");
+            let tables = repeated(&format!("{{{chain}=0}},"), 4_000_000);
+            std::fs::write(&path, format!("[sea]\nx = [{tables}0]\n")).unwrap();
+            assert_eq!(
+                f.set_string(vr::HYDRO_DATABASE, path.to_str().unwrap()),
+                fmi2Status::fmi2OK
+            );
+        },
+        expected: &[
+            "dotted.toml: reading it needs 3.600 GB of memory (a TOML configuration of ",
+            " bytes (4.000 MB), up to 900 bytes of memory per byte) and this process cannot \
+             allocate them",
+        ],
+    },
+    Case {
+        name: "a 100 MB CSV drift table (1.7 GB to read) under a 1.5 GB process limit",
+        set: |f, dir| {
+            let csv = dir.join("drift.csv");
+            let rows = repeated("1,0,0,0,0\n", 100_000_000);
+            std::fs::write(&csv, format!("omega,beta_deg,surge,sway,yaw\n{rows}")).unwrap();
+            let path = configuration_with_drift(
+                dir,
+                "csv.toml",
+                &format!("source = \"csv\"\nfile = \"{}\"\n", csv.display()),
+            );
+            assert_eq!(f.set_string(vr::HYDRO_DATABASE, &path), fmi2Status::fmi2OK);
+        },
+        expected: &[
+            "drift.csv: reading it needs 3.400 GB of memory (a CSV drift table of 100000030 \
+             bytes (100 MB), up to 34 bytes of memory per byte) and this process cannot \
+             allocate them",
+        ],
     },
 ];
 

@@ -355,3 +355,48 @@ fn an_overlong_string_is_refused_when_set() {
         fmi2Status::fmi2OK
     );
 }
+
+/// `fmi2DeSerializeFMUstate` checks every field as `fmi2SetFMUstate` does (issue #27,
+/// part 5): a snapshot with an infinite external force or a NaN time origin is refused at
+/// deserialisation (before, only `fmi2SetFMUstate` refused it), and a last successful time
+/// beyond the snapshot's time is refused (before, it was restored and reported), each with
+/// fmi2Error naming the field and its byte offset. The bytes are a real state's, changed
+/// and resealed.
+#[test]
+fn deserialisation_checks_every_field() {
+    let a = Fmu::running("saved", 1, 0.0, START, Some(STOP));
+    for k in 0..10 {
+        a.step_with(START + k as f64, 1.0, external(k));
+    }
+    let state = get_state(&a);
+    let good = serialize(&a, state);
+    free_state(&a, state);
+    // The snapshot is the 96 bytes before the checksum: 8-byte words origin, count, step,
+    // X, Y, theta, X', Y', theta', Fx, Fy, Mz; the last successful time is at byte 18.
+    let snapshot = good.len() - 8 - 96;
+    let word = |k: usize| snapshot + 8 * k;
+    let cases = [
+        (word(9), f64::INFINITY, "snapshot external_force[0] = inf"),
+        (word(0), f64::NAN, "snapshot origin = NaN"),
+        (
+            18,
+            START + 11.0,
+            "last successful time 61 s at byte 18: is beyond the instance's time 60 s",
+        ),
+    ];
+    for (at, value, needle) in cases {
+        let mut bytes = good.clone();
+        bytes[at..at + 8].copy_from_slice(&value.to_le_bytes());
+        reseal(&mut bytes);
+        let b = Fmu::new("b");
+        let (status, state) = deserialize(&b, &bytes);
+        assert_eq!(status, fmi2Status::fmi2Error, "{needle}: {}", b.messages());
+        assert!(state.is_null());
+        let message = b.last_message().message;
+        assert!(message.contains(needle), "{needle:?} in {message:?}");
+        assert!(message.contains("invalid FMU state"), "{message}");
+    }
+    let b = Fmu::new("b");
+    restore(&b, &good).unwrap_or_else(|m| panic!("{m}"));
+    assert_eq!(b.last_successful_time(), (fmi2Status::fmi2OK, START + 10.0));
+}

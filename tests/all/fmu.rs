@@ -343,6 +343,22 @@ pub fn deserialize(fmu: &Fmu, bytes: &[u8]) -> (fmi2Status, fmi2FMUstate) {
     (s, state)
 }
 
+/// FNV-1a, 64 bits: the checksum at the end of a serialized FMU state (docs/fmu.md),
+/// written out here.
+pub fn fnv1a(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
+        (h ^ b as u64).wrapping_mul(0x0100_0000_01b3)
+    })
+}
+
+/// Rewrites the checksum of serialized state bytes after a change, so that the check
+/// behind it answers.
+pub fn reseal(bytes: &mut [u8]) {
+    let n = bytes.len() - 8;
+    let sum = fnv1a(&bytes[..n]);
+    bytes[n..].copy_from_slice(&sum.to_le_bytes());
+}
+
 impl Drop for Fmu {
     fn drop(&mut self) {
         unsafe { fmi2FreeInstance(self.c) };

@@ -10,6 +10,7 @@ use slowdrift::fmi2::model_description::vr;
 use slowdrift::fmi2::types::*;
 use slowdrift::problem::resolve;
 use slowdrift::scenario::file;
+use slowdrift::scenario::limits::DEFAULT_MEMORY_LIMIT as LIMIT;
 use slowdrift::sea_state::{Spectrum, Spreading};
 use slowdrift::Simulation;
 use std::path::PathBuf;
@@ -105,7 +106,7 @@ fn a_configuration_file_runs_as_written() {
         fmu.messages()
     );
 
-    let mut problem = resolve(&file::load(&path).unwrap()).unwrap();
+    let mut problem = resolve(&file::load(&path, LIMIT).unwrap()).unwrap();
     assert_eq!(problem.sea.spreading, Spreading::CosN { n: 2.0 });
     assert_eq!(problem.sea.n_directions, 9);
     problem.run.start_time = 0.0;
@@ -138,7 +139,7 @@ fn a_parameter_the_master_sets_wins() {
     assert_eq!(status, fmi2Status::fmi2OK, "{}", fmu.messages());
     assert_eq!(read, [4.0, 2.0]);
 
-    let mut problem = resolve(&file::load(&path).unwrap()).unwrap();
+    let mut problem = resolve(&file::load(&path, LIMIT).unwrap()).unwrap();
     match &mut problem.sea.spectrum {
         Spectrum::Jonswap { hs, .. } => *hs = 4.0,
         other => panic!("{other:?}"),
@@ -295,10 +296,18 @@ fn table_damping_on_the_default_names_the_choices_that_work() {
 /// they cannot see (`[run] block_duration`) or the master's temporary folder.
 #[test]
 fn messages_name_the_parameters_the_user_set() {
+    // 10 MB: the embedded configuration reads (3 MB), its records (31 MB) do not fit.
+    assert_refusal_names(
+        vr::MEMORY_LIMIT,
+        0.01,
+        "FMU parameter memoryLimit = 0.01 (10.000 MB)",
+    );
+    // 1 kB: not even the embedded configuration reads; named as the FMU's, not by the
+    // master's folder.
     assert_refusal_names(
         vr::MEMORY_LIMIT,
         1e-6,
-        "FMU parameter memoryLimit = 0.000001 (1.000 kB)",
+        "the FMU's embedded configuration (resources/platform.toml): reading it needs",
     );
 }
 

@@ -7,6 +7,7 @@
 
 use crate::common::{base_config, oscillator_surge_variance};
 use slowdrift::montecarlo::{run_jobs, seed_statistics, Case, Job};
+use slowdrift::scenario::limits::DEFAULT_MEMORY_LIMIT as LIMIT;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use std::sync::atomic::AtomicBool;
@@ -657,7 +658,7 @@ fn print_cases_peak(table: &Path, rows: usize) -> (isize, usize) {
     let mut counted = CountingWriter(&mut out, &mut written);
     let before = live_bytes();
     reset_peak();
-    let cases = open_case_table(table)
+    let cases = open_case_table(table, LIMIT)
         .unwrap()
         .map(|row| row.and_then(|row| row.case(&base, None, &source)));
     write_cases_json(&mut counted, "sink", cases, &base, "").unwrap();

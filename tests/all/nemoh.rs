@@ -9,6 +9,7 @@ use rustfft::num_complex::Complex64;
 use slowdrift::hydro::io::nemoh;
 use slowdrift::model::{Dof, DriftDamping, Environment, SecondOrder};
 use slowdrift::problem::Hydro;
+use slowdrift::scenario::limits::DEFAULT_MEMORY_LIMIT as LIMIT;
 use slowdrift::stats::summarize;
 use slowdrift::{Problem, Simulation};
 use std::f64::consts::PI;
@@ -64,7 +65,7 @@ fn oc3_qtf_against_the_raw_text_hermitian_and_its_diagonal_the_drift() {
     let Some(dir) = oc3_dir_or_skip() else {
         return;
     };
-    let import = nemoh::import(&dir).unwrap();
+    let import = nemoh::import(&dir, LIMIT).unwrap();
     for line in &import.files {
         println!("{line}");
     }
@@ -145,7 +146,7 @@ fn oc3_added_mass_mass_and_stiffness_from_the_raw_text() {
     let Some(dir) = oc3_dir_or_skip() else {
         return;
     };
-    let db = nemoh::import(&dir).unwrap().database;
+    let db = nemoh::import(&dir, LIMIT).unwrap().database;
     // CM.dat: the first frequency's block, rows 1, 2, 6 and columns 1, 2, 6.
     let cm = raw_rows(&dir.join("results/CM.dat"), 1);
     assert_eq!(cm[0].len(), 1, "the frequency line");
@@ -232,8 +233,8 @@ fn an_off_axis_reference_point_is_moved_to_the_origin() {
         lines.join("\n") + "\n",
     )
     .unwrap();
-    let original = nemoh::import(&dir).unwrap();
-    let offset = nemoh::import(&copy).unwrap();
+    let original = nemoh::import(&dir, LIMIT).unwrap();
+    let offset = nemoh::import(&copy, LIMIT).unwrap();
     assert!(
         offset
             .files
@@ -291,7 +292,7 @@ fn a_qtf_in_another_unit_than_nemoh_cal_names_is_refused() {
         copy.join("results/QTF/OUT_QTFM_N.dat"),
     )
     .unwrap();
-    let message = nemoh::import(&copy).unwrap_err().to_string();
+    let message = nemoh::import(&copy, LIMIT).unwrap_err().to_string();
     assert!(
         message.contains("OUT_QTFM_N.dat:2:") && message.contains("w1 = 0.250 Hz"),
         "{message}"
@@ -308,7 +309,7 @@ fn oc3_runs_in_full_qtf_and_newman_modes() {
     let Some(dir) = oc3_dir_or_skip() else {
         return;
     };
-    let db = nemoh::import(&dir).unwrap().database;
+    let db = nemoh::import(&dir, LIMIT).unwrap().database;
     let config = |mode: SecondOrder, seed: u64| -> Problem {
         let mut c = base_config(3.0 * 3600.0, 1.0, seed);
         c.environment = Environment {
@@ -454,8 +455,8 @@ fn the_cli_writes_the_library_import() {
             && stdout.contains("low-frequency added mass from the lowest"),
         "{stdout}"
     );
-    let written = slowdrift::hydro::io::database::HydroDatabase::load(&out).unwrap();
-    assert_eq!(written, nemoh::import(&dir).unwrap().database);
+    let written = slowdrift::hydro::io::database::HydroDatabase::load(&out, LIMIT).unwrap();
+    assert_eq!(written, nemoh::import(&dir, LIMIT).unwrap().database);
     let missing = std::process::Command::new(env!("CARGO_BIN_EXE_slowdrift"))
         .args(["hydro", "nemoh", "--dir", "/nonexistent-nemoh", "--out"])
         .arg(&out)
@@ -476,7 +477,9 @@ fn nemoh_matrices_with_a_number_cut_are_refused_at_file_and_line() {
     };
     let copy = temp_dir("nemoh-cut");
     let cm = std::fs::read_to_string(dir.join("results/CM.dat")).unwrap();
-    assert!(nemoh::matrices::read_frequency_matrices(&dir.join("results/CM.dat"), 6).is_ok());
+    assert!(
+        nemoh::matrices::read_frequency_matrices(&dir.join("results/CM.dat"), 6, LIMIT).is_ok()
+    );
     // Line 5 is the third row of the first matrix; its third field loses its exponent.
     let mut lines: Vec<String> = cm.lines().map(str::to_string).collect();
     let fields: Vec<&str> = lines[4].split_whitespace().collect();
@@ -486,7 +489,7 @@ fn nemoh_matrices_with_a_number_cut_are_refused_at_file_and_line() {
     lines[4] = cut;
     let path = copy.join("CM.dat");
     std::fs::write(&path, lines.join("\n") + "\n").unwrap();
-    let message = nemoh::matrices::read_frequency_matrices(&path, 6)
+    let message = nemoh::matrices::read_frequency_matrices(&path, 6, LIMIT)
         .unwrap_err()
         .to_string();
     assert!(
@@ -495,14 +498,14 @@ fn nemoh_matrices_with_a_number_cut_are_refused_at_file_and_line() {
     );
 
     let inertia = std::fs::read_to_string(dir.join("Mechanics/Inertia.dat")).unwrap();
-    assert!(nemoh::matrices::read_matrix6(&dir.join("Mechanics/Inertia.dat")).is_ok());
+    assert!(nemoh::matrices::read_matrix6(&dir.join("Mechanics/Inertia.dat"), LIMIT).is_ok());
     let whole = inertia.trim_end();
     let last_line = whole.lines().count();
     // Cut inside the last number: drop its exponent's last digit and everything after.
     let cut = &whole[..whole.len() - 1];
     let path = copy.join("Inertia.dat");
     std::fs::write(&path, cut).unwrap();
-    let message = nemoh::matrices::read_matrix6(&path)
+    let message = nemoh::matrices::read_matrix6(&path, LIMIT)
         .unwrap_err()
         .to_string();
     assert!(

@@ -15,6 +15,7 @@ use slowdrift::hydro::io::database::HydroDatabase;
 use slowdrift::hydro::io::wamit::WamitOptions;
 use slowdrift::problem::{self, Origin, Problem};
 use slowdrift::scenario::file;
+use slowdrift::scenario::limits::DEFAULT_MEMORY_LIMIT as LIMIT;
 use slowdrift::Simulation;
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
@@ -249,7 +250,9 @@ fn a_mass_comes_from_the_data_or_is_required() {
         return;
     }
     let scratch = Scratch::new("oc3-mass");
-    let db = slowdrift::hydro::io::nemoh::import(&dir).unwrap().database;
+    let db = slowdrift::hydro::io::nemoh::import(&dir, LIMIT)
+        .unwrap()
+        .database;
     db.save(&scratch.0.join("oc3.json")).unwrap();
     let text = "[environment]\ngravity = 9.81\n\n\
          [sea]\nspectrum = \"jonswap\"\nhs = 6.0\ntp = 12.0\nband = [0.25, 1.5]\n\n\

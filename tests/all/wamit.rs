@@ -12,6 +12,7 @@ use slowdrift::hydro::io::wamit::{
     read_added_mass_damping, read_difference_qtf, read_hydrostatics, read_mean_drift, WamitOptions,
 };
 use slowdrift::model::Dof;
+use slowdrift::scenario::limits::DEFAULT_MEMORY_LIMIT as LIMIT;
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -374,7 +375,7 @@ fn oc4_database_from_wamit_saves_loads_and_gives_the_qtf_diagonal() {
     let file = dir.join("oc4.json");
     db.save(&file).unwrap();
     assert_eq!(
-        &HydroDatabase::load(&file).unwrap(),
+        &HydroDatabase::load(&file, LIMIT).unwrap(),
         db,
         "bit-for-bit round trip"
     );
@@ -647,6 +648,7 @@ fn added_mass_damping_and_hydrostatics_scale_with_ulen() {
         ulen,
         rho: 1000.0,
         gravity: 9.81,
+        ..WamitOptions::default()
     };
     let one = write(
         &dir,
@@ -808,7 +810,7 @@ fn database_round_trip_is_bit_for_bit_and_gives_its_drift_table() {
     let db = small_database();
     let path = dir.join("db.json");
     db.save(&path).unwrap();
-    let back = HydroDatabase::load(&path).unwrap();
+    let back = HydroDatabase::load(&path, LIMIT).unwrap();
     assert_eq!(back, db);
     assert_eq!(back.drift[0].sway.to_bits(), (-0.0f64).to_bits());
     let table = back.to_drift_table().unwrap();
@@ -825,7 +827,9 @@ fn database_errors_name_the_file() {
         "v2.json",
         &text.replace("\"format_version\": 1", "\"format_version\": 2"),
     );
-    let err = HydroDatabase::load(&wrong_version).unwrap_err().to_string();
+    let err = HydroDatabase::load(&wrong_version, LIMIT)
+        .unwrap_err()
+        .to_string();
     assert!(
         err.contains("v2.json") && err.contains("format_version = 2"),
         "{err}"
@@ -840,7 +844,9 @@ fn database_errors_name_the_file() {
             "\"format_version\": 2, \"panels\": []",
         ),
     );
-    let err = HydroDatabase::load(&other_layout).unwrap_err().to_string();
+    let err = HydroDatabase::load(&other_layout, LIMIT)
+        .unwrap_err()
+        .to_string();
     assert!(
         err.contains("format_version = 2: this program reads version 1"),
         "{err}"
@@ -850,14 +856,14 @@ fn database_errors_name_the_file() {
         "unversioned.json",
         &text.replace("\"format_version\": 1,", ""),
     );
-    let err = HydroDatabase::load(&absent).unwrap_err().to_string();
+    let err = HydroDatabase::load(&absent, LIMIT).unwrap_err().to_string();
     assert!(err.contains("format_version = (absent)"), "{err}");
     let broken = write(
         &dir,
         "broken.json",
         &text.replacen("\"name\"", "\"name\" :: ", 1),
     );
-    let err = HydroDatabase::load(&broken).unwrap_err().to_string();
+    let err = HydroDatabase::load(&broken, LIMIT).unwrap_err().to_string();
     assert!(
         err.starts_with(&format!("{}:3:", broken.display())),
         "{err}"
@@ -867,7 +873,9 @@ fn database_errors_name_the_file() {
         "unknown.json",
         &text.replacen("\"name\"", "\"nmae\"", 1),
     );
-    let err = HydroDatabase::load(&unknown).unwrap_err().to_string();
+    let err = HydroDatabase::load(&unknown, LIMIT)
+        .unwrap_err()
+        .to_string();
     assert!(
         err.contains("unknown.json") && err.contains("nmae"),
         "{err}"
@@ -876,7 +884,7 @@ fn database_errors_name_the_file() {
     bad.qtf.as_mut().unwrap().blocks[0].re.pop();
     let err = bad.save(&dir.join("bad.json")).unwrap_err().to_string();
     assert!(err.contains("bad.json") && err.contains("2 x 2"), "{err}");
-    let err = HydroDatabase::load(&dir.join("absent.json"))
+    let err = HydroDatabase::load(&dir.join("absent.json"), LIMIT)
         .unwrap_err()
         .to_string();
     assert!(err.contains("absent.json"), "{err}");
@@ -928,7 +936,7 @@ fn database_content_errors_name_the_file_and_line() {
         "gravity.json",
         &text.replace("\"gravity\": 9.80665", "\"gravity\": -9.8"),
     );
-    let err = HydroDatabase::load(&negative_gravity)
+    let err = HydroDatabase::load(&negative_gravity, LIMIT)
         .unwrap_err()
         .to_string();
     assert_eq!(
@@ -1009,7 +1017,7 @@ fn cli_hydro_wamit_writes_the_database_and_summarises() {
     );
     assert!(stdout.contains("marin_semi.8: absent"), "{stdout}");
     let expected = HydroDatabase::from_wamit(&root, &WamitOptions::default()).unwrap();
-    assert_eq!(HydroDatabase::load(&out).unwrap(), expected.database);
+    assert_eq!(HydroDatabase::load(&out, LIMIT).unwrap(), expected.database);
 
     let refused = std::process::Command::new(env!("CARGO_BIN_EXE_slowdrift"))
         .args([

@@ -11,6 +11,7 @@ use slowdrift::hydro::io::database::HydroDatabase;
 use slowdrift::hydro::io::wamit::{read_mean_drift, WamitOptions};
 use slowdrift::model::Interaction;
 use slowdrift::problem::Hydro;
+use slowdrift::scenario::limits::DEFAULT_MEMORY_LIMIT as LIMIT;
 use slowdrift::sea_state::{FrequencyGrid, Spreading};
 use slowdrift::Simulation;
 use std::f64::consts::PI;
@@ -107,7 +108,7 @@ fn bidirectional_rows_fill_the_database_table_and_reach_a_spread_sea() {
     assert_eq!(database.bidirectional_drift.as_ref(), Some(&table));
     let json = dir.join("semi.json");
     database.save(&json).unwrap();
-    assert_eq!(HydroDatabase::load(&json).unwrap(), database);
+    assert_eq!(HydroDatabase::load(&json, LIMIT).unwrap(), database);
 
     let mut problem = base_config(1200.0, 1.0, 3);
     problem.hydro = Hydro {
@@ -291,7 +292,11 @@ fn a_qtf_with_several_heading_pairs_becomes_per_pair_blocks() {
     assert_eq!(stored.blocks.len(), 3 * 9);
     let json = dir.join("semi.json");
     import.database.save(&json).unwrap();
-    let qtf = HydroDatabase::load(&json).unwrap().qtf.unwrap().to_qtf();
+    let qtf = HydroDatabase::load(&json, LIMIT)
+        .unwrap()
+        .qtf
+        .unwrap()
+        .to_qtf();
     assert!(qtf.is_bidirectional());
     let omegas: Vec<f64> = qtf.omegas.clone();
     for &h1 in &headings {

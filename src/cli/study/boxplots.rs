@@ -60,8 +60,13 @@ pub(super) fn boxplots(base: &Problem, args: &BoxplotsArgs) -> Result<(), Failur
         .flat_map(|(case, &n)| (1..=n as u64).map(move |seed| Job { case, seed }))
         .collect();
     let runs_path = out.join("fig10.runs.csv");
-    let Campaign { runs, interrupted } =
-        run_campaign(&cases, &jobs, threads(args.threads), &runs_path)?;
+    let Campaign { runs, interrupted } = run_campaign(
+        &cases,
+        &jobs,
+        threads(args.threads),
+        &runs_path,
+        base.run.memory_limit,
+    )?;
     if let Some(interrupted) = interrupted {
         return Err(interrupted.failure(&runs_path, None));
     }

@@ -45,9 +45,14 @@ pub(super) fn drift(base: &Problem, args: &DriftArgs) -> Result<(), String> {
         grid: COLUMN_GRID,
         depth: None,
     };
-    let columns = resolve_hydro(&source, &base.platform, &base.environment)
-        .map_err(|e| e.to_string())?
-        .drift;
+    let columns = resolve_hydro(
+        &source,
+        &base.platform,
+        &base.environment,
+        base.run.memory_limit,
+    )
+    .map_err(|e| e.to_string())?
+    .drift;
     // The damping a run of the configuration uses (none drawn when it is off).
     let own = base
         .damping_table()

@@ -33,7 +33,7 @@ pub(super) fn sensitivity(base: &Problem, args: &SensitivityArgs) -> Result<(), 
     let column = args.x.as_str();
     let seeds = args.seeds;
     let out = args.out.as_path();
-    let rows = read_case_table(table).map_err(|e| e.to_string())?;
+    let rows = read_case_table(table, base.run.memory_limit).map_err(|e| e.to_string())?;
     let source = table.display().to_string();
     let mut cases = Vec::new();
     let mut xs = Vec::new();
@@ -56,8 +56,13 @@ pub(super) fn sensitivity(base: &Problem, args: &SensitivityArgs) -> Result<(), 
         .flat_map(|case| (1..=seeds as u64).map(move |seed| Job { case, seed }))
         .collect();
     let runs_path = out.join(format!("{stem}.runs.csv"));
-    let Campaign { runs, interrupted } =
-        run_campaign(&cases, &jobs, threads(args.threads), &runs_path)?;
+    let Campaign { runs, interrupted } = run_campaign(
+        &cases,
+        &jobs,
+        threads(args.threads),
+        &runs_path,
+        base.run.memory_limit,
+    )?;
     if let Some(interrupted) = interrupted {
         return Err(interrupted.failure(&runs_path, None));
     }

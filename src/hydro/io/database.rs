@@ -42,6 +42,7 @@ use super::wamit::{
 use crate::error::{
     require_finite, require_finite_matrix, require_positive, Error, Location, Result,
 };
+use crate::files::Cost;
 use crate::hydro::bidirectional::BidirectionalTable;
 use crate::hydro::qtf::{Qtf, QtfBlock};
 use crate::hydro::{DriftRow, DriftTable};
@@ -53,6 +54,15 @@ use std::path::{Path, PathBuf};
 
 /// The database format this code writes and reads.
 pub const FORMAT_VERSION: u32 = 1;
+
+/// What reading a database costs, to the problem made of it (its drift table, QTF and
+/// bi-directional table): up to 16 bytes of memory per byte of the file (measured on its
+/// costliest content: matrices of one-digit numbers, and of empty rows), with a margin for
+/// the allocator's own overhead.
+pub const READING: Cost = Cost {
+    format: "hydrodynamic database (JSON)",
+    per_byte: 24.0,
+};
 
 /// WAMIT DOFs of surge, sway and yaw.
 const SLOW_DOFS: [usize; 3] = [1, 2, 6];
@@ -224,10 +234,10 @@ impl HydroDatabase {
         })
     }
 
-    /// Reads and validates a database; refuses other format versions. Errors name the
-    /// file (and the line, for JSON syntax).
-    pub fn load(path: &Path) -> Result<Self> {
-        let text = crate::files::read_text(path)?;
+    /// Reads and validates a database within `memory_limit` bytes; refuses other format
+    /// versions. Errors name the file (and the line, for JSON syntax).
+    pub fn load(path: &Path, memory_limit: f64) -> Result<Self> {
+        let text = crate::files::read_text(path, &READING, memory_limit)?;
         Self::parse(&text, &path.display().to_string())
     }
 

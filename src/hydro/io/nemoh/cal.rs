@@ -7,6 +7,7 @@
 //! field.
 
 use crate::error::{Error, Result};
+use crate::files::Cost;
 use std::path::Path;
 
 /// Units NEMOH writes frequencies in (Nemoh.cal's "freq type" 1, 2, 3).
@@ -114,11 +115,19 @@ pub const SLOW: [(bool, [f64; 3]); 3] = [
     (true, [0.0, 0.0, 1.0]),
 ];
 
+/// What reading a Nemoh.cal costs: up to 18 bytes of memory per byte of the file (measured
+/// on its costliest content: blank lines, each a line of the reader's), with a margin for
+/// the allocator's own overhead.
+pub const READING: Cost = Cost {
+    format: "Nemoh.cal",
+    per_byte: 28.0,
+};
+
 impl NemohCal {
-    /// Reads `path` (Nemoh.cal); one body only.
-    pub fn read(path: &Path) -> Result<Self> {
+    /// Reads `path` (Nemoh.cal) within `memory_limit` bytes; one body only.
+    pub fn read(path: &Path, memory_limit: f64) -> Result<Self> {
         let name = path.display().to_string();
-        let text = crate::files::read_text(path)?;
+        let text = crate::files::read_text(path, &READING, memory_limit)?;
         let lines: Vec<&str> = text.lines().collect();
         let mut cursor = Cursor {
             name: &name,

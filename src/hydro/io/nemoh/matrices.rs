@@ -4,8 +4,18 @@
 //! columns follow Nemoh.cal's degrees of freedom. Errors name `file:line` and the field.
 
 use crate::error::{Error, Result};
+use crate::files::Cost;
 use crate::hydro::io::written::first_cut;
 use std::path::Path;
+
+/// What reading a matrix file costs: up to 36 bytes of memory per byte of the file
+/// (measured on its costliest content: the 1 x 1 matrices of a one-DOF body, each number a
+/// line, a row and a matrix of the reader's), with a margin for the allocator's own
+/// overhead.
+pub const READING: Cost = Cost {
+    format: "NEMOH matrix file",
+    per_byte: 54.0,
+};
 
 /// Matrices at frequencies, as `CM.dat` and `CA.dat` hold them: a header line ending with
 /// the count ("Nb de frequency : 128"), then per frequency a line with the frequency and
@@ -92,10 +102,15 @@ impl<'a> Lines<'a> {
     }
 }
 
-/// Reads `CM.dat` or `CA.dat`: `size` x `size` matrices (the body's DOF count).
-pub fn read_frequency_matrices(path: &Path, size: usize) -> Result<FrequencyMatrices> {
+/// Reads `CM.dat` or `CA.dat` within `memory_limit` bytes: `size` x `size` matrices (the
+/// body's DOF count).
+pub fn read_frequency_matrices(
+    path: &Path,
+    size: usize,
+    memory_limit: f64,
+) -> Result<FrequencyMatrices> {
     let name = path.display().to_string();
-    let text = crate::files::read_text(path)?;
+    let text = crate::files::read_text(path, &READING, memory_limit)?;
     let file = Lines::new(name.clone(), &text);
     let mut lines = file.rows.iter().copied();
     let mut frequency_reference = None;
@@ -124,8 +139,11 @@ pub fn read_frequency_matrices(path: &Path, size: usize) -> Result<FrequencyMatr
                 ),
             )
         })?;
-    let mut frequencies = Vec::with_capacity(count);
-    let mut matrices = Vec::with_capacity(count);
+    // The header's count, but no more than the file's lines can hold (a header that
+    // announces a million frequencies in a short file reserves nothing for them).
+    let announced = count.min(file.rows.len() / (1 + size));
+    let mut frequencies = Vec::with_capacity(announced);
+    let mut matrices = Vec::with_capacity(announced);
     for k in 0..count {
         let (line, text) = lines.next().ok_or_else(|| Error::Parse {
             path: name.clone(),
@@ -173,10 +191,11 @@ pub fn read_frequency_matrices(path: &Path, size: usize) -> Result<FrequencyMatr
     })
 }
 
-/// Reads a 6 x 6 matrix of `Mechanics/` (six lines of six numbers).
-pub fn read_matrix6(path: &Path) -> Result<[[f64; 6]; 6]> {
+/// Reads a 6 x 6 matrix of `Mechanics/` (six lines of six numbers) within `memory_limit`
+/// bytes.
+pub fn read_matrix6(path: &Path, memory_limit: f64) -> Result<[[f64; 6]; 6]> {
     let name = path.display().to_string();
-    let text = crate::files::read_text(path)?;
+    let text = crate::files::read_text(path, &READING, memory_limit)?;
     let file = Lines::new(name.clone(), &text);
     let rows = &file.rows;
     if rows.len() != 6 {

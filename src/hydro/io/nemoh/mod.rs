@@ -32,8 +32,8 @@ pub struct NemohImport {
 }
 
 /// Imports the NEMOH v3 results of the project directory `dir` (the one with `Nemoh.cal`;
-/// its `results/` directory is accepted too).
-pub fn import(dir: &Path) -> Result<NemohImport> {
+/// its `results/` directory is accepted too), each file read within `memory_limit` bytes.
+pub fn import(dir: &Path, memory_limit: f64) -> Result<NemohImport> {
     let project = if dir.join("Nemoh.cal").is_file() {
         dir.to_path_buf()
     } else if dir.join("../Nemoh.cal").is_file() {
@@ -46,7 +46,7 @@ pub fn import(dir: &Path) -> Result<NemohImport> {
                 .into(),
         });
     };
-    let cal = NemohCal::read(&project.join("Nemoh.cal"))?;
+    let cal = NemohCal::read(&project.join("Nemoh.cal"), memory_limit)?;
     let mut files = vec![format!(
         "{}: rho = {} kg/m^3, g = {} m/s^2, depth {}; {} DOFs, {} generalised forces",
         cal.path,
@@ -83,7 +83,7 @@ pub fn import(dir: &Path) -> Result<NemohImport> {
     let mut provenance = Provenance::default();
     let path = project.join("results/CM.dat");
     if path.is_file() {
-        let cm = matrices::read_frequency_matrices(&path, cal.dofs.len())?;
+        let cm = matrices::read_frequency_matrices(&path, cal.dofs.len(), memory_limit)?;
         let (k, lowest) = lowest_frequency(&cm.frequencies, cal.first_order_unit);
         low_frequency_added_mass = Some(point.matrix_to_origin(&restrict(&cm.matrices[k])));
         provenance.low_frequency_added_mass = Some(format!(
@@ -114,7 +114,10 @@ pub fn import(dir: &Path) -> Result<NemohImport> {
     let mut mass_properties = None;
     let path = mechanics("Inertia.dat");
     if path.is_file() {
-        let m = point.matrix_to_origin(&restrict(&six(matrices::read_matrix6(&path)?)));
+        let m = point.matrix_to_origin(&restrict(&six(matrices::read_matrix6(
+            &path,
+            memory_limit,
+        )?)));
         let coupled = m[0][2] != 0.0 || m[1][2] != 0.0 || m[0][1] != 0.0;
         if coupled {
             files.push(format!(
@@ -144,7 +147,10 @@ pub fn import(dir: &Path) -> Result<NemohImport> {
     let mut stiffness = None;
     let path = mechanics("Kh.dat");
     if path.is_file() {
-        let c = point.matrix_to_origin(&restrict(&six(matrices::read_matrix6(&path)?)));
+        let c = point.matrix_to_origin(&restrict(&six(matrices::read_matrix6(
+            &path,
+            memory_limit,
+        )?)));
         files.push(format!(
             "{}: hydrostatic stiffness (surge, sway, yaw diagonal {:.4e}, {:.4e}, {:.4e}; the \
              mooring must add its own)",
@@ -169,7 +175,7 @@ pub fn import(dir: &Path) -> Result<NemohImport> {
         )),
         Some(settings) => {
             let path = qtf_file(&project.join("results/QTF"))?;
-            let mut qtf = qtf::read_difference_qtf(&path, &cal, settings)?;
+            let mut qtf = qtf::read_difference_qtf(&path, &cal, settings, memory_limit)?;
             if !point.is_on_vertical_axis() {
                 qtf.move_yaw_moment(force, point)?;
             }

@@ -21,24 +21,28 @@
 
 use super::cal::{NemohCal, QtfSettings};
 use crate::error::{Error, Result};
-use crate::hydro::io::wamit::{assemble_qtf, DifferenceQtf, NumericFile, QtfEntry};
+use crate::hydro::io::wamit::{assemble_qtf, DifferenceQtf, NumericFile, QtfEntry, READING};
 use rustfft::num_complex::Complex64;
 use std::path::Path;
 
-/// Reads the QTF of `path` with the settings of `cal`: T = rho g conj(Re + i Im) in the
-/// crate's convention, completed by Hermitian symmetry (and, for a sparse file, along
-/// difference-frequency lines) as WAMIT's files are.
+/// Reads the QTF of `path` with the settings of `cal` within `memory_limit` bytes: T = rho g
+/// conj(Re + i Im) in the crate's convention, completed by Hermitian symmetry (and, for a
+/// sparse file, along difference-frequency lines) as WAMIT's files are.
 pub fn read_difference_qtf(
     path: &Path,
     cal: &NemohCal,
     settings: &QtfSettings,
+    memory_limit: f64,
 ) -> Result<DifferenceQtf> {
     let file = NumericFile::read(
         path,
         &[9],
         "w1 w2 beta1 beta2 DOF |QTF|/(rho g) phase Re/(rho g) Im/(rho g)",
+        memory_limit,
     )?;
-    let text = crate::files::read_text(path)?;
+    // The text again, for the decimals each frequency is printed with (within the numeric
+    // file's cost, which covers its records, this text and its lines: measured).
+    let text = crate::files::read_text(path, &READING, memory_limit)?;
     let lines: Vec<&str> = text.lines().collect();
     let nodes = settings.omegas();
     let unit = settings.output_unit;
@@ -108,7 +112,7 @@ pub fn read_difference_qtf(
             value: Complex64::new(r.values[7], r.values[8]).conj() * scale,
         });
     }
-    assemble_qtf(file.path.clone(), entries)
+    assemble_qtf(file.path.clone(), entries, memory_limit)
 }
 
 fn file_error(file: &NumericFile, line: usize, message: String) -> Error {

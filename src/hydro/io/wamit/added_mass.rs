@@ -37,7 +37,7 @@ enum Slot {
 /// B = rho omega L^k Bbar, k = 3 (translation-translation), 4 (mixed), 5 (rotation-rotation).
 pub fn read_added_mass_damping(path: &Path, options: &WamitOptions) -> Result<AddedMassDamping> {
     options.validate()?;
-    let file = NumericFile::read(path, &[4, 5], "PER I J Abar [Bbar]")?;
+    let file = NumericFile::read(path, &[4, 5], "PER I J Abar [Bbar]", options.memory_limit)?;
     let mut finite = Vec::new();
     for r in &file.records {
         let period = r.values[0];

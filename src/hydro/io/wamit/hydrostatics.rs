@@ -18,7 +18,7 @@ pub struct Hydrostatics {
 /// 3 (mixed), 4 (rotation-rotation).
 pub fn read_hydrostatics(path: &Path, options: &WamitOptions) -> Result<Hydrostatics> {
     options.validate()?;
-    let file = NumericFile::read(path, &[3], "I J Cbar")?;
+    let file = NumericFile::read(path, &[3], "I J Cbar", options.memory_limit)?;
     let mut c = [[0.0; 6]; 6];
     let mut seen = [[None::<usize>; 6]; 6];
     for r in &file.records {

@@ -53,7 +53,12 @@ pub struct PairBlock {
 /// heading pair) in the file must cover all of the file's frequencies.
 pub fn read_mean_drift(path: &Path, options: &WamitOptions) -> Result<MeanDrift> {
     options.validate()?;
-    let file = NumericFile::read(path, &[8], "PER beta1 beta2 I |F| phase Re Im")?;
+    let file = NumericFile::read(
+        path,
+        &[8],
+        "PER beta1 beta2 I |F| phase Re Im",
+        options.memory_limit,
+    )?;
     struct Entry {
         line: usize,
         omega: f64,

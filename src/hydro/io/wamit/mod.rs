@@ -43,7 +43,9 @@ pub(in crate::hydro::io) use qtf::{assemble_qtf, QtfEntry};
 pub use qtf::{read_difference_qtf, DifferenceQtf, QtfBlock};
 
 use super::written::first_cut;
+use crate::error::MEMORY_LIMIT_KEY;
 use crate::error::{require_positive, Error, Result};
+use crate::files::budget::{check_memory_limit, Cost, DEFAULT_MEMORY_LIMIT};
 use crate::model::{FREQUENCY_MATCH_TOLERANCE, HEADING_MATCH_TOLERANCE};
 use std::f64::consts::PI;
 use std::path::Path;
@@ -60,7 +62,8 @@ pub const DEFAULT_GRAVITY: f64 = 9.80665;
 /// agrees within 1.3e-5, the NEMOH OC3 QTF within 1.3e-6).
 pub const POLAR_TOLERANCE: f64 = 1e-3;
 
-/// The scales that make WAMIT's nondimensional numbers dimensional.
+/// How WAMIT's files are read: the scales that make their nondimensional numbers
+/// dimensional, and the memory reading them may take.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct WamitOptions {
     /// WAMIT's length scale ULEN (L), m.
@@ -69,6 +72,9 @@ pub struct WamitOptions {
     pub rho: f64,
     /// Acceleration of gravity g, m/s^2.
     pub gravity: f64,
+    /// The memory a file's reading may take, bytes (its text and what is made of it: the
+    /// records of [`NumericFile`], a QTF's matrices).
+    pub memory_limit: f64,
 }
 
 impl Default for WamitOptions {
@@ -77,16 +83,18 @@ impl Default for WamitOptions {
             ulen: DEFAULT_ULEN,
             rho: DEFAULT_RHO,
             gravity: DEFAULT_GRAVITY,
+            memory_limit: DEFAULT_MEMORY_LIMIT,
         }
     }
 }
 
 impl WamitOptions {
-    /// Checks that every scale is finite and positive.
+    /// Checks that every scale and the memory limit are finite and positive.
     pub fn validate(&self) -> Result<()> {
         require_positive("wamit.ulen", self.ulen)?;
         require_positive("wamit.rho", self.rho)?;
-        require_positive("wamit.g", self.gravity)
+        require_positive("wamit.g", self.gravity)?;
+        check_memory_limit(MEMORY_LIMIT_KEY, self.memory_limit)
     }
 
     /// rho L^k for added mass (k = 3 + number of rotational indices).
@@ -142,6 +150,16 @@ fn grid_index(grid: &[f64], value: f64, same: fn(f64, f64) -> bool) -> Option<us
         .find(|&i| i < grid.len() && same(grid[i], value))
 }
 
+/// What reading a numeric file costs ([`NumericFile::read`], and what its readers make of
+/// the records but a QTF's matrices, which are budgeted where they are made): up to 22
+/// bytes of memory per byte of the file (measured on its costliest content: lines of nine
+/// one-digit numbers of a `.12d` file, each an entry; `.1` lines at distinct periods), with
+/// a margin for the allocator's own overhead.
+pub const READING: Cost = Cost {
+    format: "numeric file (WAMIT's layout)",
+    per_byte: 32.0,
+};
+
 /// One numeric line of a file: its 1-based line number and its numbers.
 pub(in crate::hydro::io) struct Record {
     pub line: usize,
@@ -155,11 +173,12 @@ pub(in crate::hydro::io) struct NumericFile {
 }
 
 impl NumericFile {
-    /// Reads `path`: skips blank lines and a first line that does not start with a number;
-    /// every other line must hold one of `counts` numbers, laid out as `layout` says.
-    pub fn read(path: &Path, counts: &[usize], layout: &str) -> Result<Self> {
+    /// Reads `path` within `memory_limit` bytes: skips blank lines and a first line that
+    /// does not start with a number; every other line must hold one of `counts` numbers,
+    /// laid out as `layout` says.
+    pub fn read(path: &Path, counts: &[usize], layout: &str, memory_limit: f64) -> Result<Self> {
         let name = path.display().to_string();
-        let text = crate::files::read_text(path)?;
+        let text = crate::files::read_text(path, &READING, memory_limit)?;
         let mut records = Vec::new();
         let mut seen_content = false;
         // How the first numeric line of each field count writes its numbers: a later number

@@ -5,11 +5,12 @@ use super::{
     WamitOptions,
 };
 use crate::error::{Error, Result};
+use crate::files::afford;
 use crate::hydro::bidirectional::BidirectionalTable;
 use crate::hydro::reference_point::ReferencePoint;
 use crate::hydro::{DriftRow, DriftTable};
 use rustfft::num_complex::Complex64;
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::path::Path;
 
 /// The QTF of one DOF for one heading pair on the full frequency grid.
@@ -38,6 +39,12 @@ pub struct DifferenceQtf {
     filled_by_interpolation: usize,
 }
 
+/// Memory per frequency pair of a block of a QTF being read, bytes: its value (complex, 16)
+/// and the line that gave it (16) while the blocks are assembled, the flag of the sparse
+/// fill; then the value and the database's copy of it (16 + 16) when it is imported. The
+/// measured peak of a file whose every line has its own frequencies is 33 n^2 per block.
+pub const BYTES_PER_PAIR: f64 = 40.0;
+
 /// One line of the file, scaled.
 struct Entry {
     line: usize,
@@ -65,7 +72,12 @@ struct Entry {
 /// error lists every such pair.
 pub fn read_difference_qtf(path: &Path, options: &WamitOptions) -> Result<DifferenceQtf> {
     options.validate()?;
-    let file = NumericFile::read(path, &[9], "PER1 PER2 beta1 beta2 I |F| phase Re Im")?;
+    let file = NumericFile::read(
+        path,
+        &[9],
+        "PER1 PER2 beta1 beta2 I |F| phase Re Im",
+        options.memory_limit,
+    )?;
     let mut entries = Vec::with_capacity(file.records.len());
     for r in &file.records {
         let omegas = (file.frequency(r, 0, "PER1")?, file.frequency(r, 1, "PER2")?);
@@ -80,7 +92,7 @@ pub fn read_difference_qtf(path: &Path, options: &WamitOptions) -> Result<Differ
             value: Complex64::new(v[7], v[8]) * options.force_scale(dof),
         });
     }
-    assemble_qtf(file.path, entries)
+    assemble_qtf(file.path, entries, options.memory_limit)
 }
 
 /// One value of a QTF file in the crate's units and convention: T(w_i, w_j; beta1, beta2)
@@ -98,9 +110,15 @@ pub(in crate::hydro::io) struct QtfEntry {
 /// The QTF of a file's entries (WAMIT's, NEMOH's): the frequency and heading grids (values
 /// within the match tolerances are one node), entries given twice refused naming both
 /// lines, the Hermitian fill, the sparse fill and the checks of [`read_difference_qtf`].
+///
+/// The matrices are budgeted before they are made: n x n frequency pairs for each block
+/// (DOF and heading pair, mirrors included), [`BYTES_PER_PAIR`] each, within `memory_limit`
+/// bytes (a file of a few thousand lines, each at its own frequencies, would otherwise ask
+/// for terabytes).
 pub(in crate::hydro::io) fn assemble_qtf(
     path: String,
     lines: Vec<QtfEntry>,
+    memory_limit: f64,
 ) -> Result<DifferenceQtf> {
     let omegas = unique_sorted(
         lines
@@ -134,6 +152,26 @@ pub(in crate::hydro::io) fn assemble_qtf(
         message,
     };
     let n = omegas.len();
+    let keys: HashSet<(usize, usize, usize)> = entries
+        .iter()
+        .flat_map(|e| {
+            let (b1, b2) = e.heading_index;
+            [(e.dof, b1, b2), (e.dof, b2, b1)]
+        })
+        .collect();
+    let pairs = (n * n) as f64;
+    afford(
+        &path,
+        keys.len() as f64 * pairs * BYTES_PER_PAIR,
+        || {
+            format!(
+                "a QTF of {n} x {n} frequency pairs in {} blocks (DOF and heading pair, \
+                 mirrors included), {BYTES_PER_PAIR} bytes per pair",
+                keys.len()
+            )
+        },
+        memory_limit,
+    )?;
     // Block key (dof, beta1 index, beta2 index) -> (values, line of each value; 0 = filled).
     type Slots = (Vec<Complex64>, Vec<Option<usize>>);
     let mut blocks: HashMap<(usize, usize, usize), Slots> = HashMap::new();
@@ -178,26 +216,32 @@ pub(in crate::hydro::io) fn assemble_qtf(
     let mut filled_by_interpolation = 0;
     for key in keys {
         let (mut values, lines) = blocks.remove(&key).expect("key listed");
-        let given: Vec<bool> = lines.iter().map(Option::is_some).collect();
-        let unfilled = fill_along_difference_lines(&omegas, &mut values, &given);
-        if !unfilled.is_empty() {
+        let mut given: Vec<bool> = lines.iter().map(Option::is_some).collect();
+        drop(lines);
+        let missing = given.iter().filter(|g| !**g).count();
+        let (unfilled, first) = fill_along_difference_lines(&omegas, &mut values, &mut given);
+        if unfilled > 0 {
             return Err(Error::Parse {
                 path: path.clone(),
                 line: None,
                 message: format!(
-                    "DOF {} at headings ({:.3}, {:.3}) deg: {} of {} frequency pairs missing \
-                     even with Hermitian symmetry and not between two given pairs of their \
-                     difference-frequency line (nothing is extrapolated): {}",
+                    "DOF {} at headings ({:.3}, {:.3}) deg: {unfilled} of {} frequency pairs \
+                     missing even with Hermitian symmetry and not between two given pairs of \
+                     their difference-frequency line (nothing is extrapolated): {}{}",
                     key.0,
                     headings[key.1].to_degrees(),
                     headings[key.2].to_degrees(),
-                    unfilled.len(),
                     n * n,
-                    list_pairs(&omegas, &unfilled)
+                    list_pairs(&omegas, &first),
+                    if unfilled > first.len() {
+                        format!(" and {} more", unfilled - first.len())
+                    } else {
+                        String::new()
+                    }
                 ),
             });
         }
-        filled_by_interpolation += given.iter().filter(|g| !**g).count();
+        filled_by_interpolation += missing;
         out.push(QtfBlock {
             dof: key.0,
             headings: (headings[key.1], headings[key.2]),
@@ -418,15 +462,16 @@ impl DifferenceQtf {
 /// Fills the values of an n x n block (row-major) that are not `given`, each by linear
 /// interpolation in the mean frequency (w_i + w_j)/2 between the nearest given values on
 /// either side along its diagonal (j - i constant); the mirror (j, i) of a cell has the same
-/// mean frequency and mirrored neighbours, so a Hermitian block stays Hermitian. Returns the
-/// (i, j) of the values with no given value on one side.
+/// mean frequency and mirrored neighbours, so a Hermitian block stays Hermitian. Marks each
+/// value it fills in `given`. Returns how many values have no given value on one side, and
+/// the (i, j) of the first [`LISTED`] of them in row order (a sparse file of n frequencies
+/// may leave n^2 of them: they are counted, not collected).
 fn fill_along_difference_lines(
     omegas: &[f64],
     values: &mut [Complex64],
-    given: &[bool],
-) -> Vec<(usize, usize)> {
+    given: &mut [bool],
+) -> (usize, Vec<(usize, usize)>) {
     let n = omegas.len();
-    let mut unfilled = Vec::new();
     for d in -(n as isize - 1)..=(n as isize - 1) {
         // The line's cells (i, i + d), by increasing i.
         let cells: Vec<(usize, usize)> = (0..n)
@@ -444,18 +489,27 @@ fn fill_along_difference_lines(
             }
             let after = known.partition_point(|&m| m < k);
             if after == 0 || after == known.len() {
-                unfilled.push((i, j));
                 continue;
             }
             let (a, b) = (cells[known[after - 1]], cells[known[after]]);
             let mean = |(i, j): (usize, usize)| omegas[i] + omegas[j];
             let s = (mean((i, j)) - mean(a)) / (mean(b) - mean(a));
             values[i * n + j] = values[a.0 * n + a.1] * (1.0 - s) + values[b.0 * n + b.1] * s;
+            // `known` was taken before this line's fills: they do not feed each other.
+            given[i * n + j] = true;
         }
     }
-    unfilled.sort_unstable();
-    unfilled
+    let unfilled = given.iter().filter(|g| !**g).count();
+    let first = (0..n * n)
+        .filter(|&k| !given[k])
+        .take(LISTED)
+        .map(|k| (k / n, k % n))
+        .collect();
+    (unfilled, first)
 }
+
+/// How many missing frequency pairs an error lists (the rest are counted).
+const LISTED: usize = 20;
 
 /// Pairs of frequencies, rad/s, grouped by their first frequency: "w1 = 0.25: w2 = 1.5, 1.6;
 /// w1 = 0.3: ...".
