@@ -5,8 +5,8 @@
 //! surge, sway and yaw, and writes the time series as CSV (17 significant digits, so every
 //! value reads back bit for bit).
 //!
-//! `slowdrift hydro wamit --root PATH/NAME --out FILE.json` imports WAMIT output into a
-//! native hydro database ([`cli::hydro`]).
+//! `slowdrift hydro <wamit|nemoh|columns> ... --out FILE.json` imports WAMIT or NEMOH output,
+//! or writes a configuration's drift table, as a native hydro database ([`cli::hydro`]).
 //!
 //! `slowdrift montecarlo ... --seeds N --out RESULTS.csv` runs many seeds of one case or a
 //! table of cases on all cores, resumably ([`cli::montecarlo`]).
@@ -17,7 +17,7 @@
 mod cli;
 mod plot;
 
-use clap::{Args, CommandFactory, Parser, Subcommand};
+use clap::{Args, Parser, Subcommand};
 use cli::args::Checked;
 use cli::Failure;
 use slowdrift::stats::{summarize, Summary};
@@ -33,11 +33,12 @@ use std::process::ExitCode;
     name = "slowdrift",
     version,
     max_term_width = 100,
+    subcommand_required = true,
     after_help = "Each command lists its options, units and defaults: slowdrift COMMAND --help."
 )]
 struct Cli {
     #[command(subcommand)]
-    command: Option<Command>,
+    command: Command,
 }
 
 #[derive(Subcommand)]
@@ -45,7 +46,7 @@ enum Command {
     /// One simulation (the embedded default platform without --config): prints the summary
     /// of surge, sway and yaw, optionally writes the time series as CSV
     Simulate(SimulateArgs),
-    /// Hydro databases: imports WAMIT output, or writes a configuration's drift table
+    /// Hydro databases: imports WAMIT or NEMOH output, or writes a configuration's drift table
     Hydro(cli::hydro::HydroArgs),
     /// Many seeds of one case or of a table of cases on all cores, resumably
     Montecarlo(cli::montecarlo::MontecarloArgs),
@@ -91,7 +92,8 @@ fn transient(flag: &str, text: &str) -> Result<f64, String> {
 fn main() -> ExitCode {
     // Monte Carlo campaigns build and drop tens of MB of records per run.
     slowdrift::allocator::retain_freed_memory();
-    // Usage errors: clap's message on stderr, exit status 2; --help and --version: exit 0.
+    // Usage errors (no command among them): clap's message on stderr, exit status 2; --help
+    // and --version: exit 0.
     let cli = Cli::parse();
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
@@ -104,14 +106,10 @@ fn main() -> ExitCode {
 
 fn run(cli: Cli) -> Result<(), Failure> {
     match cli.command {
-        Some(Command::Simulate(args)) => Ok(simulate(args)?),
-        Some(Command::Hydro(args)) => Ok(cli::hydro::run(args)?),
-        Some(Command::Montecarlo(args)) => cli::montecarlo::run(args),
-        Some(Command::Study(args)) => cli::study::run(args),
-        // No command: the help, as `slowdrift --help`.
-        None => Ok(Cli::command()
-            .print_help()
-            .map_err(|e| format!("writing the help: {e}"))?),
+        Command::Simulate(args) => Ok(simulate(args)?),
+        Command::Hydro(args) => Ok(cli::hydro::run(args)?),
+        Command::Montecarlo(args) => cli::montecarlo::run(args),
+        Command::Study(args) => cli::study::run(args),
     }
 }
 

@@ -178,6 +178,19 @@ fn bad_arguments_fail_with_the_usage() {
         ],
     );
     refused(&["frobnicate"], &["unrecognized subcommand 'frobnicate'"]);
+    // No command is a usage error too: the usage and the commands on stderr, status 2
+    // (as `slowdrift hydro` and `slowdrift study` without theirs).
+    let bare = slowdrift(&[]);
+    let stderr = String::from_utf8_lossy(&bare.stderr);
+    assert_eq!(bare.status.code(), Some(2), "{stderr}");
+    assert!(
+        bare.stdout.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&bare.stdout)
+    );
+    for text in ["Usage: slowdrift <COMMAND>", "simulate", "montecarlo"] {
+        assert!(stderr.contains(text), "no {text:?} in {stderr}");
+    }
     refused(
         &["simulate", "--transient", "-5"],
         &["--transient -5: must be a non-negative number of seconds"],
@@ -230,8 +243,10 @@ fn help_lists_the_options_with_units_and_defaults() {
         "slowdrift COMMAND --help",
     ];
     assert_lists(&["--help"], &commands);
-    // Without a command: the same help, and success (as the tool always did).
-    assert_lists(&[], &commands);
+    assert_lists(
+        &["hydro", "--help"],
+        &["imports WAMIT or NEMOH output", "wamit", "nemoh", "columns"],
+    );
     assert_lists(
         &["simulate", "--help"],
         &[
