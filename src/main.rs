@@ -114,6 +114,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
 }
 
 fn simulate(args: SimulateArgs) -> Result<(), String> {
+    if let Some(path) = &args.out {
+        cli::out::file(path)?;
+    }
     match &args.config {
         Some(path) => println!("configuration: {}", path.display()),
         None => println!("configuration: the embedded default platform"),

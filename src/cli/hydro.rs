@@ -120,6 +120,7 @@ fn columns(args: ColumnsArgs) -> Result<(), String> {
         out,
         bidirectional,
     } = args;
+    super::out::file(&out)?;
     let (config, source) = match &config_path {
         Some(path) => (
             problem::load(path).map_err(|e| e.to_string())?,
@@ -178,6 +179,7 @@ fn columns(args: ColumnsArgs) -> Result<(), String> {
 fn wamit(args: WamitArgs) -> Result<(), String> {
     let root = args.root;
     let out = args.out;
+    super::out::file(&out)?;
     let options = WamitOptions {
         ulen: args.ulen,
         rho: args.rho,
@@ -198,6 +200,7 @@ fn wamit(args: WamitArgs) -> Result<(), String> {
 }
 
 fn nemoh(args: NemohArgs) -> Result<(), String> {
+    super::out::file(&args.out)?;
     let import = nemoh::import(&args.dir).map_err(|e| e.to_string())?;
     println!("NEMOH results {}:", args.dir.display());
     for line in &import.files {

@@ -15,6 +15,7 @@
 
 use super::args::{all_cores, gigabytes, load_problem, seconds, whole};
 use super::interrupt::{this_command, Interrupts, Signal};
+use super::out;
 use super::Failure;
 use clap::Args;
 use slowdrift::fmi2::campaign;
@@ -142,6 +143,9 @@ fn command(args: MontecarloArgs) -> Result<Command, String> {
     first_seed
         .checked_add(seeds - 1)
         .ok_or_else(|| format!("--first-seed {first_seed} + --seeds {seeds} overflows"))?;
+    // Before any work: the summary, and the runs file (and its lock) beside it.
+    out::file(&out)?;
+    out::file_beside(&out, &runs_path(&out))?;
     Ok(Command::Run(Options {
         config,
         cases,

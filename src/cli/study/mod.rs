@@ -189,7 +189,7 @@ pub fn run(args: StudyArgs) -> Result<(), Failure> {
         Study::Transient(a) => (&a.config, &a.out),
         Study::Sensitivity(a) => (&a.config, &a.out),
     };
-    std::fs::create_dir_all(out).map_err(|e| format!("{}: {e}", out.display()))?;
+    super::out::directory(out)?;
     let base = match config {
         Some(path) => problem::load(path).map_err(|e| e.to_string())?,
         None => {
