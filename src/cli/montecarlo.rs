@@ -48,7 +48,7 @@ pub struct MontecarloArgs {
     /// Runs only the case of this name
     #[arg(long = "case", value_name = "NAME", allow_hyphen_values = true)]
     only: Option<String>,
-    /// Seeds per case, at least 1: seeds S .. S+N-1 (required unless --print-cases)
+    /// Seeds per case, at least 1: seeds S to S+N-1 (required unless --print-cases)
     #[arg(long, value_name = "N", allow_hyphen_values = true, value_parser = whole(1u64),
           required_unless_present = "print_cases")]
     seeds: Option<u64>,
@@ -272,7 +272,7 @@ fn run_and_summarise(options: Options) -> Result<(), Failure> {
     let wanted: Vec<Job> = (0..cases.len())
         .flat_map(|case| seeds.clone().map(move |seed| Job { case, seed }))
         .collect();
-    println!("seeds {}..={} of every case", seeds.start, seeds.end - 1);
+    println!("seeds {} to {} of every case", seeds.start, seeds.end - 1);
     let Campaign { runs, interrupted } =
         run_campaign(&cases, &wanted, options.threads, &runs_path)?;
     let total = wanted.len();
@@ -481,10 +481,13 @@ impl CaseSummary {
         self.values[0][0].len()
     }
 
+    /// `complete` (every seed requested done), `partial` (some), `failed` (none done, some
+    /// failed) or `not started` (none run: a campaign stopped before it reached the case).
     fn status(&self, requested: u64) -> &'static str {
-        match self.done() {
-            0 => "failed",
-            n if n as u64 == requested => "complete",
+        match (self.done(), self.failed) {
+            (0, 0) => "not started",
+            (0, _) => "failed",
+            (n, _) if n as u64 == requested => "complete",
             _ => "partial",
         }
     }
@@ -566,6 +569,8 @@ fn print_summary(summaries: &[CaseSummary], requested: u64) {
         }
         if let Some(error) = &s.first_error {
             println!("{:<16} {} run(s) failed; first: {error}", s.name, s.failed);
+        } else if s.status(requested) == "not started" {
+            println!("{:<16} not started", s.name);
         }
     }
 }
