@@ -2,8 +2,12 @@
 //! extremes) after a start-up transient, and Welch's estimate of the one-sided spectral
 //! density per rad/s.
 //!
-//! Conventions: a record `x[m]` is sampled at the times `t_m = m * dt` (s), `m = 0, 1, ...`;
-//! angular frequencies are in rad/s; "rms" is the root mean square *about the mean*
+//! Conventions: a record `x[m]` is sampled at the times `t_m = m * dt` (s), `m = 0, 1, ...`,
+//! counted from the start of the run, its first sample the state at the start; a transient
+//! of T s drops the samples at t < T and keeps those at t >= T, so a run of D s keeps
+//! (D - T) / dt + 1 samples (the default's 3 hours at 1 s after 2000 s: t = 2000, 2001, ...,
+//! 10800, 8801 samples: `slowdrift simulate`, a campaign's runs, fmu-pack's self-check and
+//! slowdrift_dask all count so); angular frequencies are in rad/s; "rms" is the root mean square *about the mean*
 //! (the standard deviation), as in the slow-drift literature (E&S 1996 report the rms of
 //! the slow-drift motion's fluctuation).
 
