@@ -128,27 +128,28 @@ fn simulate(args: SimulateArgs) -> Result<(), String> {
         println!("{line}");
     }
     let transient = args.transient.unwrap_or_else(|| config.default_transient());
+    cli::args::transient_leaves_samples(transient, config.run.duration, "the run")?;
     if let Some(trim) = config.band_trim() {
         println!(
             "wave band: the default {:.4} .. {:.4} rad/s limited to the hydrodynamic data's \
-             {:.4} .. {:.4} rad/s ({:.2e} of its variance left out; sea.band sets it)",
+             {:.4} .. {:.4} rad/s ({:.2e} of its variance left out; [sea] band sets it)",
             trim.default.0, trim.default.1, trim.band.0, trim.band.1, trim.variance_left_out
         );
     }
     let directions = config.sea.directions().len();
     if directions > 1 {
         println!(
-            "short-crested: {directions} directions, interaction between them: {:?}",
-            config.interaction()
+            "short-crested: {directions} directions, interaction between them: {}",
+            config.interaction().word()
         );
     }
     let started = std::time::Instant::now();
     let mut sim = Simulation::new(config).map_err(|e| e.to_string())?;
     for r in sim.qtf_ranks() {
         println!(
-            "full QTF, {:?} {}: rank {} of {} (discarded {:.1e} of the eigenvalues' absolute \
+            "full QTF, {} {}: rank {} of {} (discarded {:.1e} of the eigenvalues' absolute \
              sum)",
-            r.dof,
+            r.dof.name(),
             if r.directions > 1 {
                 format!("across {} directions with their cross terms", r.directions)
             } else {
@@ -174,16 +175,23 @@ fn simulate(args: SimulateArgs) -> Result<(), String> {
     Ok(())
 }
 
+/// The outputs at every step of the run; an error of the run names the settings it blames
+/// where the user wrote them ([`slowdrift::Problem::explain`]).
 fn run_to_end(sim: &mut Simulation) -> Result<Vec<Outputs>, String> {
     let mut outputs = Vec::new();
     let steps = sim
         .problem()
         .reserve_recorded(&mut outputs)
         .map_err(|e| e.to_string())?;
-    outputs.push(sim.outputs().map_err(|e| e.to_string())?);
-    for _ in 0..steps {
-        sim.step([0.0; 3]).map_err(|e| e.to_string())?;
-        outputs.push(sim.outputs().map_err(|e| e.to_string())?);
+    let mut record = |sim: &mut Simulation, step: bool| {
+        if step {
+            sim.step([0.0; 3])?;
+        }
+        outputs.push(sim.outputs()?);
+        Ok(())
+    };
+    for k in 0..=steps {
+        record(sim, k > 0).map_err(|e| sim.problem().explain(&e))?;
     }
     Ok(outputs)
 }

@@ -8,6 +8,7 @@
 pub mod bounds;
 
 use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};
+use crate::error::numbers::{written, written_list};
 use crate::error::{Error, Result};
 use crate::forces::{ForceRecords, Segments};
 use crate::problem::Problem;
@@ -434,7 +435,13 @@ impl Simulation {
         if values.clone().any(|v| !v.is_finite()) || !snapshot.time().is_finite() {
             return Err(Error::invalid(
                 "snapshot",
-                format!("{snapshot:?}"),
+                format!(
+                    "time {}, position {}, velocity {}, external force {}",
+                    written(snapshot.time()),
+                    written_list(&snapshot.position),
+                    written_list(&snapshot.velocity),
+                    written_list(&snapshot.external_force)
+                ),
                 "holds non-finite values",
             ));
         }
@@ -444,7 +451,7 @@ impl Simulation {
                 snapshot.step,
                 format!(
                     "differs from this simulation's run.time_step = {}",
-                    self.problem.run.time_step
+                    written(self.problem.run.time_step)
                 ),
             ));
         }

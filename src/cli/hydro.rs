@@ -131,6 +131,8 @@ fn columns(args: ColumnsArgs) -> Result<(), String> {
             DEFAULT_DRIFT_LABEL.to_string(),
         ),
     };
+    // The columns the table's damping (and a column solver) takes, within their ranges.
+    config.check_columns().map_err(|e| e.to_string())?;
     // The damping a run of the configuration uses, written with the table (Aranha's on its
     // nodes when it asks for them; none when drift damping is off).
     let table = &config

@@ -13,7 +13,7 @@
 //! ([`super::interrupt`]): the summary of the runs done is written and the command to
 //! resume printed.
 
-use super::args::{all_cores, gigabytes, load_problem, seconds, whole};
+use super::args::{all_cores, gigabytes, load_problem, seconds, transient_leaves_samples, whole};
 use super::interrupt::{this_command, Interrupts, Signal};
 use super::out;
 use super::Failure;
@@ -267,6 +267,12 @@ fn run_and_summarise(options: Options) -> Result<(), Failure> {
         .map(|row| row.and_then(|row| row.case(&base, options.transient, &source)))
         .collect::<Result<Vec<Case>, _>>()
         .map_err(|e| e.to_string())?;
+    if let Some(transient) = options.transient {
+        for case in &cases {
+            let run = format!("the run of case '{}'", case.name);
+            transient_leaves_samples(transient, case.problem.run.duration, &run)?;
+        }
+    }
     let runs_path = runs_path(&options.out);
     let seeds = options.first_seed..options.first_seed + options.seeds;
     let wanted: Vec<Job> = (0..cases.len())

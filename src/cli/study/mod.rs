@@ -197,6 +197,13 @@ pub fn run(args: StudyArgs) -> Result<(), Failure> {
             default_problem().map_err(|e| e.to_string())?
         }
     };
+    // Checked before anything runs: the configuration a study simulates whole, the columns
+    // (and environment) of the one whose drift it compares.
+    match &args.study {
+        Study::Drift(_) => base.check_columns(),
+        _ => base.check(),
+    }
+    .map_err(|e| e.to_string())?;
     match &args.study {
         Study::Drift(a) => Ok(drift::drift(&base, a)?),
         Study::Waves(a) => Ok(waves::waves(&base, a)?),

@@ -6,6 +6,7 @@
 //! numbers of its line (NEMOH's comments follow them). Errors name `Nemoh.cal:LINE` and the
 //! field.
 
+use crate::error::numbers::written;
 use crate::error::{Error, Result};
 use std::path::Path;
 
@@ -131,15 +132,19 @@ impl NemohCal {
         let depth = cursor.numbers(1, "DEPTH")?[0];
         for (value, field) in [(rho, "RHO"), (gravity, "G")] {
             if value.is_nan() || value <= 0.0 {
-                return Err(
-                    cursor.error_at(cursor.at, format!("{field} = {value} must be positive"))
-                );
+                return Err(cursor.error_at(
+                    cursor.at,
+                    format!("{field} = {} must be positive", written(value)),
+                ));
             }
         }
         if depth < 0.0 {
             return Err(cursor.error_at(
                 cursor.at,
-                format!("DEPTH = {depth} must be 0 (infinite) or positive"),
+                format!(
+                    "DEPTH = {} must be 0 (infinite) or positive",
+                    written(depth)
+                ),
             ));
         }
         cursor.section("floating bodies")?;
@@ -317,7 +322,10 @@ impl Cursor<'_> {
         } else {
             Err(self.error_at(
                 self.at,
-                format!("{field} = {value}: must be a whole number from 1 to 1e6"),
+                format!(
+                    "{field} = {}: must be a whole number from 1 to 1e6",
+                    written(value)
+                ),
             ))
         }
     }
@@ -329,7 +337,10 @@ impl Cursor<'_> {
             3.0 => Ok(FrequencyUnit::Second),
             v => Err(self.error_at(
                 self.at,
-                format!("{field} = {v}: must be 1 (rad/s), 2 (Hz) or 3 (s)"),
+                format!(
+                    "{field} = {}: must be 1 (rad/s), 2 (Hz) or 3 (s)",
+                    written(v)
+                ),
             )),
         }
     }
