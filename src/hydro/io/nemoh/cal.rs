@@ -147,7 +147,7 @@ impl NemohCal {
                 ),
             ));
         }
-        cursor.section("floating bodies")?;
+        cursor.section("Description of floating bodies")?;
         let bodies = cursor.numbers(1, "Number of bodies")?[0];
         if bodies != 1.0 {
             return Err(cursor.error_at(
@@ -159,7 +159,7 @@ impl NemohCal {
         cursor.skip(2); // the mesh file's name; its points and panels
         let dofs = cursor.generalised("Number of degrees of freedom")?;
         let forces = cursor.generalised("Number of resulting generalised forces")?;
-        cursor.section("Load cases")?;
+        cursor.section("Load cases to be solved")?;
         let (first_order_unit, first_order, first_order_line) = {
             let values = cursor.leading_numbers("frequencies (type, count, min, max)")?;
             let line = cursor.at;
@@ -266,7 +266,8 @@ impl Cursor<'_> {
         }
     }
 
-    /// Moves past the section header containing `title`; an error when there is none.
+    /// Moves past the section header containing `title` (as NEMOH writes it); an error
+    /// when there is none.
     fn section(&mut self, title: &str) -> Result<()> {
         self.find_section(title).ok_or_else(|| Error::Parse {
             path: self.name.to_string(),
