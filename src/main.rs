@@ -20,6 +20,7 @@ mod plot;
 use clap::{Args, Parser, Subcommand};
 use cli::args::Checked;
 use cli::Failure;
+use slowdrift::error::numbers::{readable, written};
 use slowdrift::stats::{summarize, Summary};
 use slowdrift::{Outputs, Simulation};
 use std::io::{BufWriter, Write};
@@ -210,8 +211,10 @@ fn print_summary(sim: &Simulation, outputs: &[Outputs], transient: f64) -> Resul
         })
         .collect::<Result<Vec<Summary>, String>>()?;
     println!(
-        "statistics after a transient of {transient:.0} s ({} samples at {dt} s):",
-        summaries[0].samples
+        "statistics after a transient of {} s ({} samples at {} s):",
+        readable(transient),
+        summaries[0].samples,
+        written(dt)
     );
     println!(
         "{:<10} {:>14} {:>14} {:>14} {:>14}",

@@ -16,6 +16,7 @@
 
 use super::args::Checked;
 use clap::{Args, Subcommand};
+use slowdrift::error::numbers::written;
 use slowdrift::hydro::bidirectional::{BidirectionalSource, BidirectionalTable};
 use slowdrift::hydro::io::database::HydroDatabase;
 use slowdrift::hydro::io::nemoh;
@@ -191,9 +192,9 @@ fn wamit(args: WamitArgs) -> Result<(), String> {
     println!(
         "WAMIT files {}.* (ULEN = {} m, rho = {} kg/m^3, g = {} m/s^2):",
         root.display(),
-        options.ulen,
-        options.rho,
-        options.gravity
+        written(options.ulen),
+        written(options.rho),
+        written(options.gravity)
     );
     for line in &import.files {
         println!("  {line}");

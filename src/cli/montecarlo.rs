@@ -18,6 +18,7 @@ use super::interrupt::{this_command, Interrupts, Signal};
 use super::out;
 use super::Failure;
 use clap::Args;
+use slowdrift::error::numbers::{readable, written};
 use slowdrift::fmi2::campaign;
 use slowdrift::montecarlo::cases::{open_case_table, CaseRow};
 use slowdrift::montecarlo::runs_file::{self, RunRow, RunsFile};
@@ -377,8 +378,11 @@ pub fn run_campaign(
     );
     for case in cases {
         println!(
-            "  {}: {} s at {} s, transient {:.1} s",
-            case.name, case.problem.run.duration, case.problem.run.time_step, case.transient
+            "  {}: {} s at {} s, transient {} s",
+            case.name,
+            written(case.problem.run.duration),
+            written(case.problem.run.time_step),
+            readable(case.transient)
         );
     }
 
