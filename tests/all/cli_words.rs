@@ -325,3 +325,39 @@ fn a_diverging_database_is_named_with_its_file() {
     assert!(runs.contains(&named.replace('"', "\"\"")), "{runs}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `hydro columns` and `study drift` solve or use a configuration's columns without running
+/// it: a column 1e308 m deep is refused at its line, not solved (before, both wrote their
+/// files). The studies that run the configuration check all of it first.
+#[test]
+fn the_commands_that_use_the_columns_check_them_first() {
+    let dir = scratch("columns");
+    let example = std::fs::read_to_string(EXAMPLE).unwrap();
+    let (path, line) = with_line(&dir, "c.toml", &example, "draft", "draft = 1e308");
+    let expected = format!(
+        "slowdrift: {path}:{line}: invalid [platform] columns[0].draft = 1e308: must be within"
+    );
+    let out = dir.join("out");
+    let out = out.to_str().unwrap();
+    for args in [
+        vec!["hydro", "columns", "--config", &path, "--out", "db.json"],
+        vec!["study", "drift", "--config", &path, "--out", out],
+        vec!["study", "waves", "--config", &path, "--out", out],
+    ] {
+        let run = Command::new(env!("CARGO_BIN_EXE_slowdrift"))
+            .args(&args)
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&run.stderr);
+        assert_eq!(run.status.code(), Some(1), "{args:?}: {stderr}");
+        assert!(stderr.starts_with(&expected), "{args:?}: {stderr}");
+    }
+    assert!(!dir.join("db.json").exists());
+    assert_eq!(
+        std::fs::read_dir(out).unwrap().count(),
+        0,
+        "nothing written"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
