@@ -1,6 +1,10 @@
 //! Typed errors of the core. Every variant names the offending field or input and its
-//! value, so that a user (or the FMU's log) can tell exactly what to fix.
+//! value, so that a user (or the FMU's log) can tell exactly what to fix; numbers are
+//! written by one rule ([`numbers`]).
 
+pub mod numbers;
+
+use numbers::{readable, Shown};
 use std::fmt;
 
 /// Everything that can go wrong in SlowDrift's core and its file readers.
@@ -68,14 +72,10 @@ pub enum Error {
 
 impl Error {
     /// Shorthand for [`Error::InvalidValue`].
-    pub fn invalid(
-        field: impl Into<String>,
-        value: impl fmt::Display,
-        reason: impl Into<String>,
-    ) -> Self {
+    pub fn invalid(field: impl Into<String>, value: impl Shown, reason: impl Into<String>) -> Self {
         Error::InvalidValue {
             field: field.into(),
-            value: value.to_string(),
+            value: value.shown(),
             reason: reason.into(),
             at: None,
         }
@@ -118,7 +118,7 @@ impl Error {
                     bytes_text(*needs),
                     bytes_text(*limit),
                     name(MEMORY_LIMIT_KEY),
-                    limit / BYTES_PER_GB
+                    readable(limit / BYTES_PER_GB)
                 )
             }
             Error::OutOfMemory { needs, limit } => write!(
@@ -127,7 +127,7 @@ impl Error {
                  limit (ulimit, a container) or the machine's is lower than {} = {} GB",
                 bytes_text(*needs),
                 name(MEMORY_LIMIT_KEY),
-                limit / BYTES_PER_GB
+                readable(limit / BYTES_PER_GB)
             ),
             Error::FileOverBudget(excess) => {
                 let FileOverBudget {
@@ -176,29 +176,36 @@ impl Error {
             }
             Error::BeyondRecord { time, record_end } => write!(
                 f,
-                "time {time} s is past the end of the records ({record_end} s)"
+                "time {} s is past the end of the records ({} s)",
+                readable(*time),
+                readable(*record_end)
             ),
             Error::BeforeStart { time, start } => write!(
                 f,
-                "time {time} s is before the start of the run ({start} s)"
+                "time {} s is before the start of the run ({} s)",
+                readable(*time),
+                readable(*start)
             ),
             Error::Unphysical { time, what, cause } => {
-                write!(f, "{what} at t = {time} s: ")?;
+                write!(f, "{what} at t = {} s: ", readable(*time))?;
                 cause.describe(f, name)
             }
             Error::TimeUnresolved { time, step } => write!(
                 f,
-                "the run reached t = {time:e} s, where a double resolves time only to {:e} s: \
-                 too coarse for steps of {step} s ({}); the run cannot go on",
-                time.abs() * f64::EPSILON,
+                "the run reached t = {} s, where a double resolves time only to {} s: too \
+                 coarse for steps of {} s ({}); the run cannot go on",
+                readable(*time),
+                readable(time.abs() * f64::EPSILON),
+                readable(*step),
                 name("run.time_step")
             ),
             Error::YawOutsideRecords { time, yaw, covered } => write!(
                 f,
-                "yaw {yaw:.6} rad ({:.4} deg) at t = {time} s is outside the yaw-following \
+                "yaw {yaw:.6} rad ({:.4} deg) at t = {} s is outside the yaw-following \
                  records' range [{:.6}, {:.6}] rad ([{:.4}, {:.4}] deg; never extrapolated); \
                  widen {}",
                 yaw.to_degrees(),
+                readable(*time),
                 covered.0,
                 covered.1,
                 covered.0.to_degrees(),
@@ -303,8 +310,9 @@ impl Cause {
                 let names: Vec<String> = settings.iter().map(|key| name(key)).collect();
                 write!(
                     f,
-                    "the {force} there is {value:e} {unit} in {axis}, enough alone to leave \
-                     the bounds within a step; it grows with {}",
+                    "the {force} there is {} {unit} in {axis}, enough alone to leave the \
+                     bounds within a step; it grows with {}",
+                    readable(*value),
                     names.join(", ")
                 )
             }
@@ -312,8 +320,9 @@ impl Cause {
                 let (axis, unit) = DOF[*dof];
                 write!(
                     f,
-                    "the external force input there is {value:e} {unit} in {axis}, enough \
-                     alone to leave the bounds within a step"
+                    "the external force input there is {} {unit} in {axis}, enough alone to \
+                     leave the bounds within a step",
+                    readable(*value)
                 )
             }
             Cause::Step => write!(f, "reduce {}", name("run.time_step")),

@@ -5,8 +5,8 @@
 //! surge, sway and yaw, and writes the time series as CSV (17 significant digits, so every
 //! value reads back bit for bit).
 //!
-//! `slowdrift hydro wamit --root PATH/NAME --out FILE.json` imports WAMIT output into a
-//! native hydro database ([`cli::hydro`]).
+//! `slowdrift hydro <wamit|nemoh|columns> ... --out FILE.json` imports WAMIT or NEMOH output,
+//! or writes a configuration's drift table, as a native hydro database ([`cli::hydro`]).
 //!
 //! `slowdrift montecarlo ... --seeds N --out RESULTS.csv` runs many seeds of one case or a
 //! table of cases on all cores, resumably ([`cli::montecarlo`]).
@@ -17,9 +17,10 @@
 mod cli;
 mod plot;
 
-use clap::{Args, CommandFactory, Parser, Subcommand};
+use clap::{Args, Parser, Subcommand};
 use cli::args::Checked;
 use cli::Failure;
+use slowdrift::error::numbers::{readable, written};
 use slowdrift::stats::{summarize, Summary};
 use slowdrift::{Outputs, Simulation};
 use std::io::{BufWriter, Write};
@@ -33,11 +34,12 @@ use std::process::ExitCode;
     name = "slowdrift",
     version,
     max_term_width = 100,
+    subcommand_required = true,
     after_help = "Each command lists its options, units and defaults: slowdrift COMMAND --help."
 )]
 struct Cli {
     #[command(subcommand)]
-    command: Option<Command>,
+    command: Command,
 }
 
 #[derive(Subcommand)]
@@ -45,7 +47,7 @@ enum Command {
     /// One simulation (the embedded default platform without --config): prints the summary
     /// of surge, sway and yaw, optionally writes the time series as CSV
     Simulate(SimulateArgs),
-    /// Hydro databases: imports WAMIT output, or writes a configuration's drift table
+    /// Hydro databases: imports WAMIT or NEMOH output, or writes a configuration's drift table
     Hydro(cli::hydro::HydroArgs),
     /// Many seeds of one case or of a table of cases on all cores, resumably
     Montecarlo(cli::montecarlo::MontecarloArgs),
@@ -91,7 +93,8 @@ fn transient(flag: &str, text: &str) -> Result<f64, String> {
 fn main() -> ExitCode {
     // Monte Carlo campaigns build and drop tens of MB of records per run.
     slowdrift::allocator::retain_freed_memory();
-    // Usage errors: clap's message on stderr, exit status 2; --help and --version: exit 0.
+    // Usage errors (no command among them): clap's message on stderr, exit status 2; --help
+    // and --version: exit 0.
     let cli = Cli::parse();
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
@@ -104,18 +107,17 @@ fn main() -> ExitCode {
 
 fn run(cli: Cli) -> Result<(), Failure> {
     match cli.command {
-        Some(Command::Simulate(args)) => Ok(simulate(args)?),
-        Some(Command::Hydro(args)) => Ok(cli::hydro::run(args)?),
-        Some(Command::Montecarlo(args)) => cli::montecarlo::run(args),
-        Some(Command::Study(args)) => cli::study::run(args),
-        // No command: the help, as `slowdrift --help`.
-        None => Ok(Cli::command()
-            .print_help()
-            .map_err(|e| format!("writing the help: {e}"))?),
+        Command::Simulate(args) => Ok(simulate(args)?),
+        Command::Hydro(args) => Ok(cli::hydro::run(args)?),
+        Command::Montecarlo(args) => cli::montecarlo::run(args),
+        Command::Study(args) => cli::study::run(args),
     }
 }
 
 fn simulate(args: SimulateArgs) -> Result<(), String> {
+    if let Some(path) = &args.out {
+        cli::out::file(path)?;
+    }
     match &args.config {
         Some(path) => println!("configuration: {}", path.display()),
         None => println!("configuration: the embedded default platform"),
@@ -127,27 +129,28 @@ fn simulate(args: SimulateArgs) -> Result<(), String> {
         println!("{line}");
     }
     let transient = args.transient.unwrap_or_else(|| config.default_transient());
+    cli::args::transient_leaves_samples(transient, config.run.duration, "the run")?;
     if let Some(trim) = config.band_trim() {
         println!(
             "wave band: the default {:.4} .. {:.4} rad/s limited to the hydrodynamic data's \
-             {:.4} .. {:.4} rad/s ({:.2e} of its variance left out; sea.band sets it)",
+             {:.4} .. {:.4} rad/s ({:.2e} of its variance left out; [sea] band sets it)",
             trim.default.0, trim.default.1, trim.band.0, trim.band.1, trim.variance_left_out
         );
     }
     let directions = config.sea.directions().len();
     if directions > 1 {
         println!(
-            "short-crested: {directions} directions, interaction between them: {:?}",
-            config.interaction()
+            "short-crested: {directions} directions, interaction between them: {}",
+            config.interaction().word()
         );
     }
     let started = std::time::Instant::now();
     let mut sim = Simulation::new(config).map_err(|e| e.to_string())?;
     for r in sim.qtf_ranks() {
         println!(
-            "full QTF, {:?} {}: rank {} of {} (discarded {:.1e} of the eigenvalues' absolute \
+            "full QTF, {} {}: rank {} of {} (discarded {:.1e} of the eigenvalues' absolute \
              sum)",
-            r.dof,
+            r.dof.name(),
             if r.directions > 1 {
                 format!("across {} directions with their cross terms", r.directions)
             } else {
@@ -173,16 +176,23 @@ fn simulate(args: SimulateArgs) -> Result<(), String> {
     Ok(())
 }
 
+/// The outputs at every step of the run; an error of the run names the settings it blames
+/// where the user wrote them ([`slowdrift::Problem::explain`]).
 fn run_to_end(sim: &mut Simulation) -> Result<Vec<Outputs>, String> {
     let mut outputs = Vec::new();
     let steps = sim
         .problem()
         .reserve_recorded(&mut outputs)
         .map_err(|e| e.to_string())?;
-    outputs.push(sim.outputs().map_err(|e| e.to_string())?);
-    for _ in 0..steps {
-        sim.step([0.0; 3]).map_err(|e| e.to_string())?;
-        outputs.push(sim.outputs().map_err(|e| e.to_string())?);
+    let mut record = |sim: &mut Simulation, step: bool| {
+        if step {
+            sim.step([0.0; 3])?;
+        }
+        outputs.push(sim.outputs()?);
+        Ok(())
+    };
+    for k in 0..=steps {
+        record(sim, k > 0).map_err(|e| sim.problem().explain(&e))?;
     }
     Ok(outputs)
 }
@@ -201,8 +211,10 @@ fn print_summary(sim: &Simulation, outputs: &[Outputs], transient: f64) -> Resul
         })
         .collect::<Result<Vec<Summary>, String>>()?;
     println!(
-        "statistics after a transient of {transient:.0} s ({} samples at {dt} s):",
-        summaries[0].samples
+        "statistics after a transient of {} s ({} samples at {} s):",
+        readable(transient),
+        summaries[0].samples,
+        written(dt)
     );
     println!(
         "{:<10} {:>14} {:>14} {:>14} {:>14}",

@@ -20,6 +20,15 @@ pub enum Dof {
 impl Dof {
     /// Surge, sway, yaw: the order of the crate's force arrays.
     pub const ALL: [Dof; 3] = [Dof::Surge, Dof::Sway, Dof::Yaw];
+
+    /// Its name in messages: `surge`, `sway`, `yaw`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Dof::Surge => "surge",
+            Dof::Sway => "sway",
+            Dof::Yaw => "yaw",
+        }
+    }
 }
 
 /// Headings of hydrodynamic data closer than this are the same heading, rad (0.01 deg: files
@@ -103,6 +112,19 @@ pub enum Interaction {
     MeanDirection,
     /// Cross terms from the bi-directional drift of the drift source.
     Bidirectional,
+}
+
+impl Interaction {
+    /// The word of the configuration file's `[model] interaction` (and of the case table):
+    /// `auto`, `none`, `mean-direction`, `bidirectional`.
+    pub fn word(self) -> &'static str {
+        match self {
+            Interaction::Auto => "auto",
+            Interaction::None => "none",
+            Interaction::MeanDirection => "mean-direction",
+            Interaction::Bidirectional => "bidirectional",
+        }
+    }
 }
 
 /// Where the wave-drift damping coefficients b_ij(omega, beta) come from (physics.md 5).

@@ -8,6 +8,7 @@
 //! fields by their configuration-file keys (`sea.hs`, `current.direction_deg`), in the file's
 //! units; the scenario's [`crate::scenario::Origins`] then say where the value was written.
 
+use crate::error::numbers::{readable, typable_below, written, written_matrix};
 use crate::error::{
     require_finite, require_finite_matrix, require_non_negative, require_positive, Error, Result,
 };
@@ -29,16 +30,9 @@ use std::path::Path;
 
 pub mod inertia;
 pub mod ranges;
+mod steps;
 mod summary;
 pub use inertia::{BodyData, Inertia, Origin};
-
-/// The shortest block of the record stream, in RK4 steps (the cross-fade takes a quarter of
-/// a block at most; `forces::stream`).
-const MIN_BLOCK_STEPS: f64 = 64.0;
-
-/// The longest block of the record stream, in samples (2^22: 24 days at 0.5 s, about 32 MiB
-/// per record), so that a huge block is a clear error instead of an allocation failure.
-const MAX_BLOCK_SAMPLES: f64 = 4_194_304.0;
 
 /// The hydrodynamic data of a problem.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -234,7 +228,10 @@ fn from_database(
                 "the database was made with water_density = {}, gravity = {}, but \
                  [environment] has {}, {}: set [environment] to the database's values \
                  or re-import with them",
-                made_with.0, made_with.1, environment.water_density, environment.gravity
+                written(made_with.0),
+                written(made_with.1),
+                written(environment.water_density),
+                written(environment.gravity)
             ),
         ));
     }
@@ -453,7 +450,11 @@ impl Problem {
             return Err(self.origins.locate(limits::over_budget(
                 "run.duration",
                 run.duration,
-                &format!("the output of {steps} steps of {} s", run.time_step),
+                &format!(
+                    "the output of {} steps of {} s",
+                    readable(steps),
+                    written(run.time_step)
+                ),
                 bytes,
                 run,
             )));
@@ -461,9 +462,10 @@ impl Problem {
         let samples = steps as usize + 1;
         if steps >= usize::MAX as f64 || buffer.try_reserve_exact(samples).is_err() {
             return Err(refuse(format!(
-                "needs {steps} steps of {} s whose {} bytes of output cannot be allocated",
-                run.time_step,
-                steps * std::mem::size_of::<T>() as f64
+                "needs {} steps of {} s whose {} of output cannot be allocated",
+                readable(steps),
+                written(run.time_step),
+                crate::error::bytes_text(steps * std::mem::size_of::<T>() as f64)
             )));
         }
         Ok(steps as usize)
@@ -484,17 +486,44 @@ impl Problem {
                     key,
                     value,
                     format!(
-                        "reaches t = {time:e} s, where a double resolves time only to {:e} s: \
-                         too coarse for steps of {} s (times within +-{:e} s keep a \
-                         millionth of a step)",
-                        time_spacing(time),
-                        run.time_step,
-                        largest_resolved_time(run.time_step)
+                        "reaches t = {} s, where a double resolves time only to {} s: too \
+                         coarse for steps of {} s (times within +-{} s keep a millionth of a \
+                         step)",
+                        readable(time),
+                        readable(time_spacing(time)),
+                        written(run.time_step),
+                        readable(largest_resolved_time(run.time_step))
                     ),
                 ));
             }
         }
         Ok(())
+    }
+
+    /// The message of `error` with the settings it names as causes or remedies (those of a
+    /// running simulation: [`Error::describe`]) as the user wrote them and where:
+    /// `[sea] hs (platform.toml:14)`, `row 3, column 'cd' (cases.csv:4)`, and the drift data
+    /// with their source and the `[drift]` that names them. `Display` names the key paths.
+    pub fn explain(&self, error: &Error) -> String {
+        struct Explained<'a>(&'a Problem, &'a Error);
+        impl std::fmt::Display for Explained<'_> {
+            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                let Explained(problem, error) = self;
+                error.describe(f, &|key| match key {
+                    "drift" => {
+                        let source = &problem.hydro.source;
+                        match problem.origins.name_and_place(key) {
+                            (name, Some(at)) => {
+                                format!("the drift data of {name} ({at}; {source})")
+                            }
+                            (name, None) => format!("the drift data of {name} ({source})"),
+                        }
+                    }
+                    _ => problem.origins.name(key),
+                })
+            }
+        }
+        Explained(self, error).to_string()
     }
 
     /// [`Problem::validate`], the error located where the user wrote the value.
@@ -512,7 +541,7 @@ impl Problem {
         self.check_sea_ranges()?;
         self.sea.validate(self.environment.gravity)?;
         ranges::CURRENT_SPEED.check("current.speed", self.current.speed)?;
-        require_finite("current.direction_deg", self.current.direction.to_degrees())?;
+        ranges::DIRECTION.check_degrees("current.direction_deg", self.current.direction)?;
         if self.run.duration.is_nan() || self.run.duration <= 0.0 {
             return Err(Error::invalid(
                 "run.duration",
@@ -522,36 +551,10 @@ impl Problem {
         }
         require_positive("run.time_step", self.run.time_step)?;
         require_positive("run.block_duration", self.run.block_duration)?;
-        let block_samples = self.run.block_duration / (0.5 * self.run.time_step);
-        if block_samples > MAX_BLOCK_SAMPLES {
-            return Err(Error::invalid(
-                "run.block_duration",
-                self.run.block_duration,
-                format!(
-                    "needs {block_samples} record samples at time_step/2; at most \
-                     {MAX_BLOCK_SAMPLES} per block (the records of one block are held at once)"
-                ),
-            ));
-        }
-        if self.run.block_duration < MIN_BLOCK_STEPS * self.run.time_step {
-            return Err(Error::invalid(
-                "run.block_duration",
-                self.run.block_duration,
-                format!(
-                    "must be at least {MIN_BLOCK_STEPS} time steps ({} s)",
-                    MIN_BLOCK_STEPS * self.run.time_step
-                ),
-            ));
-        }
+        steps::check_steps(self)?;
         require_finite("run.start_time", self.run.start_time)?;
         self.check_time_resolution()?;
-        if self.run.time_step > self.run.duration {
-            return Err(Error::invalid(
-                "run.time_step",
-                self.run.time_step,
-                format!("is longer than run.duration = {}", self.run.duration),
-            ));
-        }
+        steps::check_duration(self)?;
         self.validate_platform()?;
         if self.model.strips_per_column == 0 {
             return Err(Error::invalid(
@@ -586,15 +589,7 @@ impl Problem {
         self.validate_yaw_following()?;
         self.validate_qtf()?;
         self.validate_interaction()?;
-        let [x, y, theta] = self.initial.position;
-        let [vx, vy, yaw_rate] = self.initial.velocity;
-        require_finite("initial.position[0]", x)?;
-        require_finite("initial.position[1]", y)?;
-        require_finite("initial.heading_deg", theta.to_degrees())?;
-        require_finite("initial.velocity[0]", vx)?;
-        require_finite("initial.velocity[1]", vy)?;
-        require_finite("initial.yaw_rate_deg", yaw_rate.to_degrees())?;
-        Ok(())
+        ranges::check_initial_state(&self.initial.position, &self.initial.velocity)
     }
 
     /// The sea's peak period and band within their physical ranges
@@ -617,7 +612,7 @@ impl Problem {
             ranges::BAND.check("sea.band[0]", lo)?;
             ranges::BAND.check("sea.band[1]", hi)?;
         }
-        Ok(())
+        ranges::DIRECTION.check_degrees("sea.direction_deg", self.sea.mean_direction)
     }
 
     /// The full QTF, when selected: present, covering the band, and its headings covering
@@ -808,11 +803,12 @@ impl Problem {
                     &inertia.added_mass_origin,
                     "low_frequency_added_mass",
                 ),
-                format!("{:?}", inertia.added_mass),
+                written_matrix(&inertia.added_mass),
                 format!(
-                    "makes the mass matrix M + A (mass {:e} kg, yaw inertia {:e} kg m^2) not \
+                    "makes the mass matrix M + A (mass {} kg, yaw inertia {} kg m^2) not \
                      positive definite: no body has such a kinetic energy",
-                    inertia.mass, inertia.yaw_inertia
+                    written(inertia.mass),
+                    written(inertia.yaw_inertia)
                 ),
             ));
         }
@@ -821,13 +817,32 @@ impl Problem {
         self.check_stiffness_against_the_step(&inertia)?;
         require_finite_matrix("platform.linear_damping", &p.linear_damping)?;
         require_finite_matrix("platform.quadratic_damping", &p.quadratic_damping)?;
-        for (k, c) in p.columns.iter().enumerate() {
+        self.validate_columns()
+    }
+
+    /// The columns within their ranges.
+    fn validate_columns(&self) -> Result<()> {
+        for (k, c) in self.platform.columns.iter().enumerate() {
             ranges::COLUMN_OFFSET.check(format!("platform.columns[{k}].x"), c.x)?;
             ranges::COLUMN_OFFSET.check(format!("platform.columns[{k}].y"), c.y)?;
             ranges::COLUMN_DIAMETER.check(format!("platform.columns[{k}].diameter"), c.diameter)?;
             ranges::COLUMN_DRAFT.check(format!("platform.columns[{k}].draft"), c.draft)?;
         }
         Ok(())
+    }
+
+    /// What the drift of the columns needs and nothing a run needs besides (`slowdrift
+    /// hydro columns`, `study drift`): the environment and the columns within their ranges,
+    /// the error located where the user wrote the value.
+    pub fn check_columns(&self) -> Result<()> {
+        let checked = ranges::GRAVITY
+            .check("environment.gravity", self.environment.gravity)
+            .and_then(|()| {
+                ranges::WATER_DENSITY
+                    .check("environment.water_density", self.environment.water_density)
+            })
+            .and_then(|()| self.validate_columns());
+        checked.map_err(|e| self.origins.locate(e))
     }
 
     /// Each DOF's undamped natural period must be long enough for the RK4 step to follow:
@@ -850,11 +865,14 @@ impl Problem {
             if let Some(period) = period.filter(|t| *t <= shortest) {
                 return Err(Error::invalid(
                     KEYS[i],
-                    format!("{:e}", self.platform.stiffness[i][i]),
+                    self.platform.stiffness[i][i],
                     format!(
-                        "gives a natural period of {period:.3e} s, too short for RK4 steps of \
-                         {h} s (run.time_step; unstable below 2.22 steps a period): lower the \
-                         stiffness or the step"
+                        "gives a natural period of {} s, too short for RK4 steps of {} s \
+                         (unstable below 2.22 steps a period): lower the stiffness, or \
+                         time_step to {} s or less",
+                        readable(period),
+                        written(h),
+                        typable_below(period * h / shortest)
                     ),
                 ));
             }

@@ -18,6 +18,7 @@ mod budget;
 
 pub use budget::{MemoryEstimate, Term};
 
+use crate::error::numbers::readable;
 use crate::error::{Error, Result};
 use crate::forces::{
     direction_pairs, plan_inverse_fft, transfers_on_grid, yaw_transfers, DepthBasis,
@@ -26,11 +27,12 @@ use crate::forces::{
 };
 
 use crate::hydro::bidirectional::DirectionPairs;
+use crate::hydro::DriftTable;
 use crate::model::{
     Cylinder, Dof, DriftDamping, Environment, Interaction, SecondOrder, YawFollowing,
 };
 use crate::problem::{Hydro, Problem};
-use crate::sea_state::{Direction, FrequencyGrid, Spreading, WaveComponents};
+use crate::sea_state::{Direction, FrequencyGrid, SeaState, Spreading, WaveComponents};
 use serde::Serialize;
 use std::sync::Arc;
 
@@ -149,7 +151,14 @@ impl RecordPlan {
     /// allocated when the records of one simulation would exceed the memory limit
     /// ([`MemoryEstimate`]).
     pub(crate) fn of_checked(config: &Problem) -> Result<Self> {
-        MemoryEstimate::of(config)?.check(config)?;
+        let locate = |e| config.origins.locate(e);
+        MemoryEstimate::of(config).map_err(locate)?.check(config)?;
+        Self::plan(config).map_err(locate)
+    }
+
+    /// [`RecordPlan::of_checked`] within the memory limit, its errors naming settings by
+    /// their key paths.
+    fn plan(config: &Problem) -> Result<Self> {
         let sea = &config.sea;
         let dt = 0.5 * config.run.time_step;
         let segments = segments_of(config.run.block_duration, dt);
@@ -161,6 +170,10 @@ impl RecordPlan {
         )?;
         let directions = sea.directions();
         let damping_table = config.damping_table()?;
+        if config.model.yaw_following.is_none() {
+            let table = damping_table.as_ref().unwrap_or(&config.hydro.drift);
+            directions_covered(table, sea, &directions)?;
+        }
         // The cross terms of a spread sea: from the bi-directional QTF itself (in the joint
         // factorisation below), else by the Newman-type rule of `forces::directional`.
         let pairs = if config.cross_terms_from_qtf() {
@@ -174,10 +187,10 @@ impl RecordPlan {
                 format!("{} headings", options.headings),
                 format!(
                     "the yaw-following records do not carry the cross-direction terms of a \
-                     spread sea ({} directions, model.interaction {:?}): use a long-crested \
-                     sea or model.interaction = \"none\"",
+                     spread sea ({} directions, [model] interaction = {}): use a long-crested \
+                     sea or [model] interaction = \"none\"",
                     directions.len(),
-                    config.interaction()
+                    config.interaction().word()
                 ),
             ));
         }
@@ -392,6 +405,37 @@ fn depth_bases(config: &Problem, grid: &FrequencyGrid) -> Vec<Arc<DepthBasis>> {
         }
     }
     bases
+}
+
+/// The sea's wave directions against the drift data's headings: a direction the data do
+/// not reach (nothing is extrapolated) is the sea's doing, refused naming
+/// `sea.direction_deg` (the mean direction; a spread sea adds +-90 deg around it) with the
+/// directions outside and the data's headings.
+fn directions_covered(table: &DriftTable, sea: &SeaState, directions: &[Direction]) -> Result<()> {
+    let deg = |h: f64| readable(h.to_degrees());
+    let outside: Vec<String> = directions
+        .iter()
+        .filter(|d| !table.covers_heading(d.heading))
+        .map(|d| deg(d.heading))
+        .collect();
+    if outside.is_empty() {
+        return Ok(());
+    }
+    let headings = table.headings();
+    Err(Error::invalid(
+        "sea.direction_deg",
+        deg(sea.mean_direction),
+        format!(
+            "{} of the sea's {} wave direction(s) ({} deg) are outside the drift data's \
+             headings {} .. {} deg (nothing is extrapolated): turn the sea, or give the data \
+             those headings",
+            outside.len(),
+            directions.len(),
+            outside.join(", "),
+            deg(headings[0]),
+            deg(headings[headings.len() - 1])
+        ),
+    ))
 }
 
 /// The segments of a stream with blocks of `block_duration` seconds sampled at `dt`: B =

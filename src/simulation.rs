@@ -8,6 +8,7 @@
 pub mod bounds;
 
 use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};
+use crate::error::numbers::written;
 use crate::error::{Error, Result};
 use crate::forces::{ForceRecords, Segments};
 use crate::problem::Problem;
@@ -486,13 +487,14 @@ impl Simulation {
     /// Restores a state taken from a simulation of the same configuration.
     pub fn restore(&mut self, snapshot: &Snapshot) -> Result<()> {
         snapshot.check()?;
+        bounds::check_restored(&snapshot.position, &snapshot.velocity)?;
         if snapshot.step != self.problem.run.time_step {
             return Err(Error::invalid(
                 "snapshot.step",
                 snapshot.step,
                 format!(
                     "differs from this simulation's run.time_step = {}",
-                    self.problem.run.time_step
+                    written(self.problem.run.time_step)
                 ),
             ));
         }

@@ -2,16 +2,21 @@
 //! extremes) after a start-up transient, and Welch's estimate of the one-sided spectral
 //! density per rad/s.
 //!
-//! Conventions: a record `x[m]` is sampled at the times `t_m = m * dt` (s), `m = 0, 1, ...`;
-//! angular frequencies are in rad/s; "rms" is the root mean square *about the mean*
-//! (the standard deviation), as in the slow-drift literature (E&S 1996 report the rms of
-//! the slow-drift motion's fluctuation).
+//! Conventions: a record `x[m]` is sampled at the times `t_m = m * dt` (s), `m = 0, 1, ...`,
+//! counted from the start of the run, its first sample the state at the start; a transient
+//! of T s drops the samples at t < T and keeps those at t >= T, so a run of D s keeps
+//! (D - T) / dt + 1 samples (the default's 3 hours at 1 s after 2000 s: t = 2000, 2001, ...,
+//! 10800, 8801 samples: `slowdrift simulate`, a campaign's runs, fmu-pack's self-check and
+//! slowdrift_dask all count so); angular frequencies are in rad/s; "rms" is the root mean
+//! square *about the mean* (the standard deviation), as in the slow-drift literature (E&S
+//! 1996 report the rms of the slow-drift motion's fluctuation).
 
 use std::f64::consts::PI;
 
 use rustfft::num_complex::Complex64;
 use rustfft::FftPlanner;
 
+use crate::error::numbers::readable;
 use crate::error::{require_non_negative, require_positive, Error, Result};
 
 /// Smallest accepted Welch segment length (a segment of one sample has no spectrum).
@@ -59,9 +64,11 @@ pub fn summarize(record: &[f64], dt: f64, transient: f64) -> Result<Summary> {
                 "stats.transient",
                 transient,
                 format!(
-                    "leaves no sample: the record has {} samples at dt = {dt} s, the last at t = {} s",
+                    "leaves no sample: the record has {} samples at dt = {} s, the last at t = \
+                     {} s",
                     record.len(),
-                    (record.len() - 1) as f64 * dt
+                    readable(dt),
+                    readable((record.len() - 1) as f64 * dt)
                 ),
             )
         })?;

@@ -16,15 +16,17 @@ mod system;
 
 use clap::Parser;
 use slowdrift::fmi2::resources::{write_resources, RESOURCE_CONFIG, RESOURCE_DRIFT};
-use slowdrift::stats::summarize;
+use slowdrift::stats::{summarize, Summary};
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
 
 const MODEL_IDENTIFIER: &str = "SlowDrift";
 const THREE_HOURS: f64 = 3.0 * 3600.0;
 const COMMUNICATION_STEP: f64 = 1.0;
-/// Samples dropped before the statistics: ten 200 s surge periods of the default platform
-/// (at most half the checked run).
+/// Start-up transient dropped before the statistics, s: ten 200 s surge periods of the
+/// default platform (at most half the checked run). As the CLI's
+/// (`slowdrift::stats::summarize`), the statistics keep the samples at t >= the transient:
+/// for the default, t = 2000, 2001, ..., 10800 s, 8801 of them.
 const TRANSIENT: f64 = 2000.0;
 
 /// Packs SlowDrift's FMUs and checks each by running it through its C ABI.
@@ -281,37 +283,56 @@ fn check_by_running(
     let description = master::ModelDescription::parse(xml)?;
     let fmu = master::Fmu::load(&library)?;
     let uri = file_uri(&resources.canonicalize().map_err(|e| e.to_string())?)?;
-    let names = ["X", "Y", "theta"];
     let stop = stop.unwrap_or(start + THREE_HOURS);
-    let started = std::time::Instant::now();
-    let samples = master::run(
-        &fmu,
-        &description,
-        &uri,
-        (&[], &names),
-        (start, stop, COMMUNICATION_STEP),
-    )?;
-    let elapsed = started.elapsed().as_secs_f64();
     let transient = TRANSIENT.min(0.5 * (stop - start));
+    let started = std::time::Instant::now();
+    let statistics = run_statistics(&fmu, &description, &uri, (start, stop), transient)?;
+    let elapsed = started.elapsed().as_secs_f64();
     println!(
         "ran the packed FMU through its C ABI: {} s at a {COMMUNICATION_STEP} s communication \
          step in {elapsed:.3} s",
         stop - start
     );
-    println!("statistics after {transient} s:");
+    println!(
+        "statistics after a transient of {transient} s ({} samples at {COMMUNICATION_STEP} s):",
+        statistics[0].samples
+    );
     println!(
         "{:<10} {:>12} {:>12} {:>12}",
         "output", "mean", "rms", "max"
     );
-    for (name, values) in names.iter().zip(&samples) {
-        // Sample m is the output after step m + 1; the same samples as the CLI's statistics.
-        let s = summarize(values, COMMUNICATION_STEP, transient).map_err(|e| e.to_string())?;
+    for (name, s) in OUTPUTS.iter().zip(&statistics) {
         println!(
             "{name:<10} {:>12.4} {:>12.4} {:>12.4}",
             s.mean, s.rms, s.max
         );
     }
     Ok(())
+}
+
+/// The outputs the self-check summarises.
+const OUTPUTS: [&str; 3] = ["X", "Y", "theta"];
+
+/// The self-check's run of the FMU from `start` to `stop` with its start values, and the
+/// statistics of [`OUTPUTS`] after `transient` (the record from the start, as the CLI's).
+fn run_statistics(
+    fmu: &master::Fmu,
+    description: &master::ModelDescription,
+    uri: &str,
+    (start, stop): (f64, f64),
+    transient: f64,
+) -> Result<Vec<Summary>, String> {
+    let samples = master::run(
+        fmu,
+        description,
+        uri,
+        (&[], &OUTPUTS),
+        (start, stop, COMMUNICATION_STEP),
+    )?;
+    samples
+        .iter()
+        .map(|values| summarize(values, COMMUNICATION_STEP, transient).map_err(|e| e.to_string()))
+        .collect()
 }
 
 #[cfg(test)]
@@ -333,6 +354,49 @@ mod tests {
             Some(PathBuf::from("/t/release/deps/libslowdrift.so"))
         );
         assert_eq!(cdylib_in_messages(messages, "mooring"), None);
+    }
+
+    /// The self-check keeps the samples `slowdrift simulate` keeps: run through the C ABI of
+    /// this build's library (the one cargo built beside this test), the packed default's
+    /// statistics after the transient are those of the native run's record from t = 0, bit
+    /// for bit, over (10800 - 2000) / 1 + 1 = 8801 samples (t = 2000 .. 10800 s; the
+    /// self-check counted 8800 before, its first sample the state after the first step).
+    #[test]
+    fn the_self_check_keeps_the_samples_the_cli_keeps() {
+        let exe = std::env::current_exe().unwrap();
+        let library = exe.parent().unwrap().join("libslowdrift.so");
+        assert!(
+            library.is_file(),
+            "cargo builds {} with this test",
+            library.display()
+        );
+        let resources =
+            std::env::temp_dir().join(format!("fmu-pack-self-check-{}", std::process::id()));
+        write_resources(&resources).unwrap();
+        let xml = std::fs::read_to_string(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../modelDescription/modelDescription.xml"
+        ))
+        .unwrap();
+        let description = master::ModelDescription::parse(xml).unwrap();
+        let fmu = master::Fmu::load(&library).unwrap();
+        let statistics = run_statistics(
+            &fmu,
+            &description,
+            &file_uri(&resources).unwrap(),
+            (0.0, THREE_HOURS),
+            TRANSIENT,
+        )
+        .unwrap();
+        std::fs::remove_dir_all(&resources).ok();
+
+        let mut native = slowdrift::problem::default_problem().unwrap();
+        native.run.duration = THREE_HOURS;
+        let records = slowdrift::montecarlo::simulate_positions(native).unwrap();
+        for (s, record) in statistics.iter().zip(&records) {
+            assert_eq!(*s, summarize(record, 1.0, 2000.0).unwrap());
+            assert_eq!(s.samples, 8801);
+        }
     }
 
     #[test]

@@ -139,7 +139,10 @@ impl Fmu {
 
 /// Runs one instance from `start` to `stop` at communication step `step` with the named
 /// Real inputs held at the given values (set in initialisation mode; the others at their
-/// start values) and returns the samples of the named real outputs after every step.
+/// start values) and returns the samples of the named real outputs at every communication
+/// point from the start: `samples[k][m]` is output `k` at t = start + m step, m = 0 ..= the
+/// number of steps (the first read after initialisation, as a record of the native tool
+/// starts with the state at the start of the run).
 pub fn run(
     fmu: &Fmu,
     description: &ModelDescription,
@@ -204,11 +207,13 @@ pub fn run(
             )?;
             check("fmi2ExitInitializationMode", (fmu.exit_initialization)(c))?;
             let steps = ((stop - start) / step).round() as usize;
-            let mut samples = vec![Vec::with_capacity(steps); outputs.len()];
+            let mut samples = vec![Vec::with_capacity(steps + 1); outputs.len()];
             let mut values = vec![0.0; outputs.len()];
-            for n in 0..steps {
-                let t = start + n as f64 * step;
-                check("fmi2DoStep", (fmu.do_step)(c, t, step, TRUE))?;
+            for n in 0..=steps {
+                if n > 0 {
+                    let t = start + (n - 1) as f64 * step;
+                    check("fmi2DoStep", (fmu.do_step)(c, t, step, TRUE))?;
+                }
                 check(
                     "fmi2GetReal",
                     (fmu.get_real)(

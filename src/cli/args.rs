@@ -65,12 +65,31 @@ pub fn all_cores() -> usize {
     std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)
 }
 
-/// `--memory-limit-gb GB`, a finite positive number of gigabytes.
+/// `--memory-limit-gb GB`, a positive number of gigabytes, at most
+/// [`MAX_MEMORY_LIMIT_GB`](slowdrift::scenario::limits::MAX_MEMORY_LIMIT_GB).
 pub fn gigabytes() -> Checked<impl Fn(&str, &str) -> Result<f64, String> + Clone> {
+    use slowdrift::scenario::limits::MAX_MEMORY_LIMIT_GB;
     Checked(|flag: &str, value: &str| match value.parse::<f64>() {
-        Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
-        _ => Err(format!("{flag} {value}: must be a positive number of GB")),
+        Ok(v) if v > 0.0 && v <= MAX_MEMORY_LIMIT_GB => Ok(v),
+        _ => Err(format!(
+            "{flag} {value}: must be a positive number of GB, at most {}",
+            slowdrift::error::numbers::written(MAX_MEMORY_LIMIT_GB)
+        )),
     })
+}
+
+/// `--transient SECONDS` against a run of `duration` s (`run`: which one): the statistics
+/// keep the samples at t >= transient, so it must not pass the run's end. Checked before
+/// the run.
+pub fn transient_leaves_samples(transient: f64, duration: f64, run: &str) -> Result<(), String> {
+    if transient <= duration {
+        return Ok(());
+    }
+    Err(format!(
+        "--transient {}: longer than {run} ({} s): no sample would be left for the statistics",
+        slowdrift::error::numbers::written(transient),
+        slowdrift::error::numbers::written(duration)
+    ))
 }
 
 /// The problem of `--config` (else the embedded default), `--memory-limit-gb` (when given)

@@ -17,6 +17,7 @@
 
 use super::args::{gigabytes, Checked};
 use clap::{Args, Subcommand};
+use slowdrift::error::numbers::written;
 use slowdrift::error::BYTES_PER_GB;
 use slowdrift::hydro::bidirectional::{BidirectionalSource, BidirectionalTable};
 use slowdrift::hydro::io::database::HydroDatabase;
@@ -133,6 +134,7 @@ fn columns(args: ColumnsArgs) -> Result<(), String> {
         out,
         bidirectional,
     } = args;
+    super::out::file(&out)?;
     let (config, source) = match &config_path {
         Some(path) => (
             problem::load(path).map_err(|e| e.to_string())?,
@@ -143,6 +145,8 @@ fn columns(args: ColumnsArgs) -> Result<(), String> {
             DEFAULT_DRIFT_LABEL.to_string(),
         ),
     };
+    // The columns the table's damping (and a column solver) takes, within their ranges.
+    config.check_columns().map_err(|e| e.to_string())?;
     // The damping a run of the configuration uses, written with the table (Aranha's on its
     // nodes when it asks for them; none when drift damping is off).
     let table = &config
@@ -191,6 +195,7 @@ fn columns(args: ColumnsArgs) -> Result<(), String> {
 fn wamit(args: WamitArgs) -> Result<(), String> {
     let root = args.root;
     let out = args.out;
+    super::out::file(&out)?;
     let options = WamitOptions {
         ulen: args.ulen,
         rho: args.rho,
@@ -201,9 +206,9 @@ fn wamit(args: WamitArgs) -> Result<(), String> {
     println!(
         "WAMIT files {}.* (ULEN = {} m, rho = {} kg/m^3, g = {} m/s^2):",
         root.display(),
-        options.ulen,
-        options.rho,
-        options.gravity
+        written(options.ulen),
+        written(options.rho),
+        written(options.gravity)
     );
     for line in &import.files {
         println!("  {line}");
@@ -212,6 +217,7 @@ fn wamit(args: WamitArgs) -> Result<(), String> {
 }
 
 fn nemoh(args: NemohArgs) -> Result<(), String> {
+    super::out::file(&args.out)?;
     let import =
         nemoh::import(&args.dir, args.memory_limit_gb * BYTES_PER_GB).map_err(|e| e.to_string())?;
     println!("NEMOH results {}:", args.dir.display());

@@ -4,6 +4,7 @@ pub mod args;
 pub mod hydro;
 pub mod interrupt;
 pub mod montecarlo;
+pub mod out;
 pub mod study;
 
 /// Why a command failed: the message `main` prints and the exit status.

@@ -13,10 +13,12 @@
 //! ([`super::interrupt`]): the summary of the runs done is written and the command to
 //! resume printed.
 
-use super::args::{all_cores, gigabytes, load_problem, seconds, whole};
+use super::args::{all_cores, gigabytes, load_problem, seconds, transient_leaves_samples, whole};
 use super::interrupt::{this_command, Interrupts, Signal};
+use super::out;
 use super::Failure;
 use clap::Args;
+use slowdrift::error::numbers::{readable, written};
 use slowdrift::fmi2::campaign;
 use slowdrift::montecarlo::cases::{open_case_table, CaseRow};
 use slowdrift::montecarlo::runs_file::{self, RunRow, RunsFile};
@@ -47,7 +49,7 @@ pub struct MontecarloArgs {
     /// Runs only the case of this name
     #[arg(long = "case", value_name = "NAME", allow_hyphen_values = true)]
     only: Option<String>,
-    /// Seeds per case, at least 1: seeds S .. S+N-1 (required unless --print-cases)
+    /// Seeds per case, at least 1: seeds S to S+N-1 (required unless --print-cases)
     #[arg(long, value_name = "N", allow_hyphen_values = true, value_parser = whole(1u64),
           required_unless_present = "print_cases")]
     seeds: Option<u64>,
@@ -142,6 +144,9 @@ fn command(args: MontecarloArgs) -> Result<Command, String> {
     first_seed
         .checked_add(seeds - 1)
         .ok_or_else(|| format!("--first-seed {first_seed} + --seeds {seeds} overflows"))?;
+    // Before any work: the summary, and the runs file (and its lock) beside it.
+    out::file(&out)?;
+    out::file_beside(&out, &runs_path(&out))?;
     Ok(Command::Run(Options {
         config,
         cases,
@@ -264,12 +269,18 @@ fn run_and_summarise(options: Options) -> Result<(), Failure> {
         .map(|row| row.and_then(|row| row.case(&base, options.transient, &source)))
         .collect::<Result<Vec<Case>, _>>()
         .map_err(|e| e.to_string())?;
+    if let Some(transient) = options.transient {
+        for case in &cases {
+            let run = format!("the run of case '{}'", case.name);
+            transient_leaves_samples(transient, case.problem.run.duration, &run)?;
+        }
+    }
     let runs_path = runs_path(&options.out);
     let seeds = options.first_seed..options.first_seed + options.seeds;
     let wanted: Vec<Job> = (0..cases.len())
         .flat_map(|case| seeds.clone().map(move |seed| Job { case, seed }))
         .collect();
-    println!("seeds {}..={} of every case", seeds.start, seeds.end - 1);
+    println!("seeds {} to {} of every case", seeds.start, seeds.end - 1);
     let Campaign { runs, interrupted } = run_campaign(
         &cases,
         &wanted,
@@ -375,8 +386,11 @@ pub fn run_campaign(
     );
     for case in cases {
         println!(
-            "  {}: {} s at {} s, transient {:.1} s",
-            case.name, case.problem.run.duration, case.problem.run.time_step, case.transient
+            "  {}: {} s at {} s, transient {} s",
+            case.name,
+            written(case.problem.run.duration),
+            written(case.problem.run.time_step),
+            readable(case.transient)
         );
     }
 
@@ -485,10 +499,13 @@ impl CaseSummary {
         self.values[0][0].len()
     }
 
+    /// `complete` (every seed requested done), `partial` (some), `failed` (none done, some
+    /// failed) or `not started` (none run: a campaign stopped before it reached the case).
     fn status(&self, requested: u64) -> &'static str {
-        match self.done() {
-            0 => "failed",
-            n if n as u64 == requested => "complete",
+        match (self.done(), self.failed) {
+            (0, 0) => "not started",
+            (0, _) => "failed",
+            (n, _) if n as u64 == requested => "complete",
             _ => "partial",
         }
     }
@@ -570,6 +587,8 @@ fn print_summary(summaries: &[CaseSummary], requested: u64) {
         }
         if let Some(error) = &s.first_error {
             println!("{:<16} {} run(s) failed; first: {error}", s.name, s.failed);
+        } else if s.status(requested) == "not started" {
+            println!("{:<16} not started", s.name);
         }
     }
 }

@@ -11,6 +11,7 @@
 //! frame. Second-order terms in the slow velocities are neglected, as in the paper. Since
 //! S is orthogonal, q'' = S (M + A)^{-1} S^T (right-hand side).
 
+use crate::error::numbers::written_matrix;
 use crate::error::{Error, Result};
 use crate::forces::{drag_force, ForceRecords, SamplePoint, YawPoint};
 use crate::model::DragModel;
@@ -91,7 +92,7 @@ impl SlowDriftModel {
         let inverse_mass = total.try_inverse().ok_or_else(|| {
             Error::invalid(
                 "platform.added_mass",
-                format!("{:?}", inertia.added_mass),
+                written_matrix(&inertia.added_mass),
                 "M + A is singular",
             )
         })?;

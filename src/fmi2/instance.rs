@@ -15,9 +15,9 @@ use super::parameters::{
 };
 use super::state::{fingerprint, FmuState};
 use super::types::fmi2Status;
+use crate::error::numbers::written;
 use crate::error::Error;
 use crate::fmi2::model_description::{find, log_category, vr, Causality, VariableType, VARIABLES};
-use crate::problem::ranges::shown;
 use crate::problem::Problem;
 use crate::scenario::Scenario;
 use crate::simulation::{Outputs, Simulation};
@@ -217,7 +217,7 @@ impl Instance {
         if !(h.is_finite() && h > 0.0) {
             return Err(FmuError::Argument(format!(
                 "communicationStepSize = {} must be finite and positive",
-                shown(h)
+                written(h)
             )));
         }
         let inputs = self.inputs;
@@ -233,21 +233,21 @@ impl Instance {
             return Err(FmuError::Argument(format!(
                 "communicationStepSize = {} s does not advance the time: at t = {t} s, t + h \
                  == t in double precision (doubles there are {} s apart)",
-                shown(h),
-                shown(spacing(t))
+                written(h),
+                written(spacing(t))
             )));
         }
         if let (true, Some(stop)) = (experiment.passes_stop(t + h), experiment.stop_time) {
             return Err(FmuError::Argument(format!(
                 "a step of {} s from {t} s passes stopTime = {stop} s",
-                shown(h)
+                written(h)
             )));
         }
         let longest = longest_step(simulation.problem());
         if h > longest {
             return Err(FmuError::Discard(Error::invalid(
                 "communicationStepSize",
-                format!("{} s", shown(h)),
+                format!("{} s", written(h)),
                 format!(
                     "longer than one block of the records, {longest} s, the longest step this \
                      FMU takes (a step makes at most one block of records, as initialisation \

@@ -20,6 +20,7 @@
 use super::columns::ColumnArray;
 use super::heading_grid::{heading_bracket, Bracket};
 use super::DriftTable;
+use crate::error::numbers::{written, written_complex};
 use crate::error::{require_finite, require_positive, Error, Result};
 use crate::model::{Environment, FREQUENCY_MATCH_TOLERANCE};
 use rustfft::num_complex::Complex64;
@@ -190,10 +191,10 @@ fn covering_range(omegas: &[f64], band: (f64, f64), field: &str) -> Result<std::
     {
         return Err(Error::invalid(
             field,
-            format!("[{lo}, {hi}] rad/s"),
+            format!("[{}, {}] rad/s", written(lo), written(hi)),
             format!(
                 "the bi-directional drift does not cover the wave band [{:.4}, {:.4}] rad/s \
-                 (nothing is extrapolated); extend the data or narrow sea.band",
+                 (nothing is extrapolated); extend the data or narrow [sea] band",
                 band.0, band.1
             ),
         ));
@@ -259,7 +260,11 @@ impl BidirectionalTable {
         if self.headings[nh - 1] - self.headings[0] >= 2.0 * PI {
             return Err(Error::invalid(
                 format!("{field}.headings"),
-                format!("{} .. {} rad", self.headings[0], self.headings[nh - 1]),
+                format!(
+                    "{} .. {} rad",
+                    written(self.headings[0]),
+                    written(self.headings[nh - 1])
+                ),
                 "must lie within one turn (list 0 or 360 deg, not both)",
             ));
         }
@@ -299,13 +304,14 @@ impl BidirectionalTable {
                     for i in 0..3 {
                         let gap = (self.value(n, p, q)[i] - self.value(n, q, p)[i].conj()).norm();
                         if gap > HERMITIAN_TOLERANCE * scale {
+                            let (here, mirror) = (self.value(n, p, q)[i], self.value(n, q, p)[i]);
                             return Err(Error::invalid(
                                 format!("{field}[{n}][{p}][{q}][{i}]"),
-                                self.value(n, p, q)[i],
+                                written_complex(here.re, here.im),
                                 format!(
                                     "T(beta_q, beta_p) must equal conj T(beta_p, beta_q): \
                                      [{q}][{p}] is {}",
-                                    self.value(n, q, p)[i]
+                                    written_complex(mirror.re, mirror.im)
                                 ),
                             ));
                         }

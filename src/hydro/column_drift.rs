@@ -19,6 +19,7 @@
 //! truncated column carries roughly a fraction 1 - e^{-k draft} of it); the column drafts
 //! are not used.
 
+use crate::error::numbers::{readable, written};
 use crate::error::{require_finite, require_positive, Error, Result};
 use crate::hydro::{DriftRow, DriftTable};
 use crate::model::{Cylinder, Environment};
@@ -161,10 +162,11 @@ fn column_force(column: &Cylinder, k: f64, rho: f64, g: f64) -> Result<f64> {
     if ka > MAX_KA {
         return Err(Error::invalid(
             "drift.omega",
-            format!("{:.4} rad/s", (k * g).sqrt()),
+            format!("{} rad/s", readable((k * g).sqrt())),
             format!(
-                "k a = {ka:.1} exceeds {MAX_KA} for a column of diameter {} m",
-                column.diameter
+                "k a = {} exceeds {MAX_KA} for a column of diameter {} m",
+                readable(ka),
+                written(column.diameter)
             ),
         ));
     }

@@ -7,6 +7,7 @@
 //! names the gap.
 
 use super::heading_grid::{heading_bracket, is_periodic, Bracket};
+use crate::error::numbers::{readable, written};
 use crate::error::{require_finite, Error, Result};
 use crate::model::FREQUENCY_MATCH_TOLERANCE;
 use serde::Serialize;
@@ -99,8 +100,8 @@ impl DriftTable {
                 "drift.heading",
                 format!(
                     "{} .. {} deg",
-                    headings[0].to_degrees(),
-                    headings.last().unwrap().to_degrees()
+                    readable(headings[0].to_degrees()),
+                    readable(headings.last().unwrap().to_degrees())
                 ),
                 "headings span more than 360 deg",
             ));
@@ -140,10 +141,14 @@ impl DriftTable {
             {
                 return Err(Error::invalid(
                     "drift.heading",
-                    format!("{} and {} deg", first.to_degrees(), last.to_degrees()),
+                    format!(
+                        "{} and {} deg",
+                        readable(first.to_degrees()),
+                        readable(last.to_degrees())
+                    ),
                     format!(
                         "are the same direction but their drift differs at omega = {} rad/s",
-                        self.omegas[iw]
+                        written(self.omegas[iw])
                     ),
                 ));
             }
@@ -209,10 +214,10 @@ impl DriftTable {
         {
             return Err(Error::invalid(
                 "drift.omega",
-                format!("[{lo}, {hi}] rad/s"),
+                format!("[{}, {}] rad/s", written(lo), written(hi)),
                 format!(
                     "the drift table does not cover the wave band [{:.4}, {:.4}] rad/s; \
-                     extend the table or narrow sea.band",
+                     extend the table or narrow [sea] band",
                     band.0, band.1
                 ),
             ));
@@ -334,7 +339,11 @@ impl DriftTable {
             return Err(Error::invalid(
                 "drift.omega",
                 omega,
-                format!("outside the drift table's frequencies [{lo}, {hi}] rad/s"),
+                format!(
+                    "outside the drift table's frequencies [{}, {}] rad/s",
+                    written(lo),
+                    written(hi)
+                ),
             ));
         }
         if w.len() == 1 {
@@ -351,6 +360,12 @@ impl DriftTable {
             hi: i,
             frac: (omega - w[i - 1]) / (w[i] - w[i - 1]),
         })
+    }
+
+    /// Whether the table's headings reach `heading` (rad, any number of turns) without
+    /// extrapolation.
+    pub fn covers_heading(&self, heading: f64) -> bool {
+        heading_bracket(&self.headings, heading).is_some()
     }
 
     fn heading_bracket(&self, heading: f64) -> Result<Bracket> {
@@ -447,7 +462,11 @@ fn check_frequencies(heading: f64, rows: &[(usize, &DriftRow)], reference: &[f64
         if !rows.iter().any(|(_, row)| same(row.omega, w)) {
             return Err(Error::invalid(
                 "drift.rows",
-                format!("omega = {w}, heading = {:.3} deg", heading.to_degrees()),
+                format!(
+                    "omega = {}, heading = {:.3} deg",
+                    written(w),
+                    heading.to_degrees()
+                ),
                 "hole in the drift table: this (frequency, heading) pair is missing",
             ));
         }

@@ -160,7 +160,8 @@ impl Qtf {
                 Error::invalid(
                     "qtf.blocks",
                     format!(
-                        "{dof:?} at ({:.3}, {:.3}) deg",
+                        "{} at ({:.3}, {:.3}) deg",
+                        dof.name(),
                         p.to_degrees(),
                         q.to_degrees()
                     ),
@@ -275,7 +276,7 @@ pub fn check_covers(omegas: &[f64], band: (f64, f64)) -> Result<()> {
         format!("[{low:.4}, {high:.4}] rad/s"),
         format!(
             "the QTF does not cover the wave band [{:.4}, {:.4}] rad/s: no data for {} \
-             (nothing is extrapolated; narrow sea.band or supply QTF data there)",
+             (nothing is extrapolated; narrow [sea] band or supply QTF data there)",
             band.0,
             band.1,
             gaps.join(" and ")

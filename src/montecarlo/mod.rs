@@ -192,7 +192,9 @@ pub fn run_jobs(
                 return Ok(None);
             }
             let plan = plans.get(job.case)?.map_err(|e| e.to_string())?;
-            run_seed_unless(&cases[job.case], &plan, job.seed, stop).map_err(|e| e.to_string())
+            let case = &cases[job.case];
+            // A run's error names the settings it blames where the case wrote them.
+            run_seed_unless(case, &plan, job.seed, stop).map_err(|e| case.problem.explain(&e))
         };
         let result = catch_unwind(AssertUnwindSafe(run)).unwrap_or_else(|panic| {
             Err(Error::invalid("run", "panic", panic_text(&*panic)).to_string())

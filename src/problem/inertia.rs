@@ -13,6 +13,7 @@
 //! Units: kg (mass), kg m^2 (yaw inertia about the body origin); the added mass is indexed
 //! (surge, sway, yaw) in kg, kg m and kg m^2 and acts in the body frame, as `Platform`'s.
 
+use crate::error::numbers::written;
 use crate::hydro::io::database::{MassProperties, Provenance};
 use crate::scenario::Platform;
 use serde::Serialize;
@@ -103,8 +104,10 @@ impl Inertia {
                 (Some(value), theirs) => {
                     if let Some(theirs) = theirs.filter(|t| *t != value) {
                         notes.push(format!(
-                            "note: {key} = {value:e} from [platform] is used, not {}'s {theirs:e}",
-                            data.name
+                            "note: {key} = {} from [platform] is used, not {}'s {}",
+                            written(value),
+                            data.name,
+                            written(theirs)
                         ));
                     }
                     Ok((value, Origin::Configuration))
@@ -126,10 +129,14 @@ impl Inertia {
             (Some(given), theirs) => {
                 if let Some(theirs) = theirs.filter(|t| *t != given) {
                     notes.push(format!(
-                        "note: platform.added_mass from [platform] is used (A11 = {:e} kg, A66 \
-                         = {:e} kg m^2), not {}'s low-frequency added mass (A11 = {:e} kg, A66 \
-                         = {:e} kg m^2)",
-                        given[0][0], given[2][2], data.name, theirs[0][0], theirs[2][2]
+                        "note: platform.added_mass from [platform] is used (A11 = {} kg, A66 = \
+                         {} kg m^2), not {}'s low-frequency added mass (A11 = {} kg, A66 = {} \
+                         kg m^2)",
+                        written(given[0][0]),
+                        written(given[2][2]),
+                        data.name,
+                        written(theirs[0][0]),
+                        written(theirs[2][2])
                     ));
                 }
                 (given, Origin::Configuration)

@@ -7,6 +7,7 @@
 //! The stiffness is checked for what makes it physical, not for a range
 //! ([`check_stiffness`]): the energy it stores, x^T C x, must not be negative.
 
+use crate::error::numbers::{readable, written, written_matrix};
 use crate::error::{Error, Result};
 use nalgebra::Matrix3;
 
@@ -102,13 +103,69 @@ pub const COLUMN_OFFSET: Range = Range {
     covers: "columns within a kilometre of the body origin",
 };
 
-/// The value shown in a message: as written in the file's unit (`1e300`, `0.5`).
-pub fn shown(value: f64) -> String {
-    if value != 0.0 && !(1e-3..1e6).contains(&value.abs()) {
-        format!("{value:e}")
-    } else {
-        value.to_string()
+/// `sea.direction_deg` and `current.direction_deg`, deg.
+pub const DIRECTION: Range = Range {
+    min: -360.0,
+    max: 360.0,
+    unit: "deg",
+    covers: "a turn either way",
+};
+
+/// Largest offset |X|, |Y| of a physical state, m (1000 km).
+pub const MAX_OFFSET: f64 = 1.0e6;
+/// Largest yaw |theta| of a physical state, rad (about 160 000 turns: sin and cos of theta
+/// keep 10 significant digits).
+pub const MAX_YAW: f64 = 1.0e6;
+/// Largest speed |X'|, |Y'| of a physical state, m/s (1 km/s).
+pub const MAX_SPEED: f64 = 1.0e3;
+/// Largest yaw rate |theta'| of a physical state, rad/s (a turn in 0.6 s).
+pub const MAX_YAW_RATE: f64 = 10.0;
+
+/// The initial state (X, Y, theta) and (X', Y', theta') within the bounds of a physical
+/// state (`simulation::bounds`), each named by its key and shown in the file's unit
+/// (degrees for the angles).
+pub fn check_initial_state(position: &[f64; 3], velocity: &[f64; 3]) -> Result<()> {
+    let (x, y, yaw) = (position[0], position[1], position[2]);
+    let checks = [
+        ("initial.position[0]", x, MAX_OFFSET, 1.0, "m"),
+        ("initial.position[1]", y, MAX_OFFSET, 1.0, "m"),
+        (
+            "initial.heading_deg",
+            yaw,
+            MAX_YAW,
+            1f64.to_degrees(),
+            "deg",
+        ),
+        ("initial.velocity[0]", velocity[0], MAX_SPEED, 1.0, "m/s"),
+        ("initial.velocity[1]", velocity[1], MAX_SPEED, 1.0, "m/s"),
+        (
+            "initial.yaw_rate_deg",
+            velocity[2],
+            MAX_YAW_RATE,
+            1f64.to_degrees(),
+            "deg/s",
+        ),
+    ];
+    for (key, value, bound, scale, unit) in checks {
+        if value.is_nan() || value.abs() > bound {
+            let shown = if scale == 1.0 {
+                written(value)
+            } else {
+                readable(value * scale)
+            };
+            return Err(Error::invalid(
+                key,
+                shown,
+                format!(
+                    "must be within -{} .. {} {unit}: beyond it the state is no physical \
+                     state of a moored platform",
+                    readable(bound * scale),
+                    readable(bound * scale)
+                ),
+            ));
+        }
     }
+    Ok(())
 }
 
 impl Range {
@@ -117,17 +174,32 @@ impl Range {
         if value.is_finite() && (self.min..=self.max).contains(&value) {
             return Ok(());
         }
-        Err(Error::invalid(
+        Err(self.refusal(field, written(value)))
+    }
+
+    /// Refuses an angle held in radians whose file value (degrees) is outside the bounds,
+    /// shown in degrees to six digits (the conversion's last bits are not the user's).
+    pub fn check_degrees(&self, field: impl Into<String>, radians: f64) -> Result<()> {
+        let shown = readable(radians.to_degrees());
+        let degrees: f64 = shown.parse().unwrap_or(f64::NAN);
+        if degrees.is_finite() && (self.min..=self.max).contains(&degrees) {
+            return Ok(());
+        }
+        Err(self.refusal(field, shown))
+    }
+
+    fn refusal(&self, field: impl Into<String>, shown: String) -> Error {
+        Error::invalid(
             field,
-            shown(value),
+            shown,
             format!(
                 "must be within {} .. {} {} ({})",
-                shown(self.min),
-                shown(self.max),
+                written(self.min),
+                written(self.max),
                 self.unit,
                 self.covers
             ),
-        ))
+        )
     }
 }
 
@@ -148,7 +220,7 @@ pub fn check_stiffness(c: &[[f64; 3]; 3]) -> Result<()> {
         if c[i][i] < 0.0 {
             return Err(Error::invalid(
                 *key,
-                shown(c[i][i]),
+                written(c[i][i]),
                 "must not be negative: a negative stiffness pushes the platform away from its \
                  mean position (0 = no internal stiffness: an external mooring restores it)",
             ));
@@ -164,20 +236,14 @@ pub fn check_stiffness(c: &[[f64; 3]; 3]) -> Result<()> {
     let scaled = Matrix3::from_fn(|i, j| 0.5 * (c[i][j] + c[j][i]) * scale[i] * scale[j]);
     let lowest = scaled.symmetric_eigenvalues().min();
     if lowest < -1e-9 {
-        let rows: Vec<String> = c
-            .iter()
-            .map(|row| {
-                let entries: Vec<String> = row.iter().map(|v| shown(*v)).collect();
-                format!("[{}]", entries.join(", "))
-            })
-            .collect();
         return Err(Error::invalid(
             "platform.stiffness",
-            format!("[{}]", rows.join(", ")),
+            written_matrix(c),
             format!(
                 "is not positive semi-definite: a displacement along the eigenvector of its \
-                 symmetric part with the eigenvalue {lowest:.3} (scaled by the diagonal) stores \
-                 negative energy; its off-diagonal terms are larger than the diagonal allows"
+                 symmetric part with the eigenvalue {} (scaled by the diagonal) stores negative \
+                 energy; its off-diagonal terms are larger than the diagonal allows",
+                readable(lowest)
             ),
         ));
     }

@@ -4,6 +4,7 @@
 //! the FMU at initialisation. Values in SI units, four significant digits.
 
 use super::{Inertia, Origin, Problem};
+use crate::error::numbers::written;
 use crate::error::Result;
 use crate::model::{DragModel, DriftDamping};
 
@@ -106,10 +107,14 @@ impl Problem {
         );
         match self.model.drag {
             DragModel::Off => "drag: off".to_string(),
-            DragModel::Combined { cd } => format!("drag: combined (E&S 9), cd {cd}, {strips}"),
-            DragModel::Separate { slow, fast } => {
-                format!("drag: separate (E&S 8), cd_slow {slow}, cd_fast {fast}, {strips}")
+            DragModel::Combined { cd } => {
+                format!("drag: combined (E&S 9), cd {}, {strips}", written(cd))
             }
+            DragModel::Separate { slow, fast } => format!(
+                "drag: separate (E&S 8), cd_slow {}, cd_fast {}, {strips}",
+                written(slow),
+                written(fast)
+            ),
         }
     }
 }

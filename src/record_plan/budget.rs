@@ -17,6 +17,7 @@
 //! less room gets a typed error here instead of an allocation failure later, which would
 //! abort the process (and, in an FMU, the master with it).
 
+use crate::error::numbers::written;
 use crate::error::{bytes_text, Error, Result};
 use crate::forces::distinct_kinematics;
 use crate::hydro::bidirectional::BidirectionalSource;
@@ -81,15 +82,20 @@ impl MemoryEstimate {
         let newman_series = 2.0 * FORCE_AND_DAMPING + 1.0;
         let mut plan = Vec::new();
         let mut run = Vec::new();
-        let block = || format!("{}", problem.run.block_duration);
+        // The records of a block grow with block_duration / time_step: named by the one of
+        // the two the user wrote last.
+        let block_key = problem
+            .origins
+            .latest(&["run.block_duration", "run.time_step"]);
+        let block = || {
+            written(match block_key {
+                "run.time_step" => problem.run.time_step,
+                _ => problem.run.block_duration,
+            })
+        };
         // The planned transform (twiddles and its scratch) and the per-direction drift and
         // damping coefficients on the grid.
-        plan.push(term(
-            "run.block_duration",
-            block(),
-            "the planned FFT",
-            2.0 * C64 * l,
-        ));
+        plan.push(term(block_key, block(), "the planned FFT", 2.0 * C64 * l));
         plan.push(term(
             "sea.n_directions",
             problem.sea.n_directions.to_string(),
@@ -101,7 +107,7 @@ impl MemoryEstimate {
         // force and damping records, the wave components.
         let series = 6.0 * C64 * l + (1.0 + FORCE_AND_DAMPING) * F64 * l + 4.0 * C64 * g;
         run.push(term(
-            "run.block_duration",
+            block_key,
             block(),
             "the records of one block",
             series + tail,

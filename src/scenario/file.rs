@@ -90,6 +90,7 @@ use super::{
     limits, ColumnGrid, Current, DriftSource, InitialCondition, ModelOptions, Origins, Platform,
     Run, Scenario, DEFAULT_BLOCK_DURATION, DEFAULT_N_DIRECTIONS,
 };
+use crate::error::numbers::written;
 use crate::error::{Error, Location, Result};
 use crate::files::Cost;
 use crate::hydro::io::drift_csv::DriftFields;
@@ -173,11 +174,37 @@ pub fn parse(text: &str, origin: &str, base_dir: &Path) -> Result<Scenario> {
     let file: ConfigFile = toml::from_str(text).map_err(|e| Error::Parse {
         path: origin.to_string(),
         line: e.span().map(|span| lines.line(span.start)),
-        message: e.message().to_string(),
+        message: in_the_users_words(e.message(), e.span().and_then(|span| text.get(span))),
     })?;
     let origins = Origins::of_file(origin, text, &lines);
     let source = Source { lines, origin };
     file.into_scenario(&source, base_dir, origins)
+}
+
+/// The reader's message in the user's words: a float shown as the file writes it
+/// (`written`, the text of the value it is about; serde shows every digit, `seed = 1e308`
+/// as "floating point `1000...0.0`" with 309 digits), and the type expected named as a
+/// number, not as Rust's type (`expected u64`).
+fn in_the_users_words(message: &str, written: Option<&str>) -> String {
+    const FLOAT: &str = "invalid type: floating point `";
+    let shown = message
+        .strip_prefix(FLOAT)
+        .and_then(|rest| Some((rest.split_once('`')?.1, written?.trim())));
+    let message = match shown {
+        Some((rest, value)) if !value.is_empty() => format!("{FLOAT}{value}`{rest}"),
+        _ => message.to_string(),
+    };
+    [
+        ("u64", "a whole number, 0 or more"),
+        ("usize", "a whole number, 0 or more"),
+        ("u32", "a whole number, 0 or more"),
+        ("i64", "a whole number"),
+        ("f64", "a number"),
+    ]
+    .iter()
+    .fold(message, |m, (rust, words)| {
+        m.replace(&format!("expected {rust}"), &format!("expected {words}"))
+    })
 }
 
 /// The configuration's lines and its name, to turn spans into `file:line` errors.
@@ -264,7 +291,7 @@ impl ConfigFile {
             environment: self.environment.into_core(),
             sea,
             current: self.current.into_core(),
-            run: self.run.into_core(),
+            run: self.run.into_core().map_err(|e| origins.locate(e))?,
             platform: self.platform.into_core(),
             hydro,
             model,
@@ -498,14 +525,14 @@ fn default_memory_limit_gb() -> f64 {
 }
 
 impl RunFile {
-    fn into_core(self) -> Run {
-        Run {
+    fn into_core(self) -> Result<Run> {
+        Ok(Run {
             duration: self.duration,
             time_step: self.time_step,
             start_time: self.start_time,
             block_duration: self.block_duration,
-            memory_limit: self.memory_limit_gb * crate::error::BYTES_PER_GB,
-        }
+            memory_limit: limits::memory_limit_of_gb(self.memory_limit_gb)?,
+        })
     }
 }
 
@@ -843,7 +870,9 @@ fn columns_grid(
 ) -> std::result::Result<ColumnGrid, String> {
     if !(min > 0.0 && max > min && min.is_finite() && max.is_finite()) {
         return Err(format!(
-            "omega_min = {min}, omega_max = {max}: need 0 < omega_min < omega_max"
+            "omega_min = {}, omega_max = {}: need 0 < omega_min < omega_max",
+            written(min),
+            written(max)
         ));
     }
     if count < 2 {
@@ -851,7 +880,8 @@ fn columns_grid(
     }
     if !(step_deg > 0.0 && step_deg <= 180.0) {
         return Err(format!(
-            "heading_step_deg = {step_deg}: need 0 < step <= 180"
+            "heading_step_deg = {}: need 0 < step <= 180",
+            written(step_deg)
         ));
     }
     Ok(ColumnGrid {
@@ -1207,6 +1237,35 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
         assert_eq!(config.platform.quadratic_damping, [[0.0; 3]; 3]);
         assert!(config.platform.columns.is_empty());
         assert!(!config.hydro.drift.has_damping());
+    }
+
+    /// A float where a whole number belongs is shown as written, not with its 309 digits.
+    #[test]
+    fn a_float_for_a_whole_number_is_shown_as_written() {
+        let text = MINIMAL.replace("tp = 8.0", "tp = 8.0\nseed = 1e308");
+        let line = key_line(&text, "seed");
+        assert_eq!(
+            error_text(&text),
+            format!(
+                "test.toml:{line}: invalid type: floating point `1e308`, expected a whole \
+                 number, 0 or more"
+            )
+        );
+    }
+
+    /// The word messages use for an interaction mode is the one the file takes for it.
+    #[test]
+    fn interaction_words_read_back_as_their_mode() {
+        for mode in [
+            Interaction::Auto,
+            Interaction::None,
+            Interaction::MeanDirection,
+            Interaction::Bidirectional,
+        ] {
+            let text = format!("{MINIMAL}\n[model]\ninteraction = \"{}\"\n", mode.word());
+            let scenario = parse(&text, "test.toml", Path::new(".")).expect("a known word");
+            assert_eq!(scenario.model.interaction, mode);
+        }
     }
 
     #[test]

@@ -9,9 +9,31 @@
 //! that no solve runs for hours.
 
 use super::{DriftSource, Run, Scenario};
-use crate::error::{Error, OverBudget, Result, MEMORY_LIMIT_KEY};
+use crate::error::numbers::readable;
+use crate::error::{Error, OverBudget, Result, BYTES_PER_GB, MEMORY_LIMIT_KEY};
 
 pub use crate::files::budget::{check_memory_limit, DEFAULT_MEMORY_LIMIT};
+
+/// The largest memory limit a user may give, GB (a petabyte, beyond any machine): a larger
+/// one would overflow in bytes and show as `inf`.
+pub const MAX_MEMORY_LIMIT_GB: f64 = 1.0e6;
+
+/// The memory limit in bytes of `gb` as the user gave it (`run.memory_limit_gb`, GB),
+/// refused naming its value as written unless 0 < gb <= [`MAX_MEMORY_LIMIT_GB`].
+pub fn memory_limit_of_gb(gb: f64) -> Result<f64> {
+    if gb > 0.0 && gb <= MAX_MEMORY_LIMIT_GB {
+        Ok(gb * BYTES_PER_GB)
+    } else {
+        Err(Error::invalid(
+            MEMORY_LIMIT_KEY,
+            gb,
+            format!(
+                "must be a number of GB greater than zero and at most {} (a petabyte)",
+                readable(MAX_MEMORY_LIMIT_GB)
+            ),
+        ))
+    }
+}
 
 /// The largest number of discrete directions of a short-crested sea (half a degree apart
 /// over the half circle). The cross-direction terms cost D^2 per record component: 1000
@@ -96,11 +118,12 @@ pub fn check_sizes<H>(scenario: &Scenario<H>, source: Option<&DriftSource>) -> R
         if headings.is_nan() || headings.round() > MAX_SOLVER_HEADINGS as f64 {
             return Err(Error::invalid(
                 "drift.heading_step_deg",
-                grid.heading_step.to_degrees(),
+                readable(grid.heading_step.to_degrees()),
                 format!(
-                    "makes {headings:.0} headings; at most {MAX_SOLVER_HEADINGS} (a step of at \
-                     least {} deg)",
-                    360.0 / MAX_SOLVER_HEADINGS as f64
+                    "makes {} headings; at most {MAX_SOLVER_HEADINGS} (a step of at least {} \
+                     deg)",
+                    readable(headings.round()),
+                    readable(360.0 / MAX_SOLVER_HEADINGS as f64)
                 ),
             ));
         }

@@ -8,6 +8,7 @@
 //! units); [`Origins::locate`] rewrites such an error for the place the value came from.
 
 use super::lines::LineIndex;
+use crate::error::numbers::readable;
 use crate::error::{Error, Location, OverBudget};
 use std::collections::BTreeMap;
 use std::ops::Range;
@@ -66,10 +67,66 @@ impl Origins {
         self.overrides.push((key.to_string(), written));
     }
 
+    /// A setting (key path) as the user wrote it and where, for a message that names it as
+    /// a cause or a remedy rather than refusing its value: `[sea] hs (platform.toml:14)`
+    /// (a key the file leaves out at its section's line, if it has one), `[drift]
+    /// (platform.toml:110)` for a whole section, `row 3, column 'hs' (cases.csv:4)`, `FMU
+    /// parameter Hs`; the key path itself when nothing says where.
+    pub fn name(&self, key: &str) -> String {
+        match self.name_and_place(key) {
+            (name, Some(at)) => format!("{name} ({at})"),
+            (name, None) => name,
+        }
+    }
+
+    /// [`Origins::name`]'s name and place (`platform.toml:14`) apart.
+    pub fn name_and_place(&self, key: &str) -> (String, Option<String>) {
+        let (name, _, at) = self.place(key.to_string(), String::new());
+        let name = if key.contains('.') || self.file.is_none() {
+            name
+        } else {
+            format!("[{key}]")
+        };
+        let at = at.map(|Location { path, line }| match line {
+            Some(line) => format!("{path}:{line}"),
+            None => path,
+        });
+        (name, at)
+    }
+
+    /// Of the settings `keys` (key paths), the one the user wrote last: one written over the
+    /// file (an FMU parameter, a case-table cell; the later, the more recent) before one
+    /// the file writes, before one left at its default; the first of `keys` among equals.
+    /// For a refusal of two settings that do not fit together, the one to name.
+    pub fn latest<'k>(&self, keys: &[&'k str]) -> &'k str {
+        let rank = |key: &str| {
+            let overridden = self.overrides.iter().rposition(|(k, _)| covers(k, key));
+            match overridden {
+                Some(i) => i + 2,
+                None => usize::from(
+                    self.file
+                        .as_ref()
+                        .is_some_and(|(_, lines)| lines.contains_key(key)),
+                ),
+            }
+        };
+        let mut best = keys[0];
+        for &key in &keys[1..] {
+            if rank(key) > rank(best) {
+                best = key;
+            }
+        }
+        best
+    }
+
     /// `error` (from validation, naming a key path) as the user wrote the setting: where
-    /// it was written and under which name. Other errors are returned unchanged.
+    /// it was written and under which name. Other errors, and errors located already (a
+    /// key path has no space, a located name has: `[sea] hs`, `FMU parameter Hs`), are
+    /// returned unchanged.
     pub fn locate(&self, error: Error) -> Error {
         match error {
+            Error::InvalidValue { ref field, .. } if field.contains(' ') => error,
+            Error::OverBudget(ref excess) if excess.field.contains(' ') => error,
             Error::InvalidValue {
                 field,
                 value,
@@ -166,7 +223,7 @@ fn file_key(field: &str) -> String {
 /// A value of a key in degrees (`..._deg`) as the FMU's radians.
 fn in_radians(key: &str, value: String) -> String {
     match value.parse::<f64>() {
-        Ok(deg) if key.contains("_deg") => format!("{} rad", deg.to_radians()),
+        Ok(deg) if key.contains("_deg") => format!("{} rad", readable(deg.to_radians())),
         _ => value,
     }
 }
@@ -287,5 +344,43 @@ mod tests {
             .locate(e)
             .to_string()
             .contains("currentDirection = 3.14159"));
+    }
+
+    /// The setting of two that do not fit together is the one written last: a case-table
+    /// cell over the file, the file over a default, the first named among equals.
+    #[test]
+    fn the_setting_written_last_is_the_one_named() {
+        let text = "[run]\nduration = 10\nblock_duration = 100\n";
+        let mut origins = Origins::of_file("p.toml", text, &LineIndex::new(text));
+        let (step, block, duration) = ("run.time_step", "run.block_duration", "run.duration");
+        assert_eq!(origins.latest(&[block, step]), block);
+        assert_eq!(origins.latest(&[step, block]), block);
+        assert_eq!(origins.latest(&[step, duration]), duration);
+        origins.record(
+            step,
+            Written::CaseTable {
+                at: Location {
+                    path: "cases.csv".into(),
+                    line: Some(2),
+                },
+                row: 1,
+                column: "time_step",
+            },
+        );
+        assert_eq!(origins.latest(&[block, step]), step);
+        assert_eq!(Origins::default().latest(&[block, step]), block);
+    }
+
+    /// A setting a message blames is named as written and where; an error located once is
+    /// not located again.
+    #[test]
+    fn a_blamed_setting_is_named_where_it_was_written() {
+        let origins = Origins::of_file("p.toml", TEXT, &LineIndex::new(TEXT));
+        assert_eq!(origins.name("sea.hs"), "[sea] hs (p.toml:3)");
+        assert_eq!(origins.name("sea.tp"), "[sea] tp (p.toml:1)");
+        assert_eq!(origins.name("platform"), "[platform] (p.toml:5)");
+        assert_eq!(Origins::default().name("sea.hs"), "sea.hs");
+        let once = origins.locate(invalid("sea.hs"));
+        assert_eq!(origins.locate(once.clone()), once);
     }
 }

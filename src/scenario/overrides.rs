@@ -25,6 +25,7 @@
 //! Adding a setting is one entry here (and its FMU variable in modelDescription.xml).
 
 use super::{Current, ModelOptions, Platform, Run, Scenario, Written, DEFAULT_N_DIRECTIONS};
+use crate::error::numbers::written;
 use crate::model::{DragModel, DriftDamping, Interaction, YawFollowing};
 use crate::sea_state::SeaState;
 use crate::sea_state::{Spectrum, Spreading};
@@ -194,7 +195,7 @@ fn number(value: Value) -> Result<f64, Refusal> {
 fn word<'a>(value: Value<'a>) -> Result<&'a str, Refusal> {
     match value {
         Value::Word(w) => Ok(w),
-        Value::Number(x) => Err(Refusal::Invalid(format!("{x} is not a word"))),
+        Value::Number(x) => Err(Refusal::Invalid(format!("{} is not a word", written(x)))),
     }
 }
 
@@ -205,7 +206,8 @@ fn whole(value: Value, min: i64) -> Result<i64, Refusal> {
         Ok(x as i64)
     } else {
         Err(Refusal::Invalid(format!(
-            "{x} is not a whole number of at least {min}"
+            "{} is not a whole number of at least {min}",
+            written(x)
         )))
     }
 }
@@ -256,7 +258,8 @@ pub static SETTINGS: [Setting; 23] = [
             let x = number(v)?;
             if x < 0.0 || !x.is_finite() {
                 return Err(Refusal::Invalid(format!(
-                    "{x} is not 0 or a positive exponent"
+                    "{} is not 0 or a positive exponent",
+                    written(x)
                 )));
             }
             let sea = &mut s.sea;
@@ -408,7 +411,8 @@ pub static SETTINGS: [Setting; 23] = [
             let x = number(v)?;
             if x.fract() != 0.0 || !(0.0..=LARGEST_EXACT_WHOLE).contains(&x) {
                 return Err(Refusal::Invalid(format!(
-                    "{x} is not a whole number of at least 0 (must not be negative)"
+                    "{} is not a whole number of at least 0 (must not be negative)",
+                    written(x)
                 )));
             }
             s.sea.seed = x as u64;
@@ -641,7 +645,8 @@ pub static SETTINGS: [Setting; 23] = [
             }
             if !(half.is_finite() && half > 0.0) {
                 return Err(Refusal::Invalid(format!(
-                    "{half} is not 0 (keep) or a positive half-width"
+                    "{} is not 0 (keep) or a positive half-width",
+                    written(half)
                 )));
             }
             match &mut s.model.yaw_following {

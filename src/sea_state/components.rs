@@ -6,6 +6,7 @@
 //! propagates in direction beta has the phase e^{-i k_n (x cos beta + y sin beta)} at (x, y).
 
 use super::{Direction, SeaState};
+use crate::error::numbers::{readable, typable_below, written};
 use crate::error::{Error, Result};
 use rand_xoshiro::rand_core::{Rng, SeedableRng};
 use rand_xoshiro::{SplitMix64, Xoshiro256PlusPlus};
@@ -48,8 +49,10 @@ impl FrequencyGrid {
                 "run.duration",
                 duration,
                 format!(
-                    "needs {samples} record samples at {dt} s; at most {MAX_RECORD_SAMPLES} \
-                     (about 128 MiB per record) are allowed: split the run or raise the time step"
+                    "needs {} record samples at {} s; at most {MAX_RECORD_SAMPLES} (about 128 \
+                     MiB per record) are allowed: split the run or raise the time step",
+                    readable(samples),
+                    readable(dt)
                 ),
             ));
         }
@@ -64,19 +67,25 @@ impl FrequencyGrid {
                 "run.time_step",
                 2.0 * dt,
                 format!(
-                    "records are sampled at time_step/2 = {dt} s, whose Nyquist frequency \
-                     {nyquist:.4} rad/s is below the wave band's top {:.4} rad/s; \
-                     use time_step < {:.4} s or lower sea.band",
-                    band.1,
-                    2.0 * PI / band.1
+                    "records are sampled at time_step/2 = {} s, whose Nyquist frequency {} \
+                     rad/s is below the wave band's top {} rad/s: use time_step = {} s or \
+                     less, or a [sea] band that ends below {} rad/s",
+                    readable(dt),
+                    readable(nyquist),
+                    readable(band.1),
+                    typable_below(2.0 * PI / band.1),
+                    readable(nyquist)
                 ),
             ));
         }
         if last < first {
             return Err(Error::invalid(
                 "sea.band",
-                format!("[{}, {}]", band.0, band.1),
-                format!("holds no frequency of the grid (d_omega = {d_omega} rad/s)"),
+                format!("[{}, {}]", written(band.0), written(band.1)),
+                format!(
+                    "holds no frequency of the grid (d_omega = {} rad/s)",
+                    readable(d_omega)
+                ),
             ));
         }
         Ok(FrequencyGrid {

@@ -9,6 +9,7 @@ pub use components::{FrequencyGrid, WaveComponents};
 pub use spectrum::{Spectrum, MAX_STEEPNESS};
 pub use spreading::{Direction, Spreading};
 
+use crate::error::numbers::{readable, written};
 use crate::error::{require_finite, Error, Result};
 use serde::Serialize;
 
@@ -44,14 +45,15 @@ impl SeaState {
         if steepness > MAX_STEEPNESS {
             let (field, value) = match &self.spectrum {
                 Spectrum::Tabulated { .. } => ("sea.density", "the table".to_string()),
-                spectrum => ("sea.hs", spectrum.significant_height().to_string()),
+                spectrum => ("sea.hs", written(spectrum.significant_height())),
             };
             return Err(Error::invalid(
                 field,
                 value,
                 format!(
-                    "a sea steeper than waves can be: Hs / L_p = {steepness:.3} (L_p = 2 pi g / \
-                     wp^2, the peak wave's length) exceeds the breaking limit 1/7"
+                    "a sea steeper than waves can be: Hs / L_p = {} (L_p = 2 pi g / wp^2, the \
+                     peak wave's length) exceeds the breaking limit 1/7",
+                    readable(steepness)
                 ),
             ));
         }
@@ -66,7 +68,7 @@ impl SeaState {
             if !(lo > 0.0 && hi > lo) {
                 return Err(Error::invalid(
                     "sea.band",
-                    format!("[{lo}, {hi}]"),
+                    format!("[{}, {}]", written(lo), written(hi)),
                     "needs 0 < omega_min < omega_max",
                 ));
             }

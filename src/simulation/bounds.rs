@@ -8,17 +8,12 @@
 //! records resolve.
 
 use crate::dynamics::{ForceBreakdown, SlowDriftModel};
+use crate::error::numbers::{readable, written};
 use crate::error::{Cause, Error};
 
-/// Largest offset |X|, |Y| of a physical state, m (1000 km).
-pub const MAX_OFFSET: f64 = 1.0e6;
-/// Largest yaw |theta| of a physical state, rad (about 160 000 turns: sin and cos of theta
-/// keep 10 significant digits).
-pub const MAX_YAW: f64 = 1.0e6;
-/// Largest speed |X'|, |Y'| of a physical state, m/s (1 km/s).
-pub const MAX_SPEED: f64 = 1.0e3;
-/// Largest yaw rate |theta'| of a physical state, rad/s (a turn in 0.6 s).
-pub const MAX_YAW_RATE: f64 = 10.0;
+/// The bounds themselves are the problem's physical ranges (an initial state is checked
+/// against them with the configuration).
+pub use crate::problem::ranges::{MAX_OFFSET, MAX_SPEED, MAX_YAW, MAX_YAW_RATE};
 
 /// Names, bounds and units of (X, Y, theta, X', Y', theta'), as the FMU names them.
 const STATE: [(&str, f64, &str); 6] = [
@@ -41,7 +36,11 @@ pub fn violation(position: &[f64; 3], velocity: &[f64; 3]) -> Option<String> {
         .find(|(v, (_, bound, _))| v.is_nan() || v.abs() > *bound)
         .map(|(v, (name, bound, unit))| {
             if v.is_finite() {
-                format!("{name} = {v:e} {unit}, beyond {bound} {unit}")
+                format!(
+                    "{name} = {} {unit}, beyond {} {unit}",
+                    readable(*v),
+                    written(bound)
+                )
             } else {
                 format!("{name} = {v}")
             }
@@ -126,7 +125,7 @@ mod tests {
         assert_eq!(violation(&[1.0, -2.0, 0.1], &[0.5, 0.0, 0.01]), None);
         assert_eq!(
             violation(&[1.0, -2.0, 0.1], &[0.5, -2.5e3, 0.01]).as_deref(),
-            Some("Ydot = -2.5e3 m/s, beyond 1000 m/s")
+            Some("Ydot = -2500 m/s, beyond 1000 m/s")
         );
         assert_eq!(
             violation(&[f64::NAN, 0.0, 0.0], &[0.0; 3]).as_deref(),

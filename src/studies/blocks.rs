@@ -1,6 +1,7 @@
 //! Statistics of consecutive blocks of a record: how the slow-drift statistics settle
 //! after the start (E&S Fig. 11 uses blocks of ten slow-drift cycles).
 
+use crate::error::numbers::readable;
 use crate::error::{require_positive, Error, Result};
 use crate::stats::{summarize, Summary};
 
@@ -18,7 +19,7 @@ pub fn block_summaries(record: &[f64], dt: f64, block: f64) -> Result<Vec<Summar
         return Err(Error::invalid(
             "blocks.block",
             block,
-            format!("holds fewer than 2 samples at dt = {dt} s"),
+            format!("holds fewer than 2 samples at dt = {} s", readable(dt)),
         ));
     }
     if record.len() < per_block {
@@ -26,8 +27,9 @@ pub fn block_summaries(record: &[f64], dt: f64, block: f64) -> Result<Vec<Summar
             "blocks.block",
             block,
             format!(
-                "is longer than the record ({} samples at dt = {dt} s)",
-                record.len()
+                "is longer than the record ({} samples at dt = {} s)",
+                record.len(),
+                readable(dt)
             ),
         ));
     }

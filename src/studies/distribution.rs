@@ -1,6 +1,7 @@
 //! Distributions of samples: histogram density, Gaussian density, box-plot statistics,
 //! standard deviation, log-log slope.
 
+use crate::error::numbers::written;
 use crate::error::{require_finite, Error, Result};
 
 /// A histogram normalised as a probability density.
@@ -35,7 +36,7 @@ pub fn histogram_pdf(values: &[f64], lo: f64, hi: f64, bins: usize) -> Result<Hi
         return Err(Error::invalid(
             "histogram.hi",
             hi,
-            format!("must exceed histogram.lo = {lo}"),
+            format!("must exceed histogram.lo = {}", written(lo)),
         ));
     }
     let width = (hi - lo) / bins as f64;

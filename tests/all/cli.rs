@@ -179,6 +179,19 @@ fn bad_arguments_fail_with_the_usage() {
         ],
     );
     refused(&["frobnicate"], &["unrecognized subcommand 'frobnicate'"]);
+    // No command is a usage error too: the usage and the commands on stderr, status 2
+    // (as `slowdrift hydro` and `slowdrift study` without theirs).
+    let bare = slowdrift(&[]);
+    let stderr = String::from_utf8_lossy(&bare.stderr);
+    assert_eq!(bare.status.code(), Some(2), "{stderr}");
+    assert!(
+        bare.stdout.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&bare.stdout)
+    );
+    for text in ["Usage: slowdrift <COMMAND>", "simulate", "montecarlo"] {
+        assert!(stderr.contains(text), "no {text:?} in {stderr}");
+    }
     refused(
         &["simulate", "--transient", "-5"],
         &["--transient -5: must be a non-negative number of seconds"],
@@ -231,8 +244,10 @@ fn help_lists_the_options_with_units_and_defaults() {
         "slowdrift COMMAND --help",
     ];
     assert_lists(&["--help"], &commands);
-    // Without a command: the same help, and success (as the tool always did).
-    assert_lists(&[], &commands);
+    assert_lists(
+        &["hydro", "--help"],
+        &["imports WAMIT or NEMOH output", "wamit", "nemoh", "columns"],
+    );
     assert_lists(
         &["simulate", "--help"],
         &[
@@ -652,4 +667,83 @@ fn the_memory_limit_is_a_cli_option() {
     assert_eq!(bad.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&bad.stderr)
         .contains("--memory-limit-gb -1: must be a positive number of GB"));
+}
+
+/// `--out` is checked before any work (issue #27): a directory where a file is written, a
+/// file where a study's directory is, a directory that does not exist and a place nobody
+/// can write (sysfs takes no new file, even from root) are refused at once, naming `--out`
+/// and the path; nothing runs and nothing is written (`montecarlo --out DIR` used to run
+/// every run, write `DIR.runs.csv` beside the directory and fail on the summary).
+#[test]
+fn out_is_checked_before_any_work() {
+    let dir = temp_dir("out");
+    std::fs::create_dir_all(&dir).unwrap();
+    let d = dir.to_str().unwrap().to_string();
+    let file = dir.join("plain.csv");
+    std::fs::write(&file, "").unwrap();
+    let f = file.to_str().unwrap().to_string();
+    let missing = dir.join("no/series.csv");
+    let m = missing.to_str().unwrap().to_string();
+    assert!(Path::new("/sys").is_dir(), "the test needs sysfs at /sys");
+    let is_dir = format!("--out {d}: is a directory: give a file's path (such as {d}/results.csv)");
+    let cases: [(Vec<&str>, String); 7] = [
+        (vec!["simulate", "--out", &d], is_dir.clone()),
+        (
+            vec!["montecarlo", "--seeds", "2", "--out", &d],
+            is_dir.clone(),
+        ),
+        (vec!["hydro", "columns", "--out", &d], is_dir.clone()),
+        (
+            vec!["simulate", "--out", &m],
+            format!("--out {m}: its directory {d}/no does not exist"),
+        ),
+        (
+            vec![
+                "montecarlo",
+                "--seeds",
+                "2",
+                "--out",
+                "/sys/slowdrift-results.csv",
+            ],
+            "--out /sys/slowdrift-results.csv: cannot write in /sys: ".to_string(),
+        ),
+        (
+            vec!["study", "drift", "--out", &f],
+            format!(
+                "--out {f}: is a file, not a directory: the study writes several files into \
+                 a directory"
+            ),
+        ),
+        (
+            vec!["study", "waves", "--out", "/sys/slowdrift-study"],
+            "--out /sys/slowdrift-study: cannot make the directory: ".to_string(),
+        ),
+    ];
+    for (args, expected) in cases {
+        let run = slowdrift(&args);
+        let (stdout, stderr) = (
+            String::from_utf8_lossy(&run.stdout),
+            String::from_utf8_lossy(&run.stderr),
+        );
+        assert_eq!(run.status.code(), Some(1), "{args:?}: {stderr}");
+        assert!(
+            stderr.starts_with(&format!("slowdrift: {expected}")),
+            "{args:?}: {stderr}"
+        );
+        assert!(stdout.is_empty(), "{args:?}: nothing runs, but: {stdout}");
+    }
+    // Nothing was written beside the directory or in it.
+    assert!(!dir
+        .with_file_name(format!(
+            "{}.runs.csv",
+            dir.file_name().unwrap().to_string_lossy()
+        ))
+        .exists());
+    let mut left: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    left.sort();
+    assert_eq!(left, ["plain.csv"]);
+    std::fs::remove_dir_all(&dir).ok();
 }

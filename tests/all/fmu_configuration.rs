@@ -302,6 +302,10 @@ fn messages_name_the_parameters_the_user_set() {
         0.01,
         "FMU parameter memoryLimit = 0.01 (10.000 MB)",
     );
+    // A step longer than a 64th of a record block (16384 s): named as the step, not as the
+    // block, which an FMU's user cannot set.
+    assert_refusal_names(vr::STEP_SIZE, 500.0, "FMU parameter stepSize = 500");
+    assert_refusal_names(vr::STEP_SIZE, 20000.0, "FMU parameter stepSize = 20000");
     // 1 kB: not even the embedded configuration reads; named as the FMU's, not by the
     // master's folder.
     assert_refusal_names(

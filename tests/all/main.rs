@@ -9,6 +9,7 @@ mod architecture;
 mod bad_input;
 mod budget;
 mod cli;
+mod cli_words;
 mod default_platform;
 mod directional;
 mod drag_current;

@@ -563,6 +563,68 @@ fn a_stopped_or_killed_campaign_resumes_to_the_uninterrupted_one() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// Issue #27: a case that a campaign stopped by SIGINT never reached reads `not started`
+/// in the summary (with no seed done and none failed), not `failed`; the case it stopped in
+/// reads `partial`. The seeds are announced in words (`seeds 1 to 24`).
+#[test]
+fn a_case_a_stopped_campaign_never_reached_is_not_started() {
+    let dir = scratch("not-started");
+    let cases = dir.join("cases.csv");
+    std::fs::write(
+        &cases,
+        "name,hs
+first,3
+second,4
+",
+    )
+    .unwrap();
+    let out = dir.join("r.csv");
+    let args = [
+        "--cases",
+        cases.to_str().unwrap(),
+        "--duration",
+        "8192",
+        "--seeds",
+        "24",
+        "--threads",
+        "1",
+    ];
+    let child = Command::new(env!("CARGO_BIN_EXE_slowdrift"))
+        .args(["montecarlo", "--config", EXAMPLE])
+        .args(args)
+        .arg("--out")
+        .arg(&out)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    wait_until("two runs of the first case", || {
+        std::fs::read_to_string(runs_file(&out)).is_ok_and(|t| t.lines().count() > 2)
+    });
+    send("INT", &child);
+    let stopped = child.wait_with_output().unwrap();
+    let stdout = String::from_utf8_lossy(&stopped.stdout);
+    assert_eq!(
+        stopped.status.code(),
+        Some(130),
+        "{}",
+        String::from_utf8_lossy(&stopped.stderr)
+    );
+    assert!(stdout.contains("seeds 1 to 24 of every case"), "{stdout}");
+    assert!(stdout.contains("second           not started"), "{stdout}");
+    let summary = read(&out);
+    let rows: Vec<&str> = summary.lines().skip(1).collect();
+    assert_eq!(rows.len(), 6, "2 cases x 3 DOFs:\n{summary}");
+    for row in rows {
+        if row.starts_with("second,") {
+            assert!(row.contains(",24,0,0,not started,"), "{row}");
+        } else {
+            assert!(row.contains(",0,partial,"), "{row}");
+        }
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 /// Issue #15 item 4: the summary is written anew atomically, so a kill at any moment of a
 /// rewrite leaves it whole. A finished campaign of 150 cases (a summary of 450 lines) is
 /// started again (nothing to run: it rewrites the summary) and killed at 20 moments spread

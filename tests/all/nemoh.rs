@@ -266,6 +266,43 @@ fn an_off_axis_reference_point_is_moved_to_the_origin() {
     }
 }
 
+/// The files and sections the import names are NEMOH's as it writes them: every file a
+/// line of the import's report names exists under that name (case included) in NEMOH's
+/// project, and a missing section is named by the header NEMOH writes in Nemoh.cal.
+#[test]
+fn files_and_sections_are_named_as_nemoh_writes_them() {
+    let Some(dir) = oc3_dir_or_skip() else {
+        return;
+    };
+    let import = nemoh::import(&dir, LIMIT).unwrap();
+    let mut named = 0;
+    for line in &import.files {
+        let Some((path, _)) = line.split_once(": ") else {
+            continue;
+        };
+        if path.starts_with(&dir.display().to_string()) {
+            assert!(PathBuf::from(path).is_file(), "{line}");
+            named += 1;
+        }
+    }
+    assert!(named >= 5, "{:?}", import.files);
+    let cal = std::fs::read_to_string(dir.join("Nemoh.cal")).unwrap();
+    for header in ["Description of floating bodies", "Load cases to be solved"] {
+        let line = cal
+            .lines()
+            .find(|l| l.starts_with(&format!("--- {header} ")))
+            .unwrap_or_else(|| panic!("NEMOH's Nemoh.cal has a {header:?} header"));
+        let copy = temp_dir("nemoh-header");
+        std::fs::create_dir_all(&copy).unwrap();
+        std::fs::write(copy.join("Nemoh.cal"), cal.replace(line, "--- ---")).unwrap();
+        let message = nemoh::import(&copy, LIMIT).unwrap_err().to_string();
+        assert!(
+            message.ends_with(&format!("Nemoh.cal: no \"--- {header} ---\" section")),
+            "{message}"
+        );
+    }
+}
+
 /// NEMOH's frequencies in another unit than Nemoh.cal says: refused naming the line.
 #[test]
 fn a_qtf_in_another_unit_than_nemoh_cal_names_is_refused() {

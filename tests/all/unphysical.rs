@@ -45,7 +45,7 @@ fn an_unstable_step_is_blamed_on_the_step() {
     let refused = run(2.0, 0.0).unwrap_err().to_string();
     assert!(
         refused.contains("invalid platform.stiffness[0][0]")
-            && refused.contains("natural period of 2.000e0 s, too short for RK4 steps of 1 s"),
+            && refused.contains("natural period of 2 s, too short for RK4 steps of 1 s"),
         "{refused}"
     );
     match run(4.0, 4.0) {
@@ -133,8 +133,8 @@ fn restored_states_beyond_the_bounds_are_refused() {
     };
     for (word, value, name) in [
         (6, 1e200, "Xdot = 1e200 m/s"),
-        (6, -1.5 * MAX_SPEED, "Xdot = -1.5e3 m/s"),
-        (8, 2.0 * MAX_YAW_RATE, "thetadot = 2e1 rad/s"),
+        (6, -1.5 * MAX_SPEED, "Xdot = -1500 m/s"),
+        (8, 2.0 * MAX_YAW_RATE, "thetadot = 20 rad/s"),
     ] {
         let message = Snapshot::from_bytes(&with_word(word, value))
             .unwrap_err()
@@ -191,7 +191,11 @@ fn the_fmu_refuses_a_forged_state_with_absurd_velocities() {
 /// is an Hs of 32.1 m), not by a misleading "reduce the step".
 #[test]
 fn the_fmu_refuses_an_hs_steeper_than_waves_can_be() {
-    for (hs, refused) in [(1e200, true), (33.0, true), (31.0, false)] {
+    for (hs, written, refused) in [
+        (1e200, "1e200", true),
+        (33.0, "33", true),
+        (31.0, "", false),
+    ] {
         let fmu = Fmu::new("steep");
         assert_eq!(fmu.setup(0.0, Some(3600.0)), fmi2Status::fmi2OK);
         assert_eq!(fmu.set_real(vr::HS, hs), fmi2Status::fmi2OK);
@@ -201,7 +205,7 @@ fn the_fmu_refuses_an_hs_steeper_than_waves_can_be() {
             let message = fmu.last_message().message;
             assert!(
                 message.contains(&format!(
-                    "FMU parameter Hs = {hs}: a sea steeper than waves"
+                    "FMU parameter Hs = {written}: a sea steeper than waves"
                 )) && message.contains("exceeds the breaking limit 1/7"),
                 "{message}"
             );

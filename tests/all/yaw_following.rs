@@ -415,7 +415,7 @@ fn yaw_following_in_a_spread_sea_with_interaction_is_refused() {
     c.model.interaction = Interaction::Auto;
     let e = Simulation::new(c).unwrap_err();
     assert!(
-        matches!(&e, Error::InvalidValue { field, .. } if field == "model.yaw_following"),
+        matches!(&e, Error::InvalidValue { field, .. } if field == "[model] yaw_following"),
         "{e}"
     );
     assert!(e.to_string().contains("cross-direction terms"), "{e}");

@@ -187,7 +187,7 @@ def _run_locked(settings, arguments, cases, seeds, path, client, campaign):
         ok = {(r.case, r.seed) for r in done if r.ok}
         jobs = [(case, seed) for case in cases for seed in seeds if (case.name, seed) not in ok]
         total = len(cases) * settings.seeds
-        print(f"{len(cases)} case(s) x {settings.seeds} seeds ({seeds.start}..={seeds.stop - 1})"
+        print(f"{len(cases)} case(s) x {settings.seeds} seeds ({seeds.start} to {seeds.stop - 1})"
               f" = {total} runs; {total - len(jobs)} already in {path}; {len(jobs)} to run on "
               f"Dask ({settings.backend} backend)")
         for case in cases:

@@ -34,8 +34,12 @@ class CaseSummary:
         return len(self.values[0][0])
 
     def status(self, requested):
+        """As the native tool's: complete, partial, failed (none done, some failed) or not
+        started (none run)."""
         done = self.done()
-        return "failed" if done == 0 else "complete" if done == requested else "partial"
+        if done == 0:
+            return "failed" if self.failed else "not started"
+        return "complete" if done == requested else "partial"
 
 
 def write_summary(path, summaries, requested):
@@ -82,3 +86,5 @@ def print_summary(summaries, requested):
                   f"{cells[0]:>24} {cells[1]:>24} {cells[2]:>24}")
         if s.first_error:
             print(f"{s.name:<16} {s.failed} run(s) failed; first: {s.first_error}")
+        elif s.status(requested) == "not started":
+            print(f"{s.name:<16} not started")

@@ -94,7 +94,7 @@ struct BoxplotsArgs {
     #[arg(long, value_name = "A..B", allow_hyphen_values = true, default_value = "11..17",
           value_parser = Checked(exponents))]
     exponents: Exponents,
-    /// Seeds (1..N) per record length, each at least 2: one count for every length or one per
+    /// Seeds (1 to N) per record length, each at least 2: one count for every length or one per
     /// length [default: 1000,1000,1000,400,200,200,200 for 11..17, else 200]
     #[arg(long, value_name = "N,N,...", allow_hyphen_values = true,
           value_parser = Checked(sample_counts))]
@@ -118,7 +118,7 @@ struct TransientArgs {
     /// default platform]
     #[arg(long, value_name = "FILE.toml", allow_hyphen_values = true)]
     config: Option<PathBuf>,
-    /// Runs (seeds 1..N, the same for every offset) per initial offset, at least 2
+    /// Runs (seeds 1 to N, the same for every offset) per initial offset, at least 2
     #[arg(long, value_name = "N", allow_hyphen_values = true, default_value_t = 200,
           value_parser = whole(2usize))]
     runs: usize,
@@ -155,7 +155,7 @@ struct SensitivityArgs {
     /// The case-table column on the x axis (cd, cd_slow, current_speed, hs, ...)
     #[arg(long, value_name = "COLUMN", allow_hyphen_values = true)]
     x: String,
-    /// Seeds 1..N per case, at least 2
+    /// Seeds 1 to N per case, at least 2
     #[arg(long, value_name = "N", allow_hyphen_values = true, default_value_t = 100,
           value_parser = whole(2usize))]
     seeds: usize,
@@ -189,7 +189,7 @@ pub fn run(args: StudyArgs) -> Result<(), Failure> {
         Study::Transient(a) => (&a.config, &a.out),
         Study::Sensitivity(a) => (&a.config, &a.out),
     };
-    std::fs::create_dir_all(out).map_err(|e| format!("{}: {e}", out.display()))?;
+    super::out::directory(out)?;
     let base = match config {
         Some(path) => problem::load(path).map_err(|e| e.to_string())?,
         None => {
@@ -197,6 +197,13 @@ pub fn run(args: StudyArgs) -> Result<(), Failure> {
             default_problem().map_err(|e| e.to_string())?
         }
     };
+    // Checked before anything runs: the configuration a study simulates whole, the columns
+    // (and environment) of the one whose drift it compares.
+    match &args.study {
+        Study::Drift(_) => base.check_columns(),
+        _ => base.check(),
+    }
+    .map_err(|e| e.to_string())?;
     match &args.study {
         Study::Drift(a) => Ok(drift::drift(&base, a)?),
         Study::Waves(a) => Ok(waves::waves(&base, a)?),

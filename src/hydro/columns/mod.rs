@@ -61,6 +61,7 @@
 mod drift;
 mod scattering;
 
+use crate::error::numbers::{readable, written};
 use crate::error::{require_finite, require_positive, Error, Result};
 use crate::hydro::aranha::{aranha_coefficients, ColumnMoments};
 use crate::hydro::column_drift::{validate_grid, MAX_KA};
@@ -163,11 +164,17 @@ impl ColumnArray {
                 if distance <= 0.5 * (ci.diameter + cj.diameter) {
                     return Err(Error::invalid(
                         format!("platform.columns[{j}]"),
-                        format!("({}, {}) m, diameter {} m", cj.x, cj.y, cj.diameter),
                         format!(
-                            "overlaps or touches platform.columns[{i}]: centres {distance} m \
-                             apart, radii sum {} m",
-                            0.5 * (ci.diameter + cj.diameter)
+                            "({}, {}) m, diameter {} m",
+                            written(cj.x),
+                            written(cj.y),
+                            written(cj.diameter)
+                        ),
+                        format!(
+                            "overlaps or touches platform.columns[{i}]: centres {} m apart, \
+                             radii sum {} m",
+                            readable(distance),
+                            readable(0.5 * (ci.diameter + cj.diameter))
                         ),
                     ));
                 }
@@ -349,11 +356,12 @@ impl ColumnArray {
             if ka > MAX_KA {
                 return Err(Error::invalid(
                     format!("drift.omegas[{iw}]"),
-                    format!("{omega} rad/s"),
+                    format!("{} rad/s", written(omega)),
                     format!(
-                        "k a = {ka:.1} exceeds {MAX_KA} (the verified Bessel range) for a \
-                         column of diameter {} m",
-                        c.diameter
+                        "k a = {} exceeds {MAX_KA} (the verified Bessel range) for a column of \
+                         diameter {} m",
+                        readable(ka),
+                        written(c.diameter)
                     ),
                 ));
             }
@@ -365,7 +373,7 @@ impl ColumnArray {
         FrequencySystem::new(&self.cylinders, k, modes).ok_or_else(|| {
             Error::invalid(
                 format!("drift.omegas[{iw}]"),
-                format!("{omega} rad/s"),
+                format!("{} rad/s", written(omega)),
                 "the scattering system is singular or out of the Hankel functions' range \
                  at this frequency",
             )

@@ -464,14 +464,18 @@ impl HydroDatabase {
                 .filter(|b| b.headings.0 != b.headings.1)
                 .count();
             files.push(format!(
-                "{}: QTF, {} frequencies {:.4} .. {:.4} rad/s, headings {} deg, DOFs {:?} \
+                "{}: QTF, {} frequencies {:.4} .. {:.4} rad/s, headings {} deg, DOFs {} \
                  (kept 1, 2, 6), {} values filled by Hermitian symmetry{}{}",
                 path.display(),
                 read.omegas().len(),
                 read.omegas()[0],
                 read.omegas()[read.omegas().len() - 1],
                 degrees(&headings),
-                read.dofs(),
+                read.dofs()
+                    .iter()
+                    .map(usize::to_string)
+                    .collect::<Vec<_>>()
+                    .join(", "),
                 read.filled_by_symmetry(),
                 match read.filled_by_interpolation() {
                     0 => String::new(),

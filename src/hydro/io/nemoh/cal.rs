@@ -6,6 +6,7 @@
 //! numbers of its line (NEMOH's comments follow them). Errors name `Nemoh.cal:LINE` and the
 //! field.
 
+use crate::error::numbers::written;
 use crate::error::{Error, Result};
 use crate::files::Cost;
 use std::path::Path;
@@ -140,18 +141,22 @@ impl NemohCal {
         let depth = cursor.numbers(1, "DEPTH")?[0];
         for (value, field) in [(rho, "RHO"), (gravity, "G")] {
             if value.is_nan() || value <= 0.0 {
-                return Err(
-                    cursor.error_at(cursor.at, format!("{field} = {value} must be positive"))
-                );
+                return Err(cursor.error_at(
+                    cursor.at,
+                    format!("{field} = {} must be positive", written(value)),
+                ));
             }
         }
         if depth < 0.0 {
             return Err(cursor.error_at(
                 cursor.at,
-                format!("DEPTH = {depth} must be 0 (infinite) or positive"),
+                format!(
+                    "DEPTH = {} must be 0 (infinite) or positive",
+                    written(depth)
+                ),
             ));
         }
-        cursor.section("floating bodies")?;
+        cursor.section("Description of floating bodies")?;
         let bodies = cursor.numbers(1, "Number of bodies")?[0];
         if bodies != 1.0 {
             return Err(cursor.error_at(
@@ -163,7 +168,7 @@ impl NemohCal {
         cursor.skip(2); // the mesh file's name; its points and panels
         let dofs = cursor.generalised("Number of degrees of freedom")?;
         let forces = cursor.generalised("Number of resulting generalised forces")?;
-        cursor.section("Load cases")?;
+        cursor.section("Load cases to be solved")?;
         let (first_order_unit, first_order, first_order_line) = {
             let values = cursor.leading_numbers("frequencies (type, count, min, max)")?;
             let line = cursor.at;
@@ -270,7 +275,8 @@ impl Cursor<'_> {
         }
     }
 
-    /// Moves past the section header containing `title`; an error when there is none.
+    /// Moves past the section header containing `title` (as NEMOH writes it); an error
+    /// when there is none.
     fn section(&mut self, title: &str) -> Result<()> {
         self.find_section(title).ok_or_else(|| Error::Parse {
             path: self.name.to_string(),
@@ -326,7 +332,10 @@ impl Cursor<'_> {
         } else {
             Err(self.error_at(
                 self.at,
-                format!("{field} = {value}: must be a whole number from 1 to 1e6"),
+                format!(
+                    "{field} = {}: must be a whole number from 1 to 1e6",
+                    written(value)
+                ),
             ))
         }
     }
@@ -338,7 +347,10 @@ impl Cursor<'_> {
             3.0 => Ok(FrequencyUnit::Second),
             v => Err(self.error_at(
                 self.at,
-                format!("{field} = {v}: must be 1 (rad/s), 2 (Hz) or 3 (s)"),
+                format!(
+                    "{field} = {}: must be 1 (rad/s), 2 (Hz) or 3 (s)",
+                    written(v)
+                ),
             )),
         }
     }

@@ -185,7 +185,7 @@ pub fn import(dir: &Path, memory_limit: f64) -> Result<NemohImport> {
             qtf_data = Some(database::qtf_data(&qtf, force)?);
             files.push(format!(
                 "{}: QTF, {} frequencies {:.4} .. {:.4} rad/s (Nemoh.cal's grid; printed in {}), \
-                 headings {} deg{}, forces {:?} = surge, sway, yaw; values x rho g, conjugated \
+                 headings {} deg{}, forces {} = surge, sway, yaw; values x rho g, conjugated \
                  from NEMOH's e^(-i w t) to e^(i w t); {} values filled by Hermitian symmetry{}; \
                  mean drift = the diagonal",
                 path.display(),
@@ -203,7 +203,7 @@ pub fn import(dir: &Path, memory_limit: f64) -> Result<NemohImport> {
                 } else {
                     ""
                 },
-                force,
+                force.map(|k| k.to_string()).join(", "),
                 qtf.filled_by_symmetry(),
                 match qtf.filled_by_interpolation() {
                     0 => String::new(),

@@ -2,6 +2,7 @@
 
 use super::NumericFile;
 use super::WamitOptions;
+use crate::error::numbers::written;
 use crate::error::Result;
 use std::collections::HashMap;
 use std::path::Path;
@@ -47,16 +48,18 @@ pub fn read_added_mass_damping(path: &Path, options: &WamitOptions) -> Result<Ad
             return Err(file.error(
                 r.line,
                 format!(
-                    "PER = {period}: a period is positive, or -1 (omega = 0) or 0 (omega = infinity)"
+                    "PER = {}: a period is positive, or -1 (omega = 0) or 0 (omega = infinity)",
+                    written(period)
                 ),
             ));
         } else if r.values.len() == 5 && r.values[4] != 0.0 {
             return Err(file.error(
                 r.line,
                 format!(
-                    "PER = {period} (omega = {}) has non-zero damping {}",
+                    "PER = {} (omega = {}) has non-zero damping {}",
+                    written(period),
                     if period == 0.0 { "infinity" } else { "0" },
-                    r.values[4]
+                    written(r.values[4])
                 ),
             ));
         }
@@ -89,7 +92,10 @@ pub fn read_added_mass_damping(path: &Path, options: &WamitOptions) -> Result<Ad
             if r.values.len() != 5 {
                 return Err(file.error(
                     r.line,
-                    format!("PER = {period}: expected 5 numbers (PER I J Abar Bbar), found 4"),
+                    format!(
+                        "PER = {}: expected 5 numbers (PER I J Abar Bbar), found 4",
+                        written(period)
+                    ),
                 ));
             }
             let omega = super::omega_of_period(period);
@@ -100,7 +106,10 @@ pub fn read_added_mass_damping(path: &Path, options: &WamitOptions) -> Result<Ad
         if let Some(first) = seen.insert((slot, i, j), r.line) {
             return Err(file.error(
                 r.line,
-                format!("entry ({i}, {j}) at PER = {period} given twice (first at line {first})"),
+                format!(
+                    "entry ({i}, {j}) at PER = {} given twice (first at line {first})",
+                    written(period)
+                ),
             ));
         }
         let a = options.added_mass_scale(i, j) * r.values[3];

@@ -43,6 +43,7 @@ pub(in crate::hydro::io) use qtf::{assemble_qtf, QtfEntry};
 pub use qtf::{read_difference_qtf, DifferenceQtf, QtfBlock};
 
 use super::written::first_cut;
+use crate::error::numbers::written;
 use crate::error::MEMORY_LIMIT_KEY;
 use crate::error::{require_positive, Error, Result};
 use crate::files::budget::{check_memory_limit, Cost, DEFAULT_MEMORY_LIMIT};
@@ -267,8 +268,9 @@ impl NumericFile {
             Err(self.error(
                 record.line,
                 format!(
-                    "{name} = {v}: a DOF index must be an integer from 1 to 6 \
-                     (single-body files only)"
+                    "{name} = {}: a DOF index must be an integer from 1 to 6 (single-body \
+                     files only)",
+                    written(v)
                 ),
             ))
         }
@@ -298,18 +300,22 @@ impl NumericFile {
             record.line,
             if conjugate {
                 format!(
-                    "abs(F) = {modulus}, phase = {phase} deg is the conjugate of Re, Im = {}, {}: \
-                     the line mixes the time conventions e^(i w t) and e^(-i w t); convert the \
-                     file to one of them (WAMIT's is e^(i w t), Re + i Im = abs(F) e^(i phase))",
-                    v[first + 2],
-                    v[first + 3]
+                    "abs(F) = {}, phase = {} deg is the conjugate of Re, Im = {}, {}: the line \
+                     mixes the time conventions e^(i w t) and e^(-i w t); convert the file to \
+                     one of them (WAMIT's is e^(i w t), Re + i Im = abs(F) e^(i phase))",
+                    written(modulus),
+                    written(phase),
+                    written(v[first + 2]),
+                    written(v[first + 3])
                 )
             } else {
                 format!(
-                    "abs(F) = {modulus}, phase = {phase} deg and Re, Im = {}, {} are not the \
-                     same complex number (fields {} to {})",
-                    v[first + 2],
-                    v[first + 3],
+                    "abs(F) = {}, phase = {} deg and Re, Im = {}, {} are not the same complex \
+                     number (fields {} to {})",
+                    written(modulus),
+                    written(phase),
+                    written(v[first + 2]),
+                    written(v[first + 3]),
                     first + 1,
                     first + 4
                 )
@@ -327,8 +333,9 @@ impl NumericFile {
             Err(self.error(
                 record.line,
                 format!(
-                    "{name} = {period}: the period must be greater than zero (and give a finite \
-                     frequency 2 pi / PER)"
+                    "{name} = {}: the period must be greater than zero (and give a finite \
+                     frequency 2 pi / PER)",
+                    written(period)
                 ),
             ))
         }
