@@ -169,7 +169,7 @@ file = "{database}"
     run = subprocess.run([slowdrift_binary(), "simulate", "--config", config],
                          capture_output=True, text=True)
     assert run.returncode == 0, run.stderr
-    assert "3 directions, interaction between them: Bidirectional" in run.stdout, run.stdout
+    assert "3 directions, interaction between them: bidirectional" in run.stdout, run.stdout
     sway = next(line for line in run.stdout.splitlines() if line.startswith("sway"))
     print(run.stdout)
     # Waves towards +y on average: a positive mean sway drift.
