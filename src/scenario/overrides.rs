@@ -736,7 +736,14 @@ pub static SETTINGS: [Setting; 23] = [
         words: &[],
         meaning: "memory the records may take, GB (1e9 bytes); larger estimates are refused",
         apply: |s, v| {
-            s.run.memory_limit = number(v)? * crate::error::BYTES_PER_GB;
+            let gb = number(v)?;
+            if !(gb > 0.0 && gb <= super::limits::MAX_MEMORY_LIMIT_GB) {
+                return Err(Refusal::Invalid(format!(
+                    "must be a number of GB greater than zero and at most {} (a petabyte)",
+                    crate::error::numbers::readable(super::limits::MAX_MEMORY_LIMIT_GB)
+                )));
+            }
+            s.run.memory_limit = gb * crate::error::BYTES_PER_GB;
             Ok(())
         },
         get: |s| Value::Number(s.run.memory_limit / crate::error::BYTES_PER_GB),

@@ -151,9 +151,12 @@ fn every_bound_of_the_xml_is_the_fmus() {
             checked += 1;
         }
     }
-    // 17 mins (the declared stiffness types' included) and 7 maxes; among them the bounds
+    // 17 mins (the declared stiffness types' included) and 8 maxes; among them the bounds
     // the code has and the XML did not say.
-    assert_eq!(checked, 24, "{bounds:#?}");
+    assert_eq!(checked, 25, "{bounds:#?}");
+    assert!(bounds
+        .iter()
+        .any(|b| b.name == "memoryLimit" && b.max == Some(1e6)));
     for name in ["Tp", "currentSpeed", "nDirections", "yawFollowingHeadings"] {
         let b = bounds.iter().find(|b| b.name == name).unwrap();
         assert!(b.min.is_some() && b.max.is_some(), "{b:?}");
