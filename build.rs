@@ -5,7 +5,8 @@
 //! The build fails with a message naming the offending variable on: duplicate names,
 //! duplicate value references within a base type, illegal causality/variability/initial
 //! combinations, missing or forbidden start values, start values outside min/max, missing
-//! descriptions, and a ModelStructure whose Outputs or InitialUnknowns do not match the
+//! descriptions, LogCategories other than the FMI layer's (`slowdrift_fmi::log::Category`,
+//! in its order), and a ModelStructure whose Outputs or InitialUnknowns do not match the
 //! variables. The variables must be master-neutral (docs/fmu.md, "Master-neutral variables"):
 //! no Enumeration (libcosim and ecos register only Real, Integer, Boolean and String: a mode
 //! is an Integer with min, max and its codes in the description), and every Real carries
@@ -14,21 +15,15 @@
 
 use quick_xml::events::{BytesStart, Event};
 use quick_xml::{Reader, XmlVersion};
+use slowdrift_fmi::log::Category;
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
 const XML_PATH: &str = "modelDescription/modelDescription.xml";
-/// The log categories the FMU layer writes to; the XML must declare them.
-const REQUIRED_LOG_CATEGORIES: [&str; 5] = [
-    "logStatusError",
-    "logStatusWarning",
-    "logStatusDiscard",
-    "logEvents",
-    "logAll",
-];
-/// Linker version script of the cdylib: `fmi2*` global, everything else local.
-const VERSION_SCRIPT: &str = "src/fmi2/exports.map";
+/// Linker version script of every FMU's cdylib (the FMI layer's): `fmi2*` global,
+/// everything else local.
+const VERSION_SCRIPT: &str = "fmi/src/fmi2/exports.map";
 
 /// One `ScalarVariable` as read from the XML.
 #[derive(Debug, Default)]
@@ -282,20 +277,13 @@ fn check(m: &Model) -> Vec<String> {
     if m.vars.is_empty() {
         errors.push("no ScalarVariable".into());
     }
-    let mut categories = BTreeSet::new();
-    for c in &m.log_categories {
-        if !is_c_identifier(c) || !categories.insert(c) {
-            errors.push(format!(
-                "log category {c:?} is duplicated or not an identifier"
-            ));
-        }
-    }
-    for required in REQUIRED_LOG_CATEGORIES {
-        if !categories.contains(&required.to_string()) {
-            errors.push(format!(
-                "LogCategories lacks {required:?}, which the FMU logs to"
-            ));
-        }
+    // The FMI layer logs to exactly these categories, and fmi2SetDebugLogging accepts them.
+    let layer = Category::ALL.map(Category::name);
+    if m.log_categories != layer {
+        errors.push(format!(
+            "LogCategories are {:?}: they must be the FMI layer's, {layer:?}, in this order",
+            m.log_categories
+        ));
     }
 
     let mut names = BTreeMap::new();
@@ -660,26 +648,6 @@ fn generate(m: &Model) -> String {
         "pub const NUMBER_OF_VARIABLES: usize = {};\n",
         m.vars.len()
     );
-
-    let _ = writeln!(
-        w,
-        "/// The `LogCategories` in the XML's order (`fmi2SetDebugLogging` accepts exactly these)."
-    );
-    let _ = writeln!(
-        w,
-        "pub const LOG_CATEGORIES: &[&str] = &{:?};",
-        m.log_categories
-    );
-    let _ = writeln!(
-        w,
-        "/// Indices into [`LOG_CATEGORIES`], one constant per category."
-    );
-    let _ = writeln!(w, "pub mod log_category {{");
-    for (i, c) in m.log_categories.iter().enumerate() {
-        let _ = writeln!(w, "    /// `{c}`.");
-        let _ = writeln!(w, "    pub const {}: usize = {i};", const_name(c));
-    }
-    let _ = writeln!(w, "}}\n");
 
     let _ = writeln!(
         w,

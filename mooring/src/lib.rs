@@ -9,9 +9,12 @@
 //! - [`catenary`], [`lines_file`], [`quasi_static`]: the quasi-static alternative to
 //!   MoorDyn's dynamic lines (`mooringModel` = 1): each line an elastic catenary on a
 //!   frictionless seabed, read from the same MoorDyn input file.
-//! - [`fmi2`]: the C ABI (the 34 FMI 2.0 functions), its variables, and the state machine
-//!   and C types shared with SlowDrift's FMU (`src/fmi2/machine.rs`, `src/fmi2/types.rs` of
-//!   the workspace root).
+//! - [`fmi2`]: the C ABI (the 34 FMI 2.0 functions, shims into the FMI layer that SlowDrift's
+//!   FMU shares, the workspace's `slowdrift-fmi`), its variables and the model it runs.
+
+// Unsafe code: only MoorDyn's C library (`moordyn`) and the C shims (`fmi2::exports`) allow
+// it (checked by the workspace's tests/all/architecture.rs).
+#![deny(unsafe_code)]
 
 pub mod catenary;
 pub mod fmi2;

@@ -1,10 +1,8 @@
-//! Every FMI 2.0 common and co-simulation function, as `extern "C"` symbols.
-//!
-//! Each body runs inside `firewall` (`catch_unwind`): a panic becomes `fmi2Error` (NULL
-//! from `fmi2Instantiate`) and a log line, never an unwind into the host. Pointers become
-//! references and slices here, checked (`slice`, `slice_mut`, `out`); the work is done
-//! by the safe `Instance`. Functions this FMU does not support exist (masters resolve all
-//! of them at load time) and answer `fmi2Error` with the reason.
+//! Every FMI 2.0 common and co-simulation function, as `extern "C"` symbols: thin shims that
+//! call the function of the same name of the shared FMI layer
+//! (`slowdrift_fmi::fmi2::functions`) with this FMU's model, [`Instance`]. The layer checks
+//! the call against the state machine, turns the pointers into references, runs the model
+//! behind its panic firewall and reports the result; this file has no logic of its own.
 //!
 //! # Safety
 //!
@@ -17,129 +15,23 @@
 #![allow(non_snake_case)]
 #![allow(clippy::missing_safety_doc)] // the module documentation above states the contract
 
-use super::fmu_error::FmuError;
 use super::instance::Instance;
-use super::logger::Logger;
-use super::machine::{Call, MachineState};
-use super::parameters::file_uri_to_path;
-use super::resources::{holds_configuration_of, RESOURCE_CONFIG};
-use super::state::FmuState;
-use super::types::*;
-use crate::fmi2::model_description::{log_category, GUID, MODEL_IDENTIFIER};
-use std::ffi::{c_char, CStr};
-use std::panic::{catch_unwind, AssertUnwindSafe};
-use std::ptr;
-
-/// Runs `f`, turning a panic into `fallback`.
-fn firewall<R>(fallback: R, f: impl FnOnce() -> R) -> R {
-    catch_unwind(AssertUnwindSafe(f)).unwrap_or(fallback)
-}
-
-/// The text of a panic payload.
-fn panic_text(payload: &(dyn std::any::Any + Send)) -> String {
-    crate::error::panic_message(payload).unwrap_or_else(|| "unknown panic".into())
-}
-
-/// The body of every function that takes an instance: NULL check, state check, the work,
-/// then [`Instance::report`]; a panic anywhere is reported as an error.
-unsafe fn with_instance(
-    c: fmi2Component,
-    call: Call,
-    body: impl FnOnce(&mut Instance) -> Result<(), FmuError>,
-) -> fmi2Status {
-    // SAFETY: a non-NULL component is a live instance from fmi2Instantiate (module docs).
-    let Some(instance) = (unsafe { c.cast::<Instance>().as_mut() }) else {
-        return fmi2Status::fmi2Error;
-    };
-    firewall(fmi2Status::fmi2Error, || {
-        let result = catch_unwind(AssertUnwindSafe(|| {
-            instance.check(call)?;
-            body(instance)
-        }))
-        .unwrap_or_else(|payload| Err(FmuError::Panic(panic_text(payload.as_ref()))));
-        instance.report(call, result)
-    })
-}
-
-/// `(pointer, n)` as a slice: NULL is fine only when n = 0.
-unsafe fn slice<'a, T>(p: *const T, n: usize, what: &str) -> Result<&'a [T], FmuError> {
-    if n == 0 {
-        Ok(&[])
-    } else if p.is_null() || !p.is_aligned() {
-        Err(FmuError::Argument(format!(
-            "{what} is NULL or misaligned but its length is {n}"
-        )))
-    } else {
-        // SAFETY: non-NULL and aligned; the host promises n elements (module docs).
-        Ok(unsafe { std::slice::from_raw_parts(p, n) })
-    }
-}
-
-/// `(pointer, n)` as a mutable slice: NULL is fine only when n = 0.
-unsafe fn slice_mut<'a, T>(p: *mut T, n: usize, what: &str) -> Result<&'a mut [T], FmuError> {
-    if n == 0 {
-        Ok(&mut [])
-    } else if p.is_null() || !p.is_aligned() {
-        Err(FmuError::Argument(format!(
-            "{what} is NULL or misaligned but its length is {n}"
-        )))
-    } else {
-        // SAFETY: non-NULL and aligned; the host promises n elements (module docs).
-        Ok(unsafe { std::slice::from_raw_parts_mut(p, n) })
-    }
-}
-
-/// An output argument as a reference.
-unsafe fn out<'a, T>(p: *mut T, what: &str) -> Result<&'a mut T, FmuError> {
-    if !p.is_aligned() {
-        return Err(FmuError::Argument(format!("{what} is misaligned")));
-    }
-    // SAFETY: aligned; non-NULL checked by as_mut; the host owns the memory.
-    unsafe { p.as_mut() }.ok_or_else(|| FmuError::Argument(format!("{what} is NULL")))
-}
-
-/// A C string argument as UTF-8 text; NULL is an error.
-unsafe fn text<'a>(s: fmi2String, what: &str) -> Result<&'a str, FmuError> {
-    if s.is_null() {
-        return Err(FmuError::Argument(format!("{what} is NULL")));
-    }
-    // SAFETY: non-NULL and NUL-terminated (module docs).
-    unsafe { CStr::from_ptr(s) }
-        .to_str()
-        .map_err(|_| FmuError::Argument(format!("{what} is not UTF-8")))
-}
-
-/// A saved state argument.
-unsafe fn fmu_state<'a>(s: fmi2FMUstate) -> Result<&'a FmuState, FmuError> {
-    // SAFETY: a non-NULL state came from fmi2GetFMUstate/fmi2DeSerializeFMUstate (module docs).
-    unsafe { s.cast::<FmuState>().as_ref() }
-        .ok_or_else(|| FmuError::Argument("FMUstate is NULL".into()))
-}
-
-/// Hands a saved state to the host.
-fn into_handle(state: FmuState) -> fmi2FMUstate {
-    Box::into_raw(Box::new(state)).cast()
-}
-
-unsafe fn value_references<'a>(
-    vr: *const fmi2ValueReference,
-    nvr: usize,
-) -> Result<&'a [u32], FmuError> {
-    // SAFETY: see slice.
-    unsafe { slice(vr, nvr, "vr") }
-}
+use slowdrift_fmi::fmi2::functions as fmi2;
+use slowdrift_fmi::fmi2::machine::MachineState;
+use slowdrift_fmi::fmi2::types::*;
+use std::ffi::c_char;
 
 // ---------------------------------------------------------------------------------------
 // Common functions
 
 #[no_mangle]
 pub extern "C" fn fmi2GetTypesPlatform() -> *const c_char {
-    c"default".as_ptr()
+    fmi2::get_types_platform()
 }
 
 #[no_mangle]
 pub extern "C" fn fmi2GetVersion() -> *const c_char {
-    c"2.0".as_ptr()
+    fmi2::get_version()
 }
 
 #[no_mangle]
@@ -149,16 +41,7 @@ pub unsafe extern "C" fn fmi2SetDebugLogging(
     nCategories: usize,
     categories: *const fmi2String,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::SetDebugLogging, |inst| {
-            let pointers = slice(categories, nCategories, "categories")?;
-            let mut names = Vec::with_capacity(pointers.len());
-            for &p in pointers {
-                names.push(text(p, "a category")?);
-            }
-            inst.logger.set(loggingOn != fmi2False, &names)
-        })
-    }
+    unsafe { fmi2::set_debug_logging::<Instance>(c, loggingOn, nCategories, categories) }
 }
 
 #[no_mangle]
@@ -171,88 +54,21 @@ pub unsafe extern "C" fn fmi2Instantiate(
     _visible: fmi2Boolean,
     loggingOn: fmi2Boolean,
 ) -> fmi2Component {
-    firewall(ptr::null_mut(), || {
-        // SAFETY: the callbacks struct, when given, is valid for this call (module docs).
-        let callbacks = unsafe { functions.as_ref() }.copied();
-        let name = unsafe { text(instanceName, "instanceName") };
-        let logger = Logger::new(
-            callbacks.and_then(|f| f.logger),
-            callbacks.map_or(ptr::null_mut(), |f| f.componentEnvironment),
-            // Messages about a missing name go out under the model identifier.
-            name.as_ref()
-                .ok()
-                .filter(|n| !n.is_empty())
-                .map_or(MODEL_IDENTIFIER, |n| n),
-            loggingOn != fmi2False,
-        );
-        let refuse = |message: String| {
-            logger.log(
-                fmi2Status::fmi2Error,
-                log_category::LOG_STATUS_ERROR,
-                &format!("fmi2Instantiate: {message}"),
-            );
-            ptr::null_mut()
-        };
-        let name = match name {
-            Ok(n) if !n.is_empty() => n,
-            Ok(_) => return refuse("instanceName is empty".into()),
-            Err(e) => return refuse(e.to_string()),
-        };
-        if fmuType != fmi2Type::fmi2CoSimulation {
-            return refuse(format!(
-                "fmuType {} is not supported: {name} is a co-simulation FMU (fmi2CoSimulation = 1)",
-                fmuType.0
-            ));
-        }
-        let resources = if fmuResourceLocation.is_null() {
-            None
-        } else {
-            let location = unsafe { text(fmuResourceLocation, "fmuResourceLocation") };
-            match location.ok().and_then(file_uri_to_path) {
-                Some(path) => Some(path),
-                None => {
-                    logger.log(
-                        fmi2Status::fmi2Warning,
-                        log_category::LOG_STATUS_WARNING,
-                        "fmi2Instantiate: fmuResourceLocation is not a local file URI; \
-                         the embedded default platform is the default configuration",
-                    );
-                    None
-                }
-            }
-        };
-        // This binary's GUID, or that of a user's configuration packed in the resources
-        // (`fmu-pack --config`: its modelDescription.xml carries that configuration's start
-        // values, and a GUID of its own).
-        match unsafe { text(fmuGUID, "fmuGUID") } {
-            Ok(guid) if guid == GUID => {}
-            Ok(guid)
-                if resources
-                    .as_deref()
-                    .is_some_and(|r| holds_configuration_of(r, guid)) => {}
-            Ok(guid) => {
-                return refuse(format!(
-                    "fmuGUID {guid:?} is neither this binary's {GUID:?} nor that of the \
-                     configuration in the FMU's resources: the modelDescription.xml does not \
-                     belong to this FMU (was resources/{RESOURCE_CONFIG} changed after \
-                     fmu-pack packed it? pack it again)"
-                ))
-            }
-            Err(e) => return refuse(e.to_string()),
-        }
-        let instance = Instance::new(logger, resources);
-        Box::into_raw(Box::new(instance)).cast()
-    })
+    unsafe {
+        fmi2::instantiate::<Instance>(
+            instanceName,
+            fmuType,
+            fmuGUID,
+            fmuResourceLocation,
+            functions,
+            loggingOn,
+        )
+    }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2FreeInstance(c: fmi2Component) {
-    if c.is_null() {
-        return;
-    }
-    // SAFETY: a live instance from fmi2Instantiate, freed once (module docs).
-    let instance = unsafe { Box::from_raw(c.cast::<Instance>()) };
-    firewall((), || drop(instance));
+    unsafe { fmi2::free_instance::<Instance>(c) }
 }
 
 #[no_mangle]
@@ -264,42 +80,27 @@ pub unsafe extern "C" fn fmi2SetupExperiment(
     stopTimeDefined: fmi2Boolean,
     stopTime: fmi2Real,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::SetupExperiment, |inst| {
-            inst.setup_experiment(
-                startTime,
-                (stopTimeDefined != fmi2False).then_some(stopTime),
-            )
-        })
-    }
+    unsafe { fmi2::setup_experiment::<Instance>(c, startTime, stopTimeDefined, stopTime) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2EnterInitializationMode(c: fmi2Component) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::EnterInitializationMode, |inst| {
-            inst.enter_initialization_mode()
-        })
-    }
+    unsafe { fmi2::enter_initialization_mode::<Instance>(c) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2ExitInitializationMode(c: fmi2Component) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::ExitInitializationMode, |inst| {
-            inst.exit_initialization_mode()
-        })
-    }
+    unsafe { fmi2::exit_initialization_mode::<Instance>(c) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2Terminate(c: fmi2Component) -> fmi2Status {
-    unsafe { with_instance(c, Call::Terminate, |inst| inst.terminate()) }
+    unsafe { fmi2::terminate::<Instance>(c) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2Reset(c: fmi2Component) -> fmi2Status {
-    unsafe { with_instance(c, Call::Reset, |inst| inst.reset()) }
+    unsafe { fmi2::reset::<Instance>(c) }
 }
 
 // ---------------------------------------------------------------------------------------
@@ -312,12 +113,7 @@ pub unsafe extern "C" fn fmi2GetReal(
     nvr: usize,
     value: *mut fmi2Real,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::GetReal, |inst| {
-            let vrs = value_references(vr, nvr)?;
-            inst.get_real(vrs, slice_mut(value, nvr, "value")?)
-        })
-    }
+    unsafe { fmi2::get_real::<Instance>(c, vr, nvr, value) }
 }
 
 #[no_mangle]
@@ -327,12 +123,7 @@ pub unsafe extern "C" fn fmi2GetInteger(
     nvr: usize,
     value: *mut fmi2Integer,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::GetInteger, |inst| {
-            let vrs = value_references(vr, nvr)?;
-            inst.get_integer(vrs, slice_mut(value, nvr, "value")?)
-        })
-    }
+    unsafe { fmi2::get_integer::<Instance>(c, vr, nvr, value) }
 }
 
 #[no_mangle]
@@ -342,13 +133,7 @@ pub unsafe extern "C" fn fmi2GetBoolean(
     nvr: usize,
     value: *mut fmi2Boolean,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::GetBoolean, |inst| {
-            let vrs = value_references(vr, nvr)?;
-            slice_mut(value, nvr, "value")?;
-            inst.boolean(vrs)
-        })
-    }
+    unsafe { fmi2::get_boolean::<Instance>(c, vr, nvr, value) }
 }
 
 #[no_mangle]
@@ -358,17 +143,7 @@ pub unsafe extern "C" fn fmi2GetString(
     nvr: usize,
     value: *mut fmi2String,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::GetString, |inst| {
-            let vrs = value_references(vr, nvr)?;
-            let values = slice_mut(value, nvr, "value")?;
-            let strings = inst.get_string(vrs)?;
-            for (v, s) in values.iter_mut().zip(strings) {
-                *v = s.as_ptr();
-            }
-            Ok(())
-        })
-    }
+    unsafe { fmi2::get_string::<Instance>(c, vr, nvr, value) }
 }
 
 #[no_mangle]
@@ -378,12 +153,7 @@ pub unsafe extern "C" fn fmi2SetReal(
     nvr: usize,
     value: *const fmi2Real,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::SetReal, |inst| {
-            let vrs = value_references(vr, nvr)?;
-            inst.set_real(vrs, slice(value, nvr, "value")?)
-        })
-    }
+    unsafe { fmi2::set_real::<Instance>(c, vr, nvr, value) }
 }
 
 #[no_mangle]
@@ -393,12 +163,7 @@ pub unsafe extern "C" fn fmi2SetInteger(
     nvr: usize,
     value: *const fmi2Integer,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::SetInteger, |inst| {
-            let vrs = value_references(vr, nvr)?;
-            inst.set_integer(vrs, slice(value, nvr, "value")?)
-        })
-    }
+    unsafe { fmi2::set_integer::<Instance>(c, vr, nvr, value) }
 }
 
 #[no_mangle]
@@ -408,13 +173,7 @@ pub unsafe extern "C" fn fmi2SetBoolean(
     nvr: usize,
     value: *const fmi2Boolean,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::SetBoolean, |inst| {
-            let vrs = value_references(vr, nvr)?;
-            slice(value, nvr, "value")?;
-            inst.boolean(vrs)
-        })
-    }
+    unsafe { fmi2::set_boolean::<Instance>(c, vr, nvr, value) }
 }
 
 #[no_mangle]
@@ -424,44 +183,23 @@ pub unsafe extern "C" fn fmi2SetString(
     nvr: usize,
     value: *const fmi2String,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::SetString, |inst| {
-            let vrs = value_references(vr, nvr)?;
-            let mut texts = Vec::with_capacity(nvr);
-            for &s in slice(value, nvr, "value")? {
-                texts.push(text(s, "a String value")?);
-            }
-            inst.set_string(vrs, &texts)
-        })
-    }
+    unsafe { fmi2::set_string::<Instance>(c, vr, nvr, value) }
 }
 
 // ---------------------------------------------------------------------------------------
 // FMU state
 
-/// `fmi2GetFMUstate` always hands out a new state (like the Reference FMUs): a non-NULL
-/// `*FMUstate` on entry is not reused, because a host may pass an uninitialised variable.
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetFMUstate(
     c: fmi2Component,
     FMUstate: *mut fmi2FMUstate,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::GetFMUstate, |inst| {
-            let target = out(FMUstate, "FMUstate")?;
-            *target = into_handle(inst.get_fmu_state()?);
-            Ok(())
-        })
-    }
+    unsafe { fmi2::get_fmu_state::<Instance>(c, FMUstate) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SetFMUstate(c: fmi2Component, FMUstate: fmi2FMUstate) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::SetFMUstate, |inst| {
-            inst.set_fmu_state(fmu_state(FMUstate)?)
-        })
-    }
+    unsafe { fmi2::set_fmu_state::<Instance>(c, FMUstate) }
 }
 
 #[no_mangle]
@@ -469,17 +207,7 @@ pub unsafe extern "C" fn fmi2FreeFMUstate(
     c: fmi2Component,
     FMUstate: *mut fmi2FMUstate,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::FreeFMUstate, |_| {
-            let handle = out(FMUstate, "FMUstate")?;
-            if !handle.is_null() {
-                // SAFETY: a state from this library, freed once (module docs).
-                drop(Box::from_raw(handle.cast::<FmuState>()));
-                *handle = ptr::null_mut();
-            }
-            Ok(())
-        })
-    }
+    unsafe { fmi2::free_fmu_state::<Instance>(c, FMUstate) }
 }
 
 #[no_mangle]
@@ -488,12 +216,7 @@ pub unsafe extern "C" fn fmi2SerializedFMUstateSize(
     FMUstate: fmi2FMUstate,
     size: *mut usize,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::SerializedFMUstateSize, |_| {
-            *out(size, "size")? = fmu_state(FMUstate)?.byte_len();
-            Ok(())
-        })
-    }
+    unsafe { fmi2::serialized_fmu_state_size::<Instance>(c, FMUstate, size) }
 }
 
 #[no_mangle]
@@ -503,21 +226,7 @@ pub unsafe extern "C" fn fmi2SerializeFMUstate(
     serializedState: *mut fmi2Byte,
     size: usize,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::SerializeFMUstate, |_| {
-            let bytes = fmu_state(FMUstate)?.to_bytes()?;
-            if size < bytes.len() {
-                return Err(FmuError::Argument(format!(
-                    "size = {size} is smaller than the state's {} bytes \
-                     (fmi2SerializedFMUstateSize)",
-                    bytes.len()
-                )));
-            }
-            let target = slice_mut(serializedState.cast::<u8>(), bytes.len(), "serializedState")?;
-            target.copy_from_slice(&bytes);
-            Ok(())
-        })
-    }
+    unsafe { fmi2::serialize_fmu_state::<Instance>(c, FMUstate, serializedState, size) }
 }
 
 #[no_mangle]
@@ -527,14 +236,7 @@ pub unsafe extern "C" fn fmi2DeSerializeFMUstate(
     size: usize,
     FMUstate: *mut fmi2FMUstate,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::DeSerializeFMUstate, |inst| {
-            let bytes = slice(serializedState.cast::<u8>(), size, "serializedState")?;
-            let target = out(FMUstate, "FMUstate")?;
-            *target = into_handle(inst.deserialize(bytes)?);
-            Ok(())
-        })
-    }
+    unsafe { fmi2::deserialize_fmu_state::<Instance>(c, serializedState, size, FMUstate) }
 }
 
 // ---------------------------------------------------------------------------------------
@@ -550,13 +252,7 @@ pub unsafe extern "C" fn fmi2GetDirectionalDerivative(
     _dvKnown: *const fmi2Real,
     _dvUnknown: *mut fmi2Real,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::GetDirectionalDerivative, |_| {
-            Err(FmuError::Unsupported(
-                "providesDirectionalDerivative=\"false\": no Jacobian is computed",
-            ))
-        })
-    }
+    unsafe { fmi2::get_directional_derivative::<Instance>(c) }
 }
 
 #[no_mangle]
@@ -567,13 +263,7 @@ pub unsafe extern "C" fn fmi2SetRealInputDerivatives(
     _order: *const fmi2Integer,
     _value: *const fmi2Real,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::SetRealInputDerivatives, |_| {
-            Err(FmuError::Unsupported(
-                "canInterpolateInputs=\"false\": inputs are held constant over a step",
-            ))
-        })
-    }
+    unsafe { fmi2::set_real_input_derivatives::<Instance>(c) }
 }
 
 #[no_mangle]
@@ -584,13 +274,7 @@ pub unsafe extern "C" fn fmi2GetRealOutputDerivatives(
     _order: *const fmi2Integer,
     _value: *mut fmi2Real,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::GetRealOutputDerivatives, |_| {
-            Err(FmuError::Unsupported(
-                "maxOutputDerivativeOrder=\"0\": no output derivatives",
-            ))
-        })
-    }
+    unsafe { fmi2::get_real_output_derivatives::<Instance>(c) }
 }
 
 // ---------------------------------------------------------------------------------------
@@ -603,25 +287,13 @@ pub unsafe extern "C" fn fmi2DoStep(
     communicationStepSize: fmi2Real,
     _noSetFMUStatePriorToCurrentPoint: fmi2Boolean,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::DoStep, |inst| {
-            inst.do_step(currentCommunicationPoint, communicationStepSize)
-        })
-    }
+    unsafe { fmi2::do_step::<Instance>(c, currentCommunicationPoint, communicationStepSize) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2CancelStep(c: fmi2Component) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::CancelStep, |_| {
-            Err(FmuError::Unsupported(
-                "steps are never asynchronous (fmi2DoStep never returns fmi2Pending)",
-            ))
-        })
-    }
+    unsafe { fmi2::cancel_step::<Instance>(c) }
 }
-
-const NO_PENDING: &str = "steps are never asynchronous, so there is no pending status";
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetStatus(
@@ -629,11 +301,7 @@ pub unsafe extern "C" fn fmi2GetStatus(
     _s: fmi2StatusKind,
     _value: *mut fmi2Status,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::GetStatus, |_| {
-            Err(FmuError::StatusUnavailable(NO_PENDING.into()))
-        })
-    }
+    unsafe { fmi2::get_status::<Instance>(c) }
 }
 
 #[no_mangle]
@@ -642,13 +310,7 @@ pub unsafe extern "C" fn fmi2GetRealStatus(
     s: fmi2StatusKind,
     value: *mut fmi2Real,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::GetRealStatus, |inst| {
-            let answer = inst.real_status(s == fmi2StatusKind::fmi2LastSuccessfulTime)?;
-            *out(value, "value")? = answer;
-            Ok(())
-        })
-    }
+    unsafe { fmi2::get_real_status::<Instance>(c, s, value) }
 }
 
 #[no_mangle]
@@ -657,13 +319,7 @@ pub unsafe extern "C" fn fmi2GetIntegerStatus(
     _s: fmi2StatusKind,
     _value: *mut fmi2Integer,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::GetIntegerStatus, |_| {
-            Err(FmuError::StatusUnavailable(
-                "FMI 2.0 defines no Integer status".into(),
-            ))
-        })
-    }
+    unsafe { fmi2::get_integer_status::<Instance>(c) }
 }
 
 #[no_mangle]
@@ -672,13 +328,7 @@ pub unsafe extern "C" fn fmi2GetBooleanStatus(
     s: fmi2StatusKind,
     value: *mut fmi2Boolean,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::GetBooleanStatus, |inst| {
-            let answer = inst.boolean_status(s == fmi2StatusKind::fmi2Terminated)?;
-            *out(value, "value")? = if answer { fmi2True } else { fmi2False };
-            Ok(())
-        })
-    }
+    unsafe { fmi2::get_boolean_status::<Instance>(c, s, value) }
 }
 
 #[no_mangle]
@@ -687,11 +337,7 @@ pub unsafe extern "C" fn fmi2GetStringStatus(
     _s: fmi2StatusKind,
     _value: *mut fmi2String,
 ) -> fmi2Status {
-    unsafe {
-        with_instance(c, Call::GetStringStatus, |_| {
-            Err(FmuError::StatusUnavailable(NO_PENDING.into()))
-        })
-    }
+    unsafe { fmi2::get_string_status::<Instance>(c) }
 }
 
 /// The state of an instance, for tests of the state machine (NULL: `None`).
@@ -699,67 +345,5 @@ pub unsafe extern "C" fn fmi2GetStringStatus(
 /// # Safety
 /// `c` is NULL or a live instance from [`fmi2Instantiate`].
 pub unsafe fn instance_state(c: fmi2Component) -> Option<MachineState> {
-    firewall(None, || {
-        unsafe { c.cast::<Instance>().as_ref() }.map(Instance::state)
-    })
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use std::ffi::c_void;
-    use std::sync::Mutex;
-
-    /// Records messages into the `Mutex<Vec<String>>` behind `env` (five fixed arguments:
-    /// the FMU passes no variadic ones, see `Logger::log`).
-    unsafe extern "C" fn record(
-        env: *mut c_void,
-        _name: fmi2String,
-        _status: fmi2Status,
-        _category: fmi2String,
-        message: fmi2String,
-    ) {
-        let log = unsafe { &*(env as *const Mutex<Vec<String>>) };
-        let text = unsafe { CStr::from_ptr(message) }.to_string_lossy();
-        log.lock().unwrap().push(text.into_owned());
-    }
-
-    #[test]
-    fn a_panic_becomes_an_error_and_a_log_line() {
-        type Fixed =
-            unsafe extern "C" fn(*mut c_void, fmi2String, fmi2Status, fmi2String, fmi2String);
-        let log = Mutex::new(Vec::<String>::new());
-        let functions = fmi2CallbackFunctions {
-            // SAFETY: a call with the five fixed arguments only has the same ABI.
-            logger: Some(unsafe { std::mem::transmute::<Fixed, fmi2CallbackLogger>(record) }),
-            allocateMemory: None,
-            freeMemory: None,
-            stepFinished: None,
-            componentEnvironment: &log as *const _ as *mut c_void,
-        };
-        let guid = std::ffi::CString::new(GUID).unwrap();
-        let c = unsafe {
-            fmi2Instantiate(
-                c"p".as_ptr(),
-                fmi2Type::fmi2CoSimulation,
-                guid.as_ptr(),
-                ptr::null(),
-                &functions,
-                fmi2False,
-                fmi2False,
-            )
-        };
-        assert!(!c.is_null());
-        let status = unsafe { with_instance(c, Call::Reset, |_| panic!("boom 100%")) };
-        assert_eq!(status, fmi2Status::fmi2Error);
-        assert_eq!(unsafe { instance_state(c) }, Some(MachineState::Error));
-        let messages = log.lock().unwrap().clone();
-        assert_eq!(
-            messages,
-            ["fmi2Reset: internal error (panic caught): boom 100%%"]
-        );
-        // The instance is still usable after a reset.
-        assert_eq!(unsafe { fmi2Reset(c) }, fmi2Status::fmi2OK);
-        unsafe { fmi2FreeInstance(c) };
-    }
+    unsafe { fmi2::machine_state::<Instance>(c) }
 }

@@ -1,69 +1,33 @@
-//! Why an FMI call failed, and the one place that picks its `fmi2Status`.
+//! SlowDrift's errors in the words of the FMU's user, as errors of the FMI layer
+//! ([`FmuError`], which decides their status and log category): a setting is named by its FMU
+//! parameter where it has one, and records over the memory budget by `memoryLimit`.
 
-use super::machine::{Call, MachineState};
-use super::types::fmi2Status;
 use crate::error::{bytes_text, Error, Location, OverBudget, BYTES_PER_GB};
 use crate::scenario::overrides;
+use slowdrift_fmi::Error as FmuError;
 use std::fmt;
 
-/// Why a call failed; [`FmuError::status`] is the one place that picks the `fmi2Status`.
-#[derive(Debug, Clone, PartialEq)]
-pub enum FmuError {
-    /// The call is not allowed in the instance's current state.
-    IllegalCall { call: Call, state: MachineState },
-    /// A bad argument: NULL pointer, unknown value reference, wrong type, non-finite value.
-    Argument(String),
-    /// The core refused (invalid configuration, unreadable file, ...).
-    Core(Error),
-    /// A function this FMU does not implement, and why.
-    Unsupported(&'static str),
-    /// A status query this FMU cannot answer (FMI 2.0.4 section 4.2.3: "If a status is
-    /// required which cannot be retrieved by the slave it returns fmi2Discard"); the
-    /// instance's state does not change.
-    StatusUnavailable(String),
-    /// The step cannot be completed but the instance stays usable, its state unchanged (the
-    /// yaw left the yaw-following records; a step longer than one block of the records).
-    Discard(Error),
-    /// A panic caught at the boundary.
-    Panic(String),
-}
-
-impl FmuError {
-    /// The status this error returns to the host.
-    pub fn status(&self) -> fmi2Status {
-        match self {
-            FmuError::Discard(_) | FmuError::StatusUnavailable(_) => fmi2Status::fmi2Discard,
-            _ => fmi2Status::fmi2Error,
-        }
-    }
-}
-
+/// A refusal of the core (an invalid configuration, an unreadable file, a diverging state).
 impl From<Error> for FmuError {
     fn from(e: Error) -> Self {
-        FmuError::Core(e)
+        FmuError::Model(Words(&e).to_string())
     }
 }
 
-impl fmt::Display for FmuError {
+/// A step that cannot be completed while the instance stays usable, its state unchanged (the
+/// yaw left the yaw-following records; a step longer than one block of the records).
+pub fn discarded(e: Error) -> FmuError {
+    FmuError::Discard(Words(&e).to_string())
+}
+
+/// An error as the FMU's user reads it.
+struct Words<'a>(&'a Error);
+
+impl fmt::Display for Words<'_> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            FmuError::IllegalCall { call, state } => write!(
-                f,
-                "illegal call sequence: {} is not allowed in state {state:?}",
-                call.name()
-            ),
-            FmuError::Argument(m) => f.write_str(m),
-            FmuError::Core(Error::OverBudget(excess)) if excess.at.is_some() => {
-                over_memory_limit(f, excess)
-            }
-            FmuError::Core(e) => e.describe(f, &fmu_name),
-            FmuError::Unsupported(why) => write!(f, "not supported: {why}"),
-            FmuError::StatusUnavailable(why) => write!(f, "status not available: {why}"),
-            FmuError::Discard(e) => {
-                f.write_str("step discarded: ")?;
-                e.describe(f, &fmu_name)
-            }
-            FmuError::Panic(m) => write!(f, "internal error (panic caught): {m}"),
+        match self.0 {
+            Error::OverBudget(excess) if excess.at.is_some() => over_memory_limit(f, excess),
+            e => e.describe(f, &fmu_name),
         }
     }
 }
@@ -122,9 +86,9 @@ mod tests {
             cause: crate::error::Cause::Step,
         };
         assert!(diverged.to_string().ends_with("reduce run.time_step"));
-        let text = FmuError::Core(diverged).to_string();
+        let text = FmuError::from(diverged).to_string();
         assert!(text.ends_with("reduce the parameter stepSize"), "{text}");
-        let yaw = FmuError::Discard(Error::YawOutsideRecords {
+        let yaw = discarded(Error::YawOutsideRecords {
             time: 10.0,
             yaw: 0.3,
             covered: (-0.2, 0.2),

@@ -1,26 +1,26 @@
-//! One FMU instance: its state machine, parameters, inputs, logger and the [`Simulation`]
-//! once initialised. Safe Rust; `exports.rs` turns C pointers into the arguments here.
-//!
-//! Every failure is an [`FmuError`], turned into an `fmi2Status` and a log line in one
-//! place, [`Instance::report`]. An `fmi2Error` puts the instance into
-//! [`MachineState::Error`] (FMI 2.0.4 section 2.1.3: unusable until `fmi2Reset`,
-//! `fmi2SetFMUstate` or `fmi2FreeInstance`); an `fmi2Discard` into
-//! [`MachineState::StepFailed`].
+//! One FMU instance: its parameters, inputs and the [`Simulation`] once initialised, as the
+//! model of the shared FMI layer ([`Model`], [`SavedStates`]). Safe Rust: the layer checks
+//! each call against the state machine, turns C pointers into the arguments here, and
+//! reports every failure, an [`FmuError`], as an `fmi2Status` and a log line in one place.
 
-use super::fmu_error::FmuError;
-use super::logger::{c_text, Logger};
-use super::machine::{Call, MachineState};
+use super::fmu_error::discarded;
 use super::parameters::{
     Experiment, FmuValue, Parameters, HYDRO_DATABASE, MAX_STRING_BYTES, TIME_TOLERANCE,
 };
+use super::resources::{holds_configuration_of, RESOURCE_CONFIG};
 use super::state::{fingerprint, FmuState};
-use super::types::fmi2Status;
 use crate::error::numbers::written;
 use crate::error::Error;
-use crate::fmi2::model_description::{find, log_category, vr, Causality, VariableType, VARIABLES};
+use crate::fmi2::model_description::{
+    find, vr, Causality, VariableType, GUID, MODEL_IDENTIFIER, VARIABLES,
+};
 use crate::problem::Problem;
 use crate::scenario::Scenario;
 use crate::simulation::{Outputs, Simulation};
+use slowdrift_fmi::fmi2::machine::MachineState;
+use slowdrift_fmi::fmi2::{Context, Instantiation, Model, SavedStates};
+use slowdrift_fmi::text::c_text;
+use slowdrift_fmi::Error as FmuError;
 use std::ffi::CString;
 use std::path::PathBuf;
 
@@ -36,14 +36,12 @@ struct Built {
 /// One FMU instance.
 #[derive(Debug)]
 pub struct Instance {
-    pub logger: Logger,
     /// The FMU's `resources` folder, from `fmuResourceLocation`.
     resources: Option<PathBuf>,
     parameters: Parameters,
     experiment: Experiment,
     /// Fx_ext, Fy_ext, Mz_ext (inertial frame), held over each step.
     inputs: [f64; 3],
-    state: MachineState,
     /// Built in initialisation mode when an output is first read, else at
     /// ExitInitializationMode; dropped when a parameter changes.
     built: Option<Built>,
@@ -59,116 +57,19 @@ pub struct Instance {
 
 impl Instance {
     /// A freshly instantiated instance.
-    pub fn new(logger: Logger, resources: Option<PathBuf>) -> Instance {
+    fn new(resources: Option<PathBuf>) -> Instance {
         let experiment = Experiment::default();
         Instance {
-            logger,
             resources,
             parameters: Parameters::default(),
             experiment,
             inputs: start_inputs(),
-            state: MachineState::Instantiated,
             built: None,
             outputs: None,
             last_successful_time: experiment.start_time,
             strings: Vec::new(),
             base: None,
         }
-    }
-
-    /// The current state.
-    pub fn state(&self) -> MachineState {
-        self.state
-    }
-
-    /// Refuses a call that the table does not allow in the current state.
-    pub fn check(&self, call: Call) -> Result<(), FmuError> {
-        if call.allowed() & self.state.bit() != 0 {
-            Ok(())
-        } else {
-            Err(FmuError::IllegalCall {
-                call,
-                state: self.state,
-            })
-        }
-    }
-
-    /// The one place where a result becomes an `fmi2Status`, a state change and a log line.
-    pub fn report(&mut self, call: Call, result: Result<(), FmuError>) -> fmi2Status {
-        match result {
-            Ok(()) => {
-                if self.logger.enabled(log_category::LOG_ALL) {
-                    let message = format!("{}: ok", call.name());
-                    self.logger
-                        .log(fmi2Status::fmi2OK, log_category::LOG_ALL, &message);
-                }
-                fmi2Status::fmi2OK
-            }
-            Err(e) => {
-                let status = e.status();
-                let category = match (&e, status) {
-                    (FmuError::StatusUnavailable(_), _) => log_category::LOG_STATUS_DISCARD,
-                    (_, fmi2Status::fmi2Discard) => {
-                        self.state = MachineState::StepFailed;
-                        log_category::LOG_STATUS_DISCARD
-                    }
-                    _ => {
-                        self.state = MachineState::Error;
-                        log_category::LOG_STATUS_ERROR
-                    }
-                };
-                self.logger
-                    .log(status, category, &format!("{}: {e}", call.name()));
-                status
-            }
-        }
-    }
-
-    fn event(&self, message: &str) {
-        self.logger
-            .log(fmi2Status::fmi2OK, log_category::LOG_EVENTS, message);
-    }
-
-    /// `fmi2SetupExperiment` (the tolerance is not used: RK4 has a fixed step).
-    pub fn setup_experiment(&mut self, start: f64, stop: Option<f64>) -> Result<(), FmuError> {
-        self.experiment = Experiment::new(start, stop)?;
-        self.last_successful_time = start;
-        self.built = None;
-        Ok(())
-    }
-
-    pub fn enter_initialization_mode(&mut self) -> Result<(), FmuError> {
-        self.state = MachineState::InitializationMode;
-        self.event("entered initialization mode");
-        Ok(())
-    }
-
-    /// Builds the simulation (precomputes the records) and its first outputs.
-    pub fn exit_initialization_mode(&mut self) -> Result<(), FmuError> {
-        self.simulation()?;
-        self.refresh_outputs()?;
-        self.last_successful_time = self.experiment.start_time;
-        self.state = MachineState::StepComplete;
-        self.event("initialized: records precomputed");
-        Ok(())
-    }
-
-    pub fn terminate(&mut self) -> Result<(), FmuError> {
-        self.state = MachineState::Terminated;
-        self.event("terminated");
-        Ok(())
-    }
-
-    /// Back to a freshly instantiated instance; the name, callbacks, logging switches and
-    /// resource location stay.
-    pub fn reset(&mut self) -> Result<(), FmuError> {
-        let logger = std::mem::replace(
-            &mut self.logger,
-            Logger::new(None, std::ptr::null_mut(), "", false),
-        );
-        *self = Instance::new(logger, self.resources.take());
-        self.event("reset");
-        Ok(())
     }
 
     /// The base configuration the parameters name, read once (and again after
@@ -206,93 +107,6 @@ impl Instance {
         match &self.built {
             Some(b) => Ok(b.fingerprint()),
             None => Ok(fingerprint(&self.problem()?)),
-        }
-    }
-
-    /// `fmi2DoStep`: one communication step with the current inputs. A step must advance
-    /// the time (else fmi2Error) and may cover at most one block of the records
-    /// ([`longest_step`]; a longer one is discarded, the state unchanged, so that a master
-    /// can retry with shorter steps as FMI 2.0.4 section 4.2.2 advises).
-    pub fn do_step(&mut self, point: f64, h: f64) -> Result<(), FmuError> {
-        if !(h.is_finite() && h > 0.0) {
-            return Err(FmuError::Argument(format!(
-                "communicationStepSize = {} must be finite and positive",
-                written(h)
-            )));
-        }
-        let inputs = self.inputs;
-        let experiment = self.experiment;
-        let simulation = self.simulation()?;
-        let t = simulation.time();
-        if !point.is_finite() || (point - t).abs() > TIME_TOLERANCE * t.abs().max(1.0) {
-            return Err(FmuError::Argument(format!(
-                "currentCommunicationPoint = {point} s differs from the instance's time {t} s"
-            )));
-        }
-        if t + h == t {
-            return Err(FmuError::Argument(format!(
-                "communicationStepSize = {} s does not advance the time: at t = {t} s, t + h \
-                 == t in double precision (doubles there are {} s apart)",
-                written(h),
-                written(spacing(t))
-            )));
-        }
-        if let (true, Some(stop)) = (experiment.passes_stop(t + h), experiment.stop_time) {
-            return Err(FmuError::Argument(format!(
-                "a step of {} s from {t} s passes stopTime = {stop} s",
-                written(h)
-            )));
-        }
-        let longest = longest_step(simulation.problem());
-        if h > longest {
-            return Err(FmuError::Discard(Error::invalid(
-                "communicationStepSize",
-                format!("{} s", written(h)),
-                format!(
-                    "longer than one block of the records, {longest} s, the longest step this \
-                     FMU takes (a step makes at most one block of records, as initialisation \
-                     does, and {} RK4 steps of stepSize = {} s); the state is unchanged: \
-                     step at most {longest} s at a time",
-                    (longest / simulation.problem().run.time_step).ceil(),
-                    simulation.problem().run.time_step
-                ),
-            )));
-        }
-        let advanced = simulation.advance(h, inputs).map(|()| simulation.time());
-        // Outputs are computed when a getter first asks for them after the step.
-        self.outputs = None;
-        match advanced {
-            Ok(time) => {
-                self.last_successful_time = time;
-                Ok(())
-            }
-            // The state is unchanged and the instance usable: the master may change its
-            // inputs (the yaw moment) and try again, or roll back.
-            Err(e @ Error::YawOutsideRecords { .. }) => Err(FmuError::Discard(e)),
-            Err(e) => Err(e.into()),
-        }
-    }
-
-    /// `fmi2GetRealStatus`.
-    pub fn real_status(&self, last_successful_time: bool) -> Result<f64, FmuError> {
-        if last_successful_time {
-            Ok(self.last_successful_time)
-        } else {
-            Err(FmuError::StatusUnavailable(
-                "fmi2GetRealStatus answers fmi2LastSuccessfulTime only".into(),
-            ))
-        }
-    }
-
-    /// `fmi2GetBooleanStatus`: fmi2Terminated is always false, the FMU never ends a run
-    /// itself (its records stream without end; a discarded step can be rolled back).
-    pub fn boolean_status(&self, terminated: bool) -> Result<bool, FmuError> {
-        if terminated {
-            Ok(false)
-        } else {
-            Err(FmuError::StatusUnavailable(
-                "fmi2GetBooleanStatus answers fmi2Terminated only".into(),
-            ))
         }
     }
 
@@ -342,72 +156,25 @@ impl Instance {
     /// master that writes its start values back after `fmi2SetFMUstate`, as fmusim does).
     fn may_set(
         &mut self,
+        state: MachineState,
         causality: Causality,
         ty: VariableType,
         vr: u32,
         value: &FmuValue,
     ) -> Result<(), FmuError> {
         if causality == Causality::Parameter
-            && self.settable(causality, vr).is_err()
+            && settable(state, causality, vr).is_err()
             && self.parameter_value(ty, vr).ok().as_ref() == Some(value)
         {
             return Ok(());
         }
-        self.settable(causality, vr)
-    }
-
-    /// Whether the parameters are fixed now (after `fmi2ExitInitializationMode`): a set
-    /// that [`Instance::may_set`] accepts then keeps the value it has, and writes nothing.
-    fn parameters_fixed(&self) -> bool {
-        !matches!(
-            self.state,
-            MachineState::Instantiated | MachineState::InitializationMode
-        )
-    }
-
-    /// Whether the variable of `ty` with value reference `vr` is a parameter that is fixed
-    /// now (a set of it was accepted because it keeps its value: nothing to write).
-    fn kept(&self, ty: VariableType, vr: u32) -> bool {
-        self.parameters_fixed() && find(ty, vr).is_some_and(|v| v.causality == Causality::Parameter)
-    }
-
-    /// May a variable of this causality be set now?
-    fn settable(&self, causality: Causality, vr: u32) -> Result<(), FmuError> {
-        let name = VARIABLES
-            .iter()
-            .find(|v| v.value_reference == vr && v.causality == causality)
-            .map_or("?", |v| v.name);
-        match causality {
-            Causality::Input => Ok(()),
-            Causality::Parameter if !self.parameters_fixed() => Ok(()),
-            Causality::Parameter => Err(FmuError::Argument(format!(
-                "parameter {name} is fixed: set it before fmi2ExitInitializationMode (after \
-                 it, only to the value it has)"
-            ))),
-            other => Err(FmuError::Argument(format!(
-                "{name} (value reference {vr}) is an {other:?} and cannot be set"
-            ))),
-        }
-    }
-
-    pub fn get_real(&mut self, vrs: &[u32], values: &mut [f64]) -> Result<(), FmuError> {
-        for (&vr, value) in vrs.iter().zip(values) {
-            *value = match self.variable(VariableType::Real, vr)? {
-                Causality::Parameter => match self.parameter_value(VariableType::Real, vr)? {
-                    FmuValue::Real(x) => x,
-                    _ => unreachable!("a Real parameter"),
-                },
-                Causality::Input => self.inputs[input_index(vr)],
-                _ => self.output(vr)?,
-            };
-        }
-        Ok(())
+        settable(state, causality, vr)
     }
 
     /// An output, computed at the first request after a step (in initialisation mode the
     /// simulation is built to compute it).
-    fn output(&mut self, vr: u32) -> Result<f64, FmuError> {
-        let computable = self.state == MachineState::InitializationMode || self.built.is_some();
+    fn output(&mut self, state: MachineState, vr: u32) -> Result<f64, FmuError> {
+        let computable = state == MachineState::InitializationMode || self.built.is_some();
         if self.outputs.is_none() && computable {
             self.refresh_outputs()?;
         }
@@ -419,34 +186,91 @@ impl Instance {
         Ok(output_value(o, vr))
     }
 
-    /// `fmi2SetReal`: all values are checked before any is set.
-    pub fn set_real(&mut self, vrs: &[u32], values: &[f64]) -> Result<(), FmuError> {
-        for (&vr, &value) in vrs.iter().zip(values) {
-            let causality = self.variable(VariableType::Real, vr)?;
-            self.may_set(causality, VariableType::Real, vr, &FmuValue::Real(value))?;
-            if !value.is_finite() {
-                let field = name_of(VariableType::Real, vr).to_string();
-                return Err(match causality {
-                    Causality::Input => Error::NonFiniteInput { field, value },
-                    _ => Error::invalid(field, value, "must be a finite number"),
-                }
-                .into());
-            }
+    /// `fmi2GetBoolean` / `fmi2SetBoolean`: this model has no Boolean variable.
+    fn boolean(&self, vrs: &[u32]) -> Result<(), FmuError> {
+        match vrs.first() {
+            Some(&vr) => self.variable(VariableType::Boolean, vr).map(|_| ()),
+            None => Ok(()),
         }
-        for (&vr, &value) in vrs.iter().zip(values) {
-            if self.kept(VariableType::Real, vr) {
-                continue;
-            }
-            match self.parameters.write(vr, FmuValue::Real(value)) {
-                Some(true) => self.parameters_changed(),
-                Some(false) => {}
-                None => self.inputs[input_index(vr)] = value,
-            }
+    }
+
+    fn parameters_changed(&mut self) {
+        self.built = None;
+        self.outputs = None;
+        // `hydroDatabase` may name another configuration.
+        self.base = None;
+    }
+}
+
+impl Model for Instance {
+    const MODEL_IDENTIFIER: &'static str = MODEL_IDENTIFIER;
+    const WITHOUT_RESOURCES: &'static str =
+        "the embedded default platform is the default configuration";
+
+    /// An instance of this binary's GUID, or of that of a user's configuration packed in the
+    /// resources (`fmu-pack --config`: its modelDescription.xml carries that configuration's
+    /// start values, and a GUID of its own).
+    fn instantiate(instantiation: Instantiation<'_>) -> Result<Instance, FmuError> {
+        let Instantiation {
+            guid, resources, ..
+        } = instantiation;
+        if guid != GUID
+            && !resources
+                .as_deref()
+                .is_some_and(|r| holds_configuration_of(r, guid))
+        {
+            return Err(FmuError::Argument(format!(
+                "fmuGUID {guid:?} is neither this binary's {GUID:?} nor that of the \
+                 configuration in the FMU's resources: the modelDescription.xml does not \
+                 belong to this FMU (was resources/{RESOURCE_CONFIG} changed after \
+                 fmu-pack packed it? pack it again)"
+            )));
+        }
+        Ok(Instance::new(resources))
+    }
+
+    /// `fmi2SetupExperiment` (the tolerance is not used: RK4 has a fixed step).
+    fn setup_experiment(&mut self, start: f64, stop: Option<f64>) -> Result<(), FmuError> {
+        self.experiment = Experiment::new(start, stop)?;
+        self.last_successful_time = start;
+        self.built = None;
+        Ok(())
+    }
+
+    /// Builds the simulation (precomputes the records) and its first outputs.
+    fn exit_initialization_mode(&mut self, cx: &Context) -> Result<(), FmuError> {
+        self.simulation()?;
+        self.refresh_outputs()?;
+        self.last_successful_time = self.experiment.start_time;
+        cx.event("initialized: records precomputed");
+        Ok(())
+    }
+
+    /// Back to a freshly instantiated instance; the resource location stays.
+    fn reset(&mut self) {
+        *self = Instance::new(self.resources.take());
+    }
+
+    fn get_real(&mut self, cx: &Context, vrs: &[u32], values: &mut [f64]) -> Result<(), FmuError> {
+        for (&vr, value) in vrs.iter().zip(values) {
+            *value = match self.variable(VariableType::Real, vr)? {
+                Causality::Parameter => match self.parameter_value(VariableType::Real, vr)? {
+                    FmuValue::Real(x) => x,
+                    _ => unreachable!("a Real parameter"),
+                },
+                Causality::Input => self.inputs[input_index(vr)],
+                _ => self.output(cx.state(), vr)?,
+            };
         }
         Ok(())
     }
 
-    pub fn get_integer(&mut self, vrs: &[u32], values: &mut [i32]) -> Result<(), FmuError> {
+    fn get_integer(
+        &mut self,
+        _cx: &Context,
+        vrs: &[u32],
+        values: &mut [i32],
+    ) -> Result<(), FmuError> {
         for (&vr, value) in vrs.iter().zip(values) {
             self.variable(VariableType::Integer, vr)?;
             *value = match self.parameter_value(VariableType::Integer, vr)? {
@@ -457,36 +281,13 @@ impl Instance {
         Ok(())
     }
 
-    pub fn set_integer(&mut self, vrs: &[u32], values: &[i32]) -> Result<(), FmuError> {
-        for (&vr, &value) in vrs.iter().zip(values) {
-            let causality = self.variable(VariableType::Integer, vr)?;
-            self.may_set(
-                causality,
-                VariableType::Integer,
-                vr,
-                &FmuValue::Integer(value),
-            )?;
-        }
-        for (&vr, &value) in vrs.iter().zip(values) {
-            if !self.kept(VariableType::Integer, vr)
-                && self.parameters.write(vr, FmuValue::Integer(value)) == Some(true)
-            {
-                self.parameters_changed();
-            }
-        }
-        Ok(())
-    }
-
-    /// `fmi2GetBoolean` / `fmi2SetBoolean`: this model has no Boolean variable.
-    pub fn boolean(&self, vrs: &[u32]) -> Result<(), FmuError> {
-        match vrs.first() {
-            Some(&vr) => self.variable(VariableType::Boolean, vr).map(|_| ()),
-            None => Ok(()),
-        }
+    /// `fmi2GetBoolean`: this model has no Boolean variable.
+    fn get_boolean(&mut self, _cx: &Context, vrs: &[u32], _: &mut [i32]) -> Result<(), FmuError> {
+        self.boolean(vrs)
     }
 
     /// `fmi2GetString`: the returned strings live in the instance until its next call.
-    pub fn get_string(&mut self, vrs: &[u32]) -> Result<&[CString], FmuError> {
+    fn get_string(&mut self, _cx: &Context, vrs: &[u32]) -> Result<&[CString], FmuError> {
         let mut strings = Vec::with_capacity(vrs.len());
         for &vr in vrs {
             self.variable(VariableType::String, vr)?;
@@ -498,12 +299,72 @@ impl Instance {
         Ok(&self.strings)
     }
 
+    /// `fmi2SetReal`: all values are checked before any is set.
+    fn set_real(&mut self, cx: &Context, vrs: &[u32], values: &[f64]) -> Result<(), FmuError> {
+        for (&vr, &value) in vrs.iter().zip(values) {
+            let causality = self.variable(VariableType::Real, vr)?;
+            self.may_set(
+                cx.state(),
+                causality,
+                VariableType::Real,
+                vr,
+                &FmuValue::Real(value),
+            )?;
+            if !value.is_finite() {
+                let field = name_of(VariableType::Real, vr).to_string();
+                return Err(match causality {
+                    Causality::Input => Error::NonFiniteInput { field, value },
+                    _ => Error::invalid(field, value, "must be a finite number"),
+                }
+                .into());
+            }
+        }
+        for (&vr, &value) in vrs.iter().zip(values) {
+            if kept(cx.state(), VariableType::Real, vr) {
+                continue;
+            }
+            match self.parameters.write(vr, FmuValue::Real(value)) {
+                Some(true) => self.parameters_changed(),
+                Some(false) => {}
+                None => self.inputs[input_index(vr)] = value,
+            }
+        }
+        Ok(())
+    }
+
+    fn set_integer(&mut self, cx: &Context, vrs: &[u32], values: &[i32]) -> Result<(), FmuError> {
+        for (&vr, &value) in vrs.iter().zip(values) {
+            let causality = self.variable(VariableType::Integer, vr)?;
+            self.may_set(
+                cx.state(),
+                causality,
+                VariableType::Integer,
+                vr,
+                &FmuValue::Integer(value),
+            )?;
+        }
+        for (&vr, &value) in vrs.iter().zip(values) {
+            if !kept(cx.state(), VariableType::Integer, vr)
+                && self.parameters.write(vr, FmuValue::Integer(value)) == Some(true)
+            {
+                self.parameters_changed();
+            }
+        }
+        Ok(())
+    }
+
+    /// `fmi2SetBoolean`: this model has no Boolean variable.
+    fn set_boolean(&mut self, _cx: &Context, vrs: &[u32], _: &[i32]) -> Result<(), FmuError> {
+        self.boolean(vrs)
+    }
+
     /// `fmi2SetString`: a value longer than [`MAX_STRING_BYTES`] is refused (a saved state
     /// could not carry it).
-    pub fn set_string(&mut self, vrs: &[u32], values: &[&str]) -> Result<(), FmuError> {
+    fn set_string(&mut self, cx: &Context, vrs: &[u32], values: &[&str]) -> Result<(), FmuError> {
         for (&vr, value) in vrs.iter().zip(values) {
             let causality = self.variable(VariableType::String, vr)?;
             self.may_set(
+                cx.state(),
                 causality,
                 VariableType::String,
                 vr,
@@ -518,7 +379,7 @@ impl Instance {
             }
         }
         for (&vr, &value) in vrs.iter().zip(values) {
-            if !self.kept(VariableType::String, vr)
+            if !kept(cx.state(), VariableType::String, vr)
                 && self
                     .parameters
                     .write(vr, FmuValue::String(value.to_string()))
@@ -530,17 +391,83 @@ impl Instance {
         Ok(())
     }
 
-    fn parameters_changed(&mut self) {
-        self.built = None;
+    /// `fmi2DoStep`: one communication step with the current inputs. A step must advance
+    /// the time (else fmi2Error) and may cover at most one block of the records
+    /// ([`longest_step`]; a longer one is discarded, the state unchanged, so that a master
+    /// can retry with shorter steps as FMI 2.0.4 section 4.2.2 advises).
+    fn do_step(&mut self, point: f64, h: f64) -> Result<(), FmuError> {
+        if !(h.is_finite() && h > 0.0) {
+            return Err(FmuError::Argument(format!(
+                "communicationStepSize = {} must be finite and positive",
+                written(h)
+            )));
+        }
+        let inputs = self.inputs;
+        let experiment = self.experiment;
+        let simulation = self.simulation()?;
+        let t = simulation.time();
+        if !point.is_finite() || (point - t).abs() > TIME_TOLERANCE * t.abs().max(1.0) {
+            return Err(FmuError::Argument(format!(
+                "currentCommunicationPoint = {point} s differs from the instance's time {t} s"
+            )));
+        }
+        if t + h == t {
+            return Err(FmuError::Argument(format!(
+                "communicationStepSize = {} s does not advance the time: at t = {t} s, t + h \
+                 == t in double precision (doubles there are {} s apart)",
+                written(h),
+                written(spacing(t))
+            )));
+        }
+        if let (true, Some(stop)) = (experiment.passes_stop(t + h), experiment.stop_time) {
+            return Err(FmuError::Argument(format!(
+                "a step of {} s from {t} s passes stopTime = {stop} s",
+                written(h)
+            )));
+        }
+        let longest = longest_step(simulation.problem());
+        if h > longest {
+            return Err(discarded(Error::invalid(
+                "communicationStepSize",
+                format!("{} s", written(h)),
+                format!(
+                    "longer than one block of the records, {longest} s, the longest step this \
+                     FMU takes (a step makes at most one block of records, as initialisation \
+                     does, and {} RK4 steps of stepSize = {} s); the state is unchanged: \
+                     step at most {longest} s at a time",
+                    (longest / simulation.problem().run.time_step).ceil(),
+                    simulation.problem().run.time_step
+                ),
+            )));
+        }
+        let advanced = simulation.advance(h, inputs).map(|()| simulation.time());
+        // Outputs are computed when a getter first asks for them after the step.
         self.outputs = None;
-        // `hydroDatabase` may name another configuration.
-        self.base = None;
+        match advanced {
+            Ok(time) => {
+                self.last_successful_time = time;
+                Ok(())
+            }
+            // The state is unchanged and the instance usable: the master may change its
+            // inputs (the yaw moment) and try again, or roll back.
+            Err(e @ Error::YawOutsideRecords { .. }) => Err(discarded(e)),
+            Err(e) => Err(e.into()),
+        }
     }
 
+    /// `fmi2GetRealStatus(fmi2LastSuccessfulTime)`.
+    fn last_successful_time(&self) -> f64 {
+        self.last_successful_time
+    }
+}
+
+impl SavedStates for Instance {
+    type State = FmuState;
+
     /// `fmi2GetFMUstate`: a copy of everything needed to continue from here.
-    pub fn get_fmu_state(&mut self) -> Result<FmuState, FmuError> {
+    fn get_fmu_state(&mut self, cx: &Context) -> Result<FmuState, FmuError> {
         let initialized = matches!(
-            self.state,
+            cx.state(),
             MachineState::StepComplete | MachineState::StepFailed | MachineState::Terminated
         );
         let snapshot = match &self.built {
@@ -551,12 +478,12 @@ impl Instance {
             fingerprint: self.current_fingerprint()?,
             parameters: self.parameters.clone(),
             experiment: self.experiment,
-            machine: self.state,
+            machine: cx.state(),
             last_successful_time: self.last_successful_time,
             inputs: self.inputs,
             snapshot,
         };
-        self.event("state saved");
+        cx.event("state saved");
         Ok(state)
     }
 
@@ -567,7 +494,7 @@ impl Instance {
     /// are rebuilt from the state's parameters, and the problem is refused, naming its base
     /// (`hydroDatabase`, resources or the embedded default), when it is not the saved one
     /// or cannot be built. Nothing changes before every check has passed.
-    pub fn set_fmu_state(&mut self, state: &FmuState) -> Result<(), FmuError> {
+    fn set_fmu_state(&mut self, cx: &Context, state: &FmuState) -> Result<MachineState, FmuError> {
         let reuse = self
             .built
             .as_ref()
@@ -617,16 +544,23 @@ impl Instance {
         self.parameters = state.parameters.clone();
         self.base = scenario;
         self.experiment = state.experiment;
-        self.state = state.machine;
         self.last_successful_time = state.last_successful_time;
         self.inputs = state.inputs;
-        self.event(&event);
-        Ok(())
+        cx.event(&event);
+        Ok(state.machine)
+    }
+
+    fn serialized_size(state: &FmuState) -> usize {
+        state.byte_len()
+    }
+
+    fn serialize(state: &FmuState) -> Result<Vec<u8>, FmuError> {
+        Ok(state.to_bytes()?)
     }
 
     /// `fmi2DeSerializeFMUstate`: reads and checks the bytes; whether the state's problem
     /// can be rebuilt here is `fmi2SetFMUstate`'s check (see [`crate::fmi2::state`]).
-    pub fn deserialize(&self, bytes: &[u8]) -> Result<FmuState, FmuError> {
+    fn deserialize(bytes: &[u8]) -> Result<FmuState, FmuError> {
         Ok(FmuState::from_bytes(bytes)?)
     }
 }
@@ -645,6 +579,33 @@ impl Built {
         *self
             .fingerprint
             .get_or_init(|| fingerprint(self.simulation.problem()))
+    }
+}
+
+/// Whether the variable of `ty` with value reference `vr` is a parameter that is fixed
+/// now, after `fmi2ExitInitializationMode` (a set of it was accepted because it keeps its
+/// value: nothing to write).
+fn kept(state: MachineState, ty: VariableType, vr: u32) -> bool {
+    !state.fixed_parameters_settable()
+        && find(ty, vr).is_some_and(|v| v.causality == Causality::Parameter)
+}
+
+/// May a variable of this causality be set now?
+fn settable(state: MachineState, causality: Causality, vr: u32) -> Result<(), FmuError> {
+    let name = VARIABLES
+        .iter()
+        .find(|v| v.value_reference == vr && v.causality == causality)
+        .map_or("?", |v| v.name);
+    match causality {
+        Causality::Input => Ok(()),
+        Causality::Parameter if state.fixed_parameters_settable() => Ok(()),
+        Causality::Parameter => Err(FmuError::Argument(format!(
+            "parameter {name} is fixed: set it before fmi2ExitInitializationMode (after \
+             it, only to the value it has)"
+        ))),
+        other => Err(FmuError::Argument(format!(
+            "{name} (value reference {vr}) is an {other:?} and cannot be set"
+        ))),
     }
 }
 
@@ -727,26 +688,5 @@ mod tests {
                 _ => {}
             }
         }
-    }
-
-    #[test]
-    fn state_codes_round_trip_and_error_is_never_restored() {
-        use MachineState::*;
-        for s in [
-            Instantiated,
-            InitializationMode,
-            StepComplete,
-            StepFailed,
-            Terminated,
-        ] {
-            assert_eq!(MachineState::from_code(s.code()), Some(s));
-        }
-        assert_eq!(MachineState::from_code(Error.code()), None);
-    }
-
-    #[test]
-    fn call_names_are_the_c_names() {
-        assert_eq!(Call::DoStep.name(), "fmi2DoStep");
-        assert_eq!(Call::DeSerializeFMUstate.name(), "fmi2DeSerializeFMUstate");
     }
 }

@@ -11,16 +11,25 @@
 //! the inputs' position (MoorDyn_Init, or the catenaries), and the outputs are their force
 //! there: the lines are made when an output is first read in initialisation mode or at
 //! `fmi2ExitInitializationMode`, and made again if an input or a parameter changed since.
+//!
+//! This is the model of the shared FMI layer ([`Model`]): the layer checks each call against
+//! the state machine, turns C pointers into the arguments here and reports every failure,
+//! an [`Error`], with one status and log policy. A bad argument (an unknown value reference,
+//! a non-finite input, a fixed parameter set late) is [`Error::Argument`]; what the lines
+//! refuse (the file, MoorDyn, a catenary without solution) is [`Error::Model`].
 
-use super::logger::Logger;
-use super::machine::{Call, MachineState};
 use super::variables::{
-    Real, DEFAULT_MOORING, DYNAMIC, INPUTS, MOORING_FILE, MOORING_MODEL, OUTPUTS, QUASI_STATIC,
+    Real, DEFAULT_MOORING, DYNAMIC, GUID, INPUTS, MODEL_IDENTIFIER, MOORING_FILE, MOORING_MODEL,
+    OUTPUTS, QUASI_STATIC,
 };
-use crate::moordyn::{Library, System};
+use crate::moordyn::{this_library_dir, Library, System, LIBRARY_FILE};
 use crate::planar::{body6, planar_force};
 use crate::quasi_static::QuasiStatic;
-use std::ffi::{c_char, CString};
+use slowdrift_fmi::fmi2::machine::MachineState;
+use slowdrift_fmi::fmi2::{Context, Instantiation, Model};
+use slowdrift_fmi::text::c_text;
+use slowdrift_fmi::Error;
+use std::ffi::CString;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -35,8 +44,6 @@ enum Lines {
 }
 
 pub struct Instance {
-    pub logger: Logger,
-    state: MachineState,
     library: Arc<Library>,
     /// The unpacked FMU's `resources` folder.
     resources: PathBuf,
@@ -48,15 +55,39 @@ pub struct Instance {
     lines: Option<Lines>,
     /// The inputs, file and model the lines were made for, while in initialisation mode.
     made_for: Option<([f64; INPUTS.len()], String, i32)>,
-    /// The last String handed to the host by `fmi2GetString`.
-    string_out: CString,
+    /// The strings last handed to the host by `fmi2GetString`; valid until the next call.
+    strings: Vec<CString>,
 }
 
-impl Instance {
-    pub fn new(logger: Logger, library: Library, resources: PathBuf) -> Instance {
-        Instance {
-            logger,
-            state: MachineState::Instantiated,
+impl Model for Instance {
+    const MODEL_IDENTIFIER: &'static str = MODEL_IDENTIFIER;
+    const WITHOUT_RESOURCES: &'static str =
+        "the resources folder beside the library (binaries/linux64/../../resources) is used";
+
+    /// An instance with MoorDyn's library loaded from beside this library, and the
+    /// resources of `fmuResourceLocation` (else those beside this library, where every
+    /// master unpacks them).
+    fn instantiate(instantiation: Instantiation<'_>) -> Result<Instance, Error> {
+        let Instantiation {
+            guid, resources, ..
+        } = instantiation;
+        if guid != GUID {
+            return Err(Error::Argument(format!(
+                "fmuGUID {guid} is not this FMU's {GUID}"
+            )));
+        }
+        let dir = this_library_dir().map_err(Error::Model)?;
+        let library = Library::load(&dir.join(LIBRARY_FILE)).map_err(Error::Model)?;
+        let resources = match resources.or_else(|| resources_beside(&dir)) {
+            Some(resources) => resources,
+            None => {
+                return Err(Error::Model(format!(
+                    "{} has no resources folder above it",
+                    dir.display()
+                )))
+            }
+        };
+        Ok(Instance {
             library: Arc::new(library),
             resources,
             mooring_file: String::new(),
@@ -66,53 +97,29 @@ impl Instance {
             outputs: [0.0; OUTPUTS.len()],
             lines: None,
             made_for: None,
-            string_out: CString::default(),
-        }
+            strings: Vec::new(),
+        })
     }
 
-    /// Whether `call` is allowed in the current state; an error naming both otherwise.
-    pub fn check(&self, call: Call) -> Result<(), String> {
-        if call.allowed() & (1 << self.state.code()) != 0 {
-            Ok(())
-        } else {
-            Err(format!(
-                "illegal call sequence: {} is not allowed in state {:?}",
-                call.name(),
-                self.state
-            ))
-        }
-    }
-
-    /// After a failed call: the instance is unusable until reset or freed.
-    pub fn fail(&mut self) {
-        self.state = MachineState::Error;
-    }
-
-    pub fn setup_experiment(&mut self, start_time: f64) -> Result<(), String> {
+    fn setup_experiment(&mut self, start_time: f64, _stop: Option<f64>) -> Result<(), Error> {
         if !start_time.is_finite() {
-            return Err(format!("startTime = {start_time} must be finite"));
+            return Err(Error::Argument(format!(
+                "startTime = {start_time} must be finite"
+            )));
         }
         self.time = start_time;
         Ok(())
     }
 
-    pub fn enter_initialization_mode(&mut self) {
-        self.state = MachineState::InitializationMode;
-    }
-
-    pub fn exit_initialization_mode(&mut self) -> Result<(), String> {
+    fn exit_initialization_mode(&mut self, cx: &Context) -> Result<(), Error> {
         self.make_lines()?;
         self.made_for = None;
-        self.state = MachineState::StepComplete;
+        cx.event("initialized: the lines in static equilibrium at the inputs' position");
         Ok(())
     }
 
-    pub fn terminate(&mut self) {
-        self.state = MachineState::Terminated;
-    }
-
     /// As freshly instantiated: start values, no lines.
-    pub fn reset(&mut self) {
+    fn reset(&mut self) {
         self.lines = None;
         self.made_for = None;
         self.mooring_file.clear();
@@ -120,93 +127,164 @@ impl Instance {
         self.time = 0.0;
         self.inputs = [0.0; INPUTS.len()];
         self.outputs = [0.0; OUTPUTS.len()];
-        self.state = MachineState::Instantiated;
     }
 
-    pub fn set_real(&mut self, vr: u32, value: f64) -> Result<(), String> {
-        match Real::of(vr) {
-            Some(Real::Input(i)) if value.is_finite() => {
-                self.inputs[i] = value;
-                Ok(())
-            }
-            Some(Real::Input(i)) => Err(format!("{} = {value} must be finite", INPUTS[i])),
-            Some(Real::Output(i)) => Err(format!("{} is an output: it cannot be set", OUTPUTS[i])),
-            None => Err(format!("no Real variable has value reference {vr}")),
-        }
-    }
-
-    pub fn get_real(&mut self, vr: u32) -> Result<f64, String> {
-        match Real::of(vr) {
-            Some(Real::Input(i)) => Ok(self.inputs[i]),
-            Some(Real::Output(i)) => {
-                if self.state == MachineState::InitializationMode {
-                    self.make_lines()?;
+    /// Inputs, and outputs (in initialisation mode, the lines are made at the inputs'
+    /// position to give them).
+    fn get_real(&mut self, cx: &Context, vrs: &[u32], values: &mut [f64]) -> Result<(), Error> {
+        for (&vr, value) in vrs.iter().zip(values) {
+            *value = match Real::of(vr) {
+                Some(Real::Input(i)) => self.inputs[i],
+                Some(Real::Output(i)) => {
+                    if cx.state() == MachineState::InitializationMode {
+                        self.make_lines()?;
+                    }
+                    self.outputs[i]
                 }
-                Ok(self.outputs[i])
+                None => return Err(no_variable("Real", vr)),
+            };
+        }
+        Ok(())
+    }
+
+    fn get_integer(&mut self, _cx: &Context, vrs: &[u32], values: &mut [i32]) -> Result<(), Error> {
+        for (&vr, value) in vrs.iter().zip(values) {
+            if vr != MOORING_MODEL {
+                return Err(no_variable("Integer", vr));
             }
-            None => Err(format!("no Real variable has value reference {vr}")),
+            *value = self.mooring_model;
         }
-    }
-
-    /// Parameters are fixed: settable until `fmi2ExitInitializationMode`.
-    fn check_parameter(&self, name: &str) -> Result<(), String> {
-        if matches!(
-            self.state,
-            MachineState::Instantiated | MachineState::InitializationMode
-        ) {
-            Ok(())
-        } else {
-            Err(format!(
-                "{name} is a fixed parameter: set it before fmi2ExitInitializationMode"
-            ))
-        }
-    }
-
-    pub fn set_integer(&mut self, vr: u32, value: i32) -> Result<(), String> {
-        if vr != MOORING_MODEL {
-            return Err(format!("no Integer variable has value reference {vr}"));
-        }
-        self.check_parameter("mooringModel")?;
-        if value != DYNAMIC && value != QUASI_STATIC {
-            return Err(format!(
-                "invalid FMU parameter mooringModel = {value}: must be {DYNAMIC} (dynamic, \
-                 MoorDyn's lines) or {QUASI_STATIC} (quasi-static catenaries)"
-            ));
-        }
-        self.mooring_model = value;
         Ok(())
     }
 
-    pub fn get_integer(&self, vr: u32) -> Result<i32, String> {
-        if vr == MOORING_MODEL {
-            Ok(self.mooring_model)
-        } else {
-            Err(format!("no Integer variable has value reference {vr}"))
-        }
+    /// This FMU has no Boolean variable: any value reference is unknown.
+    fn get_boolean(&mut self, _cx: &Context, vrs: &[u32], _: &mut [i32]) -> Result<(), Error> {
+        no_boolean(vrs)
     }
 
-    pub fn set_string(&mut self, vr: u32, value: &str) -> Result<(), String> {
-        if vr != MOORING_FILE {
-            return Err(format!("no String variable has value reference {vr}"));
+    fn get_string(&mut self, _cx: &Context, vrs: &[u32]) -> Result<&[CString], Error> {
+        let mut strings = Vec::with_capacity(vrs.len());
+        for &vr in vrs {
+            if vr != MOORING_FILE {
+                return Err(no_variable("String", vr));
+            }
+            strings.push(c_text(&self.mooring_file));
         }
-        self.check_parameter("mooringFile")?;
-        if value.contains('\0') {
-            return Err("mooringFile contains a NUL byte".into());
+        self.strings = strings;
+        Ok(&self.strings)
+    }
+
+    /// The inputs: all values are checked before any is set.
+    fn set_real(&mut self, _cx: &Context, vrs: &[u32], values: &[f64]) -> Result<(), Error> {
+        for (&vr, &value) in vrs.iter().zip(values) {
+            match Real::of(vr) {
+                Some(Real::Input(_)) if value.is_finite() => {}
+                Some(Real::Input(i)) => {
+                    return Err(Error::Argument(format!(
+                        "{} = {value} must be finite",
+                        INPUTS[i]
+                    )))
+                }
+                Some(Real::Output(i)) => {
+                    return Err(Error::Argument(format!(
+                        "{} is an output: it cannot be set",
+                        OUTPUTS[i]
+                    )))
+                }
+                None => return Err(no_variable("Real", vr)),
+            }
         }
-        self.mooring_file = value.to_string();
+        for (&vr, &value) in vrs.iter().zip(values) {
+            if let Some(Real::Input(i)) = Real::of(vr) {
+                self.inputs[i] = value;
+            }
+        }
         Ok(())
     }
 
-    /// The String variable `vr` as C text, valid until the instance's next call.
-    pub fn get_string(&mut self, vr: u32) -> Result<*const c_char, String> {
-        if vr != MOORING_FILE {
-            return Err(format!("no String variable has value reference {vr}"));
+    /// `mooringModel`: all values are checked before any is set.
+    fn set_integer(&mut self, cx: &Context, vrs: &[u32], values: &[i32]) -> Result<(), Error> {
+        for (&vr, &value) in vrs.iter().zip(values) {
+            if vr != MOORING_MODEL {
+                return Err(no_variable("Integer", vr));
+            }
+            check_parameter(cx, "mooringModel")?;
+            if value != DYNAMIC && value != QUASI_STATIC {
+                return Err(Error::Argument(format!(
+                    "invalid FMU parameter mooringModel = {value}: must be {DYNAMIC} (dynamic, \
+                     MoorDyn's lines) or {QUASI_STATIC} (quasi-static catenaries)"
+                )));
+            }
         }
-        // set_string refuses NUL bytes, so the value converts.
-        self.string_out = CString::new(self.mooring_file.as_str()).map_err(|e| e.to_string())?;
-        Ok(self.string_out.as_ptr())
+        if let Some(&value) = values.last() {
+            self.mooring_model = value;
+        }
+        Ok(())
     }
 
+    /// This FMU has no Boolean variable: any value reference is unknown.
+    fn set_boolean(&mut self, _cx: &Context, vrs: &[u32], _: &[i32]) -> Result<(), Error> {
+        no_boolean(vrs)
+    }
+
+    /// `mooringFile`: all values are checked before any is set.
+    fn set_string(&mut self, cx: &Context, vrs: &[u32], values: &[&str]) -> Result<(), Error> {
+        for &vr in vrs {
+            if vr != MOORING_FILE {
+                return Err(no_variable("String", vr));
+            }
+            check_parameter(cx, "mooringFile")?;
+        }
+        if let Some(value) = values.last() {
+            self.mooring_file = value.to_string();
+        }
+        Ok(())
+    }
+
+    fn do_step(&mut self, t: f64, h: f64) -> Result<(), Error> {
+        if !(h.is_finite() && h > 0.0) {
+            return Err(Error::Argument(format!(
+                "communicationStepSize = {h} must be positive"
+            )));
+        }
+        if !t.is_finite() || (t - self.time).abs() > TIME_TOLERANCE * self.time.abs().max(1.0) {
+            return Err(Error::Argument(format!(
+                "currentCommunicationPoint = {t} is not the instance's time {}",
+                self.time
+            )));
+        }
+        let mut lines = self
+            .lines
+            .take()
+            .ok_or_else(|| Error::Model("no mooring lines".into()))?;
+        let result = match &mut lines {
+            Lines::Dynamic(system) => {
+                let (x, xd) = self.kinematics();
+                system
+                    .step(x, xd, t, h)
+                    .map_err(|e| format!("{e} in the step from t = {t} s"))
+                    .and_then(|force| self.set_outputs(system, force))
+            }
+            Lines::QuasiStatic(quasi_static) => {
+                // The position the fairleads reach at t + h, as MoorDyn moves them.
+                let i = self.inputs;
+                let q = [i[0] + h * i[3], i[1] + h * i[4], i[2] + h * i[5]];
+                self.set_quasi_static_outputs(quasi_static, q)
+                    .map_err(|e| format!("{e} in the step from t = {t} s"))
+            }
+        };
+        self.lines = Some(lines);
+        result.map_err(Error::Model)?;
+        self.time = t + h;
+        Ok(())
+    }
+
+    fn last_successful_time(&self) -> f64 {
+        self.time
+    }
+}
+
+impl Instance {
     /// The input file: `mooringFile`, or the FMU's default mooring.
     fn input_file(&self) -> PathBuf {
         if self.mooring_file.is_empty() {
@@ -218,25 +296,26 @@ impl Instance {
 
     /// Makes the lines at the inputs' position (unless they were made for the same inputs,
     /// file and model) and sets the outputs to their static force.
-    fn make_lines(&mut self) -> Result<(), String> {
+    fn make_lines(&mut self) -> Result<(), Error> {
         let key = (self.inputs, self.mooring_file.clone(), self.mooring_model);
         if self.lines.is_some() && self.made_for.as_ref() == Some(&key) {
             return Ok(());
         }
         self.lines = None;
         let input = self.input_file();
+        let named = |e: String| Error::Model(with_parameter(&self.mooring_file, &input, e));
         let lines = if self.mooring_model == QUASI_STATIC {
-            let lines = QuasiStatic::read(&input)
-                .map_err(|e| with_parameter(&self.mooring_file, &input, e))?;
+            let lines = QuasiStatic::read(&input).map_err(named)?;
             let q = [self.inputs[0], self.inputs[1], self.inputs[2]];
-            self.set_quasi_static_outputs(&lines, q)?;
+            self.set_quasi_static_outputs(&lines, q)
+                .map_err(Error::Model)?;
             Lines::QuasiStatic(lines)
         } else {
             let (x, xd) = self.kinematics();
-            let mut system = System::new(Arc::clone(&self.library), &input, x, xd)
-                .map_err(|e| with_parameter(&self.mooring_file, &input, e))?;
-            let force = system.step(x, xd, self.time, 0.0)?;
-            self.set_outputs(&system, force)?;
+            let mut system =
+                System::new(Arc::clone(&self.library), &input, x, xd).map_err(named)?;
+            let force = system.step(x, xd, self.time, 0.0).map_err(Error::Model)?;
+            self.set_outputs(&system, force).map_err(Error::Model)?;
             Lines::Dynamic(system)
         };
         self.lines = Some(lines);
@@ -272,42 +351,33 @@ impl Instance {
         self.outputs = outputs;
         Ok(())
     }
+}
 
-    pub fn do_step(&mut self, t: f64, h: f64) -> Result<(), String> {
-        if !(h.is_finite() && h > 0.0) {
-            return Err(format!("communicationStepSize = {h} must be positive"));
-        }
-        if !t.is_finite() || (t - self.time).abs() > TIME_TOLERANCE * self.time.abs().max(1.0) {
-            return Err(format!(
-                "currentCommunicationPoint = {t} is not the instance's time {}",
-                self.time
-            ));
-        }
-        let mut lines = self.lines.take().ok_or("no mooring lines")?;
-        let result = match &mut lines {
-            Lines::Dynamic(system) => {
-                let (x, xd) = self.kinematics();
-                system
-                    .step(x, xd, t, h)
-                    .map_err(|e| format!("{e} in the step from t = {t} s"))
-                    .and_then(|force| self.set_outputs(system, force))
-            }
-            Lines::QuasiStatic(quasi_static) => {
-                // The position the fairleads reach at t + h, as MoorDyn moves them.
-                let i = self.inputs;
-                let q = [i[0] + h * i[3], i[1] + h * i[4], i[2] + h * i[5]];
-                self.set_quasi_static_outputs(quasi_static, q)
-                    .map_err(|e| format!("{e} in the step from t = {t} s"))
-            }
-        };
-        self.lines = Some(lines);
-        result?;
-        self.time = t + h;
+/// The FMU's `resources` folder beside this library: `<unpacked FMU>/resources`, two levels
+/// above it (`binaries/linux64/Mooring.so`).
+fn resources_beside(library_dir: &Path) -> Option<PathBuf> {
+    Some(library_dir.parent()?.parent()?.join("resources"))
+}
+
+/// Parameters are fixed: settable until `fmi2ExitInitializationMode`.
+fn check_parameter(cx: &Context, name: &str) -> Result<(), Error> {
+    if cx.state().fixed_parameters_settable() {
         Ok(())
+    } else {
+        Err(Error::Argument(format!(
+            "{name} is a fixed parameter: set it before fmi2ExitInitializationMode"
+        )))
     }
+}
 
-    pub fn time(&self) -> f64 {
-        self.time
+fn no_variable(kind: &str, vr: u32) -> Error {
+    Error::Argument(format!("no {kind} variable has value reference {vr}"))
+}
+
+fn no_boolean(vrs: &[u32]) -> Result<(), Error> {
+    match vrs.first() {
+        Some(&vr) => Err(no_variable("Boolean", vr)),
+        None => Ok(()),
     }
 }
 

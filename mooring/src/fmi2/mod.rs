@@ -1,13 +1,10 @@
-//! The mooring FMU's FMI 2.0 C ABI. The C types and the state machine are SlowDrift's
-//! (model-agnostic files of the workspace root's `src/fmi2`, compiled here as this crate's
-//! own modules): one source for the standard's types and its table of allowed calls.
+//! The mooring FMU's FMI 2.0 co-simulation model. The C types, the state machine, the
+//! panic firewall, the handles of the host's pointers, the logger and the status policy are
+//! the shared FMI layer's (the workspace's `slowdrift-fmi` crate, as for SlowDrift's FMU):
+//! `exports` are the `fmi2*` symbols, thin shims into it, and `instance` is the model it
+//! runs.
 
-#[path = "../../../src/fmi2/machine.rs"]
-pub mod machine;
-#[path = "../../../src/fmi2/types.rs"]
-pub mod types;
 pub mod variables;
 
 mod exports;
 mod instance;
-mod logger;

@@ -18,8 +18,6 @@ pub const OUTPUTS: [&str; 4] = ["Fx", "Fy", "Mz", "fairleadTensionMax"];
 pub const FIRST_OUTPUT: u32 = 10;
 /// The file of the default mooring in the FMU's resources folder.
 pub const DEFAULT_MOORING: &str = "spread_mooring.dat";
-/// The log categories of the XML, in its order.
-pub const LOG_CATEGORIES: [&str; 2] = ["logStatusError", "logAll"];
 
 /// A Real variable by value reference.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -47,9 +45,10 @@ mod tests {
     use super::*;
     use quick_xml::events::Event;
     use quick_xml::Reader;
+    use slowdrift_fmi::log::Category;
 
     /// (name, valueReference, causality, type) of every ScalarVariable, and the GUID, model
-    /// identifier and log categories, read with quick-xml.
+    /// identifier and log categories (the FMI layer's, in its order), read with quick-xml.
     #[test]
     fn constants_are_the_model_description() {
         let xml = include_str!("../../modelDescription.xml");
@@ -92,7 +91,7 @@ mod tests {
         }
         assert_eq!(guid.as_deref(), Some(GUID));
         assert_eq!(id.as_deref(), Some(MODEL_IDENTIFIER));
-        assert_eq!(categories, LOG_CATEGORIES);
+        assert_eq!(categories, Category::ALL.map(Category::name));
         let mut expected = vec![(
             "mooringFile".to_string(),
             MOORING_FILE,

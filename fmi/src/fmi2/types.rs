@@ -4,17 +4,18 @@
 //!
 //! The enums the host passes in (`fmi2Type`, `fmi2StatusKind`) are plain `c_int` wrappers
 //! with named constants, not Rust enums: a host may pass any integer, and an out-of-range
-//! value in a Rust enum would be undefined behaviour. `fmi2Status`, which this library
-//! only produces, is a `#[repr(C)]` enum.
+//! value in a Rust enum would be undefined behaviour. `fmi2Status`, which the FMUs only
+//! produce, is a `#[repr(C)]` enum.
 #![allow(non_camel_case_types, non_snake_case, non_upper_case_globals)]
 
 use std::ffi::{c_char, c_int, c_uint, c_void};
 
-/// `fmi2Component`: the opaque instance handle (a `Box<Instance>` behind it).
+/// `fmi2Component`: the opaque instance handle (a `Box<Component<M>>` behind it, see
+/// [`super::handle`]).
 pub type fmi2Component = *mut c_void;
 /// `fmi2ComponentEnvironment`: the host's pointer, handed back to its callbacks unchanged.
 pub type fmi2ComponentEnvironment = *mut c_void;
-/// `fmi2FMUstate`: an opaque saved state (a `Box<FmuState>` behind it).
+/// `fmi2FMUstate`: an opaque saved state (a box of the model's saved state behind it).
 pub type fmi2FMUstate = *mut c_void;
 /// `fmi2ValueReference`.
 pub type fmi2ValueReference = c_uint;
@@ -86,9 +87,9 @@ pub type fmi2CallbackFreeMemory = unsafe extern "C" fn(*mut c_void);
 /// `fmi2StepFinished`.
 pub type fmi2StepFinished = unsafe extern "C" fn(fmi2ComponentEnvironment, fmi2Status);
 
-/// `fmi2CallbackFunctions`. Every field may be NULL; this FMU uses only `logger` and
-/// `componentEnvironment` (it allocates with Rust's allocator:
-/// `canNotUseMemoryManagementFunctions="true"`, and it never steps asynchronously).
+/// `fmi2CallbackFunctions`. Every field may be NULL; the FMUs use only `logger` and
+/// `componentEnvironment` (they allocate with Rust's allocator:
+/// `canNotUseMemoryManagementFunctions="true"`, and they never step asynchronously).
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct fmi2CallbackFunctions {

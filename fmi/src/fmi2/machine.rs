@@ -2,7 +2,9 @@
 //! call is allowed in which state (the Reference-FMUs' `MASK_fmi2*` table), with no
 //! knowledge of the model.
 
-/// The FMI 2.0 co-simulation states this FMU can be in (FMI 2.0.4 figure 8; there is no
+use crate::machine::CallTable;
+
+/// The FMI 2.0 co-simulation states an instance can be in (FMI 2.0.4 figure 8; there is no
 /// StepInProgress/StepCanceled: steps are never asynchronous).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum MachineState {
@@ -15,8 +17,17 @@ pub enum MachineState {
 }
 
 impl MachineState {
-    pub(super) const fn bit(self) -> u8 {
+    const fn bit(self) -> u8 {
         1 << self as u8
+    }
+
+    /// Whether a parameter of variability `fixed` may still be set: until
+    /// `fmi2ExitInitializationMode`.
+    pub fn fixed_parameters_settable(self) -> bool {
+        matches!(
+            self,
+            MachineState::Instantiated | MachineState::InitializationMode
+        )
     }
 
     /// The byte of the serialized state.
@@ -162,5 +173,65 @@ impl Call {
     /// The C function's name.
     pub fn name(self) -> String {
         format!("fmi2{self:?}")
+    }
+}
+
+impl CallTable for Call {
+    type State = MachineState;
+
+    fn c_name(self) -> String {
+        self.name()
+    }
+
+    fn allowed_in(self, state: MachineState) -> bool {
+        self.allowed() & state.bit() != 0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn state_codes_round_trip_and_error_is_never_restored() {
+        use MachineState::*;
+        for s in [
+            Instantiated,
+            InitializationMode,
+            StepComplete,
+            StepFailed,
+            Terminated,
+        ] {
+            assert_eq!(MachineState::from_code(s.code()), Some(s));
+        }
+        assert_eq!(MachineState::from_code(Error.code()), None);
+    }
+
+    #[test]
+    fn call_names_are_the_c_names() {
+        assert_eq!(Call::DoStep.name(), "fmi2DoStep");
+        assert_eq!(Call::DeSerializeFMUstate.name(), "fmi2DeSerializeFMUstate");
+        assert_eq!(Call::DoStep.c_name(), "fmi2DoStep");
+    }
+
+    #[test]
+    fn the_table_decides_and_fixed_parameters_close_at_initialization_end() {
+        use MachineState::*;
+        assert!(Call::DoStep.allowed_in(StepComplete));
+        assert!(!Call::DoStep.allowed_in(StepFailed));
+        assert!(Call::Reset.allowed_in(Error));
+        assert!(!Call::GetFMUstate.allowed_in(Error));
+        let settable: Vec<_> = [
+            Instantiated,
+            InitializationMode,
+            StepComplete,
+            StepFailed,
+            Terminated,
+            Error,
+        ]
+        .into_iter()
+        .filter(|s| s.fixed_parameters_settable())
+        .collect();
+        assert_eq!(settable, [Instantiated, InitializationMode]);
     }
 }
