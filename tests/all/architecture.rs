@@ -1,9 +1,14 @@
 //! The architecture as docs/architecture.md states it, checked against the code: the
 //! library's modules, their layers and imports (every import points to a lower layer), no
-//! import cycle between files, `fmi2` imported by no library module, and `unsafe` code only
-//! where the page says. The imports are read from the source text (`crate::a::b` paths and
-//! `use crate::{a, b}` lists; comments and the trailing `#[cfg(test)] mod tests` are left
-//! out), so a new edge fails here until the page says it.
+//! import cycle between files, `fmi2` imported by no library module and the FMI layer
+//! (`slowdrift_fmi`, a row of the table) only by `fmi2`; in the three crates of
+//! the FMUs (`slowdrift`, the FMI layer `slowdrift-fmi` in fmi/, `slowdrift-mooring`),
+//! `unsafe` code only where the page says, no pointer cast in the FMI code outside the FMI
+//! layer's handle module, and `#[no_mangle]` only in the cdylibs' shims. The code is read
+//! as source text (comments and the trailing `#[cfg(test)] mod tests` are left out; the
+//! imports are `crate::a::b` paths and `use crate::{a, b}` lists), so a new edge, cast or
+//! `unsafe` fails here until the page says it. A last test runs the checks on synthetic
+//! code, so each is seen to catch what it forbids.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
@@ -24,10 +29,14 @@ const REEXPORTS: [(&str, &str); 10] = [
     ("Result", "error"),
 ];
 
-/// The files of the library (not the binary's main.rs, cli/ and plot/).
-fn library_files() -> Vec<PathBuf> {
+/// The crates of the workspace the library imports, each a row of the page's table as the
+/// modules are: `slowdrift_fmi`, the FMI layer (fmi/), which imports nothing of the library.
+const WORKSPACE_CRATES: [&str; 1] = ["slowdrift_fmi"];
+
+/// The Rust files under `dir` (relative to the workspace root), sorted; there must be some.
+fn rust_files(dir: &str) -> Vec<PathBuf> {
     fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
-        for entry in std::fs::read_dir(dir).unwrap() {
+        for entry in std::fs::read_dir(dir).unwrap_or_else(|e| panic!("{}: {e}", dir.display())) {
             let path = entry.unwrap().path();
             if path.is_dir() {
                 walk(&path, out);
@@ -36,23 +45,42 @@ fn library_files() -> Vec<PathBuf> {
             }
         }
     }
-    let src = Path::new(ROOT).join("src");
     let mut files = Vec::new();
-    walk(&src, &mut files);
-    files.retain(|f| {
-        let rel = f.strip_prefix(&src).unwrap();
-        !(rel == Path::new("main.rs") || rel.starts_with("cli") || rel.starts_with("plot"))
-    });
+    walk(&Path::new(ROOT).join(dir), &mut files);
+    assert!(!files.is_empty(), "no Rust file under {dir}");
     files.sort();
     files
 }
 
-/// The source without line comments and without the trailing unit-test module.
+/// The files of the library (not the binary's main.rs, cli/ and plot/).
+fn library_files() -> Vec<PathBuf> {
+    let src = Path::new(ROOT).join("src");
+    let mut files = rust_files("src");
+    files.retain(|f| {
+        let rel = f.strip_prefix(&src).unwrap();
+        !(rel == Path::new("main.rs") || rel.starts_with("cli") || rel.starts_with("plot"))
+    });
+    files
+}
+
+/// `file` relative to the workspace root, with `/` separators.
+fn relative(file: &Path) -> String {
+    file.strip_prefix(ROOT)
+        .unwrap()
+        .to_string_lossy()
+        .replace('\\', "/")
+}
+
+/// The source of the file at `path` as [`strip`] leaves it.
 fn code(path: &Path) -> String {
-    let text = std::fs::read_to_string(path).unwrap();
+    strip(&std::fs::read_to_string(path).unwrap())
+}
+
+/// The source without line comments and without the trailing unit-test module.
+fn strip(text: &str) -> String {
     let text = match text.find("#[cfg(test)]\nmod tests") {
         Some(i) => &text[..i],
-        None => &text[..],
+        None => text,
     };
     text.lines()
         .map(|line| match line.find("//") {
@@ -176,8 +204,14 @@ fn the_architecture_page_is_the_code() {
     let table = documented();
     assert_eq!(
         table.keys().cloned().collect::<BTreeSet<_>>(),
-        modules,
-        "the page lists exactly the modules of src/lib.rs"
+        modules
+            .iter()
+            .map(String::as_str)
+            .chain(WORKSPACE_CRATES)
+            .map(String::from)
+            .collect(),
+        "the page lists exactly the modules of src/lib.rs and the workspace's crates the \
+         library imports"
     );
     // File-level edges, and the module-level imports they make.
     let mut edges: BTreeMap<Vec<String>, BTreeSet<Vec<String>>> = BTreeMap::new();
@@ -189,7 +223,13 @@ fn the_architecture_page_is_the_code() {
         }
         let mine = edges.entry(me.clone()).or_default();
         let top = imports.entry(me[0].clone()).or_default();
-        for segments in crate_paths(&code(file)) {
+        let code = code(file);
+        for krate in WORKSPACE_CRATES {
+            if code.contains(&format!("{krate}::")) {
+                top.insert(krate.to_string());
+            }
+        }
+        for segments in crate_paths(&code) {
             let Some(target) = resolve(&paths, &segments) else {
                 continue;
             };
@@ -221,6 +261,12 @@ fn the_architecture_page_is_the_code() {
         imports.values().all(|i| !i.contains("fmi2")),
         "nothing in the library imports fmi2"
     );
+    let fmi_layer_users: Vec<&String> = imports
+        .iter()
+        .filter(|(_, i)| i.contains("slowdrift_fmi"))
+        .map(|(m, _)| m)
+        .collect();
+    assert_eq!(fmi_layer_users, ["fmi2"], "only fmi2 imports the FMI layer");
     assert!(
         imports["model"].is_empty(),
         "model imports nothing of the crate"
@@ -254,28 +300,269 @@ fn the_architecture_page_is_the_code() {
     }
 }
 
-/// `unsafe` appears only in the three files the page names (function-pointer types of the
-/// FMI headers in fmi2/types.rs aside).
-#[test]
-fn unsafe_code_only_where_the_page_says() {
-    let allowed = ["fmi2/exports.rs", "fmi2/logger.rs", "allocator.rs"];
-    let src = Path::new(ROOT).join("src");
-    for file in library_files() {
-        let rel = file
-            .strip_prefix(&src)
-            .unwrap()
-            .to_string_lossy()
-            .into_owned();
-        let code = code(&file);
-        let uses = code
-            .lines()
-            .filter(|l| l.contains("unsafe") && !l.contains("unsafe extern \"C\" fn("))
-            .filter(|l| !l.contains("deny(unsafe_code)"))
-            .count();
-        if !allowed.contains(&rel.as_str()) {
-            assert_eq!(uses, 0, "{rel} has unsafe code");
+/// The Rust files of the three crates of the FMUs: the library (as [`library_files`]), the
+/// FMI layer and the mooring FMU.
+fn fmu_crate_files() -> Vec<PathBuf> {
+    let mut files = library_files();
+    files.extend(rust_files("fmi/src"));
+    files.extend(rust_files("mooring/src"));
+    files
+}
+
+/// The files the page lists as the only ones that may hold `unsafe` code: the list after
+/// its `<!-- unsafe files` marker, one `- `path`: why` line each.
+fn documented_unsafe_files() -> Vec<String> {
+    let page = std::fs::read_to_string(Path::new(ROOT).join("docs/architecture.md")).unwrap();
+    let start = page
+        .find("<!-- unsafe files")
+        .expect("docs/architecture.md lists the files with unsafe code");
+    let files: Vec<String> = page[start..]
+        .lines()
+        .skip(1)
+        .map_while(|line| line.strip_prefix("- `"))
+        .map(|item| item.split('`').next().unwrap().to_string())
+        .collect();
+    assert!(
+        !files.is_empty(),
+        "the page's list of unsafe files is empty"
+    );
+    files
+}
+
+/// The lines (1-based) of `code` (as [`strip`] leaves it) that hold `unsafe` code or allow
+/// it; the function-pointer types of the FMI headers (`unsafe extern "C" fn(`) and a crate
+/// root's `deny(unsafe_code)` are not unsafe code.
+fn unsafe_lines(code: &str) -> Vec<usize> {
+    code.lines()
+        .enumerate()
+        .filter(|(_, l)| l.contains("unsafe") && !l.contains("unsafe extern \"C\" fn("))
+        .filter(|(_, l)| !l.contains("deny(unsafe_code)"))
+        .map(|(n, _)| n + 1)
+        .collect()
+}
+
+/// What the unsafe rule finds wrong: a file holding `unsafe` code that `allowed` does not
+/// name, and a name of `allowed` whose file holds none (a stale list). `holding` is each
+/// file (relative to the workspace root) with its `unsafe` lines.
+fn unsafe_misplaced(holding: &[(String, Vec<usize>)], allowed: &[String]) -> Vec<String> {
+    let mut wrong = Vec::new();
+    for (rel, lines) in holding {
+        if !lines.is_empty() && !allowed.contains(rel) {
+            wrong.push(format!(
+                "{rel}:{}: unsafe code in a file the page does not list",
+                lines[0]
+            ));
         }
     }
-    let lib = std::fs::read_to_string(src.join("lib.rs")).unwrap();
-    assert!(lib.contains("#![deny(unsafe_code)]"));
+    for rel in allowed {
+        if !holding
+            .iter()
+            .any(|(h, lines)| h == rel && !lines.is_empty())
+        {
+            wrong.push(format!("{rel} is listed but holds no unsafe code"));
+        }
+    }
+    wrong
+}
+
+/// `unsafe` appears only in the files the page lists, and each of them holds some; every
+/// crate root denies it.
+#[test]
+fn unsafe_code_only_where_the_page_says() {
+    let holding: Vec<(String, Vec<usize>)> = fmu_crate_files()
+        .iter()
+        .map(|f| (relative(f), unsafe_lines(&code(f))))
+        .collect();
+    let wrong = unsafe_misplaced(&holding, &documented_unsafe_files());
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    for root in ["src/lib.rs", "fmi/src/lib.rs", "mooring/src/lib.rs"] {
+        let text = std::fs::read_to_string(Path::new(ROOT).join(root)).unwrap();
+        assert!(
+            text.contains("#![deny(unsafe_code)]"),
+            "{root} denies unsafe code"
+        );
+    }
+}
+
+/// The FMI code of the two cdylibs and of the layer they share.
+const FMI_CODE: [&str; 3] = ["src/fmi2", "mooring/src/fmi2", "fmi/src"];
+
+/// The one module of the FMI code that converts pointers (docs/architecture.md).
+const HANDLE_MODULE: &str = "fmi/src/fmi2/handle.rs";
+
+/// What converts a pointer: casts between pointer types, from pointers to references,
+/// boxes and slices and back.
+const POINTER_CASTS: [&str; 10] = [
+    "as *const",
+    "as *mut",
+    ".cast::<",
+    ".cast()",
+    ".cast_mut()",
+    ".cast_const()",
+    "from_raw",
+    "into_raw",
+    "from_ptr",
+    "transmute",
+];
+
+/// The pointer casts of `code` (as [`strip`] leaves it): (line, cast), 1-based.
+fn pointer_casts(code: &str) -> Vec<(usize, &'static str)> {
+    let mut casts = Vec::new();
+    for (n, line) in code.lines().enumerate() {
+        for cast in POINTER_CASTS.into_iter().filter(|c| line.contains(c)) {
+            casts.push((n + 1, cast));
+        }
+    }
+    casts
+}
+
+/// The pointer casts of the file `rel` that the rule forbids: any, unless it is the handle
+/// module.
+fn casts_misplaced(rel: &str, code: &str) -> Vec<String> {
+    if rel == HANDLE_MODULE {
+        return Vec::new();
+    }
+    pointer_casts(code)
+        .into_iter()
+        .map(|(n, cast)| format!("{rel}:{n}: `{cast}` outside the handle module ({HANDLE_MODULE})"))
+        .collect()
+}
+
+/// No pointer cast in the FMI code of either cdylib or of the FMI layer outside the layer's
+/// handle module, which holds them all (each in an `unsafe` block with its SAFETY note:
+/// clippy's `undocumented_unsafe_blocks` is denied there).
+#[test]
+fn pointer_casts_only_in_the_handle_module() {
+    let mut wrong = Vec::new();
+    for dir in FMI_CODE {
+        for file in rust_files(dir) {
+            wrong.extend(casts_misplaced(&relative(&file), &code(&file)));
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    // The handle module is where the casts are, so the scan above can find one.
+    let handles = code(&Path::new(ROOT).join(HANDLE_MODULE));
+    let found: Vec<&str> = pointer_casts(&handles)
+        .into_iter()
+        .map(|(_, c)| c)
+        .collect();
+    for cast in [".cast::<", "from_raw", "into_raw", "from_ptr"] {
+        assert!(found.contains(&cast), "{HANDLE_MODULE} has no `{cast}`");
+    }
+    assert!(handles.contains("#![deny(clippy::undocumented_unsafe_blocks)]"));
+    let page = std::fs::read_to_string(Path::new(ROOT).join("docs/architecture.md")).unwrap();
+    assert!(
+        page.contains(&format!("`{HANDLE_MODULE}`")),
+        "docs/architecture.md names the handle module"
+    );
+}
+
+/// The cdylibs' shims: the only files with `#[no_mangle]` items.
+const SHIMS: [&str; 2] = ["src/fmi2/exports.rs", "mooring/src/fmi2/exports.rs"];
+
+/// What the file `rel` exports that the rule forbids: any `export_name`, a `#[no_mangle]`
+/// outside the shims, and in them an item that is not an `extern "C" fn fmi2*`.
+fn exports_misplaced(rel: &str, code: &str) -> Vec<String> {
+    let lines: Vec<&str> = code.lines().collect();
+    let mut wrong = Vec::new();
+    for (n, line) in lines.iter().enumerate() {
+        if line.contains("export_name") {
+            wrong.push(format!("{rel}:{}: names an exported symbol", n + 1));
+        }
+        if !line.contains("no_mangle") {
+            continue;
+        }
+        if !SHIMS.contains(&rel) {
+            wrong.push(format!(
+                "{rel}:{}: #[no_mangle] outside the cdylibs' shims",
+                n + 1
+            ));
+            continue;
+        }
+        let item = lines.get(n + 1).copied().unwrap_or_default();
+        if !item.contains("extern \"C\" fn fmi2") {
+            wrong.push(format!(
+                "{rel}:{}: exports {item:?}, not an fmi2 function",
+                n + 2
+            ));
+        }
+    }
+    wrong
+}
+
+/// The FMI layer exports no symbol: no `#[no_mangle]` or `#[export_name]` in it; each
+/// cdylib's are its shims (`fmi2/exports.rs`), all named `fmi2*`.
+#[test]
+fn only_the_shims_export_symbols() {
+    let mut wrong = Vec::new();
+    let mut exported = 0;
+    for file in fmu_crate_files() {
+        let rel = relative(&file);
+        let code = code(&file);
+        if SHIMS.contains(&rel.as_str()) {
+            exported += code.matches("#[no_mangle]").count();
+        }
+        wrong.extend(exports_misplaced(&rel, &code));
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    // Both shims export the 34 functions, so the scan above sees the attribute.
+    assert_eq!(exported, 2 * 34);
+}
+
+/// The checks above catch what they forbid, on synthetic code.
+#[test]
+fn the_checks_catch_what_they_forbid() {
+    let source = "//! unsafe in a comment is no code\n\
+                  #![deny(unsafe_code)]\n\
+                  pub type F = unsafe extern \"C\" fn(i32);\n\
+                  fn f(p: *mut u8) -> *const i8 {\n    \
+                      let q = unsafe { p.cast::<i8>() }; // from_raw in a comment\n    \
+                      q as *const i8\n\
+                  }\n\
+                  #[no_mangle]\n\
+                  pub extern \"C\" fn helper() {}\n\
+                  #[cfg(test)]\nmod tests {\n    fn g() { unsafe { h() } }\n}\n";
+    let code = strip(source);
+    assert_eq!(unsafe_lines(&code), [5]);
+    assert_eq!(pointer_casts(&code), [(5, ".cast::<"), (6, "as *const")]);
+
+    // unsafe in a file the page does not list, and a listed file without any.
+    let holding = [
+        ("src/hydro/qtf.rs".to_string(), unsafe_lines(&code)),
+        ("src/allocator.rs".to_string(), Vec::new()),
+    ];
+    assert_eq!(
+        unsafe_misplaced(&holding, &["src/allocator.rs".to_string()]),
+        [
+            "src/hydro/qtf.rs:5: unsafe code in a file the page does not list",
+            "src/allocator.rs is listed but holds no unsafe code",
+        ]
+    );
+    assert!(unsafe_misplaced(&holding[..1], &["src/hydro/qtf.rs".to_string()]).is_empty());
+
+    // A cast outside the handle module, none inside it.
+    assert_eq!(
+        casts_misplaced("src/fmi2/exports.rs", &code),
+        [
+            "src/fmi2/exports.rs:5: `.cast::<` outside the handle module (fmi/src/fmi2/handle.rs)",
+            "src/fmi2/exports.rs:6: `as *const` outside the handle module (fmi/src/fmi2/handle.rs)",
+        ]
+    );
+    assert!(casts_misplaced(HANDLE_MODULE, &code).is_empty());
+
+    // #[no_mangle] outside the shims, or on something other than an fmi2 function.
+    assert_eq!(
+        exports_misplaced("fmi/src/fmi2/functions/mod.rs", &code),
+        ["fmi/src/fmi2/functions/mod.rs:8: #[no_mangle] outside the cdylibs' shims"]
+    );
+    assert_eq!(
+        exports_misplaced("src/fmi2/exports.rs", &code),
+        ["src/fmi2/exports.rs:9: exports \"pub extern \\\"C\\\" fn helper() {}\", not an fmi2 function"]
+    );
+    let shim = "#[no_mangle]\npub extern \"C\" fn fmi2GetVersion() -> *const c_char {\n";
+    assert!(exports_misplaced("src/fmi2/exports.rs", shim).is_empty());
+    assert_eq!(
+        exports_misplaced("fmi/src/lib.rs", "#[export_name = \"fmi2Reset\"]\n"),
+        ["fmi/src/lib.rs:1: names an exported symbol"]
+    );
 }

@@ -1,10 +1,12 @@
-//! The shared library exports exactly the FMI 2.0 common and co-simulation functions and
+//! Each FMU's shared library, SlowDrift's (`libslowdrift.so`) and the mooring's
+//! (`libslowdrift_mooring.so`), exports exactly the FMI 2.0 common and co-simulation
+//! functions (nothing of the FMI layer they share, `slowdrift-fmi`, or of the model) and
 //! depends on nothing beyond the C runtime (FMI 2.0.4 section 2.1.1; fmpy checks both).
 //! Uses `nm` and `readelf` from GNU binutils.
 #![cfg(target_os = "linux")]
 
 use std::collections::BTreeSet;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// The functions of `fmi2FunctionTypes.h` for co-simulation, typed from the standard.
@@ -48,26 +50,30 @@ const FMI2_CO_SIMULATION: [&str; 34] = [
 /// Libraries of the C runtime a Rust cdylib may need.
 const C_RUNTIME: [&str; 4] = ["libc.so", "libm.so", "libgcc_s.so", "ld-linux"];
 
-/// The cdylib of this build, in `<target>/<profile>/deps` or `<target>/<profile>`, found
-/// from this test's own path (`<target>/<profile>/deps/fmi2_symbols-*`), so it follows CARGO_TARGET_DIR and
-/// the profile. Cargo builds it with the rlib the test links; if it is missing anyway, it
-/// is built here.
-fn cdylib() -> PathBuf {
+/// The two FMUs' cdylibs: (package, file).
+const CDYLIBS: [(&str, &str); 2] = [
+    ("slowdrift", "libslowdrift.so"),
+    ("slowdrift-mooring", "libslowdrift_mooring.so"),
+];
+
+/// The cdylib `file` of `package` in this build, in `<target>/<profile>/deps` or
+/// `<target>/<profile>`, found from this test's own path (`<target>/<profile>/deps/all-*`),
+/// so it follows CARGO_TARGET_DIR and the profile. Cargo builds both with this test, from
+/// the current source: SlowDrift's with the rlib the test links, the mooring's as a
+/// dev-dependency of this package; if one is missing anyway, it is built here.
+fn cdylib(package: &str, file: &str) -> PathBuf {
     let exe = std::env::current_exe().expect("the test's own path");
     let deps = exe.parent().expect("deps directory");
     let profile_dir = deps.parent().expect("profile directory");
-    // deps/ first: `cargo test` builds the cdylib there with the rlib this test links, and
-    // only `cargo build` copies it up to the profile directory (which may be older).
-    let candidates = [
-        deps.join("libslowdrift.so"),
-        profile_dir.join("libslowdrift.so"),
-    ];
+    // deps/ first: `cargo test` builds the cdylib there, and only `cargo build` copies it
+    // up to the profile directory (which may be older).
+    let candidates = [deps.join(file), profile_dir.join(file)];
     if let Some(found) = candidates.iter().find(|p| p.is_file()) {
         return found.clone();
     }
     let mut build = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()));
     build
-        .args(["build", "--lib", "--manifest-path"])
+        .args(["build", "--lib", "-p", package, "--manifest-path"])
         .arg(concat!(env!("CARGO_MANIFEST_DIR"), "/Cargo.toml"))
         .env(
             "CARGO_TARGET_DIR",
@@ -77,18 +83,17 @@ fn cdylib() -> PathBuf {
         build.arg("--release");
     }
     let status = build.status().expect("cargo runs");
-    assert!(status.success(), "cargo build --lib failed");
+    assert!(status.success(), "cargo build --lib -p {package} failed");
     candidates
         .into_iter()
         .find(|p| p.is_file())
-        .unwrap_or_else(|| panic!("no libslowdrift.so in {}", profile_dir.display()))
+        .unwrap_or_else(|| panic!("no {file} in {}", profile_dir.display()))
 }
 
-fn binutils(tool: &str, args: &[&str]) -> String {
-    let library = cdylib();
+fn binutils(tool: &str, args: &[&str], library: &Path) -> String {
     let output = Command::new(tool)
         .args(args)
-        .arg(&library)
+        .arg(library)
         .output()
         .unwrap_or_else(|e| {
             panic!("`{tool}` (GNU binutils) is needed for this test and could not run: {e}")
@@ -103,33 +108,38 @@ fn binutils(tool: &str, args: &[&str]) -> String {
 }
 
 #[test]
-fn exports_exactly_the_fmi2_functions() {
-    let text = binutils("nm", &["-D", "--defined-only"]);
-    let exported: BTreeSet<&str> = text
-        .lines()
-        .filter_map(|line| line.split_whitespace().nth(2))
-        .map(|symbol| symbol.split('@').next().unwrap_or(symbol))
-        .collect();
+fn each_fmu_exports_exactly_the_fmi2_functions() {
     let expected: BTreeSet<&str> = FMI2_CO_SIMULATION.into_iter().collect();
-    assert_eq!(exported, expected);
+    for (package, file) in CDYLIBS {
+        let library = cdylib(package, file);
+        let text = binutils("nm", &["-D", "--defined-only"], &library);
+        let exported: BTreeSet<&str> = text
+            .lines()
+            .filter_map(|line| line.split_whitespace().nth(2))
+            .map(|symbol| symbol.split('@').next().unwrap_or(symbol))
+            .collect();
+        assert_eq!(exported, expected, "{file}");
+    }
 }
 
 #[test]
-fn depends_only_on_the_c_runtime() {
-    let text = binutils("readelf", &["-d"]);
-    let needed: Vec<&str> = text
-        .lines()
-        .filter(|l| l.contains("(NEEDED)"))
-        .filter_map(|l| l.split('[').nth(1)?.split(']').next())
-        .collect();
-    assert!(
-        needed.iter().any(|n| n.starts_with("libc.so")),
-        "{needed:?}"
-    );
-    for library in needed {
+fn each_fmu_depends_only_on_the_c_runtime() {
+    for (package, file) in CDYLIBS {
+        let text = binutils("readelf", &["-d"], &cdylib(package, file));
+        let needed: Vec<&str> = text
+            .lines()
+            .filter(|l| l.contains("(NEEDED)"))
+            .filter_map(|l| l.split('[').nth(1)?.split(']').next())
+            .collect();
         assert!(
-            C_RUNTIME.iter().any(|c| library.starts_with(c)),
-            "{library} is not part of the C runtime"
+            needed.iter().any(|n| n.starts_with("libc.so")),
+            "{file}: {needed:?}"
         );
+        for library in needed {
+            assert!(
+                C_RUNTIME.iter().any(|c| library.starts_with(c)),
+                "{file}: {library} is not part of the C runtime"
+            );
+        }
     }
 }
