@@ -1,4 +1,4 @@
-//! Equations of motion in surge, sway and yaw (E&S 1; physics.md section 7):
+//! Equations of motion in surge, sway and yaw (E&S 1; docs/theory.md#equations-of-motion):
 //!
 //!   S (M + A) S^T q'' + S B(t) (S^T q' - u_c) + C q = S (D(t) + f_drag + f_extra) + F_ext
 //!

@@ -1,6 +1,6 @@
 //! Interaction between the directions of a short-crested sea: the cross-direction terms of
 //! the slowly varying force, by a Newman-type approximation at FFT cost (E&S 3, 4;
-//! physics.md section 4).
+//! docs/theory.md#the-slowly-varying-force).
 //!
 //! # The double sum
 //!

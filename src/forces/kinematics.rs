@@ -1,5 +1,5 @@
 //! Fast (wave-frequency) kinematics at the columns, precomputed as records for the Morison
-//! drag (E&S 8, 9; physics.md section 6).
+//! drag (E&S 8, 9; docs/theory.md#viscous-drag).
 //!
 //! Deep-water linear theory, at the columns' mean positions with the body at zero yaw:
 //!   eta_c(t) = Re sum a_n e^{-i k_n (x_c cos b + y_c sin b)} e^{i omega_n t},

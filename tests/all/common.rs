@@ -139,7 +139,7 @@ pub fn simpson(f: impl Fn(f64) -> f64, a: f64, b: f64, panels: usize) -> f64 {
 /// mass + A11, stiffness C11, linear damping B11) in the long-crested head sea of `config`
 /// driven by Newman's geometric force of the [`smooth_drift`] surge drift:
 /// var x = integral S_F(mu) |H(mu)|^2 dmu with S_F(mu) = 8 integral S(w) S(w + mu)
-/// T(w) T(w + mu) dw over the simulated band (physics.md section 8).
+/// T(w) T(w + mu) dw over the simulated band (docs/theory.md#checks-with-known-answers).
 pub fn oscillator_surge_variance(config: &Problem) -> f64 {
     let (p, inertia) = (&config.platform, config.inertia().unwrap());
     let (mass, stiffness, damping) = (
@@ -161,7 +161,7 @@ pub fn oscillator_surge_variance(config: &Problem) -> f64 {
 
 /// The one-sided spectrum of the slowly varying surge force of `smooth_drift` (Newman,
 /// geometric, positive T) in `config`'s sea: S_F(mu) = 8 integral S(w) S(w + mu) T(w)
-/// T(w + mu) dw over the simulated band (physics.md section 8).
+/// T(w + mu) dw over the simulated band (docs/theory.md#checks-with-known-answers).
 pub fn surge_force_spectrum(config: &Problem) -> impl Fn(f64) -> f64 + '_ {
     let drift = |w: f64| smooth_drift(w, 0.0)[0];
     let spectrum = &config.sea.spectrum;

@@ -1,5 +1,5 @@
 //! Drag, current and wave-drift damping against closed forms (E&S 8, 9, section 3;
-//! physics.md sections 5, 6).
+//! docs/theory.md#wave-drift-damping-and-current, docs/theory.md#viscous-drag).
 
 use crate::common::*;
 use slowdrift::hydro::{DriftRow, DriftTable};
@@ -62,7 +62,8 @@ fn steady_current_gives_the_static_morison_offset() {
 }
 
 /// The current enters the wave-drift damping as an apparent velocity: the mean force gains
-/// B_mean U_c with B_mean = 2 integral S b dw (physics.md section 5), so the mean surge
+/// B_mean U_c with B_mean = 2 integral S b dw (docs/theory.md#wave-drift-damping-and-current), so
+/// the mean surge
 /// offset is (2 int S T + 2 int S b11 U_c) / k. Constant b gives a closed form.
 #[test]
 fn current_through_drift_damping_shifts_the_mean_force() {

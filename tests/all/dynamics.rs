@@ -1,4 +1,5 @@
-//! Time integration and equations of motion (physics.md sections 7, 8): RK4's order on a
+//! Time integration and equations of motion (docs/theory.md#equations-of-motion,
+//! docs/theory.md#checks-with-known-answers): RK4's order on a
 //! forced damped oscillator with an exact solution, its energy behaviour on an undamped
 //! oscillator (closed-form amplification factor), energy conservation through
 //! `Simulation`, the rotation of the body-frame wave force by S(theta), and `advance` with

@@ -32,6 +32,7 @@ mod newman;
 mod oscillator;
 mod quirks;
 mod reading_cost;
+mod references;
 mod sea_state;
 mod simulation;
 mod stream;

@@ -1,4 +1,5 @@
-//! The central check that force, spectrum and solver agree (physics.md section 8): a linear
+//! The central check that force, spectrum and solver agree
+//! (docs/theory.md#checks-with-known-answers): a linear
 //! oscillator M x'' + c x' + k x = F(t) driven by the slowly varying surge force.
 //!
 //! 1. Statistics: the time-domain variance of x over many seeds equals the frequency-domain

@@ -1,7 +1,9 @@
-//! Records as a stream of blocks (`forces::stream`, physics.md section 11): the sea depends
+//! Records as a stream of blocks (`forces::stream`, docs/theory.md#open-ended-records): the sea
+//! depends
 //! on the seed alone, any segment is rebuilt bit for bit, memory does not grow with the run,
 //! and the joins between blocks leave the statistics of the sea and of the slowly varying
-//! force as the frequency domain gives them (physics.md section 8), with no trace in the
+//! force as the frequency domain gives them (docs/theory.md#checks-with-known-answers), with no
+//! trace in the
 //! increments.
 
 use crate::common::*;

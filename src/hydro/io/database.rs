@@ -32,8 +32,9 @@
 //! then says where they came from in the run's summary.
 //!
 //! `re[i][j] + i im[i][j]` = T(w_i, w_j), the full difference-frequency QTF per unit
-//! amplitude squared with F(t) = Re sum a_i a_j* T_ij e^{i (w_i - w_j) t} (physics.md
-//! section 4). Numbers are written so that they read back bit for bit.
+//! amplitude squared with F(t) = Re sum a_i a_j* T_ij e^{i (w_i - w_j) t}
+//! (docs/theory.md#the-slowly-varying-force). Numbers are written so that they read back bit for
+//! bit.
 
 use super::wamit::{
     read_added_mass_damping, read_difference_qtf, read_hydrostatics, read_mean_drift,

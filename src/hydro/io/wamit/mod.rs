@@ -1,5 +1,6 @@
-//! Readers for WAMIT's numeric output files (the industry's exchange format; physics.md
-//! section 10), dimensionalised with the options' ULEN, rho and g.
+//! Readers for WAMIT's numeric output files (the industry's exchange format;
+//! docs/file-formats.md#wamit-import-and-the-hydro-database), dimensionalised with the options'
+//! ULEN, rho and g.
 //!
 //! | file | reader | content |
 //! |---|---|---|
@@ -25,9 +26,10 @@
 //! error naming both lines. Only single-body files (DOFs 1 to 6) are read.
 //!
 //! Time convention: WAMIT writes complex amplitudes for e^{i omega t}, the crate's own
-//! convention (physics.md section 1), and defines the difference-frequency force as
+//! convention (docs/theory.md#conventions), and defines the difference-frequency force as
 //! Re sum_i sum_j A_i A_j* F-(w_i, w_j) e^{i (w_i - w_j) t}, the definition of
-//! physics.md section 4. QTF values are therefore stored as given (Re + i Im of the file,
+//! docs/theory.md#the-slowly-varying-force. QTF values are therefore stored as given (Re + i Im of
+//! the file,
 //! scaled), with PER1 giving w_i and PER2 giving w_j; nothing is conjugated. A file written
 //! for e^{-i omega t} would need its QTF conjugated before use.
 
@@ -53,9 +55,9 @@ use std::path::Path;
 
 /// Default WAMIT length scale ULEN, m.
 pub const DEFAULT_ULEN: f64 = 1.0;
-/// Default water density, kg/m^3 (physics.md section 1).
+/// Default water density, kg/m^3 (docs/theory.md#conventions).
 pub const DEFAULT_RHO: f64 = 1025.0;
-/// Default acceleration of gravity, m/s^2 (physics.md section 1).
+/// Default acceleration of gravity, m/s^2 (docs/theory.md#conventions).
 pub const DEFAULT_GRAVITY: f64 = 9.80665;
 
 /// How closely a line's polar columns (abs(F), phase) must give its Cartesian ones (Re, Im),
