@@ -20,13 +20,13 @@
 //! 6. `hydro/columns_100x37`: `ColumnArray::drift_table` of the paper's four columns
 //!    (radius 10 m on a 70 m square, deep water) at 100 frequencies 0.05..3 rad/s and 37
 //!    headings 0..360 deg: scattering, near- and far-field drift, exciting forces and
-//!    Aranha damping with the solver's own derivatives. Target (issue #3): well under 1 s.
+//!    Aranha damping with the solver's own derivatives. Target: well under 1 s.
 //!
 //! 7. `full_qtf/factorised_2048_rank*`, `full_qtf/direct_binned_2048`: the slowly varying
 //!    force from a full QTF (56-point grid, like OC4's) at N_omega = 2048 components:
 //!    factorised synthesis against the direct double sum on the same interpolated QTF, in the
 //!    time domain (timed per sample, extrapolated to the record) and binned by difference
-//!    frequency with one inverse FFT. Target (issue #5): >= 100x faster than the direct
+//!    frequency with one inverse FFT. Target: >= 100x faster than the direct
 //!    double sum at a relative error < 1e-6, memory linear in N_omega x rank.
 //! 8. `segment/cross_join_default`: the cost of making the next segment, on the default
 //!    problem (combined drag on 4 columns x 20 strips, Aranha damping, h = 1 s) run
@@ -35,7 +35,7 @@
 //!    stepping one block (16384 steps) and `Simulation::new` for runs of 1 h, 6 h, 100 h and
 //!    open-ended (flat: the records do not depend on the duration).
 //!
-//! 9. The depth kernel's rank (issue #16) for the default platform and a deep-draft spar
+//! 9. The depth kernel's rank for the default platform and a deep-draft spar
 //!    (printed).
 //!
 //! Targets (issue): records <= 30 FFTs, step < 1 us (no drag) and < 10 us (drag 4 x 20),

@@ -1,4 +1,4 @@
-//! How cost grows (issue #16, part 5): `cargo bench --bench scaling`.
+//! How cost grows: `cargo bench --bench scaling`.
 //!
 //! The default problem (combined drag, Aranha damping, h = 1 s, open-ended) with one
 //! parameter varied at a time: the block length (the records' FFT length), the number of

@@ -108,7 +108,7 @@ pub struct RecordPlan {
     full_qtf: Option<Vec<QtfGroup>>,
     ranks: Vec<QtfRank>,
     /// The drag kinematics' depth kernels of the problem's drafts on the grid and spectrum
-    /// (issue #16: made once here, not per seed); a seed whose spectrum, strips or drafts
+    /// (made once here, not per seed); a seed whose spectrum, strips or drafts
     /// differ makes its own.
     depth_bases: Vec<Arc<DepthBasis>>,
 }

@@ -1,4 +1,4 @@
-//! The depth kernel of the drag kinematics in a few terms (issue #16).
+//! The depth kernel of the drag kinematics in a few terms.
 //!
 //! Strip j of a column sits at the stretched level z_j = -d + (j + 1/2) d / n
 //! (`kinematics.rs`), and its horizontal velocity is

@@ -1,4 +1,4 @@
-//! The memory budget (issue #15): the estimate that a configuration is checked against
+//! The memory budget: the estimate that a configuration is checked against
 //! before anything is allocated bounds what making its simulation really takes (the peak
 //! the test binary's counting allocator measures on this thread), and is not so loose that
 //! it refuses what would fit; sizes beyond the bounds and the limit are refused with the

@@ -1,5 +1,4 @@
-//! The full difference-frequency QTF at FFT cost (docs/theory.md#the-slowly-varying-force; issue #5
-//! part 1),
+//! The full difference-frequency QTF at FFT cost (docs/theory.md#the-slowly-varying-force),
 //! against independent routes: the O(N^2) double sum on the same (bilinearly interpolated)
 //! QTF, Newman's approximation when the QTF is built from its diagonal, the mean
 //! 2 integral S T(w, w) dw and the force spectrum 8 integral S(w) S(w + mu) |T|^2 dw; and

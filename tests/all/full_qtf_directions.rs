@@ -1,4 +1,4 @@
-//! The full QTF in a spread sea (issue #13 part 2): the cross terms between directions from
+//! The full QTF in a spread sea: the cross terms between directions from
 //! the bi-directional QTF T(w_i, w_j; b_k, b_l), factorised over (frequency, direction) at
 //! FFT cost, the QTF interpolated bilinearly in the heading pair between data headings.
 //! Against the O(N^2 N_beta^2) double sum on the QTF interpolated here by the test's own

@@ -1,5 +1,5 @@
-//! The integration tests, one binary: each module is one former test file (the shared
-//! builders in `common` and the in-process FMI master in `fmu`).
+//! The integration tests, one binary (linked once): a module per subject, the shared
+//! builders in `common` and the in-process FMI master in `fmu`.
 
 mod common;
 mod counting;

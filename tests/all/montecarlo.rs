@@ -1,4 +1,4 @@
-//! `slowdrift montecarlo` (issue #6 part 1): resume after an interruption, independence of
+//! `slowdrift montecarlo`: resume after an interruption, independence of
 //! the thread count, bad case tables, failed cases, the standard error against its formula,
 //! and the statistics of a linear oscillator against the frequency-domain variance.
 //!

@@ -1,4 +1,4 @@
-//! The quirks of real hydrodynamic files (issue #13 part 5): frequencies computed from
+//! The quirks of real hydrodynamic files: frequencies computed from
 //! printed periods, mixed time conventions. The files are written here from closed forms;
 //! the expected numbers come from those forms and from integrals computed in the test.
 

@@ -1,4 +1,4 @@
-//! States are checked like parameters (issue #15, item 6): a restored state beyond the
+//! States are checked like parameters: a restored state beyond the
 //! documented bounds of a physical state is refused naming the value; a step that leaves
 //! them, or an output that is not finite, is an error that names its cause (the force that
 //! alone would leave the bounds within a step, the external input, or the step itself),

@@ -1,4 +1,4 @@
-//! What the user gives is what runs (issue #27, part 1): the model takes its mass and added
+//! What the user gives is what runs: the model takes its mass and added
 //! mass from the user's data where the configuration does not give its own, and says so;
 //! a stiffness that stores negative energy and values beyond their physical ranges are
 //! refused naming the setting where it was written (configuration file, case table, FMU).

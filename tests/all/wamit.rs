@@ -583,7 +583,7 @@ fn malformed_lines_name_the_file_and_line() {
     );
 }
 
-/// Strict numbers (issue #15): a `.1` file cut inside its last number (the exponent lost:
+/// Strict numbers: a `.1` file cut inside its last number (the exponent lost:
 /// it would read A66 = 6.27 kg m^2 instead of 6.27e9), an exponent cut short at its end,
 /// a number cut on an unterminated last line of a column without exponents, and a `.1`
 /// file with no frequency at all are refused naming the file and line.

@@ -1,4 +1,4 @@
-//! WAMIT files with several headings (issue #13 part 1): `.8`/`.9` bi-directional rows into
+//! WAMIT files with several headings: `.8`/`.9` bi-directional rows into
 //! the database's `bidirectional_drift`, and what is refused. The files are written here from
 //! a closed form T(omega; beta1, beta2), Hermitian in the heading pair; the expected values are
 //! that form, scaled by rho g by hand.

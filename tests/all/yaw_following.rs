@@ -1,4 +1,4 @@
-//! Yaw-following records (issue #5 part 3) on the default platform (column-solver drift,
+//! Yaw-following records on the default platform (column-solver drift,
 //! Aranha damping), each against an independent route: the mean-position records of the
 //! sea rotated by -theta (the existing path with the wave direction minus theta).
 

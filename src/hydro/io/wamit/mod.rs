@@ -185,7 +185,7 @@ impl NumericFile {
         let mut records = Vec::new();
         let mut seen_content = false;
         // How the first numeric line of each field count writes its numbers: a later number
-        // written with less than that is cut (issue #15).
+        // written with less than that is cut.
         let mut references: Vec<(usize, Vec<&str>)> = Vec::new();
         let unterminated = !text.ends_with('\n');
         let last_line = text.lines().count();
