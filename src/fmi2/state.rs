@@ -540,8 +540,8 @@ impl<'a> Reader<'a> {
 /// records (sea, seed, platform, drift table, run) changes it. Where the configuration came
 /// from (embedded, resources, a file at any path) does not enter, only its content, so a
 /// state moves between processes that unpacked the FMU in different places.
-pub fn fingerprint(config: &Problem) -> u64 {
-    crate::fingerprint::fingerprint(config)
+pub fn fingerprint(problem: &Problem) -> u64 {
+    crate::fingerprint::fingerprint(problem)
 }
 
 #[cfg(test)]

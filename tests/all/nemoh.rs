@@ -3,7 +3,7 @@
 //! Every expected value is parsed here from the raw text (split_whitespace on the lines),
 //! scaled and conjugated by hand, independently of the readers.
 
-use crate::common::{base_config, jonswap, long_crested, shared_data_dir, simpson};
+use crate::common::{base_problem, jonswap, long_crested, shared_data_dir, simpson};
 use crate::quirks::temp_dir;
 use rustfft::num_complex::Complex64;
 use slowdrift::hydro::io::nemoh;
@@ -348,7 +348,7 @@ fn oc3_runs_in_full_qtf_and_newman_modes() {
     };
     let db = nemoh::import(&dir, LIMIT).unwrap().database;
     let config = |mode: SecondOrder, seed: u64| -> Problem {
-        let mut c = base_config(3.0 * 3600.0, 1.0, seed);
+        let mut c = base_problem(3.0 * 3600.0, 1.0, seed);
         c.environment = Environment {
             gravity: db.gravity,
             water_density: db.water_density,

@@ -2,7 +2,7 @@
 //! printed periods, mixed time conventions. The files are written here from closed forms;
 //! the expected numbers come from those forms and from integrals computed in the test.
 
-use crate::common::{base_config, jonswap, long_crested, simpson};
+use crate::common::{base_problem, jonswap, long_crested, simpson};
 use rustfft::num_complex::Complex64;
 use slowdrift::hydro::io::database::HydroDatabase;
 use slowdrift::hydro::io::wamit::{read_difference_qtf, WamitOptions};
@@ -82,7 +82,7 @@ fn printed_period_problem(name: &str, top: f64) -> (Problem, Vec<f64>) {
     let database = HydroDatabase::from_wamit(&root, &WamitOptions::default())
         .unwrap()
         .database;
-    let mut problem = base_config(600.0, 1.0, 1);
+    let mut problem = base_problem(600.0, 1.0, 1);
     problem.hydro = Hydro {
         qtf: database.qtf.as_ref().map(|q| q.to_qtf()),
         bidirectional: None,

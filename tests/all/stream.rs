@@ -18,9 +18,9 @@ use slowdrift::sea_state::{Spectrum, Spreading};
 use slowdrift::{Problem, Simulation};
 use std::f64::consts::PI;
 
-/// The oscillator platform of `base_config` with blocks of `block` s.
+/// The oscillator platform of `base_problem` with blocks of `block` s.
 fn with_blocks(duration: f64, block: f64, seed: u64) -> Problem {
-    let mut c = base_config(duration, 1.0, seed);
+    let mut c = base_problem(duration, 1.0, seed);
     c.run.block_duration = block;
     c
 }

@@ -3,7 +3,7 @@
 //! a closed form T(omega; beta1, beta2), Hermitian in the heading pair; the expected values are
 //! that form, scaled by rho g by hand.
 
-use crate::common::{base_config, jonswap};
+use crate::common::{base_problem, jonswap};
 use crate::quirks::temp_dir;
 use rustfft::num_complex::Complex64;
 use slowdrift::forces::direction_pairs;
@@ -110,7 +110,7 @@ fn bidirectional_rows_fill_the_database_table_and_reach_a_spread_sea() {
     database.save(&json).unwrap();
     assert_eq!(HydroDatabase::load(&json, LIMIT).unwrap(), database);
 
-    let mut problem = base_config(1200.0, 1.0, 3);
+    let mut problem = base_problem(1200.0, 1.0, 3);
     problem.hydro = Hydro {
         qtf: None,
         bidirectional: database
