@@ -6,6 +6,8 @@
 //! Time is always origin + count * step from an integer count, never an accumulated sum.
 
 pub mod bounds;
+mod recording;
+pub use recording::reserve_recorded;
 
 use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};
 use crate::error::numbers::written;

@@ -139,7 +139,7 @@ fn positions(mut sim: Simulation, stop: &AtomicBool) -> Result<Option<[Vec<f64>;
     let mut records: [Vec<f64>; 3] = Default::default();
     let mut steps = 0;
     for record in &mut records {
-        steps = sim.problem().reserve_recorded(record)?;
+        steps = crate::reserve_recorded(sim.problem(), record)?;
     }
     let mut push = |q: [f64; 3]| records.iter_mut().zip(q).for_each(|(r, v)| r.push(v));
     push(sim.position());
