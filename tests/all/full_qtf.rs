@@ -10,7 +10,7 @@ use slowdrift::forces::{
     DirectionTransfer, ForceRecords, GridQtf, QtfFactorisation, QtfGroup, RecordOptions,
 };
 use slowdrift::hydro::io::database::{HydroDatabase, QtfData, QtfMatrix};
-use slowdrift::hydro::io::wamit::WamitOptions;
+use slowdrift::hydro::io::wamit::{self, WamitOptions};
 use slowdrift::hydro::qtf::MIN_QTF_TOLERANCE;
 use slowdrift::model::Dof;
 use slowdrift::model::{DriftDamping, NewmanForm, SecondOrder};
@@ -461,7 +461,7 @@ fn oc4_full_qtf_against_newman() {
     let Some(root) = oc4_root_or_skip() else {
         return;
     };
-    let database = HydroDatabase::from_wamit(&root, &WamitOptions::default())
+    let database = wamit::import(&root, &WamitOptions::default())
         .unwrap()
         .database;
     let q = database.qtf.as_ref().unwrap().to_qtf();

@@ -4,8 +4,7 @@
 
 use crate::common::{base_problem, jonswap, long_crested, simpson};
 use rustfft::num_complex::Complex64;
-use slowdrift::hydro::io::database::HydroDatabase;
-use slowdrift::hydro::io::wamit::{read_difference_qtf, WamitOptions};
+use slowdrift::hydro::io::wamit::{self, read_difference_qtf, WamitOptions};
 use slowdrift::model::{SecondOrder, FREQUENCY_MATCH_TOLERANCE};
 use slowdrift::problem::{Hydro, DEFAULT_BAND_TRIM_LIMIT};
 use slowdrift::{Problem, Simulation};
@@ -79,7 +78,7 @@ fn printed_period_problem(name: &str, top: f64) -> (Problem, Vec<f64>) {
         &omegas,
         |w| format!("{:.4}", 2.0 * PI / w),
     );
-    let database = HydroDatabase::from_wamit(&root, &WamitOptions::default())
+    let database = wamit::import(&root, &WamitOptions::default())
         .unwrap()
         .database;
     let mut problem = base_problem(600.0, 1.0, 1);
@@ -261,8 +260,7 @@ fn sparse_qtfs_are_filled_along_difference_lines_or_refused_listing_the_holes() 
     }
     let import_dir = temp_dir("sparse-import");
     std::fs::copy(&path, import_dir.join("body.12d")).unwrap();
-    let import =
-        HydroDatabase::from_wamit(&import_dir.join("body"), &WamitOptions::default()).unwrap();
+    let import = wamit::import(&import_dir.join("body"), &WamitOptions::default()).unwrap();
     assert!(
         import
             .files

@@ -35,11 +35,13 @@
 
 mod added_mass;
 mod hydrostatics;
+mod import;
 mod mean_drift;
 mod qtf;
 
 pub use added_mass::{read_added_mass_damping, AddedMassDamping};
 pub use hydrostatics::{read_hydrostatics, Hydrostatics};
+pub use import::import;
 pub use mean_drift::{read_mean_drift, DriftBlock, MeanDrift, PairBlock};
 pub(in crate::hydro::io) use qtf::{assemble_qtf, QtfEntry};
 pub use qtf::{read_difference_qtf, DifferenceQtf, QtfBlock};
