@@ -2,7 +2,7 @@
 //! cylinders, and the modelling choices. Every other module may import this one; it imports
 //! nothing of the crate.
 //!
-//! Conventions (physics.md section 1): SI units and radians; the body frame follows the slow
+//! Conventions (docs/theory.md#conventions): SI units and radians; the body frame follows the slow
 //! yaw; DOF order surge, sway, yaw.
 
 use serde::{Deserialize, Serialize};
@@ -45,7 +45,7 @@ pub const HEADING_MATCH_TOLERANCE: f64 = 0.01 * PI / 180.0;
 /// step of every real frequency grid (0.05 rad/s at 3 rad/s is 1.7e-2).
 pub const FREQUENCY_MATCH_TOLERANCE: f64 = 1e-4;
 
-/// Physical constants of the water (physics.md section 1).
+/// Physical constants of the water (docs/theory.md#conventions).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Environment {
     /// Acceleration of gravity, m/s^2.
@@ -77,7 +77,8 @@ pub struct Cylinder {
     pub draft: f64,
 }
 
-/// Which form of Newman's approximation builds the slowly varying records (physics.md 4).
+/// Which form of Newman's approximation builds the slowly varying records
+/// (docs/theory.md#the-slowly-varying-force).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum NewmanForm {
     /// The paper's form (E&S 4): T_ij = sign * sqrt(T_ii T_jj) where the signs agree, 0 otherwise.
@@ -86,7 +87,8 @@ pub enum NewmanForm {
     Arithmetic,
 }
 
-/// How the slowly varying wave force is computed from second-order theory (physics.md 4).
+/// How the slowly varying wave force is computed from second-order theory
+/// (docs/theory.md#the-slowly-varying-force).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum SecondOrder {
     /// Newman's approximation from the drift table's diagonal, in the form `newman`.
@@ -97,7 +99,7 @@ pub enum SecondOrder {
 }
 
 /// Whether the components of different directions of a short-crested sea interact in the
-/// slowly varying force (physics.md section 4; `forces::directional`).
+/// slowly varying force (docs/theory.md#the-slowly-varying-force; `forces::directional`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum Interaction {
     /// The default: [`Interaction::Bidirectional`] when the drift source has bi-directional
@@ -127,7 +129,8 @@ impl Interaction {
     }
 }
 
-/// Where the wave-drift damping coefficients b_ij(omega, beta) come from (physics.md 5).
+/// Where the wave-drift damping coefficients b_ij(omega, beta) come from
+/// (docs/theory.md#wave-drift-damping-and-current).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum DriftDamping {
     /// No wave-drift damping.
@@ -150,7 +153,7 @@ pub enum DragModel {
 }
 
 /// Records of the wave force and damping that follow the body's yaw (issue #5 part 3;
-/// physics.md section 4, last bullet): built at `headings` body yaw angles theta_j and
+/// docs/theory.md#the-slowly-varying-force): built at `headings` body yaw angles theta_j and
 /// interpolated linearly in the instantaneous yaw at every RK4 stage.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct YawFollowing {
