@@ -322,8 +322,9 @@ fn wavenumber(w: f64, h: f64) -> f64 {
 /// the elevation Re{e^{i (w t - k x)}}: u = w coth(kh) zeta, displacement u / (i w)), pitch
 /// -> the wave slope's tilt i k cos(beta), roll -> -i k sin(beta) (the body's z axis along
 /// the surface normal). "Free" means no mooring and, for the horizontal motions to be the
-/// water's, a mass equal to the displaced water's: rho V with V = 20206 m^3 (Allen et al.
-/// 2020, NREL/TP-5000-76773, the VolturnUS-S hull's displacement), the given centre of
+/// water's, a mass equal to the displaced water's: rho V with V = 20206.34889 m^3 (the
+/// displaced volume WAMIT computed for these files, as the IEA-15-240-RWT repository's
+/// HydroDyn input for this platform gives it, PtfmVol0), the given centre of
 /// gravity and inertia. Tolerances at the file's lowest frequency, omega = 0.05 rad/s
 /// (k = 1.14e-3 1/m at 200 m): the corrections to these limits are of the order of
 /// (k L)^2 with L = 100 m the platform's width (0.013) and (omega / omega_n)^2 in heave
@@ -336,7 +337,7 @@ fn iea15_free_body_long_wave_limits() {
         return;
     };
     let first_order = imported(&root);
-    let (matrices, _) = body(RHO * 20206.0, [[0.0; 6]; 6], [[0.0; 6]; 6]);
+    let (matrices, _) = body(RHO * 20206.34889, [[0.0; 6]; 6], [[0.0; 6]; 6]);
     let rao = solve(&first_order, &matrices).unwrap();
     let w = rao.omegas[0];
     assert!((w - 0.05).abs() < 1e-6, "lowest frequency {w}");
