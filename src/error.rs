@@ -407,8 +407,12 @@ pub fn require_finite(field: impl fmt::Display, value: f64) -> Result<()> {
     }
 }
 
-/// Checks every entry of a 3x3 matrix for finiteness, naming the entry on failure.
-pub fn require_finite_matrix(field: impl fmt::Display, m: &[[f64; 3]; 3]) -> Result<()> {
+/// Checks every entry of a square matrix (3x3, 6x6) for finiteness, naming the entry on
+/// failure.
+pub fn require_finite_matrix<const N: usize>(
+    field: impl fmt::Display,
+    m: &[[f64; N]; N],
+) -> Result<()> {
     for (i, row) in m.iter().enumerate() {
         for (j, v) in row.iter().enumerate() {
             require_finite(format_args!("{field}[{i}][{j}]"), *v)?;

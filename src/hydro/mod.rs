@@ -1,6 +1,6 @@
 //! Hydrodynamic data: the drift table, wave-drift damping by Aranha's formula, the
 //! closed-form drift of isolated vertical columns, the interaction theory of column arrays,
-//! WAMIT readers and the native database.
+//! the first-order motions (RAOs) of a rigid body, WAMIT readers and the native database.
 
 pub mod aranha;
 pub mod bidirectional;
@@ -11,6 +11,8 @@ mod drift_table;
 mod heading_grid;
 pub mod io;
 pub mod qtf;
+pub mod rao;
 pub mod reference_point;
+pub mod rigid_body;
 
 pub use drift_table::{DriftRow, DriftTable};

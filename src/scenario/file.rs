@@ -1644,6 +1644,8 @@ rows = [[0.3, 0, 100, 0, 0], [2.0, 0, 900, 0, 0]]
             drift: vec![point(0.3, 100.0), point(2.0, 900.0)],
             qtf: None,
             bidirectional_drift: None,
+            first_order: None,
+            rao: None,
             provenance: Default::default(),
         }
     }

@@ -31,6 +31,7 @@ mod nemoh;
 mod newman;
 mod oscillator;
 mod quirks;
+mod rao;
 mod reading_cost;
 mod references;
 mod sea_state;

@@ -797,6 +797,8 @@ fn small_database() -> HydroDatabase {
             }],
         }),
         bidirectional_drift: None,
+        first_order: None,
+        rao: None,
         provenance: slowdrift::hydro::io::database::Provenance {
             mass_properties: Some("hand-written".into()),
             low_frequency_added_mass: None,

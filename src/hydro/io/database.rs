@@ -21,10 +21,20 @@
 //!                              "re": n x n, "im": n x n}, ...]},
 //!   "bidirectional_drift": (optional) {"omegas": [rad/s], "headings": [rad],
 //!                  "re": n_omega x n_heading x n_heading x [surge, sway, yaw], "im": same},
+//!   "first_order": (optional) {"omegas": [rad/s], "headings": [rad],
+//!                  "added_mass": n_omega x 6x6, "damping": n_omega x 6x6,
+//!                  "excitation_re": n_omega x n_heading x 6 (N/m, N m/m), "excitation_im": same,
+//!                  "hydrostatics": 6x6},
+//!   "rao": (optional) {"omegas": [rad/s], "headings": [rad],
+//!                  "re": n_omega x n_heading x 6 (m/m, rad/m), "im": same},
 //!   "provenance": (optional) {"mass_properties": "...", "low_frequency_added_mass": "...",
 //!                  "stiffness": "..."}   where each came from, one phrase each
 //! }
 //! ```
+//!
+//! `first_order` and `rao` are 6 DOF (surge, sway, heave, roll, pitch, yaw) about the body
+//! origin, per unit wave amplitude, Re{X e^{i omega t}} with the phase relative to the
+//! incident elevation at the origin ([`crate::hydro::rao`]; docs/theory.md#first-order-motions-raos).
 //!
 //! A simulation that names the database takes its `mass_properties` and
 //! `low_frequency_added_mass` for the model's mass, yaw inertia and added mass where the
@@ -42,6 +52,7 @@ use crate::error::{
 use crate::files::Cost;
 use crate::hydro::bidirectional::BidirectionalTable;
 use crate::hydro::qtf::{Qtf, QtfBlock};
+use crate::hydro::rao::{FirstOrder, RaoTable};
 use crate::hydro::{DriftRow, DriftTable};
 use crate::model::{Dof, Environment};
 use rustfft::num_complex::Complex64;
@@ -122,6 +133,14 @@ pub struct HydroDatabase {
     /// (optional; absent from older files and not written when `None`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub bidirectional_drift: Option<BidirectionalTable>,
+    /// The first-order radiation-diffraction coefficients, 6 DOF about the body origin
+    /// ([`FirstOrder`]; optional; absent from older files and not written when `None`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub first_order: Option<FirstOrder>,
+    /// First-order motions (RAOs), 6 DOF about the body origin ([`RaoTable`]; optional;
+    /// absent from older files and not written when `None`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rao: Option<RaoTable>,
     /// Where the mass properties, the added mass and the stiffness came from (optional;
     /// absent from older files and not written when empty).
     #[serde(default, skip_serializing_if = "Provenance::is_empty")]
@@ -311,6 +330,12 @@ impl HydroDatabase {
         if let Some(t) = &self.bidirectional_drift {
             t.validate()?;
         }
+        if let Some(f) = &self.first_order {
+            f.validate()?;
+        }
+        if let Some(r) = &self.rao {
+            r.validate()?;
+        }
         Ok(())
     }
 
@@ -348,6 +373,8 @@ impl HydroDatabase {
             drift,
             qtf: None,
             bidirectional_drift: None,
+            first_order: None,
+            rao: None,
             provenance: Provenance::default(),
         }
     }

@@ -223,6 +223,8 @@ pub fn import(dir: &Path, memory_limit: f64) -> Result<Import> {
         drift,
         qtf: qtf_data,
         bidirectional_drift,
+        first_order: None,
+        rao: None,
         provenance,
     };
     database.validate()?;

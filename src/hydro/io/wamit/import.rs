@@ -3,19 +3,22 @@
 //! (SI, rad/s, rad), with a line per file looked for.
 
 use super::{
-    read_added_mass_damping, read_difference_qtf, read_hydrostatics, read_mean_drift, WamitOptions,
+    read_added_mass_damping, read_difference_qtf, read_excitation, read_hydrostatics,
+    read_mean_drift, read_motions, LinearResponse, WamitOptions,
 };
 use crate::error::{Error, Result};
 use crate::hydro::io::database::{HydroDatabase, Provenance, FORMAT_VERSION};
 use crate::hydro::io::import::{drift_points, qtf_data, Import};
+use crate::hydro::rao::{FirstOrder, Rao, RaoTable};
 use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 
 /// WAMIT DOFs of surge, sway and yaw.
 const SLOW_DOFS: [usize; 3] = [1, 2, 6];
 
-/// Imports the WAMIT files `<root>.1`, `.hst`, `.8`, `.9` and `.12d` (else `.11d`, else
-/// `.10d`) that exist, restricted to surge, sway and yaw (WAMIT DOFs 1, 2, 6):
+/// Imports the WAMIT files `<root>.1`, `.hst`, `.3` (else `.2`), `.4`, `.8`, `.9` and `.12d`
+/// (else `.11d`, else `.10d`) that exist. The slow-drift data are restricted to surge, sway
+/// and yaw (WAMIT DOFs 1, 2, 6):
 /// - `.1`: the PER = -1 (omega = 0) added mass;
 /// - `.hst`: the hydrostatic stiffness (zero in these DOFs for a floater);
 /// - drift from `.8` (momentum), else `.9` (pressure), else the QTF diagonal; the
@@ -23,6 +26,12 @@ const SLOW_DOFS: [usize; 3] = [1, 2, 6];
 ///   its headings (the error lists the pairs missing in both orders);
 /// - the QTF: every uni-directional heading and, when the file has them, every
 ///   bi-directional heading pair (the reader requires all pairs of its headings).
+///
+/// The first-order data keep all six DOFs:
+/// - `first_order` from the `.1` (A, B at PER > 0), the `.hst` and the excitation of the
+///   `.3` (diffraction), else of the `.2` (Haskind), when the three exist; the excitation's
+///   frequencies must be the `.1`'s (the error names both files);
+/// - `rao` from the `.4`: the motions WAMIT solved with its own run's mass and stiffness.
 ///
 /// At least one file must exist.
 pub fn import(root: &Path, options: &WamitOptions) -> Result<Import> {
@@ -37,6 +46,7 @@ pub fn import(root: &Path, options: &WamitOptions) -> Result<Import> {
     let mut used = Vec::new();
 
     let mut low_frequency_added_mass = None;
+    let mut radiation = None;
     let path = file("1");
     if path.exists() {
         let amd = read_added_mass_damping(&path, options)?;
@@ -52,14 +62,18 @@ pub fn import(root: &Path, options: &WamitOptions) -> Result<Import> {
             }
         ));
         used.push(".1");
+        radiation = Some((path, amd));
     } else {
         files.push(format!("{}: absent", path.display()));
     }
 
     let mut stiffness = None;
+    let mut hydrostatics = None;
     let path = file("hst");
     if path.exists() {
-        let c = restrict(&read_hydrostatics(&path, options)?.c);
+        let full = read_hydrostatics(&path, options)?.c;
+        let c = restrict(&full);
+        hydrostatics = Some(full);
         files.push(format!(
             "{}: hydrostatic stiffness (surge, sway, yaw diagonal {:.4e}, {:.4e}, {:.4e}; \
              the mooring must add its own)",
@@ -70,6 +84,76 @@ pub fn import(root: &Path, options: &WamitOptions) -> Result<Import> {
         ));
         stiffness = Some(c);
         used.push(".hst");
+    } else {
+        files.push(format!("{}: absent", path.display()));
+    }
+
+    let mut first_order = None;
+    let mut excitation_read = false;
+    for (ext, label) in [("3", ".3"), ("2", ".2")] {
+        let path = file(ext);
+        if !path.exists() {
+            files.push(format!("{}: absent", path.display()));
+            continue;
+        }
+        if excitation_read {
+            files.push(format!(
+                "{}: not read (the .3's diffraction excitation is taken)",
+                path.display()
+            ));
+            continue;
+        }
+        let excitation = read_excitation(&path, options)?;
+        let taken = match (&radiation, &hydrostatics) {
+            (Some((radiation_path, amd)), Some(c)) => {
+                first_order = Some(
+                    FirstOrder::from_parts(
+                        &amd.omegas,
+                        &amd.added_mass,
+                        &amd.damping,
+                        &excitation.omegas,
+                        &excitation.headings,
+                        &excitation.values,
+                        *c,
+                    )
+                    .map_err(|e| Error::Parse {
+                        path: path.display().to_string(),
+                        line: None,
+                        message: format!(
+                            "with the added mass and damping of {}: {e}",
+                            radiation_path.display()
+                        ),
+                    })?,
+                );
+                "first_order set with the .1's added mass and damping and the .hst"
+            }
+            _ => "first_order not set: it needs the .1 and the .hst as well",
+        };
+        files.push(format!(
+            "{}: first-order excitation ({}), {}; {taken}",
+            path.display(),
+            if ext == "3" { "diffraction" } else { "Haskind" },
+            grid_text(&excitation)
+        ));
+        used.push(label);
+        excitation_read = true;
+    }
+
+    let mut rao = None;
+    let path = file("4");
+    if path.exists() {
+        let motions = read_motions(&path, options)?;
+        files.push(format!(
+            "{}: RAOs (the motions of WAMIT's run, with its mass and stiffness), {}",
+            path.display(),
+            grid_text(&motions)
+        ));
+        rao = Some(RaoTable::from(&Rao {
+            omegas: motions.omegas,
+            headings: motions.headings,
+            values: motions.values,
+        }));
+        used.push(".4");
     } else {
         files.push(format!("{}: absent", path.display()));
     }
@@ -168,7 +252,7 @@ pub fn import(root: &Path, options: &WamitOptions) -> Result<Import> {
     if used.is_empty() {
         return Err(Error::Io {
             path: root.display().to_string(),
-            message: "no WAMIT file found (.1, .hst, .8, .9, .12d, .11d, .10d)".into(),
+            message: "no WAMIT file found (.1, .hst, .3, .2, .4, .8, .9, .12d, .11d, .10d)".into(),
         });
     }
     let mut bidirectional_from = if bidirectional_drift.is_some() {
@@ -212,6 +296,8 @@ pub fn import(root: &Path, options: &WamitOptions) -> Result<Import> {
         drift,
         qtf,
         bidirectional_drift,
+        first_order,
+        rao,
         provenance: Provenance {
             mass_properties: None,
             low_frequency_added_mass: low_frequency_added_mass
@@ -227,6 +313,22 @@ pub fn import(root: &Path, options: &WamitOptions) -> Result<Import> {
 /// The (surge, sway, yaw) = WAMIT (1, 2, 6) rows and columns of a 6x6 matrix.
 fn restrict(m: &[[f64; 6]; 6]) -> [[f64; 3]; 3] {
     SLOW_DOFS.map(|i| SLOW_DOFS.map(|j| m[i - 1][j - 1]))
+}
+
+/// A `.2`/`.3`/`.4` file's grid in words.
+fn grid_text(read: &LinearResponse) -> String {
+    format!(
+        "{} frequencies {:.4} .. {:.4} rad/s, headings {} deg, DOFs {}",
+        read.omegas.len(),
+        read.omegas[0],
+        read.omegas[read.omegas.len() - 1],
+        degrees(&read.headings),
+        read.dofs
+            .iter()
+            .map(usize::to_string)
+            .collect::<Vec<_>>()
+            .join(", ")
+    )
 }
 
 fn degrees(headings: &[f64]) -> String {

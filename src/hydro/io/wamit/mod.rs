@@ -6,11 +6,15 @@
 //! |---|---|---|
 //! | `.1` | [`read_added_mass_damping`] | PER I J Abar (Bbar): A = rho L^k Abar, B = rho w L^k Bbar, k = 3, 4, 5 |
 //! | `.hst` | [`read_hydrostatics`] | I J Cbar: C = rho g L^k Cbar, k = 2, 3, 4 |
+//! | `.2`, `.3` | [`read_excitation`] | PER BETA I abs(X) phase Re Im: X = rho g L^m Xbar per unit amplitude, m = 2, 3 |
+//! | `.4` | [`read_motions`] | PER BETA I abs(xi) phase Re Im: xi = L^n xibar per unit amplitude, n = 0, -1 |
 //! | `.8`, `.9` | [`read_mean_drift`] | PER beta1 beta2 I abs(F) phase Re Im: F = rho g L^k Fbar |
 //! | `.10d`, `.11d`, `.12d` | [`read_difference_qtf`] | PER1 PER2 beta1 beta2 I abs(F) phase Re Im, same scaling |
 //!
 //! k grows by one per rotational index (DOFs 4, 5, 6): forces k = 1, moments k = 2 for the
-//! drift and the QTF. Periods become frequencies omega = 2 pi / PER; in the `.1` file
+//! drift and the QTF; the first-order excitation is per unit wave amplitude (m = 2 forces,
+//! 3 moments) and so are the motions (translations m/m, rotations rad/m: n = -1).
+//! Periods become frequencies omega = 2 pi / PER; in the `.1` file
 //! PER = -1 means omega = 0 and PER = 0 means omega = infinity. Headings are read in degrees
 //! and returned in radians, measured like the crate's beta (direction of propagation from
 //! the body x axis, counter-clockwise), which is WAMIT's definition. Forces are per unit
@@ -34,12 +38,14 @@
 //! for e^{-i omega t} would need its QTF conjugated before use.
 
 mod added_mass;
+mod excitation;
 mod hydrostatics;
 mod import;
 mod mean_drift;
 mod qtf;
 
 pub use added_mass::{read_added_mass_damping, AddedMassDamping};
+pub use excitation::{read_excitation, read_motions, LinearResponse};
 pub use hydrostatics::{read_hydrostatics, Hydrostatics};
 pub use import::import;
 pub use mean_drift::{read_mean_drift, DriftBlock, MeanDrift, PairBlock};
@@ -115,6 +121,17 @@ impl WamitOptions {
     /// rho g L^k for drift forces (k = 1) and moments (k = 2), per unit amplitude squared.
     fn force_scale(&self, i: usize) -> f64 {
         self.rho * self.gravity * self.ulen.powi(1 + i32::from(i >= 4))
+    }
+
+    /// rho g L^m for first-order excitation per unit amplitude: forces m = 2, moments 3.
+    fn excitation_scale(&self, i: usize) -> f64 {
+        self.rho * self.gravity * self.ulen.powi(2 + i32::from(i >= 4))
+    }
+
+    /// L^n for first-order motions per unit amplitude: translations n = 0 (m/m), rotations
+    /// n = -1 (rad/m).
+    fn motion_scale(&self, i: usize) -> f64 {
+        self.ulen.powi(-i32::from(i >= 4))
     }
 }
 
