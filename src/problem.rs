@@ -22,7 +22,9 @@ use crate::hydro::io::database::{self, HydroDatabase};
 use crate::hydro::io::drift_csv;
 use crate::hydro::qtf::{check_tolerance, Qtf};
 use crate::hydro::DriftTable;
-use crate::model::{Dof, DragModel, DriftDamping, Environment, Interaction, SecondOrder};
+use crate::model::{
+    BidirectionalDrift, Dof, DragModel, DriftDamping, Environment, Interaction, Mode, SecondOrder,
+};
 use crate::scenario::default::{default_scenario, DEFAULT_DRIFT_LABEL};
 use crate::scenario::{file, limits, ColumnGrid, DriftSource, Platform, Scenario};
 use serde::Serialize;
@@ -248,7 +250,7 @@ fn from_database(
         (Some(_), true) => {
             return Err(Error::invalid(
                 "drift.bidirectional",
-                "\"column-array\"",
+                format!("\"{}\"", BidirectionalDrift::ColumnArray.word()),
                 format!(
                     "the database {name} has its own bidirectional_drift table: use one of them"
                 ),
@@ -581,7 +583,7 @@ impl Problem {
         if self.model.drift_damping == DriftDamping::Table && !self.hydro.drift.has_damping() {
             return Err(Error::invalid(
                 "model.drift_damping",
-                "table",
+                DriftDamping::Table.word(),
                 "this drift data has no wave-drift damping table (b11 .. b33; the embedded \
                  default has none): the damping choices that work with it are aranha and off",
             ));
@@ -630,7 +632,7 @@ impl Problem {
         let Some(q) = &self.hydro.qtf else {
             return Err(Error::invalid(
                 "model.second_order",
-                "full-qtf",
+                SecondOrder::FullQtf.word(),
                 "needs a QTF: use [drift] source = \"database\" with a database that holds one \
                  (`slowdrift hydro wamit` with a .12d, .11d or .10d file, `slowdrift hydro \
                  nemoh`)",
@@ -650,7 +652,7 @@ impl Problem {
                 q.interpolated(dof, pair).map_err(|e| {
                     Error::invalid(
                         "model.second_order",
-                        "full-qtf",
+                        SecondOrder::FullQtf.word(),
                         format!(
                             "the QTF does not serve the wave direction(s) ({:.3}, {:.3}) deg: {e}",
                             pair.0.to_degrees(),
@@ -734,7 +736,7 @@ impl Problem {
         {
             return Err(Error::invalid(
                 "model.interaction",
-                "bidirectional",
+                Interaction::Bidirectional.word(),
                 "the drift source has no bi-directional drift (it comes from [drift] source = \
                  \"column-array\" or a database with a bidirectional_drift table); use \
                  interaction = \"mean-direction\" to approximate it from the drift table, or \

@@ -96,8 +96,8 @@ use crate::files::Cost;
 use crate::hydro::io::drift_csv::DriftFields;
 use crate::hydro::DriftTable;
 use crate::model::{
-    Cylinder, DragModel, DriftDamping, Environment, Interaction, NewmanForm, SecondOrder,
-    YawFollowing,
+    BidirectionalDrift, Cylinder, DragKind, DragModel, DriftDamping, Environment, Interaction,
+    Mode, NewmanForm, SecondOrder, SpectrumKind, SpreadingKind, YawFollowing,
 };
 use crate::sea_state::{SeaState, Spectrum, Spreading};
 use serde::Deserialize;
@@ -245,6 +245,12 @@ fn refused<T>(value: &Option<T>, key: &str, because: &str) -> std::result::Resul
     }
 }
 
+/// A choice as the file writes it, for the reason of [`required`] and [`refused`]:
+/// `spectrum = "jonswap"`.
+fn chosen(key: &str, mode: impl Mode) -> String {
+    format!("{key} = \"{}\"", mode.word())
+}
+
 /// The whole file.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -330,27 +336,6 @@ impl EnvironmentFile {
     }
 }
 
-/// `sea.spectrum`.
-#[derive(Deserialize, Clone, Copy)]
-#[serde(rename_all = "kebab-case")]
-enum SpectrumKind {
-    Jonswap,
-    PiersonMoskowitz,
-    Table,
-}
-
-/// `sea.spreading`.
-#[derive(Deserialize, Clone, Copy, Default)]
-enum SpreadingKind {
-    #[default]
-    #[serde(rename = "long-crested")]
-    LongCrested,
-    #[serde(rename = "cos-n")]
-    CosN,
-    #[serde(rename = "cos-2s")]
-    Cos2s,
-}
-
 /// `[sea]`.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -366,8 +351,8 @@ struct SeaFile {
     omega: Option<Vec<f64>>,
     /// Tabulated spectrum: densities, m^2 s/rad.
     density: Option<Vec<f64>>,
-    #[serde(default)]
-    spreading: SpreadingKind,
+    /// Long-crested when absent.
+    spreading: Option<SpreadingKind>,
     /// N of cos^N or s of cos^2s.
     spreading_exponent: Option<f64>,
     /// Mean direction of propagation, deg.
@@ -399,45 +384,46 @@ impl SeaFile {
     }
 
     fn spectrum(&self) -> std::result::Result<Spectrum, String> {
+        let because = chosen("spectrum", self.spectrum);
         match self.spectrum {
             SpectrumKind::Jonswap => {
-                let because = "spectrum = \"jonswap\"";
-                refused(&self.omega, "omega", because)?;
-                refused(&self.density, "density", because)?;
+                refused(&self.omega, "omega", &because)?;
+                refused(&self.density, "density", &because)?;
                 Ok(Spectrum::Jonswap {
-                    hs: required(self.hs, "hs", because)?,
-                    tp: required(self.tp, "tp", because)?,
+                    hs: required(self.hs, "hs", &because)?,
+                    tp: required(self.tp, "tp", &because)?,
                     gamma: self.gamma,
                 })
             }
             SpectrumKind::PiersonMoskowitz => {
-                let because = "spectrum = \"pierson-moskowitz\"";
-                refused(&self.gamma, "gamma", because)?;
-                refused(&self.omega, "omega", because)?;
-                refused(&self.density, "density", because)?;
+                refused(&self.gamma, "gamma", &because)?;
+                refused(&self.omega, "omega", &because)?;
+                refused(&self.density, "density", &because)?;
                 Ok(Spectrum::PiersonMoskowitz {
-                    hs: required(self.hs, "hs", because)?,
-                    tp: required(self.tp, "tp", because)?,
+                    hs: required(self.hs, "hs", &because)?,
+                    tp: required(self.tp, "tp", &because)?,
                 })
             }
             SpectrumKind::Table => {
-                let because = "spectrum = \"table\"";
-                refused(&self.hs, "hs", because)?;
-                refused(&self.tp, "tp", because)?;
-                refused(&self.gamma, "gamma", because)?;
+                refused(&self.hs, "hs", &because)?;
+                refused(&self.tp, "tp", &because)?;
+                refused(&self.gamma, "gamma", &because)?;
                 Ok(Spectrum::Tabulated {
-                    omega: required(self.omega.clone(), "omega", because)?,
-                    density: required(self.density.clone(), "density", because)?,
+                    omega: required(self.omega.clone(), "omega", &because)?,
+                    density: required(self.density.clone(), "density", &because)?,
                 })
             }
         }
     }
 
     fn spreading(&self) -> std::result::Result<(Spreading, usize), String> {
-        match self.spreading {
+        let kind = self.spreading.unwrap_or(SpreadingKind::LongCrested);
+        let because = chosen("spreading", kind);
+        let exponent = || required(self.spreading_exponent, "spreading_exponent", &because);
+        let spread_directions = self.n_directions.unwrap_or(DEFAULT_N_DIRECTIONS);
+        match kind {
             SpreadingKind::LongCrested => {
-                let because = "spreading = \"long-crested\"";
-                refused(&self.spreading_exponent, "spreading_exponent", because)?;
+                refused(&self.spreading_exponent, "spreading_exponent", &because)?;
                 match self.n_directions {
                     None | Some(LONG_CRESTED_DIRECTIONS) => {
                         Ok((Spreading::LongCrested, LONG_CRESTED_DIRECTIONS))
@@ -447,28 +433,8 @@ impl SeaFile {
                     )),
                 }
             }
-            SpreadingKind::CosN => {
-                let n = required(
-                    self.spreading_exponent,
-                    "spreading_exponent",
-                    "spreading = \"cos-n\"",
-                )?;
-                Ok((
-                    Spreading::CosN { n },
-                    self.n_directions.unwrap_or(DEFAULT_N_DIRECTIONS),
-                ))
-            }
-            SpreadingKind::Cos2s => {
-                let s = required(
-                    self.spreading_exponent,
-                    "spreading_exponent",
-                    "spreading = \"cos-2s\"",
-                )?;
-                Ok((
-                    Spreading::Cos2s { s },
-                    self.n_directions.unwrap_or(DEFAULT_N_DIRECTIONS),
-                ))
-            }
+            SpreadingKind::CosN => Ok((Spreading::CosN { n: exponent()? }, spread_directions)),
+            SpreadingKind::Cos2s => Ok((Spreading::Cos2s { s: exponent()? }, spread_directions)),
         }
     }
 }
@@ -585,59 +551,15 @@ impl PlatformFile {
     }
 }
 
-/// `model.newman`.
-#[derive(Deserialize, Clone, Copy)]
-#[serde(rename_all = "kebab-case")]
-enum NewmanFile {
-    Geometric,
-    Arithmetic,
-}
-
-/// `model.interaction`.
-#[derive(Deserialize, Clone, Copy)]
-#[serde(rename_all = "kebab-case")]
-enum InteractionFile {
-    Auto,
-    None,
-    MeanDirection,
-    Bidirectional,
-}
-
-/// `model.drift_damping`.
-#[derive(Deserialize, Clone, Copy)]
-#[serde(rename_all = "kebab-case")]
-enum DriftDampingFile {
-    Aranha,
-    Table,
-    Off,
-}
-
-/// `model.drag`.
-#[derive(Deserialize, Clone, Copy)]
-#[serde(rename_all = "kebab-case")]
-enum DragKind {
-    Off,
-    Separate,
-    Combined,
-}
-
-/// `model.second_order`.
-#[derive(Deserialize, Clone, Copy)]
-#[serde(rename_all = "kebab-case")]
-enum SecondOrderFile {
-    Newman,
-    FullQtf,
-}
-
 /// `[model]`; absent keys take [`ModelOptions::default`].
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct ModelFile {
-    second_order: Option<SecondOrderFile>,
+    second_order: Option<SecondOrder>,
     qtf_tolerance: Option<f64>,
-    newman: Option<NewmanFile>,
-    interaction: Option<InteractionFile>,
-    drift_damping: Option<DriftDampingFile>,
+    newman: Option<NewmanForm>,
+    interaction: Option<Interaction>,
+    drift_damping: Option<DriftDamping>,
     drag: Option<DragKind>,
     /// Drag coefficient of the combined model.
     cd: Option<f64>,
@@ -662,68 +584,36 @@ impl ModelFile {
     fn into_core(self) -> std::result::Result<ModelOptions, String> {
         let default = ModelOptions::default();
         let (second_order, qtf_tolerance) = match self.second_order {
-            None | Some(SecondOrderFile::Newman) => {
+            None | Some(SecondOrder::Newman) => {
                 refused(
                     &self.qtf_tolerance,
                     "qtf_tolerance",
-                    "second_order is \"newman\" (the default)",
+                    &format!(
+                        "second_order is \"{}\" (the default)",
+                        SecondOrder::Newman.word()
+                    ),
                 )?;
                 (SecondOrder::Newman, default.qtf_tolerance)
             }
-            Some(SecondOrderFile::FullQtf) => (
+            Some(SecondOrder::FullQtf) => (
                 SecondOrder::FullQtf,
                 self.qtf_tolerance.unwrap_or(default.qtf_tolerance),
             ),
         };
-        let newman = match self.newman {
-            None => default.newman,
-            Some(NewmanFile::Geometric) => NewmanForm::Geometric,
-            Some(NewmanFile::Arithmetic) => NewmanForm::Arithmetic,
-        };
-        let interaction = match self.interaction {
-            None => default.interaction,
-            Some(InteractionFile::Auto) => Interaction::Auto,
-            Some(InteractionFile::None) => Interaction::None,
-            Some(InteractionFile::MeanDirection) => Interaction::MeanDirection,
-            Some(InteractionFile::Bidirectional) => Interaction::Bidirectional,
-        };
-        let drift_damping = match self.drift_damping {
-            None => default.drift_damping,
-            Some(DriftDampingFile::Aranha) => DriftDamping::Aranha,
-            Some(DriftDampingFile::Table) => DriftDamping::Table,
-            Some(DriftDampingFile::Off) => DriftDamping::Off,
-        };
         let drag = match self.drag {
             None => {
-                self.refuse_coefficients(&[], "drag is off (the default)")?;
+                let because = format!("drag is {} (the default)", DragKind::Off.word());
+                self.refuse_coefficients(&[], &because)?;
                 default.drag
             }
-            Some(DragKind::Off) => {
-                self.refuse_coefficients(&[], "drag = \"off\"")?;
-                DragModel::Off
-            }
-            Some(DragKind::Separate) => {
-                let because = "drag = \"separate\"";
-                self.refuse_coefficients(&["cd_slow", "cd_fast"], because)?;
-                DragModel::Separate {
-                    slow: required(self.cd_slow, "cd_slow", because)?,
-                    fast: required(self.cd_fast, "cd_fast", because)?,
-                }
-            }
-            Some(DragKind::Combined) => {
-                let because = "drag = \"combined\"";
-                self.refuse_coefficients(&["cd"], because)?;
-                DragModel::Combined {
-                    cd: required(self.cd, "cd", because)?,
-                }
-            }
+            Some(kind) => self.drag(kind)?,
         };
         Ok(ModelOptions {
             second_order,
             qtf_tolerance,
-            newman,
-            interaction,
-            drift_damping,
+            newman: self.newman.unwrap_or(default.newman),
+            interaction: self.interaction.unwrap_or(default.interaction),
+            drift_damping: self.drift_damping.unwrap_or(default.drift_damping),
             drag,
             strips_per_column: self.strips_per_column.unwrap_or(default.strips_per_column),
             yaw_following: self.yaw_following.map(|y| YawFollowing {
@@ -732,6 +622,30 @@ impl ModelFile {
                     .range_deg
                     .map(|[min, max]| (min.to_radians(), max.to_radians())),
             }),
+        })
+    }
+
+    /// The drag model `kind` with its coefficients, the others refused.
+    fn drag(&self, kind: DragKind) -> std::result::Result<DragModel, String> {
+        let because = chosen("drag", kind);
+        Ok(match kind {
+            DragKind::Off => {
+                self.refuse_coefficients(&[], &because)?;
+                DragModel::Off
+            }
+            DragKind::Separate => {
+                self.refuse_coefficients(&["cd_slow", "cd_fast"], &because)?;
+                DragModel::Separate {
+                    slow: required(self.cd_slow, "cd_slow", &because)?,
+                    fast: required(self.cd_fast, "cd_fast", &because)?,
+                }
+            }
+            DragKind::Combined => {
+                self.refuse_coefficients(&["cd"], &because)?;
+                DragModel::Combined {
+                    cd: required(self.cd, "cd", &because)?,
+                }
+            }
         })
     }
 
@@ -797,7 +711,7 @@ enum DriftFile {
     /// a bi-directional table would be large); otherwise the database's own table, if any.
     Database {
         file: PathBuf,
-        bidirectional: Option<BidirectionalFile>,
+        bidirectional: Option<BidirectionalDrift>,
     },
     /// The default platform's radiation-diffraction database compiled into the library
     /// (`tests/bem`: the paper's columns on pontoons, freely floating): its mean and
@@ -832,13 +746,6 @@ enum DriftFile {
         heading_step_deg: f64,
         depth: Option<f64>,
     },
-}
-
-/// `[drift] bidirectional` of a database source.
-#[derive(Deserialize, Clone, Copy)]
-#[serde(rename_all = "kebab-case")]
-enum BidirectionalFile {
-    ColumnArray,
 }
 
 /// Default frequency range and resolution of `source = "columns"`.
@@ -914,7 +821,7 @@ impl DriftFile {
                 path: base_dir.join(file),
                 bidirectional_from_columns: matches!(
                     bidirectional,
-                    Some(BidirectionalFile::ColumnArray)
+                    Some(BidirectionalDrift::ColumnArray)
                 ),
             },
             DriftFile::DefaultPlatform {} => DriftSource::DefaultPlatform,
