@@ -20,13 +20,13 @@
 //! 6. `hydro/columns_100x37`: `ColumnArray::drift_table` of the paper's four columns
 //!    (radius 10 m on a 70 m square, deep water) at 100 frequencies 0.05..3 rad/s and 37
 //!    headings 0..360 deg: scattering, near- and far-field drift, exciting forces and
-//!    Aranha damping with the solver's own derivatives. Target (issue #3): well under 1 s.
+//!    Aranha damping with the solver's own derivatives. Target: well under 1 s.
 //!
 //! 7. `full_qtf/factorised_2048_rank*`, `full_qtf/direct_binned_2048`: the slowly varying
 //!    force from a full QTF (56-point grid, like OC4's) at N_omega = 2048 components:
 //!    factorised synthesis against the direct double sum on the same interpolated QTF, in the
 //!    time domain (timed per sample, extrapolated to the record) and binned by difference
-//!    frequency with one inverse FFT. Target (issue #5): >= 100x faster than the direct
+//!    frequency with one inverse FFT. Target: >= 100x faster than the direct
 //!    double sum at a relative error < 1e-6, memory linear in N_omega x rank.
 //! 8. `segment/cross_join_default`: the cost of making the next segment, on the default
 //!    problem (combined drag on 4 columns x 20 strips, Aranha damping, h = 1 s) run
@@ -35,7 +35,7 @@
 //!    stepping one block (16384 steps) and `Simulation::new` for runs of 1 h, 6 h, 100 h and
 //!    open-ended (flat: the records do not depend on the duration).
 //!
-//! 9. The depth kernel's rank (issue #16) for the default platform and a deep-draft spar
+//! 9. The depth kernel's rank for the default platform and a deep-draft spar
 //!    (printed).
 //!
 //! Targets (issue): records <= 30 FFTs, step < 1 us (no drag) and < 10 us (drag 4 x 20),
@@ -119,7 +119,7 @@ fn platform() -> Platform {
 }
 
 /// JONSWAP Hs 6 m, Tp 10 s, long-crested from 30 deg; Newman geometric; Aranha damping.
-fn config(duration: f64, time_step: f64, drag: DragModel) -> Problem {
+fn bench_problem(duration: f64, time_step: f64, drag: DragModel) -> Problem {
     let environment = Environment::default();
     let drift = drift_table(&environment);
     Problem {
@@ -172,25 +172,25 @@ struct RecordInputs {
 }
 
 impl RecordInputs {
-    fn new(config: &Problem) -> Self {
+    fn new(problem: &Problem) -> Self {
         let grid = FrequencyGrid::new(
-            config.run.start_time,
-            config.run.duration,
-            0.5 * config.run.time_step,
-            config.sea.band(),
+            problem.run.start_time,
+            problem.run.duration,
+            0.5 * problem.run.time_step,
+            problem.sea.band(),
         )
         .unwrap();
-        let components = WaveComponents::generate(&config.sea, grid);
+        let components = WaveComponents::generate(&problem.sea, grid);
         let damping_table = aranha_damping(
-            &config.hydro.drift,
-            config.environment.gravity,
-            &config.platform.columns,
+            &problem.hydro.drift,
+            problem.environment.gravity,
+            &problem.platform.columns,
         )
         .unwrap();
         RecordInputs {
             components,
             damping_table,
-            gravity: config.environment.gravity,
+            gravity: problem.environment.gravity,
         }
     }
 
@@ -285,7 +285,7 @@ impl OneFft {
 }
 
 fn bench_records(c: &mut Criterion, report: &mut Vec<String>) {
-    let inputs = RecordInputs::new(&config(THREE_HOURS, 0.5, DragModel::Off));
+    let inputs = RecordInputs::new(&bench_problem(THREE_HOURS, 0.5, DragModel::Off));
     let len = inputs.components.grid.len;
     let mut fft = OneFft::new(len);
 
@@ -385,7 +385,7 @@ fn bench_records(c: &mut Criterion, report: &mut Vec<String>) {
 /// previous build instead of fresh pages that the kernel must fault in and zero. Run last,
 /// because the setting is process-wide and would change every later measurement.
 fn bench_records_warm(report: &mut Vec<String>) {
-    let inputs = RecordInputs::new(&config(THREE_HOURS, 0.5, DragModel::Off));
+    let inputs = RecordInputs::new(&bench_problem(THREE_HOURS, 0.5, DragModel::Off));
     let mut fft = OneFft::new(inputs.components.grid.len);
     let retained = slowdrift::allocator::retain_freed_memory();
     let records = median_time(15, || {
@@ -418,7 +418,7 @@ fn bench_steps(c: &mut Criterion, report: &mut Vec<String>) {
         .measurement_time(Duration::from_secs(3));
     let mut sims = Vec::new();
     for (name, drag, _) in &cases {
-        let mut sim = Simulation::new(config(duration, 0.5, *drag)).unwrap();
+        let mut sim = Simulation::new(bench_problem(duration, 0.5, *drag)).unwrap();
         let limit = duration - 1.0;
         group.bench_function(*name, |b| {
             b.iter(|| {
@@ -464,7 +464,7 @@ fn run_3h(sim: &mut Simulation) {
 }
 
 fn bench_run(c: &mut Criterion, report: &mut Vec<String>) {
-    let cfg = config(THREE_HOURS, 1.0, DragModel::Off);
+    let cfg = bench_problem(THREE_HOURS, 1.0, DragModel::Off);
     let mut sim = Simulation::new(cfg.clone()).unwrap();
     let mut group = c.benchmark_group("run");
     group
@@ -538,7 +538,7 @@ fn memory(report: &mut Vec<String>) {
     for block in [4096.0, DEFAULT_BLOCK_DURATION] {
         let mut sizes = Vec::new();
         for hours in [1.0, 3.0, 6.0, 100.0, f64::INFINITY] {
-            let mut problem = config(hours * 3600.0, 0.5, DragModel::Off);
+            let mut problem = bench_problem(hours * 3600.0, 0.5, DragModel::Off);
             problem.run.block_duration = block;
             let sim = Simulation::new(problem).unwrap();
             let bytes = record_bytes(sim.records());

@@ -1,6 +1,6 @@
 //! FMU benchmark: `cargo bench --bench fmu`.
 //!
-//! What the FMI 2.0 C ABI adds over the core per communication step (issue #4 target: under
+//! What the FMI 2.0 C ABI adds over the core per communication step (under
 //! 1 us per fmi2DoStep). Both sides run the default platform with the default sea and drag
 //! (the embedded default.toml: combined drag on 4 columns x 20 strips, Aranha damping) for a
 //! three-hour run at a 1 s step, in the same process and the same run:

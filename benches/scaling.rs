@@ -1,4 +1,4 @@
-//! How cost grows (issue #16, part 5): `cargo bench --bench scaling`.
+//! How cost grows: `cargo bench --bench scaling`.
 //!
 //! The default problem (combined drag, Aranha damping, h = 1 s, open-ended) with one
 //! parameter varied at a time: the block length (the records' FFT length), the number of
@@ -15,8 +15,7 @@
 mod common;
 mod timing;
 
-use slowdrift::hydro::io::database::HydroDatabase;
-use slowdrift::hydro::io::wamit::WamitOptions;
+use slowdrift::hydro::io::wamit::{self, WamitOptions};
 use slowdrift::model::{Cylinder, DragModel, DriftDamping, Interaction, SecondOrder};
 use slowdrift::problem::default_problem;
 use slowdrift::sea_state::Spectrum;
@@ -180,7 +179,7 @@ fn main() {
         );
         return;
     }
-    let database = HydroDatabase::from_wamit(&data, &WamitOptions::default())
+    let database = wamit::import(&data, &WamitOptions::default())
         .expect("the OC4 files")
         .database;
     let oc4 = |tolerance: f64| {

@@ -11,7 +11,7 @@
 //!   N_beta = 15 directions; `bidirectional` includes solving the column array for
 //!   T(omega; beta_k, beta_l) at the 15 exact directions on every data frequency of the band.
 //!
-//! Target (issue #5): N_beta = 15 costs at most N_beta^2 = 225 times the long-crested
+//! Target: N_beta = 15 costs at most N_beta^2 = 225 times the long-crested
 //! initialisation. The ratios are printed at the end (medians of interleaved runs timed with
 //! `Instant`, since criterion does not compute ratios).
 

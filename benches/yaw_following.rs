@@ -1,4 +1,4 @@
-//! Yaw-following records (issue #5 part 3): `cargo bench --bench yaw_following`.
+//! Yaw-following records: `cargo bench --bench yaw_following`.
 //!
 //! The default platform (column-solver drift, Aranha damping: 3 force + 7 non-zero damping
 //! records per yaw) in long-crested waves towards 30 deg, a 3-hour run at h = 1 s (records

@@ -13,7 +13,7 @@
 //! safe API over all of it, used by [`montecarlo`], [`studies`], the CLI and [`fmi2`], the
 //! FMI 2.0 co-simulation C ABI. [`model`] is the vocabulary everything shares.
 //!
-//! Conventions (physics.md section 1): SI units and radians; inertial frame XYZ with Z up
+//! Conventions (docs/theory.md#conventions): SI units and radians; inertial frame XYZ with Z up
 //! and still water at Z = 0; the body frame follows the slow yaw theta; DOF order surge,
 //! sway, yaw; wave direction beta = direction of propagation from +X, counter-clockwise;
 //! a wave component is Re[a e^{i omega t}].
@@ -70,4 +70,4 @@ pub use error::{Error, Result};
 pub use problem::Problem;
 pub use record_plan::{MemoryEstimate, PlanKey, QtfRank, RecordPlan, Term};
 pub use scenario::Scenario;
-pub use simulation::{bounds, Outputs, Simulation, Snapshot};
+pub use simulation::{bounds, reserve_recorded, Outputs, Simulation, Snapshot};

@@ -181,10 +181,8 @@ fn simulate(args: SimulateArgs) -> Result<(), String> {
 /// where the user wrote them ([`slowdrift::Problem::explain`]).
 fn run_to_end(sim: &mut Simulation) -> Result<Vec<Outputs>, String> {
     let mut outputs = Vec::new();
-    let steps = sim
-        .problem()
-        .reserve_recorded(&mut outputs)
-        .map_err(|e| e.to_string())?;
+    let steps =
+        slowdrift::reserve_recorded(sim.problem(), &mut outputs).map_err(|e| e.to_string())?;
     let mut record = |sim: &mut Simulation, step: bool| {
         if step {
             sim.step([0.0; 3])?;

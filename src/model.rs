@@ -2,7 +2,7 @@
 //! cylinders, and the modelling choices. Every other module may import this one; it imports
 //! nothing of the crate.
 //!
-//! Conventions (physics.md section 1): SI units and radians; the body frame follows the slow
+//! Conventions (docs/theory.md#conventions): SI units and radians; the body frame follows the slow
 //! yaw; DOF order surge, sway, yaw.
 //!
 //! The modes (the settings that take one of a few words: `NewmanForm`, `SecondOrder`,
@@ -195,7 +195,7 @@ pub const HEADING_MATCH_TOLERANCE: f64 = 0.01 * PI / 180.0;
 /// step of every real frequency grid (0.05 rad/s at 3 rad/s is 1.7e-2).
 pub const FREQUENCY_MATCH_TOLERANCE: f64 = 1e-4;
 
-/// Physical constants of the water (physics.md section 1).
+/// Physical constants of the water (docs/theory.md#conventions).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Environment {
     /// Acceleration of gravity, m/s^2.
@@ -250,7 +250,7 @@ impl DragModel {
 }
 
 /// Records of the wave force and damping that follow the body's yaw (issue #5 part 3;
-/// physics.md section 4, last bullet): built at `headings` body yaw angles theta_j and
+/// docs/theory.md#the-slowly-varying-force): built at `headings` body yaw angles theta_j and
 /// interpolated linearly in the instantaneous yaw at every RK4 stage.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct YawFollowing {

@@ -108,7 +108,7 @@ pub struct RecordPlan {
     full_qtf: Option<Vec<QtfGroup>>,
     ranks: Vec<QtfRank>,
     /// The drag kinematics' depth kernels of the problem's drafts on the grid and spectrum
-    /// (issue #16: made once here, not per seed); a seed whose spectrum, strips or drafts
+    /// (made once here, not per seed); a seed whose spectrum, strips or drafts
     /// differ makes its own.
     depth_bases: Vec<Arc<DepthBasis>>,
 }
@@ -141,47 +141,49 @@ pub struct QtfRank {
 }
 
 impl RecordPlan {
-    /// Checks `config` and computes everything of its records that the seed does not change.
-    pub fn new(config: &Problem) -> Result<Self> {
-        config.check()?;
-        Self::of_checked(config)
+    /// Checks `problem` and computes everything of its records that the seed does not change.
+    pub fn new(problem: &Problem) -> Result<Self> {
+        problem.check()?;
+        Self::of_checked(problem)
     }
 
     /// [`RecordPlan::new`] of a problem already checked: refused before anything is
     /// allocated when the records of one simulation would exceed the memory limit
     /// ([`MemoryEstimate`]).
-    pub(crate) fn of_checked(config: &Problem) -> Result<Self> {
-        let locate = |e| config.origins.locate(e);
-        MemoryEstimate::of(config).map_err(locate)?.check(config)?;
-        Self::plan(config).map_err(locate)
+    pub(crate) fn of_checked(problem: &Problem) -> Result<Self> {
+        let locate = |e| problem.origins.locate(e);
+        MemoryEstimate::of(problem)
+            .map_err(locate)?
+            .check(problem)?;
+        Self::plan(problem).map_err(locate)
     }
 
     /// [`RecordPlan::of_checked`] within the memory limit, its errors naming settings by
     /// their key paths.
-    fn plan(config: &Problem) -> Result<Self> {
-        let sea = &config.sea;
-        let dt = 0.5 * config.run.time_step;
-        let segments = segments_of(config.run.block_duration, dt);
+    fn plan(problem: &Problem) -> Result<Self> {
+        let sea = &problem.sea;
+        let dt = 0.5 * problem.run.time_step;
+        let segments = segments_of(problem.run.block_duration, dt);
         let grid = FrequencyGrid::new(
-            config.run.start_time,
+            problem.run.start_time,
             segments.span() as f64 * dt,
             dt,
-            config.band(),
+            problem.band(),
         )?;
         let directions = sea.directions();
-        let damping_table = config.damping_table()?;
-        if config.model.yaw_following.is_none() {
-            let table = damping_table.as_ref().unwrap_or(&config.hydro.drift);
+        let damping_table = problem.damping_table()?;
+        if problem.model.yaw_following.is_none() {
+            let table = damping_table.as_ref().unwrap_or(&problem.hydro.drift);
             directions_covered(table, sea, &directions)?;
         }
         // The cross terms of a spread sea: from the bi-directional QTF itself (in the joint
         // factorisation below), else by the Newman-type rule of `forces::directional`.
-        let pairs = if config.cross_terms_from_qtf() {
+        let pairs = if problem.cross_terms_from_qtf() {
             None
         } else {
-            direction_pairs(config, &grid, &directions)?
+            direction_pairs(problem, &grid, &directions)?
         };
-        if let (Some(options), Some(_)) = (&config.model.yaw_following, &pairs) {
+        if let (Some(options), Some(_)) = (&problem.model.yaw_following, &pairs) {
             return Err(Error::invalid(
                 "model.yaw_following",
                 format!("{} headings", options.headings),
@@ -190,34 +192,34 @@ impl RecordPlan {
                      spread sea ({} directions, [model] interaction = {}): use a long-crested \
                      sea or [model] interaction = \"none\"",
                     directions.len(),
-                    config.interaction().word()
+                    problem.interaction().word()
                 ),
             ));
         }
         // With yaw following the force and damping come from its records alone: the
         // mean-position build gets no coefficients (it still makes the elevation and
         // kinematics).
-        let transfers = match config.model.yaw_following {
+        let transfers = match problem.model.yaw_following {
             None => transfers_on_grid(
-                damping_table.as_ref().unwrap_or(&config.hydro.drift),
+                damping_table.as_ref().unwrap_or(&problem.hydro.drift),
                 &grid,
                 &directions,
                 damping_table.is_some(),
             )?,
             Some(_) => vec![DirectionTransfer::none(grid.count); directions.len()],
         };
-        let yaw = match &config.model.yaw_following {
+        let yaw = match &problem.model.yaw_following {
             None => None,
             Some(options) => {
                 let yaw_grid = YawGrid::new(options);
                 let transfers = yaw_transfers(
-                    damping_table.as_ref().unwrap_or(&config.hydro.drift),
+                    damping_table.as_ref().unwrap_or(&problem.hydro.drift),
                     &grid,
                     &directions,
                     &yaw_grid,
                     damping_table.is_some(),
                 )?;
-                let full_qtf = match config.model.second_order {
+                let full_qtf = match problem.model.second_order {
                     SecondOrder::Newman => None,
                     SecondOrder::FullQtf => Some(
                         (0..yaw_grid.len())
@@ -230,7 +232,7 @@ impl RecordPlan {
                                         weight: d.weight,
                                     })
                                     .collect();
-                                full_qtf_on_grid(config, &grid, &relative)
+                                full_qtf_on_grid(problem, &grid, &relative)
                                     .map(|(q, _)| q)
                                     .map_err(|e| {
                                         Error::invalid(
@@ -253,18 +255,18 @@ impl RecordPlan {
                 })
             }
         };
-        let (full_qtf, ranks) = match config.model.second_order {
+        let (full_qtf, ranks) = match problem.model.second_order {
             SecondOrder::Newman => (None, Vec::new()),
             SecondOrder::FullQtf => {
                 // With yaw following the force comes from the yaw records alone (their QTF
                 // at the relative headings); the mean position's ranks are still reported.
-                let (qtf, ranks) = full_qtf_on_grid(config, &grid, &directions)?;
-                (config.model.yaw_following.is_none().then_some(qtf), ranks)
+                let (qtf, ranks) = full_qtf_on_grid(problem, &grid, &directions)?;
+                (problem.model.yaw_following.is_none().then_some(qtf), ranks)
             }
         };
-        let depth_bases = depth_bases(config, &grid);
+        let depth_bases = depth_bases(problem, &grid);
         Ok(RecordPlan {
-            problem: config.clone(),
+            problem: problem.clone(),
             depth_bases,
             segments,
             fft: plan_inverse_fft(&grid),
@@ -277,9 +279,9 @@ impl RecordPlan {
         })
     }
 
-    /// Whether this plan serves `config` (it has the plan's key).
-    pub fn serves(&self, config: &Problem) -> bool {
-        PlanKey::of(config) == PlanKey::of(&self.problem)
+    /// Whether this plan serves `problem` (it has the plan's key).
+    pub fn serves(&self, problem: &Problem) -> bool {
+        PlanKey::of(problem) == PlanKey::of(&self.problem)
     }
 
     /// The frequency grid of the records (one block's span).
@@ -297,38 +299,38 @@ impl RecordPlan {
         &self.ranks
     }
 
-    /// The first segment of `config`'s records (which the plan serves), with the buffers the
+    /// The first segment of `problem`'s records (which the plan serves), with the buffers the
     /// next segments are made in.
-    pub(crate) fn first_segment(&self, config: &Problem) -> Segment {
+    pub(crate) fn first_segment(&self, problem: &Problem) -> Segment {
         let synth =
             Synthesizer::with_fft(&self.grid, self.fft.clone()).with_join(Join::new(self.segments));
         let mut segment = Segment {
             index: 0,
             records: ForceRecords::empty(),
             work: RecordWork::with_bases(synth, &self.grid, self.depth_bases.clone()),
-            components: WaveComponents::generate_block(&config.sea, self.grid.clone(), 0),
+            components: WaveComponents::generate_block(&problem.sea, self.grid.clone(), 0),
         };
-        self.build(config, &mut segment, 0, true);
+        self.build(problem, &mut segment, 0, true);
         segment
     }
 
-    /// Moves `segment` to segment `k` of `config`'s records: the next one from the current
+    /// Moves `segment` to segment `k` of `problem`'s records: the next one from the current
     /// one's tails; any other after making its predecessor for its tails. Writes into the
     /// segment's buffers: once the first segment is made, this allocates nothing.
-    pub(crate) fn move_segment(&self, config: &Problem, segment: &mut Segment, k: u64) {
+    pub(crate) fn move_segment(&self, problem: &Problem, segment: &mut Segment, k: u64) {
         if k == segment.index {
             return;
         }
         if k != segment.index + 1 && k > 0 {
-            self.build(config, segment, k - 1, false);
+            self.build(problem, segment, k - 1, false);
         }
-        self.build(config, segment, k, true);
+        self.build(problem, segment, k, true);
         segment.index = k;
     }
 
     /// Builds segment `k` into `segment`, joined to block k - 1's tails when
     /// `after_previous` (forces::stream).
-    fn build(&self, config: &Problem, segment: &mut Segment, k: u64, after_previous: bool) {
+    fn build(&self, problem: &Problem, segment: &mut Segment, k: u64, after_previous: bool) {
         let Segment {
             records,
             work,
@@ -339,20 +341,20 @@ impl RecordPlan {
             .join_mut()
             .expect("a segment's synthesizer is joined")
             .begin(k, after_previous);
-        components.regenerate(&config.sea, k);
-        let drag_columns = match config.model.drag {
+        components.regenerate(&problem.sea, k);
+        let drag_columns = match problem.model.drag {
             crate::model::DragModel::Off => &[][..],
-            _ => &config.platform.columns[..],
+            _ => &problem.platform.columns[..],
         };
         records.rebuild(
             components,
             &self.transfers,
             &RecordOptions {
-                newman: config.model.newman,
+                newman: problem.model.newman,
                 full_qtf: self.full_qtf.as_deref(),
                 drag_columns,
-                strips_per_column: config.model.strips_per_column,
-                gravity: config.environment.gravity,
+                strips_per_column: problem.model.strips_per_column,
+                gravity: problem.environment.gravity,
                 fft: Some(&self.fft),
             },
             work,
@@ -367,7 +369,7 @@ impl RecordPlan {
                 &yaw.grid,
                 &yaw.transfers,
                 yaw.full_qtf.as_deref(),
-                config.model.newman,
+                problem.model.newman,
             ),
             None => records.yaw_following = None,
         }
@@ -384,23 +386,23 @@ pub(crate) struct Segment {
     components: WaveComponents,
 }
 
-/// The depth kernel of every distinct draft of `config`'s drag columns on `grid` (none
+/// The depth kernel of every distinct draft of `problem`'s drag columns on `grid` (none
 /// without drag).
-fn depth_bases(config: &Problem, grid: &FrequencyGrid) -> Vec<Arc<DepthBasis>> {
-    if config.model.drag == crate::model::DragModel::Off {
+fn depth_bases(problem: &Problem, grid: &FrequencyGrid) -> Vec<Arc<DepthBasis>> {
+    if problem.model.drag == crate::model::DragModel::Off {
         return Vec::new();
     }
-    let power = WaveComponents::expected_power_of(&config.sea, grid);
+    let power = WaveComponents::expected_power_of(&problem.sea, grid);
     let mut bases: Vec<Arc<DepthBasis>> = Vec::new();
-    for column in &config.platform.columns {
-        let strips = config.model.strips_per_column;
+    for column in &problem.platform.columns {
+        let strips = problem.model.strips_per_column;
         if !bases.iter().any(|b| b.fits_draft(column.draft, strips)) {
             bases.push(Arc::new(DepthBasis::new(
                 grid,
                 &power,
                 column.draft,
                 strips,
-                config.environment.gravity,
+                problem.environment.gravity,
             )));
         }
     }
@@ -452,16 +454,16 @@ pub fn segments_of(block_duration: f64, dt: f64) -> Segments {
 /// pairs of every direction; otherwise one per direction and DOF. The sea's headings are
 /// interpolated bilinearly in the heading pair between the data's (`Qtf::interpolated`).
 fn full_qtf_on_grid(
-    config: &Problem,
+    problem: &Problem,
     grid: &FrequencyGrid,
     directions: &[Direction],
 ) -> Result<(Vec<QtfGroup>, Vec<QtfRank>)> {
-    let qtf = config
+    let qtf = problem
         .hydro
         .qtf
         .as_ref()
         .expect("Problem::validate requires the QTF for full-qtf");
-    let tolerance = config.model.qtf_tolerance;
+    let tolerance = problem.model.qtf_tolerance;
     let n = qtf.omegas.len();
     let mut ranks = Vec::new();
     let mut groups = Vec::new();
@@ -474,7 +476,7 @@ fn full_qtf_on_grid(
         size: factors.size(),
         discarded: factors.discarded(),
     };
-    if config.cross_terms_from_qtf() {
+    if problem.cross_terms_from_qtf() {
         let nd = directions.len();
         let m = n * nd;
         let mut dofs = Vec::with_capacity(3);

@@ -6,6 +6,8 @@
 //! Time is always origin + count * step from an integer count, never an accumulated sum.
 
 pub mod bounds;
+mod recording;
+pub use recording::reserve_recorded;
 
 use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};
 use crate::error::numbers::written;
@@ -529,13 +531,13 @@ fn check_external(external: &[f64; 3]) -> Result<()> {
     Ok(())
 }
 
-fn initial_state(config: &Problem) -> Snapshot {
+fn initial_state(problem: &Problem) -> Snapshot {
     Snapshot {
-        origin: config.run.start_time,
+        origin: problem.run.start_time,
         count: 0,
-        step: config.run.time_step,
-        position: config.initial.position,
-        velocity: config.initial.velocity,
+        step: problem.run.time_step,
+        position: problem.initial.position,
+        velocity: problem.initial.velocity,
         external_force: [0.0; 3],
     }
 }

@@ -22,7 +22,7 @@ use slowdrift::error::BYTES_PER_GB;
 use slowdrift::hydro::bidirectional::{BidirectionalSource, BidirectionalTable};
 use slowdrift::hydro::io::database::HydroDatabase;
 use slowdrift::hydro::io::nemoh;
-use slowdrift::hydro::io::wamit::WamitOptions;
+use slowdrift::hydro::io::wamit::{self, WamitOptions};
 use slowdrift::problem::{self, default_problem};
 use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
 use slowdrift::scenario::limits::DEFAULT_MEMORY_LIMIT;
@@ -202,7 +202,7 @@ fn wamit(args: WamitArgs) -> Result<(), String> {
         gravity: args.g,
         memory_limit: args.memory_limit_gb * BYTES_PER_GB,
     };
-    let import = HydroDatabase::from_wamit(&root, &options).map_err(|e| e.to_string())?;
+    let import = wamit::import(&root, &options).map_err(|e| e.to_string())?;
     println!(
         "WAMIT files {}.* (ULEN = {} m, rho = {} kg/m^3, g = {} m/s^2):",
         root.display(),

@@ -1,4 +1,4 @@
-//! Equations of motion in surge, sway and yaw (E&S 1; physics.md section 7):
+//! Equations of motion in surge, sway and yaw (E&S 1; docs/theory.md#equations-of-motion):
 //!
 //!   S (M + A) S^T q'' + S B(t) (S^T q' - u_c) + C q = S (D(t) + f_drag + f_extra) + F_ext
 //!
@@ -80,9 +80,9 @@ impl Rotation {
 impl SlowDriftModel {
     /// Builds the model, with the mass and added mass of [`Problem::inertia`]; refuses a
     /// singular mass matrix M + A.
-    pub fn new(config: &Problem) -> Result<Self> {
-        let p = &config.platform;
-        let inertia = config.inertia()?;
+    pub fn new(problem: &Problem) -> Result<Self> {
+        let p = &problem.platform;
+        let inertia = problem.inertia()?;
         let rigid = Matrix3::from_diagonal(&Vector3::new(
             inertia.mass,
             inertia.mass,
@@ -96,15 +96,15 @@ impl SlowDriftModel {
                 "M + A is singular",
             )
         })?;
-        let (s, c) = config.current.direction.sin_cos();
+        let (s, c) = problem.current.direction.sin_cos();
         Ok(SlowDriftModel {
             inverse_mass,
             stiffness: matrix(&p.stiffness),
             linear_damping: matrix(&p.linear_damping),
             quadratic_damping: matrix(&p.quadratic_damping),
-            drag: config.model.drag,
-            water_density: config.environment.water_density,
-            current: [config.current.speed * c, config.current.speed * s],
+            drag: problem.model.drag,
+            water_density: problem.environment.water_density,
+            current: [problem.current.speed * c, problem.current.speed * s],
         })
     }
 

@@ -1,4 +1,5 @@
-//! Classical fourth-order Runge-Kutta (physics.md section 7; the paper integrates with
+//! Classical fourth-order Runge-Kutta (docs/theory.md#equations-of-motion; the paper integrates
+//! with
 //! Runge-Kutta at a 1 s step). Stage times are t, t + h/2, t + h/2, t + h; the right-hand
 //! side is evaluated with the forcing at exactly those times.
 

@@ -1,4 +1,4 @@
-//! The memory reading a file takes, checked before the file is read (issue #27, part 5): a
+//! The memory reading a file takes, checked before the file is read: a
 //! file under the 1 GiB size limit could still abort the process, because a reader holds
 //! many times the file's size (a TOML configuration of 400 MB took 2.9 GB in the TOML
 //! reader, a CSV of 1 GiB 4 GB).

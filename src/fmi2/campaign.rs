@@ -82,7 +82,7 @@ fn case_json(case: &Case, base: &Problem, hydro_database: &str) -> Json {
     let runs = case
         .problem
         .check()
-        .and_then(|_| case.problem.reserve_recorded(&mut Vec::<()>::new()));
+        .and_then(|_| crate::reserve_recorded(&case.problem, &mut Vec::<()>::new()));
     if let Err(e) = runs {
         document["refused"] = json!(e.to_string());
     }

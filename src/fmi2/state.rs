@@ -50,11 +50,9 @@ use crate::simulation::Snapshot;
 
 /// First bytes of a serialized state.
 pub const MAGIC: [u8; 4] = *b"SDFS";
-/// Version of the byte format; a state of any other version is refused. Version 2: the
-/// fingerprint is the serde-JSON FNV-1a of the problem (version 1 hashed its `Debug` text).
-/// Version 3: the state carries the parameters and the experiment, and a checksum (and no
-/// terminated flag: the FMU never ends a run itself). Version 4: whether the master set each
-/// parameter (an unset one takes the configuration's value).
+/// Version of the byte format of the module documentation; a state of any other version is
+/// refused (its bytes would be read as other fields). Raised whenever a field is added,
+/// removed or reinterpreted.
 pub const FORMAT_VERSION: u32 = 4;
 /// Bytes of the fixed fields before the parameters (magic to the parameter count).
 const FIXED_BYTES: usize = 4 + 4 + 8 + 2 + 8 + 24 + 8 + 1 + 8 + 4;
@@ -540,8 +538,8 @@ impl<'a> Reader<'a> {
 /// records (sea, seed, platform, drift table, run) changes it. Where the configuration came
 /// from (embedded, resources, a file at any path) does not enter, only its content, so a
 /// state moves between processes that unpacked the FMU in different places.
-pub fn fingerprint(config: &Problem) -> u64 {
-    crate::fingerprint::fingerprint(config)
+pub fn fingerprint(problem: &Problem) -> u64 {
+    crate::fingerprint::fingerprint(problem)
 }
 
 #[cfg(test)]

@@ -1,10 +1,10 @@
-//! The depth kernel of the drag kinematics in a few terms (issue #16).
+//! The depth kernel of the drag kinematics in a few terms.
 //!
 //! Strip j of a column sits at the stretched level z_j = -d + (j + 1/2) d / n
 //! (`kinematics.rs`), and its horizontal velocity is
 //!   u_j(t) = Re sum_i A_i K_ij e^{i omega_i t},   K_ij = omega_i e^{k_i z_j},  k_i = omega_i^2 / g,
-//! with A_i the column's direction sums (x and y components, deep water, physics.md
-//! section 6). K is smooth in z and numerically of low rank. With the weights
+//! with A_i the column's direction sums (x and y components, deep water,
+//! docs/theory.md#viscous-drag). K is smooth in z and numerically of low rank. With the weights
 //! p_i = E(|A_x,i|^2 + |A_y,i|^2) = E sum_k |a_{i,k}|^2 (the same for every column, block and
 //! seed: [`WaveComponents::expected_power`]), the Gram matrix G = K^T diag(p) K
 //! (strips x strips) is, by Parseval over the record, the expected record mean of

@@ -1,6 +1,6 @@
 //! Interaction between the directions of a short-crested sea: the cross-direction terms of
 //! the slowly varying force, by a Newman-type approximation at FFT cost (E&S 3, 4;
-//! physics.md section 4).
+//! docs/theory.md#the-slowly-varying-force).
 //!
 //! # The double sum
 //!
@@ -55,10 +55,10 @@ use crate::problem::Problem;
 use crate::sea_state::{Direction, FrequencyGrid, WaveComponents};
 use rustfft::num_complex::Complex64;
 
-/// The bi-directional drift at the sea's directions that `config` asks for, or `None`
+/// The bi-directional drift at the sea's directions that `problem` asks for, or `None`
 /// when there is nothing to add (interaction off, or one direction).
 pub fn direction_pairs(
-    config: &Problem,
+    problem: &Problem,
     grid: &FrequencyGrid,
     directions: &[Direction],
 ) -> Result<Option<DirectionPairs>> {
@@ -67,20 +67,22 @@ pub fn direction_pairs(
         return Ok(None);
     }
     let band = (grid.omega(0), grid.omega(grid.count - 1));
-    match config.interaction() {
+    match problem.interaction() {
         Interaction::None => Ok(None),
         Interaction::MeanDirection => {
-            mean_direction_pairs(&config.hydro.drift, band, &headings).map(Some)
+            mean_direction_pairs(&problem.hydro.drift, band, &headings).map(Some)
         }
         Interaction::Bidirectional | Interaction::Auto => {
-            let source = config.hydro.bidirectional.as_ref().ok_or_else(|| {
+            let source = problem.hydro.bidirectional.as_ref().ok_or_else(|| {
                 Error::invalid(
                     "model.interaction",
                     Interaction::Bidirectional.word(),
                     "the drift source has no bi-directional drift",
                 )
             })?;
-            source.pairs(&config.environment, band, &headings).map(Some)
+            source
+                .pairs(&problem.environment, band, &headings)
+                .map(Some)
         }
     }
 }

@@ -1,5 +1,5 @@
 //! Fast (wave-frequency) kinematics at the columns, precomputed as records for the Morison
-//! drag (E&S 8, 9; physics.md section 6).
+//! drag (E&S 8, 9; docs/theory.md#viscous-drag).
 //!
 //! Deep-water linear theory, at the columns' mean positions with the body at zero yaw:
 //!   eta_c(t) = Re sum a_n e^{-i k_n (x_c cos b + y_c sin b)} e^{i omega_n t},
@@ -12,11 +12,14 @@
 //! z'_j = -d + (j + 1/2) d / n, so its velocity record is computed exactly once, and the
 //! velocity at the surface is the linear-theory value at z = 0.
 
+mod recombination;
+
 use super::depth_basis::DepthBasis;
 use super::record::SamplePoint;
 use super::synthesis::Synthesizer;
 use crate::model::Cylinder;
 use crate::sea_state::{Direction, WaveComponents};
+use recombination::{lay_out_weights, recombine_row, RowLayout};
 use rustfft::num_complex::{Complex32, Complex64};
 use std::sync::Arc;
 
@@ -142,12 +145,11 @@ pub struct KinematicsWork {
     /// and imaginary parts), in single precision.
     eta: Vec<Complex32>,
     terms: Vec<Complex32>,
-    /// V_jq of the basis in single precision, each twice (for u_x and u_y; once in waves
-    /// along x), in blocks of [`LANES`] floats, in chunks of [`BLOCKS_AT_ONCE`] blocks,
-    /// term-major within a chunk.
+    /// V_jq of the basis in single precision, laid out for the recombination kernel
+    /// (`recombination::lay_out_weights`).
     mix: Vec<f32>,
     /// One row's strip velocities, interleaved (u_x, u_y) (u_x alone in waves along x),
-    /// padded to whole [`LANES`].
+    /// padded to whole blocks (`RowLayout::width`).
     row: Vec<f32>,
     /// One sample of every term.
     samples: Vec<Complex32>,
@@ -312,22 +314,14 @@ impl KinematicsWork {
                 synth.append_two_real_series(&self.cx, &self.cy, terms);
             }
         }
-        // V_jq for u_x and u_y (the row's interleaved layout), or for u_x alone in waves
-        // along x, padded with zeros to whole blocks of LANES floats; the blocks in chunks
-        // of BLOCKS_AT_ONCE, each chunk term-major, then block (as `recombine` reads them).
-        let per_strip = if along_x { 1 } else { 2 };
-        let width = LANES * (per_strip * strips).div_ceil(LANES);
-        self.mix.clear();
-        for first in (0..width).step_by(BLOCKS_AT_ONCE * LANES) {
-            let floats = first..(first + BLOCKS_AT_ONCE * LANES).min(width);
-            for q in 0..rank {
-                let v = basis.mix(q);
-                let repeated = floats
-                    .clone()
-                    .map(|i| v.get(i / per_strip).map_or(0.0, |&v| v as f32));
-                self.mix.extend(repeated);
-            }
-        }
+        // V_jq laid out for the kernel (each twice, for u_x and u_y; once along x).
+        let layout = if along_x {
+            RowLayout::AlongX
+        } else {
+            RowLayout::Interleaved
+        };
+        lay_out_weights(layout, strips, rank, |q| basis.mix(q), &mut self.mix);
+        let width = layout.width(strips);
         let mut rows = self.spare_rows.pop().unwrap_or_default();
         if Arc::get_mut(&mut rows).is_none() {
             // Still held by records cloned from these (a cloned simulation): new rows.
@@ -344,9 +338,8 @@ impl KinematicsWork {
         // Row m: the elevation, then u_j(m) = sum_q V_jq g_q(m) for every strip j, in
         // single precision (the terms' rounding and the sum's, a few 1e-8 relative, are
         // below the storage's own and the truncation's 1e-6), summed over q in order.
-        // The row is accumulated as interleaved (u_x, u_y) floats (u_x alone in waves along
-        // x, u_y = 0), BLOCKS_AT_ONCE blocks of LANES at a time in registers: lane i of a
-        // block takes mix * (re, im, re, im, ...)_q (re, re, ... along x).
+        // The row is interleaved (u_x, u_y) floats (u_x alone in waves along x, u_y = 0),
+        // recombined by the register-blocked kernel (kinematics/recombination.rs).
         let eta = self.eta[group / 2 * n..][..n].iter();
         let real = group.is_multiple_of(2);
         for (m, eta) in eta.enumerate() {
@@ -359,84 +352,17 @@ impl KinematicsWork {
                     self.terms[q * n + m]
                 };
             }
+            recombine_row(layout, &self.mix, &self.samples, &mut self.row);
             if along_x {
-                recombine_row(&self.mix, &self.samples, real_part, &mut self.row);
                 let u = self.row[..strips].iter();
                 buffer.extend(u.map(|&u| Complex32::new(u, 0.0)));
             } else {
-                recombine_row(&self.mix, &self.samples, interleaved, &mut self.row);
                 let u = self.row[..2 * strips].chunks_exact(2);
                 buffer.extend(u.map(|u| Complex32::new(u[0], u[1])));
             }
         }
         rows
     }
-}
-
-/// Floats of one block of a row's strip velocities (two SSE registers).
-const LANES: usize = 8;
-/// Blocks the recombination sums at a time (eight SSE registers, which the compiler keeps
-/// over the terms); 4 is the most that fits beside the operands.
-const BLOCKS_AT_ONCE: usize = 4;
-
-/// One row's strip velocities from the terms' `samples`, [`BLOCKS_AT_ONCE`] blocks of
-/// `row` at a time ([`recombine`]). `pattern` (a function item, so that each layout gets
-/// its own inlined loop) spreads a sample over a block. A basis of rank 0 (a sea without
-/// power) leaves the velocities zero.
-#[inline(always)]
-fn recombine_row(
-    mut mix: &[f32],
-    samples: &[Complex32],
-    pattern: impl Fn(Complex32) -> [f32; LANES] + Copy,
-    row: &mut [f32],
-) {
-    for out in row.chunks_mut(BLOCKS_AT_ONCE * LANES) {
-        let (this, rest) = mix.split_at(samples.len() * out.len());
-        mix = rest;
-        match out.len() / LANES {
-            BLOCKS_AT_ONCE => recombine::<BLOCKS_AT_ONCE>(this, samples, pattern, out),
-            3 => recombine::<3>(this, samples, pattern, out),
-            2 => recombine::<2>(this, samples, pattern, out),
-            _ => recombine::<1>(this, samples, pattern, out),
-        }
-    }
-}
-
-/// `out` (K blocks of [`LANES`] floats) = sum over the terms q, in order, of the term's
-/// sample as `pattern` spreads it over a block, times its K blocks of `mix` (term-major,
-/// then block).
-#[inline(always)]
-fn recombine<const K: usize>(
-    mix: &[f32],
-    samples: &[Complex32],
-    pattern: impl Fn(Complex32) -> [f32; LANES],
-    out: &mut [f32],
-) {
-    let mut sum = [[0.0f32; LANES]; K];
-    for (mix, &g) in mix.chunks_exact(K * LANES).zip(samples) {
-        let pattern = pattern(g);
-        for (sum, mix) in sum.iter_mut().zip(mix.chunks_exact(LANES)) {
-            for ((s, &v), &p) in sum.iter_mut().zip(mix).zip(&pattern) {
-                *s += p * v;
-            }
-        }
-    }
-    // Block by block: a copy of a known length, kept inline.
-    for (out, sum) in out.chunks_exact_mut(LANES).zip(&sum) {
-        out.copy_from_slice(sum);
-    }
-}
-
-/// A sample over a block of interleaved (u_x, u_y) floats: (re, im, re, im, ...).
-#[inline(always)]
-fn interleaved(g: Complex32) -> [f32; LANES] {
-    std::array::from_fn(|i| if i % 2 == 0 { g.re } else { g.im })
-}
-
-/// A sample over a block of u_x floats (waves along x): (re, re, ...).
-#[inline(always)]
-fn real_part(g: Complex32) -> [f32; LANES] {
-    [g.re; LANES]
 }
 
 /// Clears `v` and fills it from `values` (its capacity kept).

@@ -1,6 +1,8 @@
-//! Everything that depends only on time, computed once at initialisation for the body at
-//! its mean position and zero yaw (E&S section 2): the wave elevation, the slowly varying
-//! wave force D(t), the wave-drift damping B(t), and the columns' fast kinematics.
+//! Everything that depends only on time, for the body at its mean position and zero yaw
+//! (E&S section 2): the wave elevation, the slowly varying wave force D(t), the wave-drift
+//! damping B(t), and the columns' fast kinematics. They are made block by block as the run
+//! reaches them (`stream`: one block at initialisation, the next when a step enters it), so
+//! a run of any length holds one block's records (docs/theory.md#open-ended-records).
 
 mod depth_basis;
 mod directional;

@@ -1,5 +1,6 @@
 //! Slowly varying records by Newman's approximation, evaluated as products of single sums
-//! with FFTs (E&S 3, 4; physics.md sections 4, 5).
+//! with FFTs (E&S 3, 4; docs/theory.md#the-slowly-varying-force,
+//! docs/theory.md#wave-drift-damping-and-current).
 //!
 //! The full low-frequency double sum is
 //!   F(t) = Re sum_i sum_j a_i a_j* T_ij e^{i (omega_i - omega_j) t}.

@@ -1,5 +1,5 @@
 //! The slowly varying force from the full difference-frequency QTF at FFT cost
-//! (physics.md section 4; issue #5 part 1).
+//! (docs/theory.md#the-slowly-varying-force).
 //!
 //! Definition (WAMIT's and the crate's convention, e^{i omega t}; the WAMIT import stores
 //! the file's Re + i Im unchanged):

@@ -2,7 +2,7 @@
 //!
 //! A record holds N samples at t_m = t0 + m dt. Values between samples come from 4-point
 //! Lagrange (cubic) interpolation, exact at the samples and O(dt^4) accurate between them,
-//! so RK4's fourth order survives any step (physics.md section 7). With the default
+//! so RK4's fourth order survives any step (docs/theory.md#equations-of-motion). With the default
 //! sampling dt = h/2 every RK4 stage lands on a sample and the records are used exactly.
 
 use crate::error::{Error, Result};

@@ -1,4 +1,4 @@
-//! Sums of wave components at every sample by one inverse FFT (E&S 6; physics.md 3).
+//! Sums of wave components at every sample by one inverse FFT (E&S 6; docs/theory.md#random-waves).
 //!
 //! Convention: `series(first, c)[m] = sum_j c_j e^{i omega_{first+j} m dt}`
 //! = sum_j c_j e^{2 pi i (first + j) m / N}: RustFFT's inverse transform, unnormalised.

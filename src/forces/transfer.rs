@@ -1,5 +1,6 @@
 //! Drift and damping coefficients interpolated onto the simulation's frequency grid, one
-//! set per wave direction (physics.md sections 4, 5).
+//! set per wave direction (docs/theory.md#the-slowly-varying-force,
+//! docs/theory.md#wave-drift-damping-and-current).
 
 use crate::error::Result;
 use crate::hydro::DriftTable;

@@ -1,5 +1,5 @@
 //! Morison drag on vertical columns in strips from the keel to the instantaneous free
-//! surface (E&S 8, 9; physics.md section 6).
+//! surface (E&S 8, 9; docs/theory.md#viscous-drag).
 //!
 //! On a strip of height dz and diameter D, with U the column's slow velocity relative to
 //! the current (body motion minus current, including the yaw-rate term) and u the fast

@@ -1,5 +1,6 @@
-//! Wave force and damping records that follow the body's yaw (issue #5 part 3; physics.md
-//! section 4, last bullet; E&S fig. 2 estimate about 10 % error at 5 deg if ignored).
+//! Wave force and damping records that follow the body's yaw
+//! (docs/theory.md#the-slowly-varying-force; E&S fig. 2 estimate about 10 % error at 5 deg if
+//! ignored).
 //!
 //! Convention: with the body at yaw theta, a wave propagating towards beta (inertial frame)
 //! meets it at the relative heading beta - theta (the drift table's heading, from body x),

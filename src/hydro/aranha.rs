@@ -1,5 +1,5 @@
 //! Wave-drift damping from the zero-speed drift by Aranha's formula (Aranha 1994,
-//! J. Fluid Mech. 275; deep water; physics.md section 5).
+//! J. Fluid Mech. 275; deep water; docs/theory.md#wave-drift-damping-and-current).
 //!
 //! For the force (or moment) F_i(omega, beta) of waves propagating in direction beta
 //! relative to the body, and a slow body velocity (U_1, U_2) in the body frame,

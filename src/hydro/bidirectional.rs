@@ -1,5 +1,6 @@
 //! Bi-directional mean drift T(omega; beta_p, beta_q): the data that couples the wave
-//! components of two directions of a short-crested sea (physics.md section 4; E&S 3).
+//! components of two directions of a short-crested sea (docs/theory.md#the-slowly-varying-force;
+//! E&S 3).
 //!
 //! Convention (as [`super::columns::BidirectionalDrift`]): two regular waves of one
 //! frequency with complex amplitudes a_p, a_q (project convention Re[a e^{i omega t}], phase

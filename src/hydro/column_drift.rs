@@ -1,5 +1,5 @@
 //! Closed-form mean wave-drift force on fixed vertical circular columns in regular waves
-//! (physics.md section 8), and a drift table for an array of such columns.
+//! (docs/theory.md#checks-with-known-answers), and a drift table for an array of such columns.
 //!
 //! Single column of radius a in waves of amplitude A and wavenumber k: the mean horizontal
 //! force along the wave direction is F = rho g A^2 a C(ka), with C from Havelock (1940) in
@@ -13,9 +13,11 @@
 //!
 //! [`isolated_columns_table`] is a closed-form APPROXIMATION used for the interim default
 //! platform: every column is treated as an isolated, fixed, infinitely deep cylinder in deep
-//! water. It ignores the hydrodynamic interaction between columns (physics.md section 9),
+//! water. It ignores the hydrodynamic interaction between columns
+//! (docs/theory.md#columns-linton-and-evans),
 //! the finite draft and any pontoons, and the body motions. Because the real column is
-//! truncated, it over-predicts the drift at low k*draft (physics.md section 9: the
+//! truncated, it over-predicts the drift at low k*draft (docs/theory.md#columns-linton-and-evans:
+//! the
 //! truncated column carries roughly a fraction 1 - e^{-k draft} of it); the column drafts
 //! are not used.
 
@@ -49,7 +51,7 @@ const LONG_WAVE_KA: f64 = 1e-6;
 pub const MAX_KA: f64 = 200.0;
 
 /// F_mean / (rho g A^2 a) on a fixed vertical circular column by the near-field series
-/// (physics.md section 8; Havelock 1940, MacCamy & Fuchs 1954 in finite depth):
+/// (docs/theory.md#checks-with-known-answers; Havelock 1940, MacCamy & Fuchs 1954 in finite depth):
 ///
 /// C = 4/(pi^2 (ka)^3) * depth_factor
 ///     * sum_{n>=0} (1 - n(n+1)/(ka)^2)^2 / (|H'_n(ka)|^2 |H'_{n+1}(ka)|^2),
@@ -75,11 +77,12 @@ pub fn havelock_drift_coefficient(ka: f64, depth_factor: f64) -> f64 {
     4.0 / (PI * PI * ka2 * ka) * depth_factor * sum
 }
 
-/// F_mean / (rho g A^2 a) by the far-field momentum flux (physics.md section 8):
+/// F_mean / (rho g A^2 a) by the far-field momentum flux
+/// (docs/theory.md#checks-with-known-answers):
 /// F_mean = (2 rho g A^2 / k) (c_g/c) sum_{n>=0} |B_n - B_{n+1}|^2, B_n = J'_n(ka)/H'_n(ka),
 /// so C = (2/(ka)) (c_g/c) sum_{n>=0} |B_n - B_{n+1}|^2 (deep water: c_g/c = 1/2).
 ///
-/// Normalisation: the formula as printed in physics.md is correct, with the sum over
+/// Normalisation: the formula of docs/theory.md#checks-with-known-answers holds, with the sum over
 /// n >= 0 only. By A&S 9.1.27 and the Wronskian A&S 9.1.15,
 /// J'_n Y'_{n+1} - J'_{n+1} Y'_n = -(2/(pi ka)) (1 - n(n+1)/(ka)^2), hence
 /// |B_n - B_{n+1}|^2 = 4/(pi^2 (ka)^2) (1 - n(n+1)/(ka)^2)^2 / (|H'_n|^2 |H'_{n+1}|^2):

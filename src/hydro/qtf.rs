@@ -1,6 +1,7 @@
 //! The full difference-frequency QTF in memory, per unit wave amplitude squared:
 //! T(w_i, w_j) for one DOF at one uni-directional heading, with
-//! F(t) = Re sum_i sum_j a_i a_j* T(w_i, w_j) e^{i (w_i - w_j) t} (physics.md section 4; the
+//! F(t) = Re sum_i sum_j a_i a_j* T(w_i, w_j) e^{i (w_i - w_j) t}
+//! (docs/theory.md#the-slowly-varying-force; the
 //! crate's convention e^{i omega t}). Surge and sway in N/m^2, yaw in N m/m^2, body frame.
 //! The database stores it as real and imaginary parts (`hydro::io::database`).
 
@@ -22,7 +23,7 @@ pub struct Qtf {
 /// T(w_i, w_j; beta1, beta2) of one DOF for one heading pair: uni-directional when
 /// beta1 = beta2, else the bi-directional QTF of waves at w_i from beta1 and at w_j from
 /// beta2, F(t) = Re sum_{i,k} sum_{j,l} a_ik a_jl* T(w_i, w_j; b_k, b_l) e^{i (w_i - w_j) t}
-/// (physics.md section 4).
+/// (docs/theory.md#the-slowly-varying-force).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct QtfBlock {
     pub dof: Dof,

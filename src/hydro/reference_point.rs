@@ -4,7 +4,7 @@
 //!
 //! A code may take moments about a reference point r = (x_r, y_r, z_r) other than the body
 //! origin: NEMOH's Nemoh.cal names one per generalised force (the OC3 spar's moments are
-//! about (0, 0, -78) m). In the horizontal plane (physics.md section 1; surge, sway, yaw):
+//! about (0, 0, -78) m). In the horizontal plane (docs/theory.md#conventions; surge, sway, yaw):
 //! - the yaw moment about the vertical axis through r is that about the origin less the
 //!   moment of the force about the origin's axis: M_o = M_r + x_r F_y - y_r F_x. A point on
 //!   the vertical axis through the origin (x_r = y_r = 0, any z_r) changes nothing;

@@ -33,7 +33,7 @@ modes! {
     }
 
     /// How the slowly varying wave force is computed from second-order theory
-    /// (`[model] second_order`; physics.md 4).
+    /// (`[model] second_order`; docs/theory.md#the-slowly-varying-force).
     SecondOrder {
         /// Newman's approximation from the drift table's diagonal, in the form `newman`.
         Newman = "newman": "Newman's approximation from the drift table's diagonal",
@@ -44,7 +44,7 @@ modes! {
     }
 
     /// Which form of Newman's approximation builds the slowly varying records
-    /// (`[model] newman`; physics.md 4).
+    /// (`[model] newman`; docs/theory.md#the-slowly-varying-force).
     NewmanForm {
         /// The paper's form (E&S 4): T_ij = sign * sqrt(T_ii T_jj) where the signs agree, 0
         /// otherwise.
@@ -54,8 +54,8 @@ modes! {
     }
 
     /// Whether the components of different directions of a short-crested sea interact in the
-    /// slowly varying force (`[model] interaction`; physics.md section 4;
-    /// `forces::directional`).
+    /// slowly varying force (`[model] interaction`;
+    /// docs/theory.md#the-slowly-varying-force; `forces::directional`).
     Interaction in "interaction", keeping "configuration": "keep the configuration's" {
         /// The default: [`Interaction::Bidirectional`] when the drift source has
         /// bi-directional drift, else [`Interaction::MeanDirection`]. Without cross terms the
@@ -73,7 +73,7 @@ modes! {
     }
 
     /// Where the wave-drift damping coefficients b_ij(omega, beta) come from
-    /// (`[model] drift_damping`; physics.md 5).
+    /// (`[model] drift_damping`; docs/theory.md#wave-drift-damping-and-current).
     DriftDamping in "driftDamping" {
         /// No wave-drift damping.
         Off = "off": "no wave-drift damping",

@@ -46,11 +46,11 @@ impl Case {
     /// seed (the problem with seed 0, and the transient), as 16 hex digits: the per-run file
     /// stores it so that a resumed campaign refuses to mix configurations.
     pub fn fingerprint(&self) -> String {
-        let mut config = self.problem.clone();
-        config.sea.seed = 0;
+        let mut problem = self.problem.clone();
+        problem.sea.seed = 0;
         format!(
             "{:016x}",
-            crate::fingerprint::fingerprint(&(&config, self.transient))
+            crate::fingerprint::fingerprint(&(&problem, self.transient))
         )
     }
 }
@@ -95,10 +95,10 @@ fn run_seed_unless(
     seed: u64,
     stop: &AtomicBool,
 ) -> Result<Option<[DofStats; 3]>> {
-    let mut config = case.problem.clone();
-    config.sea.seed = seed;
-    let dt = config.run.time_step;
-    let Some(records) = positions(Simulation::with_plan(config, plan)?, stop)? else {
+    let mut problem = case.problem.clone();
+    problem.sea.seed = seed;
+    let dt = problem.run.time_step;
+    let Some(records) = positions(Simulation::with_plan(problem, plan)?, stop)? else {
         return Ok(None);
     };
     let mut out = [DofStats {
@@ -124,12 +124,12 @@ fn run_seed_unless(
     Ok(Some(out))
 }
 
-/// Simulates `config` from its initial condition for its duration with no external force
+/// Simulates `problem` from its initial condition for its duration with no external force
 /// and returns the records of X (m), Y (m) and theta (rad), sampled every time step from
 /// t = start_time (the initial state) to the end.
-pub fn simulate_positions(config: Problem) -> Result<[Vec<f64>; 3]> {
+pub fn simulate_positions(problem: Problem) -> Result<[Vec<f64>; 3]> {
     let never = AtomicBool::new(false);
-    let records = positions(Simulation::new(config)?, &never)?;
+    let records = positions(Simulation::new(problem)?, &never)?;
     Ok(records.expect("a run that is never stopped ends"))
 }
 
@@ -139,7 +139,7 @@ fn positions(mut sim: Simulation, stop: &AtomicBool) -> Result<Option<[Vec<f64>;
     let mut records: [Vec<f64>; 3] = Default::default();
     let mut steps = 0;
     for record in &mut records {
-        steps = sim.problem().reserve_recorded(record)?;
+        steps = crate::reserve_recorded(sim.problem(), record)?;
     }
     let mut push = |q: [f64; 3]| records.iter_mut().zip(q).for_each(|(r, v)| r.push(v));
     push(sim.position());
@@ -268,9 +268,9 @@ impl<'a> CasePlans<'a> {
             .lock()
             .map_err(|_| "a run panicked while making this case's plan".to_string())?;
         if slot.is_none() {
-            let config = &self.cases[case].problem;
-            config.check().map_err(|e| e.to_string())?;
-            *slot = Some(RecordPlan::of_checked(config).map(Arc::new));
+            let problem = &self.cases[case].problem;
+            problem.check().map_err(|e| e.to_string())?;
+            *slot = Some(RecordPlan::of_checked(problem).map(Arc::new));
         }
         Ok(slot.as_ref().expect("made above").clone())
     }

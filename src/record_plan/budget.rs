@@ -1,5 +1,5 @@
 //! The memory a problem's records take, estimated before any of it is allocated, against
-//! the run's memory limit (`run.memory_limit_gb`, [`crate::scenario::limits`]; issue #15).
+//! the run's memory limit (`run.memory_limit_gb`, [`crate::scenario::limits`]).
 //!
 //! The estimate adds the buffers the plan and a simulation hold at their peak, from the
 //! sizes they are made with: L samples per record (the stream segment's span at h/2), G

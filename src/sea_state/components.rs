@@ -1,5 +1,5 @@
 //! Random wave components by filtering seeded white Gaussian noise (E&S 5, 6;
-//! physics.md section 3).
+//! docs/theory.md#random-waves).
 //!
 //! Convention: the elevation at the body origin is eta(t) = Re sum_n a_n e^{i omega_n tau},
 //! tau = t - t0, with omega_n = n d_omega and d_omega = 2 pi / (N dt). A component that
@@ -170,7 +170,7 @@ impl WaveComponents {
     /// a_{n,k} = sqrt(S(omega_n) w_k d_omega) (xi + i xi'), with xi, xi' independent
     /// standard normal from one xoshiro256++ stream seeded by `sea.seed`, drawn direction by
     /// direction, in increasing frequency. So |a| is Rayleigh, its phase uniform and
-    /// E|a|^2 = 2 S w_k d_omega (physics.md section 3).
+    /// E|a|^2 = 2 S w_k d_omega (docs/theory.md#random-waves).
     pub fn generate(sea: &SeaState, grid: FrequencyGrid) -> Self {
         Self::generate_block(sea, grid, 0)
     }

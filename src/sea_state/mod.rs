@@ -1,5 +1,6 @@
 //! The sea state: spectrum, directional spreading, and the random wave components made
-//! from them by filtering seeded white Gaussian noise (E&S 5, 6; physics.md sections 2, 3).
+//! from them by filtering seeded white Gaussian noise (E&S 5, 6; docs/theory.md#sea-state,
+//! docs/theory.md#random-waves).
 
 mod components;
 mod spectrum;

@@ -1,4 +1,4 @@
-//! One-sided wave spectra S(omega) in m^2 s/rad (physics.md section 2).
+//! One-sided wave spectra S(omega) in m^2 s/rad (docs/theory.md#sea-state).
 
 use crate::error::{require_finite, require_positive, Error, Result};
 use crate::model::SpectrumKind;
@@ -98,7 +98,7 @@ impl Spectrum {
     }
 
     /// Steepness Hs / L_p of the sea, L_p = 2 pi g / wp^2 the deep-water length of the peak
-    /// wave (physics.md section 2), for gravity `g` in m/s^2.
+    /// wave (docs/theory.md#sea-state), for gravity `g` in m/s^2.
     pub fn steepness(&self, g: f64) -> f64 {
         let wp = self.peak_frequency();
         self.significant_height() * wp * wp / (2.0 * std::f64::consts::PI * g)

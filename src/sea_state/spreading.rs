@@ -1,5 +1,5 @@
 //! Directional spreading and its discretisation into N_beta directions
-//! (E&S 11; DNV-RP-C205 sec. 3.5.8; physics.md section 2).
+//! (E&S 11; DNV-RP-C205 sec. 3.5.8; docs/theory.md#sea-state).
 
 use crate::error::{require_positive, Result};
 use serde::Serialize;

@@ -1,4 +1,4 @@
-//! The bounds of a physical state (issue #15), and the cause of a state or an output that
+//! The bounds of a physical state, and the cause of a state or an output that
 //! leaves them: which force, input or step made it.
 //!
 //! A restored state (an FMU state, a snapshot) beyond these bounds is refused; a step that

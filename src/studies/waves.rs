@@ -15,18 +15,18 @@ pub struct ElevationRecord {
     pub samples: Vec<f64>,
 }
 
-/// The elevation record of `config`'s sea (its seed) over `length` seconds: the elevation
+/// The elevation record of `problem`'s sea (its seed) over `length` seconds: the elevation
 /// records that [`Simulation::new`] synthesises (E&S 6: one inverse FFT per block of the
 /// record stream, consecutive blocks joined by the cross-fade of `forces::stream`), taken
 /// segment by segment, the first `length / dt` samples from t = 0. The drag kinematics are
 /// not built (they do not change the elevation). Errors: `length` not positive, or what
 /// [`Simulation::new`] refuses.
-pub fn elevation_record(config: &Problem, length: f64) -> Result<ElevationRecord> {
+pub fn elevation_record(problem: &Problem, length: f64) -> Result<ElevationRecord> {
     require_positive("study.record_length", length)?;
-    let mut config = config.clone();
-    config.run.duration = length;
-    config.model.drag = DragModel::Off;
-    let mut sim = Simulation::new(config)?;
+    let mut problem = problem.clone();
+    problem.run.duration = length;
+    problem.model.drag = DragModel::Off;
+    let mut sim = Simulation::new(problem)?;
     let block = sim.segments().block;
     let (start_time, dt) = (sim.grid().start_time, sim.grid().dt);
     let count = (length / dt).round() as usize;

@@ -6,14 +6,14 @@ use slowdrift::hydro::{DriftRow, DriftTable};
 use slowdrift::sea_state::{Spectrum, Spreading};
 use slowdrift::{Error, Problem, Simulation};
 
-fn config() -> Problem {
-    base_config(200.0, 1.0, 1)
+fn valid_problem() -> Problem {
+    base_problem(200.0, 1.0, 1)
 }
 
 /// `Simulation::new` must fail with `InvalidValue` naming `field` and `value`, and the
 /// message must show both.
-fn refused(config: Problem, field: &str, value: &str) -> Error {
-    let err = Simulation::new(config).expect_err("must be refused");
+fn refused(problem: Problem, field: &str, value: &str) -> Error {
+    let err = Simulation::new(problem).expect_err("must be refused");
     match &err {
         Error::InvalidValue {
             field: f, value: v, ..
@@ -29,14 +29,14 @@ fn refused(config: Problem, field: &str, value: &str) -> Error {
 }
 
 fn with(edit: impl FnOnce(&mut Problem)) -> Problem {
-    let mut c = config();
+    let mut c = valid_problem();
     edit(&mut c);
     c
 }
 
 #[test]
 fn the_base_configuration_is_accepted() {
-    assert!(Simulation::new(config()).is_ok());
+    assert!(Simulation::new(valid_problem()).is_ok());
 }
 
 #[test]
@@ -400,7 +400,7 @@ fn a_time_step_too_large_for_the_wave_band_is_refused() {
 /// A time before the run's start has no records: a restore there is refused, naming it.
 #[test]
 fn a_time_before_the_start_is_refused_and_keeps_the_state() {
-    let mut c = base_config(50.0, 1.0, 4);
+    let mut c = base_problem(50.0, 1.0, 4);
     c.run.start_time = 100.0;
     let mut sim = Simulation::new(c).unwrap();
     sim.step([0.0; 3]).unwrap();
@@ -423,7 +423,7 @@ fn a_time_before_the_start_is_refused_and_keeps_the_state() {
 
 #[test]
 fn non_finite_external_forces_are_refused_and_keep_the_state() {
-    let mut sim = Simulation::new(config()).unwrap();
+    let mut sim = Simulation::new(valid_problem()).unwrap();
     for _ in 0..5 {
         sim.step([1.0e5, 0.0, 0.0]).unwrap();
     }
@@ -458,7 +458,7 @@ fn non_finite_external_forces_are_refused_and_keep_the_state() {
 
 #[test]
 fn non_positive_advance_intervals_are_refused() {
-    let mut sim = Simulation::new(config()).unwrap();
+    let mut sim = Simulation::new(valid_problem()).unwrap();
     sim.step([0.0; 3]).unwrap();
     let before = sim.snapshot();
     for (interval, text) in [

@@ -1,4 +1,4 @@
-//! The memory budget (issue #15): the estimate that a configuration is checked against
+//! The memory budget: the estimate that a configuration is checked against
 //! before anything is allocated bounds what making its simulation really takes (the peak
 //! the test binary's counting allocator measures on this thread), and is not so loose that
 //! it refuses what would fit; sizes beyond the bounds and the limit are refused with the
@@ -6,8 +6,7 @@
 
 use crate::common::oc4_root_or_skip;
 use crate::counting::{live_bytes, peak_bytes, reset_peak};
-use slowdrift::hydro::io::database::HydroDatabase;
-use slowdrift::hydro::io::wamit::WamitOptions;
+use slowdrift::hydro::io::wamit::{self, WamitOptions};
 use slowdrift::model::{DragModel, Interaction, SecondOrder, YawFollowing};
 use slowdrift::problem::default_problem;
 use slowdrift::sea_state::Spreading;
@@ -69,7 +68,7 @@ fn the_estimate_bounds_the_peak_of_making_a_simulation() {
     });
     cases.push(("40 yaw-following headings", p));
     if let Some(root) = oc4_root_or_skip() {
-        let database = HydroDatabase::from_wamit(&root, &WamitOptions::default())
+        let database = wamit::import(&root, &WamitOptions::default())
             .unwrap()
             .database;
         let mut p = crate::full_qtf::oc4_config(&database, SecondOrder::FullQtf, 1);

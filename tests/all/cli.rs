@@ -669,7 +669,7 @@ fn the_memory_limit_is_a_cli_option() {
         .contains("--memory-limit-gb -1: must be a positive number of GB"));
 }
 
-/// `--out` is checked before any work (issue #27): a directory where a file is written, a
+/// `--out` is checked before any work: a directory where a file is written, a
 /// file where a study's directory is, a directory that does not exist and a place nobody
 /// can write (sysfs takes no new file, even from root) are refused at once, naming `--out`
 /// and the path; nothing runs and nothing is written (`montecarlo --out DIR` used to run

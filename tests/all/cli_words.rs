@@ -1,4 +1,4 @@
-//! The command line's messages in the user's words (issue #27 part 4): a setting named as
+//! The command line's messages in the user's words: a setting named as
 //! the user wrote it with its file and line, its value as written (1e308, not 309 digits or
 //! `inf`), the modes in the file's words, advice a user can type, and the settings a
 //! running simulation blames (a database whose values make the state diverge) with the

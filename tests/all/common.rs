@@ -97,7 +97,7 @@ pub fn oscillator_platform(mass: f64, yaw_inertia: f64, periods: [f64; 3], zeta:
 }
 
 /// Head seas on an oscillator platform, Newman geometric, no drift damping, no drag.
-pub fn base_config(duration: f64, time_step: f64, seed: u64) -> Problem {
+pub fn base_problem(duration: f64, time_step: f64, seed: u64) -> Problem {
     Problem {
         environment: Environment::default(),
         sea: long_crested(jonswap(6.0, 10.0), seed),
@@ -136,12 +136,12 @@ pub fn simpson(f: impl Fn(f64) -> f64, a: f64, b: f64, panels: usize) -> f64 {
 }
 
 /// Frequency-domain variance of the surge of an oscillator platform (uncoupled surge:
-/// mass + A11, stiffness C11, linear damping B11) in the long-crested head sea of `config`
+/// mass + A11, stiffness C11, linear damping B11) in the long-crested head sea of `problem`
 /// driven by Newman's geometric force of the [`smooth_drift`] surge drift:
 /// var x = integral S_F(mu) |H(mu)|^2 dmu with S_F(mu) = 8 integral S(w) S(w + mu)
-/// T(w) T(w + mu) dw over the simulated band (physics.md section 8).
-pub fn oscillator_surge_variance(config: &Problem) -> f64 {
-    let (p, inertia) = (&config.platform, config.inertia().unwrap());
+/// T(w) T(w + mu) dw over the simulated band (docs/theory.md#checks-with-known-answers).
+pub fn oscillator_surge_variance(problem: &Problem) -> f64 {
+    let (p, inertia) = (&problem.platform, problem.inertia().unwrap());
     let (mass, stiffness, damping) = (
         inertia.mass + inertia.added_mass[0][0],
         p.stiffness[0][0],
@@ -149,8 +149,8 @@ pub fn oscillator_surge_variance(config: &Problem) -> f64 {
     );
     let transfer_squared =
         |mu: f64| 1.0 / ((stiffness - mass * mu * mu).powi(2) + (damping * mu).powi(2));
-    let (lo, hi) = config.sea.band();
-    let force_spectrum = surge_force_spectrum(config);
+    let (lo, hi) = problem.sea.band();
+    let force_spectrum = surge_force_spectrum(problem);
     simpson(
         |mu| force_spectrum(mu) * transfer_squared(mu),
         0.0,
@@ -160,12 +160,12 @@ pub fn oscillator_surge_variance(config: &Problem) -> f64 {
 }
 
 /// The one-sided spectrum of the slowly varying surge force of `smooth_drift` (Newman,
-/// geometric, positive T) in `config`'s sea: S_F(mu) = 8 integral S(w) S(w + mu) T(w)
-/// T(w + mu) dw over the simulated band (physics.md section 8).
-pub fn surge_force_spectrum(config: &Problem) -> impl Fn(f64) -> f64 + '_ {
+/// geometric, positive T) in `problem`'s sea: S_F(mu) = 8 integral S(w) S(w + mu) T(w)
+/// T(w + mu) dw over the simulated band (docs/theory.md#checks-with-known-answers).
+pub fn surge_force_spectrum(problem: &Problem) -> impl Fn(f64) -> f64 + '_ {
     let drift = |w: f64| smooth_drift(w, 0.0)[0];
-    let spectrum = &config.sea.spectrum;
-    let (lo, hi) = config.sea.band();
+    let spectrum = &problem.sea.spectrum;
+    let (lo, hi) = problem.sea.band();
     move |mu: f64| {
         8.0 * simpson(
             |w| spectrum.density(w) * spectrum.density(w + mu) * drift(w) * drift(w + mu),

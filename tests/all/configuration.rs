@@ -343,9 +343,9 @@ fn with_qtf_database(stem: &str, omegas: &[f64], heading_deg: f64, model: &str) 
     let name = json.file_name().expect("file name").to_string_lossy();
     let head = MINIMAL.split("[drift]").next().expect("drift section");
     let text = format!("{head}{model}\n[drift]\nsource = \"database\"\nfile = \"{name}\"\n");
-    let config = problem(&text, dir);
+    let resolved = problem(&text, dir);
     std::fs::remove_file(&json).expect("remove temporary file");
-    config
+    resolved
 }
 
 #[test]
@@ -353,10 +353,10 @@ fn full_qtf_mode_takes_the_database_qtf_and_names_what_is_missing() {
     // PM, Tp = 8 s: the default band is 0.39 .. 3.14 rad/s.
     let covering = [0.3, 1.0, 2.0, 3.5];
     let full = "[model]\nsecond_order = \"full-qtf\"\nqtf_tolerance = 1e-4";
-    let config = with_qtf_database("qtf-ok.json", &covering, 0.0, full).expect("valid");
-    assert_eq!(config.model.second_order, SecondOrder::FullQtf);
-    assert_eq!(config.model.qtf_tolerance, 1e-4);
-    assert_eq!(config.hydro.qtf.as_ref().map(|q| q.omegas.len()), Some(4));
+    let full_qtf = with_qtf_database("qtf-ok.json", &covering, 0.0, full).expect("valid");
+    assert_eq!(full_qtf.model.second_order, SecondOrder::FullQtf);
+    assert_eq!(full_qtf.model.qtf_tolerance, 1e-4);
+    assert_eq!(full_qtf.hydro.qtf.as_ref().map(|q| q.omegas.len()), Some(4));
     let defaults = with_qtf_database("qtf-default.json", &covering, 0.0, "").expect("valid");
     assert_eq!(defaults.model.second_order, SecondOrder::Newman);
     assert!(

@@ -1,4 +1,4 @@
-//! The embedded default platform's radiation-diffraction database (issue #14, `tests/bem`)
+//! The embedded default platform's radiation-diffraction database (`tests/bem`)
 //! against independent routes: the column solver where the pontoons and the draft no longer
 //! matter, the platform's mass properties and the documented configuration.
 

@@ -107,18 +107,18 @@ fn cross_terms_by_fft_equal_the_direct_double_sum() {
 #[test]
 fn heading_independent_mean_direction_is_the_long_crested_force_of_summed_amplitudes() {
     let drift = |omega: f64, _beta: f64| [3.0e4 * (omega - 0.8), 1.0e4 * omega, -2.0e5];
-    let mut config = base_config(400.0, 1.0, 11);
-    config.sea = spread_sea(11, 5);
-    config.hydro.drift = drift_table(drift);
-    config.model.newman = NewmanForm::Arithmetic;
-    config.model.interaction = Interaction::MeanDirection;
-    config.run.block_duration = 400.0;
-    let sim = Simulation::new(config.clone()).unwrap();
+    let mut problem = base_problem(400.0, 1.0, 11);
+    problem.sea = spread_sea(11, 5);
+    problem.hydro.drift = drift_table(drift);
+    problem.model.newman = NewmanForm::Arithmetic;
+    problem.model.interaction = Interaction::MeanDirection;
+    problem.run.block_duration = 400.0;
+    let sim = Simulation::new(problem.clone()).unwrap();
     let spread = &sim.records().wave_force;
     let clock = sim.records().clock;
 
     // The first segment's records: block 0 alone, sample l at clock.start_time + l dt.
-    let comps = WaveComponents::generate(&config.sea, sim.grid().clone());
+    let comps = WaveComponents::generate(&problem.sea, sim.grid().clone());
     let summed: Vec<Complex64> = (0..comps.grid.count)
         .map(|i| (0..5).map(|k| comps.of_direction(k)[i]).sum())
         .collect();
@@ -219,12 +219,12 @@ fn interpolate_diagonal(pairs: &DirectionPairs, k: usize, w: f64) -> f64 {
     (lo + (hi - lo) * f).re
 }
 
-fn spread_config(interaction: Interaction) -> Problem {
-    let mut config = base_config(600.0, 1.0, 3);
-    config.sea = spread_sea(3, 7);
-    config.hydro.drift = drift_table(smooth_drift);
-    config.model.interaction = interaction;
-    config
+fn spread_problem(interaction: Interaction) -> Problem {
+    let mut problem = base_problem(600.0, 1.0, 3);
+    problem.sea = spread_sea(3, 7);
+    problem.hydro.drift = drift_table(smooth_drift);
+    problem.model.interaction = interaction;
+    problem
 }
 
 /// "none" builds exactly the records of the route without interaction (transfers on the
@@ -232,11 +232,11 @@ fn spread_config(interaction: Interaction) -> Problem {
 /// mode; mean-direction on a spread sea changes the force.
 #[test]
 fn none_and_one_direction_leave_the_records_unchanged() {
-    let config = spread_config(Interaction::None);
-    let sim = Simulation::new(config.clone()).unwrap();
-    let comps = WaveComponents::generate(&config.sea, sim.grid().clone());
+    let problem = spread_problem(Interaction::None);
+    let sim = Simulation::new(problem.clone()).unwrap();
+    let comps = WaveComponents::generate(&problem.sea, sim.grid().clone());
     let transfers =
-        transfers_on_grid(&config.hydro.drift, &comps.grid, &comps.directions, false).unwrap();
+        transfers_on_grid(&problem.hydro.drift, &comps.grid, &comps.directions, false).unwrap();
     // The first segment of the stream, as the simulation makes it.
     let mut join = slowdrift::forces::Join::new(sim.segments());
     join.begin(0, true);
@@ -256,15 +256,15 @@ fn none_and_one_direction_leave_the_records_unchanged() {
         &mut slowdrift::forces::RecordWork::new(synth, &comps.grid),
     );
     assert_eq!(sim.records(), &plain);
-    assert!(direction_pairs(&config, &comps.grid, &comps.directions)
+    assert!(direction_pairs(&problem, &comps.grid, &comps.directions)
         .unwrap()
         .is_none());
 
-    let with = Simulation::new(spread_config(Interaction::MeanDirection)).unwrap();
+    let with = Simulation::new(spread_problem(Interaction::MeanDirection)).unwrap();
     assert_ne!(with.records().wave_force, plain.wave_force);
     assert_eq!(with.records().elevation, plain.elevation);
 
-    let mut long = base_config(600.0, 1.0, 3);
+    let mut long = base_problem(600.0, 1.0, 3);
     long.hydro.drift = drift_table(smooth_drift);
     let reference = Simulation::new(long.clone()).unwrap();
     long.model.interaction = Interaction::MeanDirection;
@@ -277,7 +277,7 @@ fn none_and_one_direction_leave_the_records_unchanged() {
 /// Bad input: bidirectional without data, a table that misses the band or a direction.
 #[test]
 fn missing_bidirectional_data_is_named() {
-    let e = Simulation::new(spread_config(Interaction::Bidirectional))
+    let e = Simulation::new(spread_problem(Interaction::Bidirectional))
         .unwrap_err()
         .to_string();
     assert!(
@@ -289,9 +289,9 @@ fn missing_bidirectional_data_is_named() {
     let narrow: Vec<f64> = vec![0.0, 0.3, 0.6];
     let table =
         BidirectionalTable::from_column_array(&array, &env, &[0.3, 0.8, 1.5], &narrow).unwrap();
-    let mut config = spread_config(Interaction::Bidirectional);
-    config.hydro.bidirectional = Some(BidirectionalSource::Table(table));
-    let e = Simulation::new(config.clone()).unwrap_err().to_string();
+    let mut problem = spread_problem(Interaction::Bidirectional);
+    problem.hydro.bidirectional = Some(BidirectionalSource::Table(table));
+    let e = Simulation::new(problem.clone()).unwrap_err().to_string();
     assert!(
         e.contains("bidirectional_drift.headings") && e.contains("extrapolated"),
         "{e}"
@@ -299,7 +299,7 @@ fn missing_bidirectional_data_is_named() {
     let full: Vec<f64> = (0..36).map(|i| (i as f64 * 10.0).to_radians()).collect();
     let table =
         BidirectionalTable::from_column_array(&array, &env, &[0.5, 0.8, 1.5], &full).unwrap();
-    config.hydro.bidirectional = Some(BidirectionalSource::Table(table));
-    let e = Simulation::new(config).unwrap_err().to_string();
+    problem.hydro.bidirectional = Some(BidirectionalSource::Table(table));
+    let e = Simulation::new(problem).unwrap_err().to_string();
     assert!(e.contains("does not cover the wave band"), "{e}");
 }

@@ -1,5 +1,5 @@
 //! Drag, current and wave-drift damping against closed forms (E&S 8, 9, section 3;
-//! physics.md sections 5, 6).
+//! docs/theory.md#wave-drift-damping-and-current, docs/theory.md#viscous-drag).
 
 use crate::common::*;
 use slowdrift::hydro::{DriftRow, DriftTable};
@@ -37,15 +37,15 @@ fn steady_current_gives_the_static_morison_offset() {
         },
         DragModel::Combined { cd: 0.8 },
     ] {
-        let mut config = base_config(3000.0, 1.0, 1);
-        config.sea.spectrum = jonswap(1e-6, 10.0);
-        config.platform.columns = four_columns();
-        config.model.drag = drag;
-        config.current.speed = speed;
-        config.current.direction = direction;
-        let k = config.platform.stiffness[0][0];
+        let mut problem = base_problem(3000.0, 1.0, 1);
+        problem.sea.spectrum = jonswap(1e-6, 10.0);
+        problem.platform.columns = four_columns();
+        problem.model.drag = drag;
+        problem.current.speed = speed;
+        problem.current.direction = direction;
+        let k = problem.platform.stiffness[0][0];
         let force = 4.0 * 0.5 * 1025.0 * 0.8 * 20.0 * 30.0 * speed * speed;
-        let mut sim = Simulation::new(config).unwrap();
+        let mut sim = Simulation::new(problem).unwrap();
         let mean = mean_position(&mut sim);
         let expected = [force * direction.cos() / k, force * direction.sin() / k];
         for i in 0..2 {
@@ -62,7 +62,8 @@ fn steady_current_gives_the_static_morison_offset() {
 }
 
 /// The current enters the wave-drift damping as an apparent velocity: the mean force gains
-/// B_mean U_c with B_mean = 2 integral S b dw (physics.md section 5), so the mean surge
+/// B_mean U_c with B_mean = 2 integral S b dw (docs/theory.md#wave-drift-damping-and-current), so
+/// the mean surge
 /// offset is (2 int S T + 2 int S b11 U_c) / k. Constant b gives a closed form.
 #[test]
 fn current_through_drift_damping_shifts_the_mean_force() {
@@ -84,11 +85,11 @@ fn current_through_drift_damping_shifts_the_mean_force() {
     }
     let table = DriftTable::from_rows(&rows).unwrap();
     let run = |current: f64| {
-        let mut config = base_config(16_384.0, 1.0, 4);
-        config.hydro.drift = table.clone();
-        config.model.drift_damping = DriftDamping::Table;
-        config.current.speed = current;
-        let mut sim = Simulation::new(config).unwrap();
+        let mut problem = base_problem(16_384.0, 1.0, 4);
+        problem.hydro.drift = table.clone();
+        problem.model.drift_damping = DriftDamping::Table;
+        problem.current.speed = current;
+        let mut sim = Simulation::new(problem).unwrap();
         let records = sim.records().clone();
         let b_mean: f64 = records.damping.as_ref().unwrap()[0][0]
             .samples()
@@ -97,14 +98,14 @@ fn current_through_drift_damping_shifts_the_mean_force() {
             / records.clock.len as f64;
         (mean_position(&mut sim)[0], b_mean, sim.problem().clone())
     };
-    let (still, b_mean, config) = run(0.0);
+    let (still, b_mean, problem) = run(0.0);
     let (with_current, _, _) = run(0.5);
-    let k = config.platform.stiffness[0][0];
+    let k = problem.platform.stiffness[0][0];
     // Same seed and grid: the wave force is identical; only B(t) U_c differs. The record's
     // mean of B(t) is sum |a_i|^2 b (exactly, over the period), and its expectation
     // 2 int S b dw.
-    let (lo, hi) = config.sea.band();
-    let expected_b = 2.0 * b11 * simpson(|w| config.sea.spectrum.density(w), lo, hi, 4000);
+    let (lo, hi) = problem.sea.band();
+    let expected_b = 2.0 * b11 * simpson(|w| problem.sea.spectrum.density(w), lo, hi, 4000);
     assert!(
         (b_mean / expected_b - 1.0).abs() < 0.1,
         "B mean {b_mean} vs 2 int S b = {expected_b}"
@@ -129,9 +130,9 @@ fn current_through_drift_damping_shifts_the_mean_force() {
 #[test]
 fn wave_zone_drag_adds_mean_drift_in_the_wave_direction() {
     let baseline = {
-        let mut config = base_config(8192.0, 1.0, 2);
-        config.platform.columns = four_columns();
-        mean_position(&mut Simulation::new(config).unwrap())
+        let mut problem = base_problem(8192.0, 1.0, 2);
+        problem.platform.columns = four_columns();
+        mean_position(&mut Simulation::new(problem).unwrap())
     };
     for drag in [
         DragModel::Combined { cd: 1.0 },
@@ -140,10 +141,10 @@ fn wave_zone_drag_adds_mean_drift_in_the_wave_direction() {
             fast: 1.0,
         },
     ] {
-        let mut config = base_config(8192.0, 1.0, 2);
-        config.platform.columns = four_columns();
-        config.model.drag = drag;
-        let mean = mean_position(&mut Simulation::new(config).unwrap());
+        let mut problem = base_problem(8192.0, 1.0, 2);
+        problem.platform.columns = four_columns();
+        problem.model.drag = drag;
+        let mean = mean_position(&mut Simulation::new(problem).unwrap());
         assert!(
             mean[0] > baseline[0],
             "{drag:?}: {} vs {}",

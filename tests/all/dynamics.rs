@@ -1,4 +1,5 @@
-//! Time integration and equations of motion (physics.md sections 7, 8): RK4's order on a
+//! Time integration and equations of motion (docs/theory.md#equations-of-motion,
+//! docs/theory.md#checks-with-known-answers): RK4's order on a
 //! forced damped oscillator with an exact solution, its energy behaviour on an undamped
 //! oscillator (closed-form amplification factor), energy conservation through
 //! `Simulation`, the rotation of the body-frame wave force by S(theta), and `advance` with
@@ -146,16 +147,16 @@ fn undamped_platform_conserves_energy_up_to_rk4_dissipation() {
     let h = 1.0;
     let periods = [60.0, 60.0, 40.0];
     let duration = 20.0 * 60.0;
-    let mut config = base_config(duration + 10.0, h, 11);
-    config.hydro.drift = drift_table(|_, _| [0.0; 3]);
-    config.platform.linear_damping = [[0.0; 3]; 3];
-    config.initial.position = [1.0, 0.5, 0.01];
+    let mut problem = base_problem(duration + 10.0, h, 11);
+    problem.hydro.drift = drift_table(|_, _| [0.0; 3]);
+    problem.platform.linear_damping = [[0.0; 3]; 3];
+    problem.initial.position = [1.0, 0.5, 0.01];
     let inertia = {
-        let i = config.inertia().unwrap();
+        let i = problem.inertia().unwrap();
         [i.mass, i.mass, i.yaw_inertia]
     };
-    let stiffness: Vec<f64> = (0..3).map(|i| config.platform.stiffness[i][i]).collect();
-    let mut sim = Simulation::new(config).unwrap();
+    let stiffness: Vec<f64> = (0..3).map(|i| problem.platform.stiffness[i][i]).collect();
+    let mut sim = Simulation::new(problem).unwrap();
     assert!(sim
         .records()
         .wave_force
@@ -190,15 +191,15 @@ fn undamped_platform_conserves_energy_up_to_rk4_dissipation() {
 }
 
 fn rotation_config(theta0: f64) -> slowdrift::Problem {
-    let mut config = base_config(300.0, 1.0, 5);
-    config.hydro.drift = drift_table(|w, _| {
+    let mut problem = base_problem(300.0, 1.0, 5);
+    problem.hydro.drift = drift_table(|w, _| {
         let surge = 2.0e4 * (1.0 + w * w);
         [surge, 0.3 * surge, 50.0 * surge]
     });
-    config.sea.mean_direction = 30f64.to_radians();
-    config.platform.linear_damping = [[0.0; 3]; 3];
-    config.initial.position = [0.0, 0.0, theta0];
-    config
+    problem.sea.mean_direction = 30f64.to_radians();
+    problem.platform.linear_damping = [[0.0; 3]; 3];
+    problem.initial.position = [0.0, 0.0, theta0];
+    problem
 }
 
 #[test]
@@ -252,9 +253,9 @@ fn wave_force_is_the_body_frame_force_rotated_by_the_yaw() {
 
 #[test]
 fn advance_in_whole_steps_is_step() {
-    let config = base_config(200.0, 1.0, 3);
-    let mut stepped = Simulation::new(config.clone()).unwrap();
-    let mut advanced = Simulation::new(config).unwrap();
+    let problem = base_problem(200.0, 1.0, 3);
+    let mut stepped = Simulation::new(problem.clone()).unwrap();
+    let mut advanced = Simulation::new(problem).unwrap();
     for _ in 0..40 {
         for _ in 0..3 {
             stepped.step([1.0e4, 0.0, 0.0]).unwrap();
@@ -268,9 +269,9 @@ fn advance_in_whole_steps_is_step() {
 /// 0.5 s record spacing and cubic interpolation between samples costs ~ (0.2 * 0.5)^4 * 3/128
 /// = 2e-6 relative.
 fn smooth_force_config() -> slowdrift::Problem {
-    let mut config = base_config(200.0, 1.0, 9);
-    config.sea.band = Some((0.55, 0.75));
-    config
+    let mut problem = base_problem(200.0, 1.0, 9);
+    problem.sea.band = Some((0.55, 0.75));
+    problem
 }
 
 fn run_advance(interval: f64, end: f64) -> [f64; 6] {

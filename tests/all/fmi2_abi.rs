@@ -102,7 +102,7 @@ fn variables_read_back() {
     );
     assert_eq!(unsafe { std::ffi::CStr::from_ptr(p) }.to_str(), Ok(""));
     // Initial outputs before ExitInitializationMode: the native simulation's at t = 0.
-    let mut config = native_config(1, 0.0, 0.0, 600.0);
+    let mut config = native_problem(1, 0.0, 0.0, 600.0);
     config.sea.spectrum = slowdrift::sea_state::Spectrum::Jonswap {
         hs: 5.5,
         tp: 12.0,

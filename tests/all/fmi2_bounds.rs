@@ -1,7 +1,5 @@
-//! The `min` and `max` of modelDescription.xml are the FMU's own bounds (issue #27, part 5:
-//! `memoryLimit = 0` was refused under `min="0"`, as were `Hs = 0`, `Tp = 0` and
-//! `stepSize = 0`; `nDirections = 361`, `yawFollowingHeadings = 721` and `currentSpeed =
-//! 10.001` were refused with no `max` said). FMI 2.0's bounds are inclusive: for every Real
+//! The `min` and `max` of modelDescription.xml are the FMU's own bounds. FMI 2.0's bounds
+//! are inclusive, so a parameter that must be greater than zero has no `min`: for every Real
 //! and Integer parameter with a `min` or `max` (its own or its declared type's, read from
 //! the XML here with quick-xml), the bound is accepted and a value just beyond it refused,
 //! naming the parameter. The values go through the FMU's parameter code as

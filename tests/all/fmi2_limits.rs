@@ -1,4 +1,4 @@
-//! Sizes the user controls never abort the host (issue #15, items 1 and 2): each size that
+//! Sizes the user controls never abort the host: each size that
 //! aborted or hung a master before (an allocation of terabytes, a count of 2^31) is refused
 //! at initialisation with fmi2Error and a log line that names the parameter, its value and
 //! the limit; the instance is then in the Error state and the process lives on. Under a
@@ -63,7 +63,7 @@ fn repeated(unit: &str, bytes: usize) -> String {
     unit.repeat(bytes / unit.len())
 }
 
-/// The sizes of issue #15 that aborted or hung a master, at the default memory budget.
+/// Sizes that would abort or hang a master, at the default memory budget.
 const HOSTILE: [Case; 6] = [
     Case {
         name: "nDirections = 100000",
@@ -231,7 +231,7 @@ const BEYOND_THE_PROCESS: [Case; 4] = [
         },
         expected: &["this process cannot allocate them"],
     },
-    // Files within the budget whose reading this process cannot hold (issue #27, part 5):
+    // Files within the budget whose reading this process cannot hold:
     // before, the readers aborted the process (the TOML reader took 2.2 GB for this file,
     // the CSV reader 1.7 GB for this table).
     Case {

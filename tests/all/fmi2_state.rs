@@ -1,4 +1,4 @@
-//! An FMU state that stands alone (issue #11, item 4): a serialized state carries the
+//! An FMU state that stands alone: a serialized state carries the
 //! parameters and the experiment, so it restores into an instance straight after
 //! `fmi2Instantiate`, before any `fmi2Set*` (the order of fmusim's
 //! `--initial-fmu-state-file`: instantiate, deserialize, set, free, then sample and step),
@@ -356,9 +356,8 @@ fn an_overlong_string_is_refused_when_set() {
     );
 }
 
-/// `fmi2DeSerializeFMUstate` checks every field as `fmi2SetFMUstate` does (issue #27,
-/// part 5): a snapshot with an infinite external force or a NaN time origin is refused at
-/// deserialisation (before, only `fmi2SetFMUstate` refused it), and a last successful time
+/// `fmi2DeSerializeFMUstate` checks every field as `fmi2SetFMUstate` does: a snapshot with an infinite external force or a NaN time origin is refused at
+/// deserialisation, and a last successful time
 /// beyond the snapshot's time is refused (before, it was restored and reported), each with
 /// fmi2Error naming the field and its byte offset. The bytes are a real state's, changed
 /// and resealed.

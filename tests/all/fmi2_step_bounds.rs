@@ -1,4 +1,4 @@
-//! A communication step is bounded in time (issue #27, part 5): without a stop time,
+//! A communication step is bounded in time: without a stop time,
 //! `fmi2DoStep(t, 1e308)` or a step of 5e9 s ran for hours; now a step longer than one block
 //! of the records (the default platform's 16384 s, docs/fmu.md "Time") is discarded at once
 //! with a logStatusDiscard line that names the bound, the state unchanged, and a step of

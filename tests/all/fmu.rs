@@ -122,7 +122,7 @@ pub fn native_outputs(o: &Outputs) -> Vec<f64> {
 
 /// The native configuration of the embedded default with a seed, a wave direction and a
 /// run, as the FMU parameters and `fmi2SetupExperiment` describe them.
-pub fn native_config(seed: u64, direction: f64, start: f64, stop: f64) -> Problem {
+pub fn native_problem(seed: u64, direction: f64, start: f64, stop: f64) -> Problem {
     let mut c = default_platform().clone();
     c.sea.seed = seed;
     c.sea.mean_direction = direction;
@@ -132,7 +132,7 @@ pub fn native_config(seed: u64, direction: f64, start: f64, stop: f64) -> Proble
 }
 
 pub fn native(seed: u64, direction: f64, start: f64, stop: f64) -> Simulation {
-    Simulation::new(native_config(seed, direction, start, stop)).unwrap()
+    Simulation::new(native_problem(seed, direction, start, stop)).unwrap()
 }
 
 /// Bit patterns, so that comparisons are exact and NaN-safe.

@@ -253,7 +253,7 @@ fn a_spreading_exponent_alone_spreads_the_sea_over_15_directions() {
         fmu.messages()
     );
 
-    let mut problem = native_config(1, 0.0, 0.0, STOP);
+    let mut problem = native_problem(1, 0.0, 0.0, STOP);
     assert_eq!(problem.sea.spreading, Spreading::LongCrested);
     problem.sea.spreading = Spreading::CosN { n: 2.0 };
     problem.sea.n_directions = 15;

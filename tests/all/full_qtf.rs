@@ -1,4 +1,4 @@
-//! The full difference-frequency QTF at FFT cost (physics.md section 4; issue #5 part 1),
+//! The full difference-frequency QTF at FFT cost (docs/theory.md#the-slowly-varying-force),
 //! against independent routes: the O(N^2) double sum on the same (bilinearly interpolated)
 //! QTF, Newman's approximation when the QTF is built from its diagonal, the mean
 //! 2 integral S T(w, w) dw and the force spectrum 8 integral S(w) S(w + mu) |T|^2 dw; and
@@ -10,7 +10,7 @@ use slowdrift::forces::{
     DirectionTransfer, ForceRecords, GridQtf, QtfFactorisation, QtfGroup, RecordOptions,
 };
 use slowdrift::hydro::io::database::{HydroDatabase, QtfData, QtfMatrix};
-use slowdrift::hydro::io::wamit::WamitOptions;
+use slowdrift::hydro::io::wamit::{self, WamitOptions};
 use slowdrift::hydro::qtf::MIN_QTF_TOLERANCE;
 use slowdrift::model::Dof;
 use slowdrift::model::{DriftDamping, NewmanForm, SecondOrder};
@@ -124,16 +124,16 @@ fn spread_sea(seed: u64) -> SeaState {
 }
 
 /// A configuration with the full QTF at every direction of `sea`.
-fn full_qtf_config(sea: SeaState, omegas: &[f64], tolerance: f64) -> Problem {
-    let mut config = base_config(300.0, 0.5, sea.seed);
-    config.run.start_time = 100.0;
-    config.run.block_duration = 300.0;
+fn full_qtf_problem(sea: SeaState, omegas: &[f64], tolerance: f64) -> Problem {
+    let mut problem = base_problem(300.0, 0.5, sea.seed);
+    problem.run.start_time = 100.0;
+    problem.run.block_duration = 300.0;
     let headings: Vec<f64> = sea.directions().iter().map(|d| d.heading).collect();
-    config.hydro.qtf = Some(qtf_data(omegas, &headings).to_qtf());
-    config.sea = sea;
-    config.model.second_order = SecondOrder::FullQtf;
-    config.model.qtf_tolerance = tolerance;
-    config
+    problem.hydro.qtf = Some(qtf_data(omegas, &headings).to_qtf());
+    problem.sea = sea;
+    problem.model.second_order = SecondOrder::FullQtf;
+    problem.model.qtf_tolerance = tolerance;
+    problem
 }
 
 /// Check (1): through `Simulation::new` (the configuration, the heading match and the
@@ -144,13 +144,13 @@ fn full_qtf_config(sea: SeaState, omegas: &[f64], tolerance: f64) -> Problem {
 fn factorised_force_equals_the_double_sum_on_the_interpolated_qtf() {
     let omegas = qtf_grid(0.25, 2.1, 25);
     for tolerance in [1e-6, 1e-2] {
-        let config = full_qtf_config(spread_sea(5), &omegas, tolerance);
-        let sim = Simulation::new(config.clone()).unwrap();
+        let problem = full_qtf_problem(spread_sea(5), &omegas, tolerance);
+        let sim = Simulation::new(problem.clone()).unwrap();
         // The first segment's records (block 0 alone): local sample l at clock time l.
         let grid = sim.grid().clone();
         let clock = sim.records().clock;
-        let components = WaveComponents::generate(&config.sea, grid.clone());
-        let directions = config.sea.directions();
+        let components = WaveComponents::generate(&problem.sea, grid.clone());
+        let directions = problem.sea.directions();
         assert_eq!(sim.qtf_ranks().len(), 3 * directions.len());
         for dof in 0..3 {
             let fft = sim.records().wave_force[dof].samples();
@@ -418,8 +418,8 @@ pub(crate) fn oc4_config(
     second_order: SecondOrder,
     seed: u64,
 ) -> Problem {
-    let mut config = base_config(3.0 * 3600.0, 1.0, seed);
-    let p = &mut config.platform;
+    let mut problem = base_problem(3.0 * 3600.0, 1.0, seed);
+    let p = &mut problem.platform;
     let (mass, yaw_inertia) = (1.4073e7, 1.2264e10);
     let added = database.low_frequency_added_mass.unwrap();
     p.mass = Some(mass);
@@ -437,7 +437,7 @@ pub(crate) fn oc4_config(
         p.stiffness[i][i] = m * wn * wn;
         p.linear_damping[i][i] = 2.0 * 0.05 * m * wn;
     }
-    config.sea = long_crested(
+    problem.sea = long_crested(
         Spectrum::Jonswap {
             hs: 6.0,
             tp: 10.0,
@@ -445,11 +445,11 @@ pub(crate) fn oc4_config(
         },
         seed,
     );
-    config.hydro.drift = database.to_drift_table().unwrap();
-    config.hydro.qtf = database.qtf.as_ref().map(|q| q.to_qtf());
-    config.model.second_order = second_order;
-    config.model.drift_damping = DriftDamping::Off;
-    config
+    problem.hydro.drift = database.to_drift_table().unwrap();
+    problem.hydro.qtf = database.qtf.as_ref().map(|q| q.to_qtf());
+    problem.model.second_order = second_order;
+    problem.model.drift_damping = DriftDamping::Off;
+    problem
 }
 
 /// Check (5): on the OC4 data, the rank for 1e-6 and full QTF against Newman (geometric,
@@ -461,7 +461,7 @@ fn oc4_full_qtf_against_newman() {
     let Some(root) = oc4_root_or_skip() else {
         return;
     };
-    let database = HydroDatabase::from_wamit(&root, &WamitOptions::default())
+    let database = wamit::import(&root, &WamitOptions::default())
         .unwrap()
         .database;
     let q = database.qtf.as_ref().unwrap().to_qtf();

@@ -1,4 +1,4 @@
-//! The full QTF in a spread sea (issue #13 part 2): the cross terms between directions from
+//! The full QTF in a spread sea: the cross terms between directions from
 //! the bi-directional QTF T(w_i, w_j; b_k, b_l), factorised over (frequency, direction) at
 //! FFT cost, the QTF interpolated bilinearly in the heading pair between data headings.
 //! Against the O(N^2 N_beta^2) double sum on the QTF interpolated here by the test's own
@@ -101,28 +101,28 @@ fn qtf_grid() -> Vec<f64> {
     (0..12).map(|k| 0.3 + 0.12 * k as f64).collect()
 }
 
-fn config(sea: SeaState, pairs: bool, duration: f64) -> Problem {
-    let mut config = base_config(duration, 0.5, sea.seed);
-    config.run.start_time = 100.0;
-    config.run.block_duration = duration;
-    config.hydro.qtf = Some(qtf(&qtf_grid(), &data_headings(), pairs));
-    config.sea = sea;
-    config.model.second_order = SecondOrder::FullQtf;
-    config.model.qtf_tolerance = 1e-12;
-    config.model.interaction = Interaction::Bidirectional;
-    config
+fn spread_problem(sea: SeaState, pairs: bool, duration: f64) -> Problem {
+    let mut problem = base_problem(duration, 0.5, sea.seed);
+    problem.run.start_time = 100.0;
+    problem.run.block_duration = duration;
+    problem.hydro.qtf = Some(qtf(&qtf_grid(), &data_headings(), pairs));
+    problem.sea = sea;
+    problem.model.second_order = SecondOrder::FullQtf;
+    problem.model.qtf_tolerance = 1e-12;
+    problem.model.interaction = Interaction::Bidirectional;
+    problem
 }
 
 /// The records' force equals the double sum over every pair of (frequency, direction) of
 /// the QTF interpolated bilinearly in heading pair and frequency, to round-off (full rank).
 #[test]
 fn joint_factorisation_equals_the_double_sum_over_directions() {
-    let config = config(sea(11, 3), true, 300.0);
-    let sim = Simulation::new(config.clone()).unwrap();
+    let problem = spread_problem(sea(11, 3), true, 300.0);
+    let sim = Simulation::new(problem.clone()).unwrap();
     let grid: FrequencyGrid = sim.grid().clone();
     let clock = sim.records().clock;
-    let components = WaveComponents::generate(&config.sea, grid.clone());
-    let directions = config.sea.directions();
+    let components = WaveComponents::generate(&problem.sea, grid.clone());
+    let directions = problem.sea.directions();
     let nd = directions.len();
     let ranks = sim.qtf_ranks();
     assert_eq!(ranks.len(), 3, "one joint factorisation per DOF: {ranks:?}");
@@ -177,13 +177,13 @@ fn joint_factorisation_equals_the_double_sum_over_directions() {
 /// QTF: the force is the sum of the per-direction double sums.
 #[test]
 fn unidirectional_data_interpolated_in_heading_per_direction() {
-    let mut config = config(sea(12, 3), false, 300.0);
-    config.model.interaction = Interaction::None;
-    let sim = Simulation::new(config.clone()).unwrap();
+    let mut problem = spread_problem(sea(12, 3), false, 300.0);
+    problem.model.interaction = Interaction::None;
+    let sim = Simulation::new(problem.clone()).unwrap();
     let grid = sim.grid().clone();
     let clock = sim.records().clock;
-    let components = WaveComponents::generate(&config.sea, grid.clone());
-    let directions = config.sea.directions();
+    let components = WaveComponents::generate(&problem.sea, grid.clone());
+    let directions = problem.sea.directions();
     assert_eq!(sim.qtf_ranks().len(), 3 * directions.len());
     let omegas = qtf_grid();
     let headings = data_headings();
@@ -476,12 +476,12 @@ fn heading_interpolation_refuses_what_the_data_do_not_cover() {
 #[test]
 fn yaw_following_records_are_the_full_qtf_at_the_relative_headings() {
     use slowdrift::model::YawFollowing;
-    let mut config = config(sea(21, 3), true, 300.0);
-    config.model.yaw_following = Some(YawFollowing {
+    let mut problem = spread_problem(sea(21, 3), true, 300.0);
+    problem.model.yaw_following = Some(YawFollowing {
         headings: 3,
         range: Some((-10f64.to_radians(), 10f64.to_radians())),
     });
-    let sim = Simulation::new(config.clone()).unwrap();
+    let sim = Simulation::new(problem.clone()).unwrap();
     let yaw = sim
         .records()
         .yaw_following
@@ -489,7 +489,7 @@ fn yaw_following_records_are_the_full_qtf_at_the_relative_headings() {
         .expect("yaw-following records");
     assert_eq!(yaw.sets.len(), 3);
     for (j, theta) in [-10.0f64, 0.0, 10.0].into_iter().enumerate() {
-        let mut turned = config.clone();
+        let mut turned = problem.clone();
         turned.model.yaw_following = None;
         turned.sea.mean_direction -= theta.to_radians();
         let reference = Simulation::new(turned).unwrap();
@@ -511,11 +511,11 @@ fn yaw_following_records_are_the_full_qtf_at_the_relative_headings() {
     }
     // Beyond the data: directions at about -54, 6 and 66 deg turned by up to 40 deg reach
     // -94 .. 106 deg, past the data's 100 deg.
-    config.model.yaw_following = Some(YawFollowing {
+    problem.model.yaw_following = Some(YawFollowing {
         headings: 3,
         range: Some((-40f64.to_radians(), 40f64.to_radians())),
     });
-    let Err(error) = Simulation::new(config) else {
+    let Err(error) = Simulation::new(problem) else {
         panic!("relative headings beyond the QTF must be refused")
     };
     let message = error.to_string();

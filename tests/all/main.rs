@@ -1,5 +1,5 @@
-//! The integration tests, one binary: each module is one former test file (the shared
-//! builders in `common` and the in-process FMI master in `fmu`).
+//! The integration tests, one binary (linked once): a module per subject, the shared
+//! builders in `common` and the in-process FMI master in `fmu`.
 
 mod common;
 mod counting;
@@ -33,6 +33,7 @@ mod newman;
 mod oscillator;
 mod quirks;
 mod reading_cost;
+mod references;
 mod sea_state;
 mod simulation;
 mod stream;

@@ -1,11 +1,11 @@
-//! `slowdrift montecarlo` (issue #6 part 1): resume after an interruption, independence of
+//! `slowdrift montecarlo`: resume after an interruption, independence of
 //! the thread count, bad case tables, failed cases, the standard error against its formula,
 //! and the statistics of a linear oscillator against the frequency-domain variance.
 //!
 //! The CLI runs use the cheap example configuration (inline drift table, four columns with
 //! combined drag) for 2048 s at 1 s steps.
 
-use crate::common::{base_config, oscillator_surge_variance};
+use crate::common::{base_problem, oscillator_surge_variance};
 use slowdrift::montecarlo::{run_jobs, seed_statistics, Case, Job};
 use slowdrift::scenario::limits::DEFAULT_MEMORY_LIMIT as LIMIT;
 use std::path::{Path, PathBuf};
@@ -265,7 +265,7 @@ fn the_standard_error_is_the_sample_deviation_over_root_n() {
 /// computes them; so does the mean rms against the root of the integral.
 #[test]
 fn oscillator_variance_agrees_within_the_reported_standard_error() {
-    let config = base_config(16_384.0, 1.0, 0);
+    let config = base_problem(16_384.0, 1.0, 0);
     let expected = oscillator_surge_variance(&config);
     let case = Case {
         name: "oscillator".into(),
@@ -353,7 +353,7 @@ fn one_case_of_a_table_equals_its_line_in_the_whole_campaign() {
 fn shared_plans_give_the_runs_of_fresh_ones() {
     use slowdrift::montecarlo::run_seed;
     use slowdrift::sea_state::Spectrum;
-    let mut good = base_config(400.0, 1.0, 0);
+    let mut good = base_problem(400.0, 1.0, 0);
     good.platform.columns = crate::common::four_columns();
     good.model.drag = slowdrift::model::DragModel::Combined { cd: 0.6 };
     let mut bad = good.clone();
@@ -674,13 +674,13 @@ fn a_stop_abandons_the_runs_in_flight_unreported() {
     use std::sync::atomic::Ordering;
     let short = Case {
         name: "short".into(),
-        problem: base_config(256.0, 1.0, 0),
+        problem: base_problem(256.0, 1.0, 0),
         transient: 50.0,
     };
     // Each long run takes tens of seconds: the stop comes long before any ends.
     let long = Case {
         name: "long".into(),
-        problem: base_config(2.0e6, 1.0, 0),
+        problem: base_problem(2.0e6, 1.0, 0),
         transient: 50.0,
     };
     let cases = [short, long];

@@ -1,9 +1,9 @@
-//! NEMOH v3 import (issue #13 part 3) on the OC3-Hywind spar of WEC-Sim's examples
+//! NEMOH v3 import on the OC3-Hywind spar of WEC-Sim's examples
 //! (`../shared/data/nemoh/oc3-hywind`, see its SOURCE.md; `$SLOWDRIFT_DATA` overrides).
 //! Every expected value is parsed here from the raw text (split_whitespace on the lines),
 //! scaled and conjugated by hand, independently of the readers.
 
-use crate::common::{base_config, jonswap, long_crested, shared_data_dir, simpson};
+use crate::common::{base_problem, jonswap, long_crested, shared_data_dir, simpson};
 use crate::quirks::temp_dir;
 use rustfft::num_complex::Complex64;
 use slowdrift::hydro::io::nemoh;
@@ -348,7 +348,7 @@ fn oc3_runs_in_full_qtf_and_newman_modes() {
     };
     let db = nemoh::import(&dir, LIMIT).unwrap().database;
     let config = |mode: SecondOrder, seed: u64| -> Problem {
-        let mut c = base_config(3.0 * 3600.0, 1.0, seed);
+        let mut c = base_problem(3.0 * 3600.0, 1.0, seed);
         c.environment = Environment {
             gravity: db.gravity,
             water_density: db.water_density,
@@ -503,7 +503,7 @@ fn the_cli_writes_the_library_import() {
     assert!(String::from_utf8_lossy(&missing.stderr).contains("no Nemoh.cal"));
 }
 
-/// Numbers cut short (issue #15 part 5) in NEMOH's matrix files: a mantissa whose exponent
+/// Numbers cut short in NEMOH's matrix files: a mantissa whose exponent
 /// was lost in `CM.dat` (a value 1e7 times too small that would parse), and `Inertia.dat`
 /// ending inside its last number without a newline, are refused naming `file:line` and the
 /// field; the intact files read.

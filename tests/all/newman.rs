@@ -1,4 +1,5 @@
-//! Newman's approximation by FFT against the O(N^2) double sum (physics.md section 4), and
+//! Newman's approximation by FFT against the O(N^2) double sum
+//! (docs/theory.md#the-slowly-varying-force), and
 //! the mean force against 2 * integral S T d omega.
 
 use crate::common::*;

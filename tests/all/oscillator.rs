@@ -1,4 +1,5 @@
-//! The central check that force, spectrum and solver agree (physics.md section 8): a linear
+//! The central check that force, spectrum and solver agree
+//! (docs/theory.md#checks-with-known-answers): a linear
 //! oscillator M x'' + c x' + k x = F(t) driven by the slowly varying surge force.
 //!
 //! 1. Statistics: the time-domain variance of x over many seeds equals the frequency-domain
@@ -30,9 +31,9 @@ fn damping() -> f64 {
 /// Runs one seed with records in blocks of `block` s and returns the surge record at every
 /// step after `transient`.
 fn surge_record(duration: f64, h: f64, seed: u64, transient: f64, block: f64) -> Vec<f64> {
-    let mut config = base_config(duration, h, seed);
-    config.run.block_duration = block;
-    let mut sim = Simulation::new(config).unwrap();
+    let mut problem = base_problem(duration, h, seed);
+    problem.run.block_duration = block;
+    let mut sim = Simulation::new(problem).unwrap();
     let steps = (duration / h).round() as usize;
     let mut out = Vec::with_capacity(steps);
     for _ in 0..steps {
@@ -58,7 +59,7 @@ fn motion_variance_across_many_joins_matches_the_frequency_domain_integral() {
 }
 
 fn motion_variance_check(block: f64) {
-    let expected = oscillator_surge_variance(&base_config(1.0, 1.0, 0));
+    let expected = oscillator_surge_variance(&base_problem(1.0, 1.0, 0));
 
     let (duration, transient, seeds) = (32_768.0, 1_000.0, 8);
     let mut mean_variance = 0.0;
@@ -112,24 +113,24 @@ fn periodic_steady_state(force: &[f64], dt: f64) -> Vec<f64> {
 /// RK4 error against the exact steady state for step h: relative rms difference.
 fn steady_state_error(h: f64) -> f64 {
     let (duration, transient) = (4_000.0, 2_000.0);
-    let config = base_config(duration, h, 7);
-    let mut sim = Simulation::new(config.clone()).unwrap();
+    let problem = base_problem(duration, h, 7);
+    let mut sim = Simulation::new(problem.clone()).unwrap();
     // The run stays in the first segment of the stream, whose force is block 0's periodic
     // record: built here whole (N samples, global sample m at time m dt).
-    let components = WaveComponents::generate(&config.sea, sim.grid().clone());
+    let components = WaveComponents::generate(&problem.sea, sim.grid().clone());
     let transfers = transfers_on_grid(
-        &config.hydro.drift,
+        &problem.hydro.drift,
         &components.grid,
         &components.directions,
         false,
     )
     .unwrap();
     let options = RecordOptions {
-        newman: config.model.newman,
+        newman: problem.model.newman,
         full_qtf: None,
         drag_columns: &[],
         strips_per_column: 20,
-        gravity: config.environment.gravity,
+        gravity: problem.environment.gravity,
         fft: None,
     };
     let periodic = ForceRecords::build(&components, &transfers, &options);

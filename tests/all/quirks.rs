@@ -1,11 +1,10 @@
-//! The quirks of real hydrodynamic files (issue #13 part 5): frequencies computed from
+//! The quirks of real hydrodynamic files: frequencies computed from
 //! printed periods, mixed time conventions. The files are written here from closed forms;
 //! the expected numbers come from those forms and from integrals computed in the test.
 
-use crate::common::{base_config, jonswap, long_crested, simpson};
+use crate::common::{base_problem, jonswap, long_crested, simpson};
 use rustfft::num_complex::Complex64;
-use slowdrift::hydro::io::database::HydroDatabase;
-use slowdrift::hydro::io::wamit::{read_difference_qtf, WamitOptions};
+use slowdrift::hydro::io::wamit::{self, read_difference_qtf, WamitOptions};
 use slowdrift::model::{SecondOrder, FREQUENCY_MATCH_TOLERANCE};
 use slowdrift::problem::{Hydro, DEFAULT_BAND_TRIM_LIMIT};
 use slowdrift::{Problem, Simulation};
@@ -79,10 +78,10 @@ fn printed_period_problem(name: &str, top: f64) -> (Problem, Vec<f64>) {
         &omegas,
         |w| format!("{:.4}", 2.0 * PI / w),
     );
-    let database = HydroDatabase::from_wamit(&root, &WamitOptions::default())
+    let database = wamit::import(&root, &WamitOptions::default())
         .unwrap()
         .database;
-    let mut problem = base_config(600.0, 1.0, 1);
+    let mut problem = base_problem(600.0, 1.0, 1);
     problem.hydro = Hydro {
         qtf: database.qtf.as_ref().map(|q| q.to_qtf()),
         bidirectional: None,
@@ -261,8 +260,7 @@ fn sparse_qtfs_are_filled_along_difference_lines_or_refused_listing_the_holes() 
     }
     let import_dir = temp_dir("sparse-import");
     std::fs::copy(&path, import_dir.join("body.12d")).unwrap();
-    let import =
-        HydroDatabase::from_wamit(&import_dir.join("body"), &WamitOptions::default()).unwrap();
+    let import = wamit::import(&import_dir.join("body"), &WamitOptions::default()).unwrap();
     assert!(
         import
             .files

@@ -1,4 +1,4 @@
-//! What reading a file costs (issue #27, part 5): every reader states the most memory it
+//! What reading a file costs: every reader states the most memory it
 //! holds per byte of the file (`files::Cost`), and a file whose size times that exceeds the
 //! memory limit is refused before it is read. Here each reader reads its format's costliest
 //! contents (the shortest lines that each make an entry, names or keys that each make a

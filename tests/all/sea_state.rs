@@ -1,4 +1,5 @@
-//! The synthesised elevation against the input sea state (physics.md sections 2, 3, 8):
+//! The synthesised elevation against the input sea state (docs/theory.md#sea-state,
+//! docs/theory.md#random-waves, docs/theory.md#checks-with-known-answers):
 //! variance vs Hs^2/16, Gaussian distribution, periodogram vs the spectrum.
 
 use crate::common::*;
@@ -82,7 +83,8 @@ fn variance_matches_hs_squared_over_16() {
             (variance - m0_band).abs() < 5.0 * sigma + 1e-3 * m0_band,
             "{spectrum:?}: {variance} vs {m0_band}"
         );
-        // The band holds all but the tails of Hs^2/16; DNV's A_gamma is a fit (physics.md 2).
+        // The band holds all but the tails of Hs^2/16; DNV's A_gamma is a fit
+        // (docs/theory.md#sea-state).
         let m0 = hs * hs / 16.0;
         assert!(
             (m0_band / m0 - 1.0).abs() < 0.025,

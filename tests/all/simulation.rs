@@ -4,8 +4,8 @@
 use crate::common::*;
 use slowdrift::{Problem, Simulation};
 
-fn config(seed: u64) -> Problem {
-    base_config(600.0, 1.0, seed)
+fn seeded_problem(seed: u64) -> Problem {
+    base_problem(600.0, 1.0, seed)
 }
 
 /// Positions after each of `steps` steps (with a small, time-varying external force so that
@@ -22,8 +22,8 @@ fn trajectory(sim: &mut Simulation, steps: usize) -> Vec<[f64; 3]> {
 
 #[test]
 fn the_same_seed_gives_identical_trajectories() {
-    let mut a = Simulation::new(config(42)).unwrap();
-    let mut b = Simulation::new(config(42)).unwrap();
+    let mut a = Simulation::new(seeded_problem(42)).unwrap();
+    let mut b = Simulation::new(seeded_problem(42)).unwrap();
     let ta = trajectory(&mut a, 500);
     let tb = trajectory(&mut b, 500);
     assert!(ta == tb, "same seed, different trajectories");
@@ -34,8 +34,8 @@ fn the_same_seed_gives_identical_trajectories() {
 
 #[test]
 fn different_seeds_give_different_trajectories() {
-    let mut a = Simulation::new(config(42)).unwrap();
-    let mut b = Simulation::new(config(43)).unwrap();
+    let mut a = Simulation::new(seeded_problem(42)).unwrap();
+    let mut b = Simulation::new(seeded_problem(43)).unwrap();
     let ta = trajectory(&mut a, 500);
     let tb = trajectory(&mut b, 500);
     let differing = ta.iter().zip(&tb).filter(|(x, y)| x != y).count();
@@ -44,7 +44,7 @@ fn different_seeds_give_different_trajectories() {
 
 #[test]
 fn restore_replays_bit_for_bit() {
-    let mut sim = Simulation::new(config(7)).unwrap();
+    let mut sim = Simulation::new(seeded_problem(7)).unwrap();
     trajectory(&mut sim, 200);
     let snap = sim.snapshot();
     assert_eq!(snap.time(), 200.0);
@@ -66,7 +66,7 @@ fn restore_replays_bit_for_bit() {
     assert_eq!(sim.time(), 400.0);
 
     // A fresh simulation of the same configuration continues identically from the snapshot.
-    let mut other = Simulation::new(config(7)).unwrap();
+    let mut other = Simulation::new(seeded_problem(7)).unwrap();
     other.restore(&snap).unwrap();
     let continued: Vec<[f64; 3]> = (0..200)
         .map(|_| {
@@ -81,7 +81,7 @@ fn restore_replays_bit_for_bit() {
 
 #[test]
 fn reset_returns_to_the_initial_state_and_replays_the_run() {
-    let mut c = config(9);
+    let mut c = seeded_problem(9);
     c.initial.position = [2.0, -1.0, 0.02];
     c.initial.velocity = [0.1, 0.0, -0.001];
     let mut sim = Simulation::new(c.clone()).unwrap();
@@ -99,7 +99,7 @@ fn reset_returns_to_the_initial_state_and_replays_the_run() {
 #[test]
 fn time_is_start_plus_count_times_step_exactly() {
     for (start, h) in [(0.0, 0.5), (100.0, 0.5), (0.0, 0.1), (100.0, 0.1)] {
-        let mut c = base_config(2000.0 * h, h, 2);
+        let mut c = base_problem(2000.0 * h, h, 2);
         c.run.start_time = start;
         let mut sim = Simulation::new(c).unwrap();
         assert_eq!(sim.time(), start);
@@ -122,7 +122,7 @@ fn time_is_start_plus_count_times_step_exactly() {
 
 #[test]
 fn advance_lands_exactly_on_the_requested_time() {
-    let mut sim = Simulation::new(config(5)).unwrap();
+    let mut sim = Simulation::new(seeded_problem(5)).unwrap();
     for _ in 0..3 {
         sim.step([0.0; 3]).unwrap();
     }
@@ -144,13 +144,13 @@ fn advance_lands_exactly_on_the_requested_time() {
 /// damping too (the plan then also holds the damping table and the cross-direction data).
 #[test]
 fn a_plan_gives_the_records_of_new_for_every_seed() {
-    let mut spread = config(1);
+    let mut spread = seeded_problem(1);
     spread.sea.spreading = slowdrift::sea_state::Spreading::CosN { n: 2.0 };
     spread.sea.n_directions = 5;
     spread.platform.columns = four_columns();
     spread.model.drag = slowdrift::model::DragModel::Combined { cd: 0.6 };
     spread.model.drift_damping = slowdrift::model::DriftDamping::Aranha;
-    for base in [config(1), spread] {
+    for base in [seeded_problem(1), spread] {
         let plan = std::sync::Arc::new(slowdrift::RecordPlan::new(&base).unwrap());
         for seed in [3, 11] {
             let mut c = base.clone();
@@ -168,7 +168,7 @@ fn a_plan_gives_the_records_of_new_for_every_seed() {
 /// trajectories are those of a fresh simulation.
 #[test]
 fn a_plan_serves_problems_that_differ_outside_its_key() {
-    let mut base = config(1);
+    let mut base = seeded_problem(1);
     base.model.drag = slowdrift::model::DragModel::Combined { cd: 0.6 };
     base.platform.columns = crate::common::four_columns();
     let plan = std::sync::Arc::new(slowdrift::RecordPlan::new(&base).unwrap());
@@ -189,8 +189,8 @@ fn a_plan_serves_problems_that_differ_outside_its_key() {
 /// A plan refuses a configuration that differs in more than the seed, naming itself.
 #[test]
 fn a_plan_refuses_another_configuration() {
-    let plan = std::sync::Arc::new(slowdrift::RecordPlan::new(&config(1)).unwrap());
-    let mut other = config(1);
+    let plan = std::sync::Arc::new(slowdrift::RecordPlan::new(&seeded_problem(1)).unwrap());
+    let mut other = seeded_problem(1);
     other.sea.mean_direction += 0.1;
     let err = Simulation::with_plan(other, &plan).unwrap_err().to_string();
     assert!(err.contains("plan"), "{err}");

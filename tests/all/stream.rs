@@ -1,7 +1,9 @@
-//! Records as a stream of blocks (`forces::stream`, physics.md section 11): the sea depends
+//! Records as a stream of blocks (`forces::stream`, docs/theory.md#open-ended-records): the sea
+//! depends
 //! on the seed alone, any segment is rebuilt bit for bit, memory does not grow with the run,
 //! and the joins between blocks leave the statistics of the sea and of the slowly varying
-//! force as the frequency domain gives them (physics.md section 8), with no trace in the
+//! force as the frequency domain gives them (docs/theory.md#checks-with-known-answers), with no
+//! trace in the
 //! increments.
 
 use crate::common::*;
@@ -16,9 +18,9 @@ use slowdrift::sea_state::{Spectrum, Spreading};
 use slowdrift::{Problem, Simulation};
 use std::f64::consts::PI;
 
-/// The oscillator platform of `base_config` with blocks of `block` s.
+/// The oscillator platform of `base_problem` with blocks of `block` s.
 fn with_blocks(duration: f64, block: f64, seed: u64) -> Problem {
-    let mut c = base_config(duration, 1.0, seed);
+    let mut c = base_problem(duration, 1.0, seed);
     c.run.block_duration = block;
     c
 }

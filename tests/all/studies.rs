@@ -3,7 +3,7 @@
 //! hand-computed quartiles, exact power laws and block statistics, and the 1/sqrt(length)
 //! law of the scatter over seeds.
 
-use crate::common::{base_config, simpson};
+use crate::common::{base_problem, simpson};
 use slowdrift::montecarlo::{run_seed, Case};
 use slowdrift::studies::blocks::block_summaries;
 use slowdrift::studies::distribution::{
@@ -20,13 +20,13 @@ use std::f64::consts::PI;
 #[test]
 fn an_elevation_record_longer_than_a_block_follows_the_stream() {
     let (block, length) = (2048.0, 8192.0);
-    let mut config = base_config(length, 1.0, 3);
-    config.run.block_duration = block;
-    let record = elevation_record(&config, length).unwrap();
+    let mut problem = base_problem(length, 1.0, 3);
+    problem.run.block_duration = block;
+    let record = elevation_record(&problem, length).unwrap();
     assert_eq!(record.samples.len(), 16384, "8192 s at dt = h/2 = 0.5 s");
-    let short = elevation_record(&config, block).unwrap();
+    let short = elevation_record(&problem, block).unwrap();
     assert_eq!(record.samples[..4096], short.samples[..]);
-    let mut stepped = config.clone();
+    let mut stepped = problem.clone();
     stepped.model.drag = slowdrift::model::DragModel::Off;
     let mut sim = slowdrift::Simulation::new(stepped).unwrap();
     for step in 1..8192 {
@@ -51,8 +51,8 @@ fn an_elevation_record_longer_than_a_block_follows_the_stream() {
 #[test]
 fn elevation_pdf_integrates_to_one_and_has_the_sea_variance() {
     let length = 16384.0;
-    let config = base_config(length, 1.0, 3);
-    let record = elevation_record(&config, length).unwrap();
+    let problem = base_problem(length, 1.0, 3);
+    let record = elevation_record(&problem, length).unwrap();
     assert_eq!(record.samples.len(), 32768, "2^14 s at dt = h/2 = 0.5 s");
     let hs = 6.0;
     let sigma = hs / 4.0;
@@ -69,8 +69,8 @@ fn elevation_pdf_integrates_to_one_and_has_the_sea_variance() {
         .sum::<f64>()
         - width * width / 12.0;
 
-    let (lo, hi) = config.sea.band();
-    let s = |w: f64| config.sea.spectrum.density(w);
+    let (lo, hi) = problem.sea.band();
+    let s = |w: f64| problem.sea.spectrum.density(w);
     let m0 = simpson(s, lo, hi, 20_000);
     let relative_sd = (2.0 * PI / length * simpson(|w| s(w).powi(2), lo, hi, 20_000)).sqrt() / m0;
     let target = hs * hs / 16.0;
@@ -156,7 +156,7 @@ fn scatter_over_seeds_shrinks_like_one_over_root_length() {
         .iter()
         .map(|&l| Case {
             name: format!("{l}"),
-            problem: base_config(transient + l, 1.0, 1),
+            problem: base_problem(transient + l, 1.0, 1),
             transient,
         })
         .collect();
@@ -194,7 +194,7 @@ fn bad_study_inputs_are_typed_errors() {
     assert!(err.contains("histogram.hi"), "{err}");
     let err = histogram_pdf(&[1.0], 0.0, 1.0, 0).unwrap_err().to_string();
     assert!(err.contains("histogram.bins"), "{err}");
-    let err = elevation_record(&base_config(100.0, 1.0, 1), -5.0)
+    let err = elevation_record(&base_problem(100.0, 1.0, 1), -5.0)
         .unwrap_err()
         .to_string();
     assert!(

@@ -1,4 +1,4 @@
-//! States are checked like parameters (issue #15, item 6): a restored state beyond the
+//! States are checked like parameters: a restored state beyond the
 //! documented bounds of a physical state is refused naming the value; a step that leaves
 //! them, or an output that is not finite, is an error that names its cause (the force that
 //! alone would leave the bounds within a step, the external input, or the step itself),
@@ -8,7 +8,7 @@
 //! refused as steeper than waves can be; an output that would be infinite is fmi2Error,
 //! never fmi2OK.
 
-use crate::common::{base_config, drift_table, smooth_drift};
+use crate::common::{base_problem, drift_table, smooth_drift};
 use crate::fmu::*;
 use slowdrift::bounds::{MAX_SPEED, MAX_YAW_RATE};
 use slowdrift::error::Cause;
@@ -19,7 +19,7 @@ use slowdrift::problem::Hydro;
 use slowdrift::{Error, Simulation, Snapshot};
 use std::f64::consts::PI;
 
-/// The oscillator of `common::base_config` with surge period `period` and linear damping
+/// The oscillator of `common::base_problem` with surge period `period` and linear damping
 /// rate c/m = `rate` (1/s) stepped by h = 1 s. RK4 is stable for an undamped oscillator
 /// with omega h below 2 sqrt(2) = 2.83 (the boundary of its stability region on the
 /// imaginary axis): a stiffness with a period of 2 s (omega h = 3.14) is refused before the
@@ -29,7 +29,7 @@ use std::f64::consts::PI;
 #[test]
 fn an_unstable_step_is_blamed_on_the_step() {
     let run = |period: f64, rate: f64| {
-        let mut p = base_config(20_000.0, 1.0, 1);
+        let mut p = base_problem(20_000.0, 1.0, 1);
         let m = p.inertia().unwrap().mass;
         p.platform.stiffness[0][0] = m * (2.0 * PI / period).powi(2);
         p.platform.linear_damping = [[0.0; 3]; 3];
@@ -67,7 +67,7 @@ fn an_unstable_step_is_blamed_on_the_step() {
 /// the bound's impulse (5e9 N: 500 m/s) is not.
 #[test]
 fn an_excessive_input_is_blamed_on_the_input() {
-    let mut sim = Simulation::new(base_config(1000.0, 1.0, 1)).unwrap();
+    let mut sim = Simulation::new(base_problem(1000.0, 1.0, 1)).unwrap();
     let mass = sim.problem().inertia().unwrap().mass;
     assert_eq!(mass, 1.0e7);
     let force = 2.0 * MAX_SPEED * mass;
@@ -93,7 +93,7 @@ fn an_excessive_input_is_blamed_on_the_input() {
 /// it grows with.
 #[test]
 fn an_infinite_force_is_refused_naming_the_wave_force() {
-    let mut p = base_config(1000.0, 1.0, 1);
+    let mut p = base_problem(1000.0, 1.0, 1);
     p.sea.spectrum = crate::common::jonswap(500.0, 50.0);
     p.hydro = Hydro::from_drift(drift_table(|w, b| smooth_drift(w, b).map(|v| v * 5e302)));
     let mut sim = Simulation::new(p).unwrap();
@@ -123,7 +123,7 @@ fn an_infinite_force_is_refused_naming_the_wave_force() {
 /// when read from bytes; one just within them is restored.
 #[test]
 fn restored_states_beyond_the_bounds_are_refused() {
-    let mut sim = Simulation::new(base_config(1000.0, 1.0, 1)).unwrap();
+    let mut sim = Simulation::new(base_problem(1000.0, 1.0, 1)).unwrap();
     let good = sim.snapshot().to_bytes();
     // Velocity X' is the 7th 8-byte word (origin, count, step, X, Y, theta, X', ...).
     let with_word = |word: usize, value: f64| {

@@ -1,4 +1,4 @@
-//! What the user gives is what runs (issue #27, part 1): the model takes its mass and added
+//! What the user gives is what runs: the model takes its mass and added
 //! mass from the user's data where the configuration does not give its own, and says so;
 //! a stiffness that stores negative energy and values beyond their physical ranges are
 //! refused naming the setting where it was written (configuration file, case table, FMU).
@@ -11,8 +11,7 @@ use crate::common::shared_data_dir;
 use crate::fmu::Fmu;
 use slowdrift::fmi2::model_description::vr;
 use slowdrift::fmi2::types::fmi2Status;
-use slowdrift::hydro::io::database::HydroDatabase;
-use slowdrift::hydro::io::wamit::WamitOptions;
+use slowdrift::hydro::io::wamit::{self, WamitOptions};
 use slowdrift::problem::{self, Origin, Problem};
 use slowdrift::scenario::file;
 use slowdrift::scenario::limits::DEFAULT_MEMORY_LIMIT as LIMIT;
@@ -88,7 +87,7 @@ fn iea_config(platform_extra: &str) -> String {
 
 /// The IEA-15 database in `dir/iea.json` and the configuration `text` in `dir/iea.toml`.
 fn write_iea(dir: &Path, root: &Path, text: &str) -> PathBuf {
-    HydroDatabase::from_wamit(root, &WamitOptions::default())
+    wamit::import(root, &WamitOptions::default())
         .unwrap()
         .database
         .save(&dir.join("iea.json"))

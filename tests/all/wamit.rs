@@ -9,7 +9,8 @@
 use rustfft::num_complex::Complex64;
 use slowdrift::hydro::io::database::{HydroDatabase, MassProperties, FORMAT_VERSION};
 use slowdrift::hydro::io::wamit::{
-    read_added_mass_damping, read_difference_qtf, read_hydrostatics, read_mean_drift, WamitOptions,
+    self, read_added_mass_damping, read_difference_qtf, read_hydrostatics, read_mean_drift,
+    WamitOptions,
 };
 use slowdrift::model::Dof;
 use slowdrift::scenario::limits::DEFAULT_MEMORY_LIMIT as LIMIT;
@@ -326,7 +327,7 @@ fn oc4_database_from_wamit_saves_loads_and_gives_the_qtf_diagonal() {
         return;
     };
     let options = WamitOptions::default();
-    let import = HydroDatabase::from_wamit(&root, &options).unwrap();
+    let import = wamit::import(&root, &options).unwrap();
     for line in &import.files {
         println!("{line}");
     }
@@ -583,7 +584,7 @@ fn malformed_lines_name_the_file_and_line() {
     );
 }
 
-/// Strict numbers (issue #15): a `.1` file cut inside its last number (the exponent lost:
+/// Strict numbers: a `.1` file cut inside its last number (the exponent lost:
 /// it would read A66 = 6.27 kg m^2 instead of 6.27e9), an exponent cut short at its end,
 /// a number cut on an unterminated last line of a column without exponents, and a `.1`
 /// file with no frequency at all are refused naming the file and line.
@@ -968,7 +969,7 @@ fn database_from_synthetic_wamit_files_prefers_the_momentum_drift() {
         }
     }
     write(&dir, "body.8", &eight);
-    let import = HydroDatabase::from_wamit(&root, &WamitOptions::default()).unwrap();
+    let import = wamit::import(&root, &WamitOptions::default()).unwrap();
     let db = &import.database;
     assert!(db.source.contains("drift from .8"), "{}", db.source);
     assert_eq!(db.low_frequency_added_mass, None);
@@ -983,10 +984,9 @@ fn database_from_synthetic_wamit_files_prefers_the_momentum_drift() {
         .map(|l| format!("{l}\n"))
         .collect();
     std::fs::write(dir.join("body.12d"), only_surge_at_0).unwrap();
-    let err = HydroDatabase::from_wamit(&root, &WamitOptions::default()).unwrap_err();
+    let err = wamit::import(&root, &WamitOptions::default()).unwrap_err();
     assert!(err.to_string().contains("DOF 2"), "{err}");
-    let err =
-        HydroDatabase::from_wamit(&dir.join("nothing"), &WamitOptions::default()).unwrap_err();
+    let err = wamit::import(&dir.join("nothing"), &WamitOptions::default()).unwrap_err();
     assert!(err.to_string().contains("no WAMIT file found"), "{err}");
 }
 
@@ -1016,7 +1016,7 @@ fn cli_hydro_wamit_writes_the_database_and_summarises() {
         "{stdout}"
     );
     assert!(stdout.contains("marin_semi.8: absent"), "{stdout}");
-    let expected = HydroDatabase::from_wamit(&root, &WamitOptions::default()).unwrap();
+    let expected = wamit::import(&root, &WamitOptions::default()).unwrap();
     assert_eq!(HydroDatabase::load(&out, LIMIT).unwrap(), expected.database);
 
     let refused = std::process::Command::new(env!("CARGO_BIN_EXE_slowdrift"))

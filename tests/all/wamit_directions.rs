@@ -1,14 +1,14 @@
-//! WAMIT files with several headings (issue #13 part 1): `.8`/`.9` bi-directional rows into
+//! WAMIT files with several headings: `.8`/`.9` bi-directional rows into
 //! the database's `bidirectional_drift`, and what is refused. The files are written here from
 //! a closed form T(omega; beta1, beta2), Hermitian in the heading pair; the expected values are
 //! that form, scaled by rho g by hand.
 
-use crate::common::{base_config, jonswap};
+use crate::common::{base_problem, jonswap};
 use crate::quirks::temp_dir;
 use rustfft::num_complex::Complex64;
 use slowdrift::forces::direction_pairs;
 use slowdrift::hydro::io::database::HydroDatabase;
-use slowdrift::hydro::io::wamit::{read_mean_drift, WamitOptions};
+use slowdrift::hydro::io::wamit::{self, read_mean_drift, WamitOptions};
 use slowdrift::model::Interaction;
 use slowdrift::problem::Hydro;
 use slowdrift::scenario::limits::DEFAULT_MEMORY_LIMIT as LIMIT;
@@ -95,7 +95,7 @@ fn bidirectional_rows_fill_the_database_table_and_reach_a_spread_sea() {
 
     // The import puts it into the database; a spread sea on the table's headings takes its
     // cross terms from it, exactly at the nodes.
-    let import = HydroDatabase::from_wamit(&dir.join("semi"), &options).unwrap();
+    let import = wamit::import(&dir.join("semi"), &options).unwrap();
     assert!(
         import
             .files
@@ -110,7 +110,7 @@ fn bidirectional_rows_fill_the_database_table_and_reach_a_spread_sea() {
     database.save(&json).unwrap();
     assert_eq!(HydroDatabase::load(&json, LIMIT).unwrap(), database);
 
-    let mut problem = base_config(1200.0, 1.0, 3);
+    let mut problem = base_problem(1200.0, 1.0, 3);
     problem.hydro = Hydro {
         qtf: None,
         bidirectional: database
@@ -260,7 +260,7 @@ fn a_qtf_with_several_heading_pairs_becomes_per_pair_blocks() {
     let periods = [20.0, 12.0, 9.0, 7.0];
     let headings = [-30.0, 0.0, 30.0];
     write_bidirectional_qtf(&dir.join("semi.12d"), &periods, &headings, &[]);
-    let import = HydroDatabase::from_wamit(&dir.join("semi"), &WamitOptions::default()).unwrap();
+    let import = wamit::import(&dir.join("semi"), &WamitOptions::default()).unwrap();
     assert!(
         import
             .files

@@ -1,4 +1,4 @@
-//! Yaw-following records (issue #5 part 3) on the default platform (column-solver drift,
+//! Yaw-following records on the default platform (column-solver drift,
 //! Aranha damping), each against an independent route: the mean-position records of the
 //! sea rotated by -theta (the existing path with the wave direction minus theta).
 
@@ -19,7 +19,12 @@ fn default() -> Problem {
 /// The default platform for `duration` s in a sea towards `direction_deg`, optionally
 /// spread cos^2 over 5 directions (each direction's own terms only: yaw following does not
 /// carry the cross-direction terms), with the given yaw following.
-fn config(duration: f64, direction_deg: f64, spread: bool, yaw: Option<YawFollowing>) -> Problem {
+fn yaw_problem(
+    duration: f64,
+    direction_deg: f64,
+    spread: bool,
+    yaw: Option<YawFollowing>,
+) -> Problem {
     let mut c = default();
     c.run.duration = duration;
     c.sea.mean_direction = direction_deg.to_radians();
@@ -75,7 +80,7 @@ fn direct(base: &Problem, theta_deg: f64) -> Vec<Vec<f64>> {
 #[test]
 fn at_every_grid_yaw_the_records_are_those_of_the_rotated_sea() {
     // Oblique spread sea: every record non-zero, 5 directions x 5 yaws of relative headings.
-    let on = config(1200.0, 30.0, true, range(5, -10.0, 10.0));
+    let on = yaw_problem(1200.0, 30.0, true, range(5, -10.0, 10.0));
     let sim = Simulation::new(on.clone()).unwrap();
     let mut spread_of_sway = (f64::INFINITY, 0.0f64);
     for theta_deg in [-10.0, -5.0, 0.0, 5.0, 10.0] {
@@ -109,7 +114,7 @@ fn between_grid_yaws_the_error_is_within_the_linear_interpolation_bound() {
     // records are smooth in theta. Direct records every 0.5 deg give d^2 D / d theta^2 by
     // central differences; the linear remainder bounds the error at each sample:
     //   |D_lin - D| <= (theta - theta_j)(theta_j+1 - theta)/2 max |D''|.
-    let on = config(1200.0, 25.0, false, range(5, -8.0, 8.0));
+    let on = yaw_problem(1200.0, 25.0, false, range(5, -8.0, 8.0));
     let sim = Simulation::new(on.clone()).unwrap();
     let step = 0.5f64;
     let direct_at: Vec<Vec<Vec<f64>>> = (0..=8).map(|q| direct(&on, q as f64 * step)).collect();
@@ -154,8 +159,8 @@ fn between_grid_yaws_the_error_is_within_the_linear_interpolation_bound() {
 fn with_the_yaw_held_at_zero_yaw_following_changes_nothing() {
     // Head seas on the symmetric default platform (combined drag, Aranha damping): no yaw,
     // so the records at theta = 0 are read and the run equals the mean-position run.
-    let off = config(3600.0, 0.0, false, None);
-    let on = config(
+    let off = yaw_problem(3600.0, 0.0, false, None);
+    let on = yaw_problem(
         3600.0,
         0.0,
         false,
@@ -199,7 +204,7 @@ fn with_the_yaw_held_at_zero_yaw_following_changes_nothing() {
 /// An oblique spread sea on the default platform with a yaw spring 20 times softer, from
 /// an initial yaw of `initial_deg`.
 fn yawing(duration: f64, initial_deg: f64, yaw: Option<YawFollowing>) -> Problem {
-    let mut c = config(duration, 30.0, true, yaw);
+    let mut c = yaw_problem(duration, 30.0, true, yaw);
     c.platform.stiffness[2][2] /= 20.0;
     c.initial.position[2] = initial_deg.to_radians();
     c
@@ -279,7 +284,7 @@ fn a_table_that_misses_relative_headings_is_refused_naming_the_gap() {
             })
         })
         .collect();
-    let mut c = crate::common::base_config(600.0, 1.0, 1);
+    let mut c = crate::common::base_problem(600.0, 1.0, 1);
     c.hydro.drift = DriftTable::from_rows(&rows).unwrap();
     c.model.yaw_following = range(5, -10.0, 10.0);
     let text = Simulation::new(c.clone()).unwrap_err().to_string();
@@ -296,7 +301,7 @@ fn a_table_that_misses_relative_headings_is_refused_naming_the_gap() {
 
 #[test]
 fn invalid_yaw_following_options_are_refused_naming_the_field() {
-    let mut c = crate::common::base_config(600.0, 1.0, 1);
+    let mut c = crate::common::base_problem(600.0, 1.0, 1);
     c.model.yaw_following = Some(YawFollowing {
         headings: 1,
         range: None,
@@ -329,7 +334,7 @@ fn record_means_are_the_drift_at_the_relative_heading() {
     // (Parseval: the cross terms average out), a sum without FFTs. Head seas; yaw -5, 0, 5 deg.
     use slowdrift::forces::{plan_inverse_fft, YawFollowingRecords, YawGrid};
     use slowdrift::sea_state::WaveComponents;
-    let c = config(10800.0, 0.0, false, range(3, -5.0, 5.0));
+    let c = yaw_problem(10800.0, 0.0, false, range(3, -5.0, 5.0));
     let sim = Simulation::new(c.clone()).unwrap();
     // Block 0's records over their whole period N; the simulation's first segment holds
     // them from global sample -1 (forces::stream), bit for bit.
@@ -410,7 +415,7 @@ fn yaw_following_in_a_spread_sea_with_interaction_is_refused() {
         headings: 12,
         range: None,
     });
-    let mut c = config(600.0, 30.0, true, circle);
+    let mut c = yaw_problem(600.0, 30.0, true, circle);
     assert!(Simulation::new(c.clone()).is_ok());
     c.model.interaction = Interaction::Auto;
     let e = Simulation::new(c).unwrap_err();

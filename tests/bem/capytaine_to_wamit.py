@@ -11,7 +11,8 @@ and SlowDrift, found by tests/bem/test_capytaine_route.py with an offset cylinde
   the conjugates. The test tells the two apart by the phase a translation of the body adds,
   e^{-i (k_k - k_l) . x_c} in SlowDrift's convention.
 - The two-heading yaw term. Capytaine's takes the heading indices of its Kochin products the
-  other way round from its force terms (physics.md section 10). The test finds the two-heading
+  other way round from its force terms (docs/file-formats.md#wamit-import-and-the-hydro-database).
+  The test finds the two-heading
   yaw moment about the origin of an offset cylinder (at (20, 10) m, 1 rad/s) off
   x_c F_y - y_c F_x by 218 % of the largest moment, and by 81 % when conjugated: not something
   a converter of the written file could undo. The term is recomputed from the Kochin functions.

@@ -219,7 +219,8 @@ def test_capytaines_finite_depth_drift_falls_short_at_low_kh():
 
     - its first-order solution is right: the surge excitation is MacCamy and Fuchs's,
       |F| = 4 rho g A tanh(kh) / (k^2 |H1'(ka)|), within 2 % at every kh;
-    - its `far_field_mean_drift_force` matches the closed form of physics.md section 8
+    - its `far_field_mean_drift_force` matches the closed form of
+      docs/theory.md#checks-with-known-answers
       (Havelock's sum times 1 + 2kh / sinh 2kh) within the mesh's 4 % for kh >= 2, and falls
       short of it as kh falls: by more than 30 % at kh = 0.78 and 10 % at kh = 1.2;
     - the cause is in its drift coefficients, not the solution: for a fixed body, energy

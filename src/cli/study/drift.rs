@@ -11,7 +11,8 @@ use slowdrift::scenario::{ColumnGrid, DriftSource};
 use slowdrift::Problem;
 use std::fmt::Write as _;
 
-/// The column solver's grid: the default's former one (100 frequencies, 10 degrees).
+/// The column solver's grid of this study: 100 frequencies over 0.05 .. 3 rad/s, headings every
+/// 10 degrees.
 const COLUMN_GRID: ColumnGrid = ColumnGrid {
     omega_min: 0.05,
     omega_max: 3.0,

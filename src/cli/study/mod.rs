@@ -270,19 +270,19 @@ fn report(paths: &[PathBuf]) {
     }
 }
 
-fn sea_text(config: &Problem) -> String {
+fn sea_text(problem: &Problem) -> String {
     use slowdrift::sea_state::Spectrum;
-    let spectrum = match &config.sea.spectrum {
+    let spectrum = match &problem.sea.spectrum {
         Spectrum::Jonswap { hs, tp, .. } => format!("JONSWAP Hs {hs} m, Tp {tp} s"),
         Spectrum::PiersonMoskowitz { hs, tp } => format!("PM Hs {hs} m, Tp {tp} s"),
         Spectrum::Tabulated { .. } => "tabulated spectrum".into(),
     };
-    format!("{spectrum}, seed {}", config.sea.seed)
+    format!("{spectrum}, seed {}", problem.sea.seed)
 }
 
 /// The undamped surge natural period times [`TRANSIENT_CYCLES`] (ten slow-drift cycles), s.
-fn ten_cycles(config: &Problem) -> Result<f64, String> {
-    config
+fn ten_cycles(problem: &Problem) -> Result<f64, String> {
+    problem
         .surge_natural_period()
         .map(|p| TRANSIENT_CYCLES * p)
         .ok_or_else(|| "the platform has no surge stiffness: no slow-drift period".to_string())

@@ -23,11 +23,11 @@ const PDF_HALF_WIDTH: f64 = 4.0;
 
 /// The integral of S(omega)^power over the simulated band by the trapezoidal rule on 20 000
 /// intervals; power 1 is the variance the synthesis targets (E&S 5-6), m^2.
-fn band_integral(config: &Problem, power: i32) -> f64 {
+fn band_integral(problem: &Problem, power: i32) -> f64 {
     const INTERVALS: usize = 20_000;
-    let (lo, hi) = config.sea.band();
+    let (lo, hi) = problem.sea.band();
     let h = (hi - lo) / INTERVALS as f64;
-    let s = |i: usize| config.sea.spectrum.density(lo + i as f64 * h).powi(power);
+    let s = |i: usize| problem.sea.spectrum.density(lo + i as f64 * h).powi(power);
     h * ((1..INTERVALS).map(s).sum::<f64>() + 0.5 * (s(0) + s(INTERVALS)))
 }
 
@@ -35,9 +35,9 @@ fn band_integral(config: &Problem, power: i32) -> f64 {
 /// length L has variance sum |a_n|^2 / 2 with |a_n|^2 exponentially distributed of mean
 /// 2 S(w_n) dw (E&S 5), so sd / mean = sqrt(dw sum S^2 dw) / m0 -> sqrt((2 pi / L)
 /// integral S^2 dw) / integral S dw.
-fn variance_relative_sd(config: &Problem, length: f64) -> f64 {
-    (2.0 * std::f64::consts::PI / length * band_integral(config, 2)).sqrt()
-        / band_integral(config, 1)
+fn variance_relative_sd(problem: &Problem, length: f64) -> f64 {
+    (2.0 * std::f64::consts::PI / length * band_integral(problem, 2)).sqrt()
+        / band_integral(problem, 1)
 }
 
 fn length_label(exponent: u32) -> String {

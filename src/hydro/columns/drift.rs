@@ -23,7 +23,8 @@
 //! With psi = sum u_m e^{i m t} on r = a the angular integrals are finite sums:
 //!   F_x - i F_y = (pi/4) rho g a (1 + s) Q,   Q = sum_m (m (m + 1)/(k a)^2 - 1) u_{m+1} conj(u_m).
 //! For one column this is, term by term, Havelock's series times 1 + 2kh/sinh 2kh
-//! (physics.md section 8). Pressure acts normal to the circular column, through its axis, so
+//! (docs/theory.md#checks-with-known-answers). Pressure acts normal to the circular column, through
+//! its axis, so
 //! the yaw moment about the origin is sum_c (x_c F_y,c - y_c F_x,c), exactly.
 //!
 //! Two incident waves of amplitudes A_p, A_q (headings b_p, b_q, same frequency) give
@@ -44,7 +45,8 @@
 //!   F = -(rho g/k)(c_g/c) [(1/pi) int |H|^2 e_r dt + 2 Re H(b) e_b]
 //!     = (rho g/(pi k))(c_g/c) int_0^{2 pi} |H(t)|^2 (e_b - e_r(t)) dt,
 //! by the optical theorem int |H|^2 dt = -2 pi Re H(b) (zero mean energy flux). For one
-//! column this is (2 rho g / k)(c_g/c) sum_{n>=0} |Z_n - Z_{n+1}|^2 (physics.md section 8).
+//! column this is (2 rho g / k)(c_g/c) sum_{n>=0} |Z_n - Z_{n+1}|^2
+//! (docs/theory.md#checks-with-known-answers).
 //! The moment about the origin follows from the angular-momentum flux r M_t, where the
 //! scattered wave's angular gradient (1/r) dH/dt enters at O(1/r) and the incident-
 //! scattered term, after an integration by parts in t, at the stationary point t = b:

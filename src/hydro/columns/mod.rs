@@ -1,5 +1,6 @@
 //! Built-in hydrodynamics of an array of vertical circular columns: the interaction theory
-//! of Linton & Evans (1990) (physics.md section 9), first-order exciting forces, the mean
+//! of Linton & Evans (1990) (docs/theory.md#columns-linton-and-evans), first-order exciting forces,
+//! the mean
 //! drift force and yaw moment by near-field pressure integration and, independently, by the
 //! far-field momentum flux of the array's Kochin function, the bi-directional mean drift,
 //! and Aranha's wave-drift damping with derivatives taken from the solver itself.
@@ -27,7 +28,7 @@
 //! the array's (body) frame; every quantity is per unit incident amplitude (force per m of
 //! amplitude, drift per m^2). The solver works in Linton & Evans' e^{-i omega t}; results
 //! with a phase ([`ArrayHydro::excitation`], [`BidirectionalDrift::get`]) are converted to
-//! the project's convention Re[a e^{i omega t}] (physics.md section 1) by complex
+//! the project's convention Re[a e^{i omega t}] (docs/theory.md#conventions) by complex
 //! conjugation, with the incident wave eta = Re[a e^{i (omega t - k (x cos beta + y sin beta))}]
 //! (phase reference at the origin). The drift is real and convention-free.
 //!
@@ -37,7 +38,8 @@
 //!   one only down to z = -d (plus the flow under the keel). A strip estimate (each slice
 //!   scattering like the infinite column, far field = projection of the slice sources onto
 //!   the propagating mode e^{kz}) scales the Kochin function by 1 - e^{-2kd} and the drift
-//!   (quadratic in it) by (1 - e^{-2kd})^2; physics.md section 9 quotes the milder
+//!   (quadratic in it) by (1 - e^{-2kd})^2; docs/theory.md#columns-linton-and-evans quotes the
+//!   milder
 //!   1 - e^{-kd}. For the paper's columns (d = 30 m) the strip factor is 0.18 at
 //!   omega = 0.3 rad/s (kd = 0.28), 0.61 at 0.5 rad/s, 0.90 at 0.7 rad/s and > 0.99 above
 //!   1 rad/s: the infinitely deep column over-predicts the drift by factors of about 5, 1.6,

@@ -1,5 +1,6 @@
 //! The first-order problem of one frequency: dispersion relation, the Linton & Evans (1990)
-//! multiple-scattering system (physics.md section 9), its solution for any number of
+//! multiple-scattering system (docs/theory.md#columns-linton-and-evans), its solution for any
+//! number of
 //! incident waves, and the exciting force.
 //!
 //! Internally the time factor is Linton & Evans' e^{-i omega t}. With incident elevation

@@ -5,6 +5,7 @@
 
 pub mod database;
 pub mod drift_csv;
+pub mod import;
 mod json_position;
 pub mod nemoh;
 pub mod wamit;

@@ -1,4 +1,4 @@
-//! How a number is written, to tell a number cut short from a whole one (issue #15): a
+//! How a number is written, to tell a number cut short from a whole one: a
 //! reader compares a number with the same field of an earlier line of its file. A field
 //! whose earlier number has an exponent must have one (a mantissa whose exponent was lost,
 //! `6.273170` for `6.273170E+09`, reads a billion times too small); on the last line of a

@@ -1,4 +1,4 @@
-//! The fuzzing harness (issue #15, item 9): the readers (TOML configuration, WAMIT files,
+//! The fuzzing harness: the readers (TOML configuration, WAMIT files,
 //! case tables, the native database) and FMI call sequences, fed mutated inputs for a time
 //! budget. A finding is a panic (caught), an input that takes longer than [`SLOW`], an
 //! FMU output returned as fmi2OK but not finite, or a process that dies (an abort: an

@@ -28,7 +28,7 @@ pub struct FrequencyMatrices {
     pub matrices: Vec<Vec<Vec<f64>>>,
 }
 
-/// How the first row of a file writes its numbers (issue #15): a later row's number written
+/// How the first row of a file writes its numbers: a later row's number written
 /// with less (its exponent lost; on a last line without a newline, fewer digits) is cut.
 struct Reference<'a> {
     line: usize,

@@ -1,5 +1,6 @@
-//! Readers for WAMIT's numeric output files (the industry's exchange format; physics.md
-//! section 10), dimensionalised with the options' ULEN, rho and g.
+//! Readers for WAMIT's numeric output files (the industry's exchange format;
+//! docs/file-formats.md#wamit-import-and-the-hydro-database), dimensionalised with the options'
+//! ULEN, rho and g.
 //!
 //! | file | reader | content |
 //! |---|---|---|
@@ -25,19 +26,22 @@
 //! error naming both lines. Only single-body files (DOFs 1 to 6) are read.
 //!
 //! Time convention: WAMIT writes complex amplitudes for e^{i omega t}, the crate's own
-//! convention (physics.md section 1), and defines the difference-frequency force as
+//! convention (docs/theory.md#conventions), and defines the difference-frequency force as
 //! Re sum_i sum_j A_i A_j* F-(w_i, w_j) e^{i (w_i - w_j) t}, the definition of
-//! physics.md section 4. QTF values are therefore stored as given (Re + i Im of the file,
+//! docs/theory.md#the-slowly-varying-force. QTF values are therefore stored as given (Re + i Im of
+//! the file,
 //! scaled), with PER1 giving w_i and PER2 giving w_j; nothing is conjugated. A file written
 //! for e^{-i omega t} would need its QTF conjugated before use.
 
 mod added_mass;
 mod hydrostatics;
+mod import;
 mod mean_drift;
 mod qtf;
 
 pub use added_mass::{read_added_mass_damping, AddedMassDamping};
 pub use hydrostatics::{read_hydrostatics, Hydrostatics};
+pub use import::import;
 pub use mean_drift::{read_mean_drift, DriftBlock, MeanDrift, PairBlock};
 pub(in crate::hydro::io) use qtf::{assemble_qtf, QtfEntry};
 pub use qtf::{read_difference_qtf, DifferenceQtf, QtfBlock};
@@ -53,9 +57,9 @@ use std::path::Path;
 
 /// Default WAMIT length scale ULEN, m.
 pub const DEFAULT_ULEN: f64 = 1.0;
-/// Default water density, kg/m^3 (physics.md section 1).
+/// Default water density, kg/m^3 (docs/theory.md#conventions).
 pub const DEFAULT_RHO: f64 = 1025.0;
-/// Default acceleration of gravity, m/s^2 (physics.md section 1).
+/// Default acceleration of gravity, m/s^2 (docs/theory.md#conventions).
 pub const DEFAULT_GRAVITY: f64 = 9.80665;
 
 /// How closely a line's polar columns (abs(F), phase) must give its Cartesian ones (Re, Im),
@@ -183,7 +187,7 @@ impl NumericFile {
         let mut records = Vec::new();
         let mut seen_content = false;
         // How the first numeric line of each field count writes its numbers: a later number
-        // written with less than that is cut (issue #15).
+        // written with less than that is cut.
         let mut references: Vec<(usize, Vec<&str>)> = Vec::new();
         let unterminated = !text.ends_with('\n');
         let last_line = text.lines().count();

@@ -29,7 +29,7 @@ pub struct QtfBlock {
 /// symmetry T(w_j, w_i; beta2, beta1) = conj T(w_i, w_j; beta1, beta2).
 ///
 /// Values follow F(t) = Re sum_i sum_j a_i a_j* T(w_i, w_j) e^{i (w_i - w_j) t}
-/// (physics.md section 4; WAMIT's own definition, see the module documentation).
+/// (docs/theory.md#the-slowly-varying-force; WAMIT's own definition, see the module documentation).
 #[derive(Debug, Clone, PartialEq)]
 pub struct DifferenceQtf {
     path: String,
