@@ -11,7 +11,9 @@
 //! no Enumeration (libcosim and ecos register only Real, Integer, Boolean and String: a mode
 //! is an Integer with min, max and its codes in the description), and every Real carries
 //! its own `unit`, one of the UnitDefinitions and its declaredType's (OMSimulator does not
-//! inherit a unit from a declaredType).
+//! inherit a unit from a declaredType). Each mode's FMU parameter (`src/model/modes.rs`, the
+//! one definition of the modes, `include!`d here) must be an Integer whose min, max and
+//! description list exactly the mode's codes, words and descriptions.
 
 use quick_xml::events::{BytesStart, Event};
 use quick_xml::{Reader, XmlVersion};
@@ -24,6 +26,46 @@ const XML_PATH: &str = "modelDescription/modelDescription.xml";
 /// Linker version script of every FMU's cdylib (the FMI layer's): `fmi2*` global,
 /// everything else local.
 const VERSION_SCRIPT: &str = "fmi/src/fmi2/exports.map";
+/// The modes' one definition, read here through the `modes!` below.
+const MODES_PATH: &str = "src/model/modes.rs";
+/// What a mode parameter's description says before its codes.
+const CODES_FOLLOW: &str = ", a code: ";
+
+/// A mode of `src/model/modes.rs` as this script needs it.
+struct ModeTable {
+    /// The mode's type (`DragKind`).
+    name: &'static str,
+    /// Its FMU Integer parameter, if any.
+    parameter: Option<&'static str>,
+    /// The word of code 0 that keeps the configuration's choice, and its description.
+    keep: Option<(&'static str, &'static str)>,
+    /// Its words and their descriptions, in the order of their codes.
+    words: &'static [(&'static str, &'static str)],
+}
+
+/// `src/model/modes.rs` as plain tables (the crate's `modes!` makes the enums from it).
+macro_rules! modes {
+    ($(
+        $(#[$meta:meta])*
+        $name:ident
+        $(in $parameter:literal $(, keeping $keep:literal: $keep_description:literal)?)? {
+            $($(#[$variant_meta:meta])* $variant:ident = $word:literal: $description:literal,)+
+        }
+    )*) => {
+        /// Every mode, in the file's order.
+        const MODES: &[ModeTable] = &[$(ModeTable {
+            name: stringify!($name),
+            parameter: modes!(@option $($parameter)?),
+            keep: modes!(@option $($($keep, $keep_description)?)?),
+            words: &[$(($word, $description)),+],
+        }),*];
+    };
+    (@option) => { None };
+    (@option $value:literal) => { Some($value) };
+    (@option $word:literal, $description:literal) => { Some(($word, $description)) };
+}
+
+include!("src/model/modes.rs");
 
 /// One `ScalarVariable` as read from the XML.
 #[derive(Debug, Default)]
@@ -72,6 +114,7 @@ struct Model {
 fn main() {
     println!("cargo:rerun-if-changed={XML_PATH}");
     println!("cargo:rerun-if-changed=build.rs");
+    println!("cargo:rerun-if-changed={MODES_PATH}");
     export_only_fmi2_symbols();
 
     let xml = std::fs::read_to_string(XML_PATH)
@@ -339,6 +382,7 @@ fn check(m: &Model) -> Vec<String> {
         }
         errors.extend(check_bounds(v).into_iter().map(|e| format!("{at}: {e}")));
     }
+    errors.extend(check_modes(m));
 
     if !m.saw_model_structure {
         errors.push("no ModelStructure".into());
@@ -433,6 +477,128 @@ fn check_master_neutral(m: &Model, v: &Var) -> Vec<String> {
         _ => {}
     }
     errors
+}
+
+/// Each mode's FMU parameter (`MODES`, from src/model/modes.rs) is an Integer parameter
+/// whose min and max are its first and last code and whose description lists, after
+/// ", a code: ", exactly its codes in order, each with its word and description: "0 off (no
+/// viscous drag), 1 separate (C_DS U|U| + C_DL u|u|, E&S 8; cdSlow, cdFast), ..." (what the
+/// FMU adds follows the description after "; "). An Integer whose description lists codes
+/// is a mode's.
+fn check_modes(m: &Model) -> Vec<String> {
+    let mut errors = Vec::new();
+    for mode in MODES {
+        let Some(parameter) = mode.parameter else {
+            continue;
+        };
+        let Some(v) = m.vars.iter().find(|v| v.name == parameter) else {
+            errors.push(format!(
+                "mode {} ({MODES_PATH}) is written by FMU parameter {parameter}, which is not \
+                 a variable",
+                mode.name
+            ));
+            continue;
+        };
+        let at = format!("{} (line {})", v.name, v.line);
+        if v.ty != "Integer" || v.causality != "parameter" {
+            errors.push(format!(
+                "{at}: the mode {} is an Integer parameter, not a {} {}",
+                mode.name, v.causality, v.ty
+            ));
+            continue;
+        }
+        let codes: Vec<(&str, &str)> = mode
+            .keep
+            .into_iter()
+            .chain(mode.words.iter().copied())
+            .collect();
+        let last = (codes.len() - 1).to_string();
+        if v.min.as_deref() != Some("0") || v.max.as_deref() != Some(last.as_str()) {
+            errors.push(format!(
+                "{at}: min and max must be 0 and {last}, the codes of the mode {} \
+                 ({MODES_PATH})",
+                mode.name
+            ));
+        }
+        let description = v.description.as_deref().unwrap_or_default();
+        let listed = match description.split_once(CODES_FOLLOW) {
+            Some((_, list)) => check_code_list(list, &codes),
+            None => Err(format!("no {CODES_FOLLOW:?}")),
+        };
+        if let Err(e) = listed {
+            errors.push(format!(
+                "{at}: the description must list the codes of the mode {} ({MODES_PATH}), \
+                 each with its word and description, after {CODES_FOLLOW:?}: {e}",
+                mode.name
+            ));
+        }
+    }
+    for v in &m.vars {
+        let lists_codes = v
+            .description
+            .as_deref()
+            .is_some_and(|d| d.contains(CODES_FOLLOW));
+        if lists_codes
+            && !MODES
+                .iter()
+                .any(|mode| mode.parameter == Some(v.name.as_str()))
+        {
+            errors.push(format!(
+                "{} (line {}): its description lists codes, but no mode of {MODES_PATH} is \
+                 written by it",
+                v.name, v.line
+            ));
+        }
+    }
+    errors
+}
+
+/// `list` is exactly `codes`, in order: "0 word (description[; more]), 1 ...".
+fn check_code_list(list: &str, codes: &[(&str, &str)]) -> Result<(), String> {
+    let mut rest = list;
+    for (code, (word, description)) in codes.iter().enumerate() {
+        let item = format!("{code} {word} ({description}");
+        rest = rest
+            .strip_prefix(&item)
+            .ok_or_else(|| format!("expected {item:?}..., found {rest:?}"))?;
+        let close = closing_parenthesis(rest)
+            .ok_or_else(|| format!("no closing parenthesis after {item:?}"))?;
+        let more = &rest[..close];
+        if !(more.is_empty() || more.starts_with("; ")) {
+            return Err(format!(
+                "after {item:?}, expected \")\" or \"; \", found {more:?}"
+            ));
+        }
+        rest = &rest[close + 1..];
+        if code + 1 < codes.len() {
+            rest = rest
+                .strip_prefix(", ")
+                .ok_or_else(|| format!("expected \", \" after code {code}, found {rest:?}"))?;
+        }
+    }
+    if rest.is_empty() {
+        Ok(())
+    } else {
+        Err(format!("more than the {} codes: {rest:?}", codes.len()))
+    }
+}
+
+/// The byte offset of the parenthesis that closes one already open.
+fn closing_parenthesis(text: &str) -> Option<usize> {
+    let mut depth = 1;
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => {
+                depth -= 1;
+                if depth == 0 {
+                    return Some(i);
+                }
+            }
+            _ => {}
+        }
+    }
+    None
 }
 
 /// `min <= start <= max` where given (Real and Integer).

@@ -21,6 +21,7 @@ use clap::{Args, Parser, Subcommand};
 use cli::args::Checked;
 use cli::Failure;
 use slowdrift::error::numbers::{readable, written};
+use slowdrift::model::Mode;
 use slowdrift::stats::{summarize, Summary};
 use slowdrift::{Outputs, Simulation};
 use std::io::{BufWriter, Write};

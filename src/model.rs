@@ -4,9 +4,159 @@
 //!
 //! Conventions (docs/theory.md#conventions): SI units and radians; the body frame follows the slow
 //! yaw; DOF order surge, sway, yaw.
+//!
+//! The modes (the settings that take one of a few words: `NewmanForm`, `SecondOrder`,
+//! `Interaction`, `DriftDamping`, `DragKind`, ...) are defined once, in `model/modes.rs`:
+//! each is an enum that implements [`Mode`] (its words, their FMU codes and descriptions)
+//! and serde's `Deserialize` from its words.
 
+use serde::de::{self, Deserializer, Visitor};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
+use std::fmt;
+use std::marker::PhantomData;
+
+/// Defines the modes of `model/modes.rs`: for each, the enum, its [`Mode`] implementation and
+/// its `Deserialize` from its words (paths from inside `modes`, where it expands). build.rs
+/// reads the same file with a `modes!` of its own.
+macro_rules! modes {
+    ($(
+        $(#[$meta:meta])*
+        $name:ident
+        $(in $parameter:literal $(, keeping $keep:literal: $keep_description:literal)?)? {
+            $($(#[$variant_meta:meta])* $variant:ident = $word:literal: $description:literal,)+
+        }
+    )*) => {$(
+        $(#[$meta])*
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+        pub enum $name {
+            $($(#[$variant_meta])* $variant,)+
+        }
+
+        impl super::Mode for $name {
+            const VOCABULARY: super::Vocabulary = super::Vocabulary {
+                words: &[$($word),+],
+                descriptions: &[$($description),+],
+                fmu: modes!(@fmu $($parameter $(, $keep, $keep_description)?)?),
+            };
+            const ALL: &'static [Self] = &[$(Self::$variant),+];
+
+            fn word(self) -> &'static str {
+                match self {
+                    $(Self::$variant => $word,)+
+                }
+            }
+        }
+
+        impl<'de> serde::Deserialize<'de> for $name {
+            fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+                super::deserialize_word(deserializer)
+            }
+        }
+    )*};
+    (@fmu) => { None };
+    (@fmu $parameter:literal) => {
+        Some(super::FmuCodes { parameter: $parameter, keep: None })
+    };
+    (@fmu $parameter:literal, $keep:literal, $keep_description:literal) => {
+        Some(super::FmuCodes { parameter: $parameter, keep: Some(($keep, $keep_description)) })
+    };
+}
+
+/// The modes, each defined once (its words, FMU codes and descriptions): `modes.rs`.
+mod modes;
+
+pub use modes::{
+    BidirectionalDrift, DragKind, DriftDamping, Interaction, NewmanForm, SecondOrder, SpectrumKind,
+    SpreadingKind,
+};
+
+/// A setting that takes one of a few words: an enum defined in `model/modes.rs`.
+pub trait Mode: Copy + Eq + fmt::Debug + 'static {
+    /// Its words, FMU codes and descriptions.
+    const VOCABULARY: Vocabulary;
+    /// Every value, in the order of [`Vocabulary::words`].
+    const ALL: &'static [Self];
+
+    /// Its word, as the configuration file, the case table and messages write it
+    /// (`mean-direction`), never its `Debug` form.
+    fn word(self) -> &'static str;
+
+    /// The value `word` names, if any.
+    fn from_word(word: &str) -> Option<Self> {
+        Self::ALL.iter().copied().find(|mode| mode.word() == word)
+    }
+}
+
+/// The words of a mode and how the FMU codes them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Vocabulary {
+    /// The words, one per value, in the enum's order.
+    pub words: &'static [&'static str],
+    /// One line per word: what it chooses.
+    pub descriptions: &'static [&'static str],
+    /// The FMU Integer parameter that writes the mode, if any.
+    pub fmu: Option<FmuCodes>,
+}
+
+/// How an FMU Integer parameter codes a mode: code 0 the word that keeps the configuration's
+/// choice where there is one (`interaction`'s `configuration`), then the mode's words in
+/// their order.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct FmuCodes {
+    /// The parameter's name in modelDescription.xml (`dragModel`).
+    pub parameter: &'static str,
+    /// The word (and its description) that keeps the configuration's choice: not a mode's
+    /// value, a word of the FMU parameter and the case table only.
+    pub keep: Option<(&'static str, &'static str)>,
+}
+
+impl Vocabulary {
+    /// The FMU parameter that writes the mode, if any.
+    pub const fn parameter(&self) -> Option<&'static str> {
+        match self.fmu {
+            Some(codes) => Some(codes.parameter),
+            None => None,
+        }
+    }
+
+    /// The word that keeps the configuration's choice, if the mode has one.
+    pub fn keep(&self) -> Option<&'static str> {
+        self.fmu.and_then(|codes| codes.keep).map(|(word, _)| word)
+    }
+
+    /// The words an override takes, in the order of their FMU codes (a word's code is its
+    /// position): the keep word first, where there is one, then the mode's words.
+    pub fn codes(&self) -> impl Iterator<Item = &'static str> + '_ {
+        self.keep().into_iter().chain(self.words.iter().copied())
+    }
+}
+
+/// Reads a mode from its word; any other word is refused listing the words (``unknown
+/// variant `viscous`, expected one of `off`, `separate`, `combined` ``), as serde's derive
+/// would.
+fn deserialize_word<'de, M: Mode, D: Deserializer<'de>>(deserializer: D) -> Result<M, D::Error> {
+    struct Word<M>(PhantomData<M>);
+
+    impl<M: Mode> Visitor<'_> for Word<M> {
+        type Value = M;
+
+        fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+            let quoted: Vec<String> = M::VOCABULARY
+                .words
+                .iter()
+                .map(|word| format!("`{word}`"))
+                .collect();
+            write!(f, "one of {}", quoted.join(", "))
+        }
+
+        fn visit_str<E: de::Error>(self, word: &str) -> Result<M, E> {
+            M::from_word(word).ok_or_else(|| E::unknown_variant(word, M::VOCABULARY.words))
+        }
+    }
+
+    deserializer.deserialize_str(Word(PhantomData))
+}
 
 /// A slow-drift degree of freedom, in the order of every force and state array of the crate.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -77,70 +227,6 @@ pub struct Cylinder {
     pub draft: f64,
 }
 
-/// Which form of Newman's approximation builds the slowly varying records
-/// (docs/theory.md#the-slowly-varying-force).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-pub enum NewmanForm {
-    /// The paper's form (E&S 4): T_ij = sign * sqrt(T_ii T_jj) where the signs agree, 0 otherwise.
-    Geometric,
-    /// T_ij = (T_ii + T_jj) / 2.
-    Arithmetic,
-}
-
-/// How the slowly varying wave force is computed from second-order theory
-/// (docs/theory.md#the-slowly-varying-force).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-pub enum SecondOrder {
-    /// Newman's approximation from the drift table's diagonal, in the form `newman`.
-    Newman,
-    /// The full difference-frequency QTF of the drift source, factorised at FFT cost
-    /// (`forces::QtfFactorisation`), truncated at `qtf_tolerance`.
-    FullQtf,
-}
-
-/// Whether the components of different directions of a short-crested sea interact in the
-/// slowly varying force (docs/theory.md#the-slowly-varying-force; `forces::directional`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-pub enum Interaction {
-    /// The default: [`Interaction::Bidirectional`] when the drift source has bi-directional
-    /// drift, else [`Interaction::MeanDirection`]. Without cross terms the slow-drift
-    /// variance falls roughly like 1/N_beta as a spread sea is split into more directions
-    /// (README "Spread seas"), so some interaction is always on unless asked otherwise.
-    Auto,
-    /// Each direction's own double sum only (cross-direction terms dropped; the behaviour
-    /// before issue #5 part 2).
-    None,
-    /// Cross terms from T(omega; (beta_k + beta_l)/2) of the uni-directional drift table.
-    MeanDirection,
-    /// Cross terms from the bi-directional drift of the drift source.
-    Bidirectional,
-}
-
-impl Interaction {
-    /// The word of the configuration file's `[model] interaction` (and of the case table):
-    /// `auto`, `none`, `mean-direction`, `bidirectional`.
-    pub fn word(self) -> &'static str {
-        match self {
-            Interaction::Auto => "auto",
-            Interaction::None => "none",
-            Interaction::MeanDirection => "mean-direction",
-            Interaction::Bidirectional => "bidirectional",
-        }
-    }
-}
-
-/// Where the wave-drift damping coefficients b_ij(omega, beta) come from
-/// (docs/theory.md#wave-drift-damping-and-current).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-pub enum DriftDamping {
-    /// No wave-drift damping.
-    Off,
-    /// The b_ij columns of the drift table.
-    Table,
-    /// Aranha's formula from the drift table and its derivatives.
-    Aranha,
-}
-
 /// Morison drag models of the paper (E&S 8, 9).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub enum DragModel {
@@ -150,6 +236,17 @@ pub enum DragModel {
     Separate { slow: f64, fast: f64 },
     /// One coefficient on the total relative velocity: C_D (U + u)|U + u| (E&S 9).
     Combined { cd: f64 },
+}
+
+impl DragModel {
+    /// Which of the models it is.
+    pub fn kind(&self) -> DragKind {
+        match self {
+            DragModel::Off => DragKind::Off,
+            DragModel::Separate { .. } => DragKind::Separate,
+            DragModel::Combined { .. } => DragKind::Combined,
+        }
+    }
 }
 
 /// Records of the wave force and damping that follow the body's yaw (issue #5 part 3;
@@ -167,3 +264,103 @@ pub struct YawFollowing {
 
 /// Default `qtf_tolerance` of the modelling options (`scenario::ModelOptions`).
 pub const DEFAULT_QTF_TOLERANCE: f64 = 1e-6;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A mode read from a TOML value, as the configuration file reads it.
+    fn read<M: Mode + de::DeserializeOwned>(value: &str) -> Result<M, String> {
+        #[derive(Deserialize)]
+        struct Key<M> {
+            mode: M,
+        }
+        toml::from_str::<Key<M>>(&format!("mode = {value}"))
+            .map(|key| key.mode)
+            .map_err(|e| e.message().to_string())
+    }
+
+    /// Every word of a mode reads back as its value, its vocabulary lists them in the
+    /// enum's order with one description each, and no word is there twice.
+    fn words_read_back<M: Mode + de::DeserializeOwned>() {
+        let vocabulary = M::VOCABULARY;
+        assert_eq!(vocabulary.words.len(), M::ALL.len());
+        assert_eq!(vocabulary.descriptions.len(), M::ALL.len());
+        for (mode, word) in M::ALL.iter().zip(vocabulary.words) {
+            assert_eq!(mode.word(), *word);
+            assert_eq!(M::from_word(word), Some(*mode));
+            assert_eq!(read::<M>(&format!("\"{word}\"")), Ok(*mode));
+        }
+        let codes: Vec<&str> = vocabulary.codes().collect();
+        for (i, word) in codes.iter().enumerate() {
+            assert!(!codes[i + 1..].contains(word), "{word} twice");
+        }
+    }
+
+    #[test]
+    fn every_mode_reads_its_words() {
+        words_read_back::<SpectrumKind>();
+        words_read_back::<SpreadingKind>();
+        words_read_back::<SecondOrder>();
+        words_read_back::<NewmanForm>();
+        words_read_back::<Interaction>();
+        words_read_back::<DriftDamping>();
+        words_read_back::<DragKind>();
+        words_read_back::<BidirectionalDrift>();
+    }
+
+    /// Another word, or a value that is no word, is refused listing the words.
+    #[test]
+    fn other_values_are_refused_listing_the_words() {
+        assert_eq!(
+            read::<DragKind>("\"viscous\""),
+            Err("unknown variant `viscous`, expected one of `off`, `separate`, `combined`".into())
+        );
+        assert_eq!(
+            read::<DragKind>("2"),
+            Err("invalid type: integer `2`, expected one of `off`, `separate`, `combined`".into())
+        );
+        assert_eq!(
+            read::<BidirectionalDrift>("\"own\""),
+            Err("unknown variant `own`, expected `column-array`".into())
+        );
+    }
+
+    /// The FMU codes a word by its position, after the word that keeps the configuration's
+    /// choice where the mode has one.
+    #[test]
+    fn fmu_codes_put_the_keep_word_first() {
+        let interaction = Interaction::VOCABULARY;
+        assert_eq!(interaction.parameter(), Some("interaction"));
+        assert_eq!(interaction.keep(), Some("configuration"));
+        assert_eq!(
+            interaction.codes().collect::<Vec<_>>(),
+            [
+                "configuration",
+                "auto",
+                "bidirectional",
+                "mean-direction",
+                "none"
+            ]
+        );
+        assert_eq!(
+            DragKind::VOCABULARY.codes().collect::<Vec<_>>(),
+            ["off", "separate", "combined"]
+        );
+        assert_eq!(NewmanForm::VOCABULARY.parameter(), None);
+    }
+
+    #[test]
+    fn a_drag_model_names_its_kind() {
+        assert_eq!(DragModel::Off.kind(), DragKind::Off);
+        assert_eq!(
+            DragModel::Separate {
+                slow: 0.5,
+                fast: 0.9
+            }
+            .kind(),
+            DragKind::Separate
+        );
+        assert_eq!(DragModel::Combined { cd: 0.7 }.kind().word(), "combined");
+    }
+}

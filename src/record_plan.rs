@@ -29,7 +29,7 @@ use crate::forces::{
 use crate::hydro::bidirectional::DirectionPairs;
 use crate::hydro::DriftTable;
 use crate::model::{
-    Cylinder, Dof, DriftDamping, Environment, Interaction, SecondOrder, YawFollowing,
+    Cylinder, Dof, DriftDamping, Environment, Interaction, Mode, SecondOrder, YawFollowing,
 };
 use crate::problem::{Hydro, Problem};
 use crate::sea_state::{Direction, FrequencyGrid, SeaState, Spreading, WaveComponents};

@@ -486,8 +486,8 @@ mod tests {
 
     /// Every parameter of the model description is hydroDatabase or writes a setting of the
     /// override table, and every FMU name of the table is a parameter; a setting in degrees
-    /// has an FMU variable in radians; a mode (a setting of words) is an Integer whose min,
-    /// max and description give exactly the table's codes ("0 off, 1 separate, 2 combined").
+    /// has an FMU variable in radians. (A mode's parameter is an Integer whose min, max and
+    /// description give exactly its codes: build.rs checks it against `model/modes.rs`.)
     #[test]
     fn parameters_and_the_override_table_name_each_other() {
         use crate::scenario::overrides::{by_fmu, SETTINGS};
@@ -508,28 +508,6 @@ mod tests {
                 .find(|v| v.name == name)
                 .unwrap_or_else(|| panic!("{name}"));
             assert_eq!(v.causality, Causality::Parameter, "{name}");
-            if !s.takes_words() {
-                continue;
-            }
-            assert_eq!(v.var_type, VariableType::Integer, "{name}");
-            let element = xml_element(name);
-            let last = s.words.len() - 1;
-            assert!(
-                element.contains(&format!("<Integer min=\"0\" max=\"{last}\"")),
-                "{name}: min 0, max {last}"
-            );
-            let description = &element[element.find("description=").unwrap()..];
-            let mut from = 0;
-            for (code, word) in s.words.iter().enumerate() {
-                assert_eq!(s.code_of(word), Some(code as i32));
-                assert_eq!(s.word_of(code as i32), Ok(*word));
-                let listed = format!("{code} {word}");
-                let at = description[from..]
-                    .find(&listed)
-                    .unwrap_or_else(|| panic!("{name}: the description lists {listed:?} in order"));
-                from += at + listed.len();
-            }
-            assert!(s.word_of(-1).is_err() && s.word_of(last as i32 + 1).is_err());
         }
         for s in SETTINGS.iter().filter(|s| s.in_degrees()) {
             let name = s.fmu.expect("an angle setting has an FMU variable");

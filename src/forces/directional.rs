@@ -50,7 +50,7 @@ use super::synthesis::{InverseFft, Synthesizer};
 use super::{ForceRecords, Record};
 use crate::error::{Error, Result};
 use crate::hydro::bidirectional::{mean_direction_pairs, DirectionPairs};
-use crate::model::Interaction;
+use crate::model::{Interaction, Mode};
 use crate::problem::Problem;
 use crate::sea_state::{Direction, FrequencyGrid, WaveComponents};
 use rustfft::num_complex::Complex64;
@@ -76,7 +76,7 @@ pub fn direction_pairs(
             let source = problem.hydro.bidirectional.as_ref().ok_or_else(|| {
                 Error::invalid(
                     "model.interaction",
-                    "bidirectional",
+                    Interaction::Bidirectional.word(),
                     "the drift source has no bi-directional drift",
                 )
             })?;

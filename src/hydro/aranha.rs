@@ -23,7 +23,7 @@
 
 use super::DriftTable;
 use crate::error::{Error, Result};
-use crate::model::Cylinder;
+use crate::model::{Cylinder, DriftDamping, Mode};
 use std::f64::consts::PI;
 
 /// Damping table b_ij on the drift table's own nodes.
@@ -37,7 +37,7 @@ pub fn aranha_damping(
     if headings.len() < 2 {
         return Err(Error::invalid(
             "model.drift_damping",
-            "aranha",
+            DriftDamping::Aranha.word(),
             format!(
                 "Aranha's formula needs dF/dbeta but the drift table has the single heading \
                  {:.3} deg; give b_ij columns (drift_damping = table), more headings, or \

@@ -228,12 +228,12 @@ impl<R: Read> CaseRows<R> {
                 continue;
             };
             let cell = if setting.takes_words() {
-                if !setting.words.contains(&field) {
+                if !setting.words().any(|word| word == field) {
                     return Err(self.error(
                         line,
                         format!(
                             "row {row}, column '{column}': '{field}' is not one of {}",
-                            setting.words.join(", ")
+                            setting.words().collect::<Vec<_>>().join(", ")
                         ),
                     ));
                 }

@@ -12,7 +12,7 @@ use crate::error::{
 };
 use crate::hydro::bidirectional::BidirectionalSource;
 use crate::hydro::qtf::check_tolerance;
-use crate::model::{Dof, DragModel, DriftDamping, Interaction, SecondOrder};
+use crate::model::{Dof, DragModel, DriftDamping, Interaction, Mode, SecondOrder};
 use crate::scenario::limits;
 
 impl Problem {
@@ -100,7 +100,7 @@ impl Problem {
         if self.model.drift_damping == DriftDamping::Table && !self.hydro.drift.has_damping() {
             return Err(Error::invalid(
                 "model.drift_damping",
-                "table",
+                DriftDamping::Table.word(),
                 "this drift data has no wave-drift damping table (b11 .. b33; the embedded \
                  default has none): the damping choices that work with it are aranha and off",
             ));
@@ -149,7 +149,7 @@ impl Problem {
         let Some(q) = &self.hydro.qtf else {
             return Err(Error::invalid(
                 "model.second_order",
-                "full-qtf",
+                SecondOrder::FullQtf.word(),
                 "needs a QTF: use [drift] source = \"database\" with a database that holds one \
                  (`slowdrift hydro wamit` with a .12d, .11d or .10d file, `slowdrift hydro \
                  nemoh`)",
@@ -169,7 +169,7 @@ impl Problem {
                 q.interpolated(dof, pair).map_err(|e| {
                     Error::invalid(
                         "model.second_order",
-                        "full-qtf",
+                        SecondOrder::FullQtf.word(),
                         format!(
                             "the QTF does not serve the wave direction(s) ({:.3}, {:.3}) deg: {e}",
                             pair.0.to_degrees(),
@@ -238,7 +238,7 @@ impl Problem {
         {
             return Err(Error::invalid(
                 "model.interaction",
-                "bidirectional",
+                Interaction::Bidirectional.word(),
                 "the drift source has no bi-directional drift (it comes from [drift] source = \
                  \"column-array\" or a database with a bidirectional_drift table); use \
                  interaction = \"mean-direction\" to approximate it from the drift table, or \

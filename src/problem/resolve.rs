@@ -12,7 +12,7 @@ use crate::hydro::columns::ColumnArray;
 use crate::hydro::default_platform;
 use crate::hydro::io::database::{self, HydroDatabase};
 use crate::hydro::io::drift_csv;
-use crate::model::Environment;
+use crate::model::{BidirectionalDrift, Environment, Mode};
 use crate::scenario::default::{default_scenario, DEFAULT_DRIFT_LABEL};
 use crate::scenario::{file, limits, ColumnGrid, DriftSource, Platform, Scenario};
 use std::path::Path;
@@ -176,7 +176,7 @@ fn from_database(
         (Some(_), true) => {
             return Err(Error::invalid(
                 "drift.bidirectional",
-                "\"column-array\"",
+                format!("\"{}\"", BidirectionalDrift::ColumnArray.word()),
                 format!(
                     "the database {name} has its own bidirectional_drift table: use one of them"
                 ),

@@ -6,7 +6,7 @@
 use super::{Inertia, Origin, Problem};
 use crate::error::numbers::written;
 use crate::error::Result;
-use crate::model::{DragModel, DriftDamping};
+use crate::model::{DragModel, DriftDamping, Mode};
 
 /// The DOFs' names in the lines, with the units of a stiffness and a mass of each.
 const DOFS: [(&str, &str, &str); 3] = [
@@ -87,7 +87,7 @@ impl Problem {
         let wave_drift = match self.model.drift_damping {
             DriftDamping::Aranha => "Aranha's formula from the drift table",
             DriftDamping::Table => "the drift table's b_ij",
-            DriftDamping::Off => "off",
+            DriftDamping::Off => DriftDamping::Off.word(),
         };
         let nonzero = |m: &[[f64; 3]; 3]| m.iter().flatten().any(|v| *v != 0.0);
         let extra = match (nonzero(&p.linear_damping), nonzero(&p.quadratic_damping)) {

@@ -21,7 +21,7 @@ use crate::error::numbers::written;
 use crate::error::{bytes_text, Error, Result};
 use crate::forces::distinct_kinematics;
 use crate::hydro::bidirectional::BidirectionalSource;
-use crate::model::{DragModel, Interaction, NewmanForm, SecondOrder};
+use crate::model::{DragModel, Interaction, Mode, NewmanForm, SecondOrder};
 use crate::problem::Problem;
 use crate::scenario::limits::over_budget;
 use crate::sea_state::FrequencyGrid;
@@ -203,7 +203,7 @@ impl MemoryEstimate {
                     .map_or(1.0, |y| 1.0 + y.headings as f64);
                 plan.push(term(
                     "model.second_order",
-                    "full-qtf".to_string(),
+                    SecondOrder::FullQtf.word().to_string(),
                     format!("the full QTF's factors ({n} frequencies) on the grid"),
                     copies * bytes,
                 ));

@@ -20,13 +20,16 @@
 //! - **Modes in the FMU**: a setting of words (a mode: `model.drag`) is an FMU Integer whose
 //!   value is the word's code, its position in [`Setting::words`] (`dragModel` 0 off,
 //!   1 separate, 2 combined): every master can set an Integer, where libcosim and ecos skip
-//!   Enumerations. The XML's min, max and description list exactly these codes (tested).
+//!   Enumerations. The words and codes are the mode's one definition (`model/modes.rs`,
+//!   [`Mode`]); build.rs checks that the XML's min, max and description list exactly them.
 //!
 //! Adding a setting is one entry here (and its FMU variable in modelDescription.xml).
 
 use super::{Current, ModelOptions, Platform, Run, Scenario, Written, DEFAULT_N_DIRECTIONS};
 use crate::error::numbers::written;
-use crate::model::{DragModel, DriftDamping, Interaction, YawFollowing};
+use crate::model::{
+    DragKind, DragModel, DriftDamping, Interaction, Mode, SpectrumKind, Vocabulary, YawFollowing,
+};
 use crate::sea_state::SeaState;
 use crate::sea_state::{Spectrum, Spreading};
 
@@ -35,7 +38,7 @@ use crate::sea_state::{Spectrum, Spreading};
 pub enum Value<'a> {
     /// A number, SI units and radians.
     Number(f64),
-    /// A word of the setting's vocabulary ([`Setting::words`]).
+    /// A word of the setting's mode ([`Setting::words`]).
     Word(&'a str),
 }
 
@@ -85,12 +88,12 @@ pub struct View<'a> {
 pub struct Setting {
     /// The configuration-file key path, the setting's name (`sea.hs`).
     pub key: &'static str,
-    /// The FMU parameter that writes it, if any.
+    /// The FMU parameter that writes it, if any (a mode's is its definition's).
     pub fmu: Option<&'static str>,
     /// The case-table column that writes it, if any.
     pub column: Option<&'static str>,
-    /// The words it takes, for a setting of words (empty for a number).
-    pub words: &'static [&'static str],
+    /// The mode it sets, for a setting of words (`None` for a number).
+    pub mode: Option<&'static Vocabulary>,
     /// What it means, with its unit (for documentation and help).
     pub meaning: &'static str,
     apply: fn(Parts, Value) -> Applied,
@@ -107,10 +110,10 @@ impl Setting {
     /// Writes `value` into `scenario` and records where it was written.
     pub fn apply<H>(&self, scenario: &mut Scenario<H>, value: Value, written: Written) -> Applied {
         if let Value::Word(word) = value {
-            if !self.words.contains(&word) {
+            if !self.words().any(|w| w == word) {
                 return Err(Refusal::Invalid(format!(
                     "'{word}' is not one of {}",
-                    self.words.join(", ")
+                    self.words().collect::<Vec<_>>().join(", ")
                 )));
             }
         }
@@ -139,12 +142,19 @@ impl Setting {
 
     /// Whether the setting takes words rather than numbers.
     pub fn takes_words(&self) -> bool {
-        !self.words.is_empty()
+        self.mode.is_some()
+    }
+
+    /// The words it takes, in the order of their FMU codes (none for a number): its mode's,
+    /// after the word that keeps the configuration's choice where there is one
+    /// ([`Vocabulary::codes`]).
+    pub fn words(&self) -> impl Iterator<Item = &'static str> {
+        self.mode.into_iter().flat_map(Vocabulary::codes)
     }
 
     /// The FMU code of `word`: its position in [`Setting::words`].
     pub fn code_of(&self, word: &str) -> Option<i32> {
-        let position = self.words.iter().position(|w| *w == word)?;
+        let position = self.words().position(|w| w == word)?;
         i32::try_from(position).ok()
     }
 
@@ -152,11 +162,10 @@ impl Setting {
     pub fn word_of(&self, code: i32) -> Result<&'static str, Refusal> {
         usize::try_from(code)
             .ok()
-            .and_then(|i| self.words.get(i).copied())
+            .and_then(|i| self.words().nth(i))
             .ok_or_else(|| {
                 let codes: Vec<String> = self
-                    .words
-                    .iter()
+                    .words()
                     .enumerate()
                     .map(|(i, w)| format!("{i} ({w})"))
                     .collect();
@@ -192,11 +201,21 @@ fn number(value: Value) -> Result<f64, Refusal> {
     }
 }
 
-fn word<'a>(value: Value<'a>) -> Result<&'a str, Refusal> {
-    match value {
-        Value::Word(w) => Ok(w),
-        Value::Number(x) => Err(Refusal::Invalid(format!("{} is not a word", written(x)))),
+/// The mode a word chooses; `None` for the word that keeps the configuration's choice.
+fn chosen<M: Mode>(value: Value) -> Result<Option<M>, Refusal> {
+    let word = match value {
+        Value::Word(w) => w,
+        Value::Number(x) => return Err(Refusal::Invalid(format!("{} is not a word", written(x)))),
+    };
+    if M::VOCABULARY.keep() == Some(word) {
+        return Ok(None);
     }
+    M::from_word(word).map(Some).ok_or_else(|| {
+        Refusal::Invalid(format!(
+            "'{word}' is not one of {}",
+            M::VOCABULARY.words.join(", ")
+        ))
+    })
 }
 
 /// A whole number of at least `min`.
@@ -218,32 +237,15 @@ fn not_in_force(what: &str, needs: &str, has: &str) -> Refusal {
     ))
 }
 
-fn spectrum_name(spectrum: &Spectrum) -> &'static str {
-    match spectrum {
-        Spectrum::Jonswap { .. } => "spectrum = \"jonswap\"",
-        Spectrum::PiersonMoskowitz { .. } => "spectrum = \"pierson-moskowitz\"",
-        Spectrum::Tabulated { .. } => "spectrum = \"table\"",
-    }
+/// A spectrum, as the file writes it: `spectrum = "jonswap"`.
+fn spectrum_is(kind: SpectrumKind) -> String {
+    format!("spectrum = \"{}\"", kind.word())
 }
 
-fn drag_name(drag: &DragModel) -> &'static str {
-    match drag {
-        DragModel::Off => "off",
-        DragModel::Separate { .. } => "separate",
-        DragModel::Combined { .. } => "combined",
-    }
+/// A drag model, as messages name it: `drag = combined`.
+fn drag_is(kind: DragKind) -> String {
+    format!("drag = {}", kind.word())
 }
-
-const DRAG_WORDS: &[&str] = &["off", "separate", "combined"];
-const DRIFT_DAMPING_WORDS: &[&str] = &["off", "table", "aranha"];
-/// `configuration` keeps the configuration's choice.
-const INTERACTION_WORDS: &[&str] = &[
-    "configuration",
-    "auto",
-    "bidirectional",
-    "mean-direction",
-    "none",
-];
 
 /// The table, in the order it is applied.
 pub static SETTINGS: [Setting; 23] = [
@@ -251,7 +253,7 @@ pub static SETTINGS: [Setting; 23] = [
         key: "sea.spreading_exponent",
         fmu: Some("spreadingExponent"),
         column: Some("spreading_exponent"),
-        words: &[],
+        mode: None,
         meaning: "0 = long-crested; else the exponent of the configuration's spreading form \
                   (N of cos^N, s of cos-2s; a long-crested sea becomes cos^N with 15 directions)",
         apply: |mut s, v| {
@@ -291,7 +293,7 @@ pub static SETTINGS: [Setting; 23] = [
         key: "sea.n_directions",
         fmu: Some("nDirections"),
         column: Some("n_directions"),
-        words: &[],
+        mode: None,
         meaning: "number of discrete directions of a spread sea (1 for a long-crested sea)",
         apply: |s, v| {
             let n = whole(v, 1)? as usize;
@@ -311,7 +313,7 @@ pub static SETTINGS: [Setting; 23] = [
         key: "sea.hs",
         fmu: Some("Hs"),
         column: Some("hs"),
-        words: &[],
+        mode: None,
         meaning: "significant wave height of the JONSWAP or Pierson-Moskowitz spectrum, m",
         apply: |s, v| {
             let x = number(v)?;
@@ -321,7 +323,7 @@ pub static SETTINGS: [Setting; 23] = [
                     return Err(not_in_force(
                         "hs",
                         "the spectrum is parametric",
-                        spectrum_name(other),
+                        &spectrum_is(other.kind()),
                     ))
                 }
             }
@@ -338,7 +340,7 @@ pub static SETTINGS: [Setting; 23] = [
         key: "sea.tp",
         fmu: Some("Tp"),
         column: Some("tp"),
-        words: &[],
+        mode: None,
         meaning: "peak period of the JONSWAP or Pierson-Moskowitz spectrum, s",
         apply: |s, v| {
             let x = number(v)?;
@@ -348,7 +350,7 @@ pub static SETTINGS: [Setting; 23] = [
                     return Err(not_in_force(
                         "tp",
                         "the spectrum is parametric",
-                        spectrum_name(other),
+                        &spectrum_is(other.kind()),
                     ))
                 }
             }
@@ -365,7 +367,7 @@ pub static SETTINGS: [Setting; 23] = [
         key: "sea.gamma",
         fmu: Some("gamma"),
         column: Some("gamma"),
-        words: &[],
+        mode: None,
         meaning: "JONSWAP peak enhancement factor; 0 = the DNV-RP-C205 default from Hs and Tp \
                   (the only value for a Pierson-Moskowitz spectrum)",
         apply: |s, v| {
@@ -376,8 +378,8 @@ pub static SETTINGS: [Setting; 23] = [
                 other => {
                     return Err(not_in_force(
                         "gamma",
-                        "spectrum = \"jonswap\"",
-                        spectrum_name(other),
+                        &spectrum_is(SpectrumKind::Jonswap),
+                        &spectrum_is(other.kind()),
                     ))
                 }
             }
@@ -392,7 +394,7 @@ pub static SETTINGS: [Setting; 23] = [
         key: "sea.direction_deg",
         fmu: Some("waveDirection"),
         column: Some("direction_deg"),
-        words: &[],
+        mode: None,
         meaning: "mean direction of propagation, from +X counter-clockwise (deg in the file \
                   and case table, rad in the FMU)",
         apply: |s, v| {
@@ -405,7 +407,7 @@ pub static SETTINGS: [Setting; 23] = [
         key: "sea.seed",
         fmu: Some("seed"),
         column: None,
-        words: &[],
+        mode: None,
         meaning: "seed of the random wave amplitudes (Monte Carlo campaigns set it per run)",
         apply: |s, v| {
             let x = number(v)?;
@@ -424,7 +426,7 @@ pub static SETTINGS: [Setting; 23] = [
         key: "current.speed",
         fmu: Some("currentSpeed"),
         column: Some("current_speed"),
-        words: &[],
+        mode: None,
         meaning: "speed of the steady, depth-uniform current, m/s",
         apply: |s, v| {
             s.current.speed = number(v)?;
@@ -436,7 +438,7 @@ pub static SETTINGS: [Setting; 23] = [
         key: "current.direction_deg",
         fmu: Some("currentDirection"),
         column: Some("current_direction_deg"),
-        words: &[],
+        mode: None,
         meaning: "direction the current flows towards, from +X counter-clockwise (deg in the \
                   file and case table, rad in the FMU)",
         apply: |s, v| {
@@ -447,33 +449,36 @@ pub static SETTINGS: [Setting; 23] = [
     },
     Setting {
         key: "model.drag",
-        fmu: Some("dragModel"),
+        fmu: DragKind::VOCABULARY.parameter(),
         column: Some("drag"),
-        words: DRAG_WORDS,
+        mode: Some(&DragKind::VOCABULARY),
         meaning: "Morison drag model: off, separate (cd_slow, cd_fast; E&S 8) or combined (cd; \
                   E&S 9); a model chosen here needs its coefficients written too",
         apply: |s, v| {
-            let chosen = word(v)?;
             let drag = &mut s.model.drag;
-            if drag_name(drag) != chosen {
-                *drag = match chosen {
-                    "off" => DragModel::Off,
-                    "separate" => DragModel::Separate {
-                        slow: f64::NAN,
-                        fast: f64::NAN,
-                    },
-                    _ => DragModel::Combined { cd: f64::NAN },
-                };
+            match chosen::<DragKind>(v)? {
+                Some(kind) if kind != drag.kind() => {
+                    // A model chosen here has no coefficients yet (NaN: not written).
+                    *drag = match kind {
+                        DragKind::Off => DragModel::Off,
+                        DragKind::Separate => DragModel::Separate {
+                            slow: f64::NAN,
+                            fast: f64::NAN,
+                        },
+                        DragKind::Combined => DragModel::Combined { cd: f64::NAN },
+                    }
+                }
+                _ => {}
             }
             Ok(())
         },
-        get: |s| Value::Word(drag_name(&s.model.drag)),
+        get: |s| Value::Word(s.model.drag.kind().word()),
     },
     Setting {
         key: "model.cd",
         fmu: Some("cd"),
         column: Some("cd"),
-        words: &[],
+        mode: None,
         meaning: "drag coefficient of the combined model (drag = combined)",
         apply: |s, v| {
             let x = number(v)?;
@@ -482,8 +487,8 @@ pub static SETTINGS: [Setting; 23] = [
                 other => {
                     return Err(not_in_force(
                         "cd",
-                        "drag = combined",
-                        &format!("drag = {}", drag_name(other)),
+                        &drag_is(DragKind::Combined),
+                        &drag_is(other.kind()),
                     ))
                 }
             }
@@ -498,7 +503,7 @@ pub static SETTINGS: [Setting; 23] = [
         key: "model.cd_slow",
         fmu: Some("cdSlow"),
         column: Some("cd_slow"),
-        words: &[],
+        mode: None,
         meaning: "slow-drift drag coefficient of the separate model (drag = separate)",
         apply: |s, v| {
             let x = number(v)?;
@@ -507,8 +512,8 @@ pub static SETTINGS: [Setting; 23] = [
                 other => {
                     return Err(not_in_force(
                         "cd_slow",
-                        "drag = separate",
-                        &format!("drag = {}", drag_name(other)),
+                        &drag_is(DragKind::Separate),
+                        &drag_is(other.kind()),
                     ))
                 }
             }
@@ -523,7 +528,7 @@ pub static SETTINGS: [Setting; 23] = [
         key: "model.cd_fast",
         fmu: Some("cdFast"),
         column: Some("cd_fast"),
-        words: &[],
+        mode: None,
         meaning: "wave-frequency drag coefficient of the separate model (drag = separate)",
         apply: |s, v| {
             let x = number(v)?;
@@ -532,8 +537,8 @@ pub static SETTINGS: [Setting; 23] = [
                 other => {
                     return Err(not_in_force(
                         "cd_fast",
-                        "drag = separate",
-                        &format!("drag = {}", drag_name(other)),
+                        &drag_is(DragKind::Separate),
+                        &drag_is(other.kind()),
                     ))
                 }
             }
@@ -546,59 +551,39 @@ pub static SETTINGS: [Setting; 23] = [
     },
     Setting {
         key: "model.drift_damping",
-        fmu: Some("driftDamping"),
+        fmu: DriftDamping::VOCABULARY.parameter(),
         column: Some("drift_damping"),
-        words: DRIFT_DAMPING_WORDS,
+        mode: Some(&DriftDamping::VOCABULARY),
         meaning: "wave-drift damping: off, table (the drift table's b_ij) or aranha (Aranha's \
                   formula)",
         apply: |s, v| {
-            s.model.drift_damping = match word(v)? {
-                "off" => DriftDamping::Off,
-                "table" => DriftDamping::Table,
-                _ => DriftDamping::Aranha,
-            };
+            if let Some(damping) = chosen(v)? {
+                s.model.drift_damping = damping;
+            }
             Ok(())
         },
-        get: |s| {
-            Value::Word(match s.model.drift_damping {
-                DriftDamping::Off => "off",
-                DriftDamping::Table => "table",
-                DriftDamping::Aranha => "aranha",
-            })
-        },
+        get: |s| Value::Word(s.model.drift_damping.word()),
     },
     Setting {
         key: "model.interaction",
-        fmu: Some("interaction"),
+        fmu: Interaction::VOCABULARY.parameter(),
         column: Some("interaction"),
-        words: INTERACTION_WORDS,
+        mode: Some(&Interaction::VOCABULARY),
         meaning: "cross-direction terms of a spread sea: configuration (keep), auto, \
                   bidirectional, mean-direction or none",
         apply: |s, v| {
-            let interaction = &mut s.model.interaction;
-            *interaction = match word(v)? {
-                "configuration" => *interaction,
-                "auto" => Interaction::Auto,
-                "bidirectional" => Interaction::Bidirectional,
-                "mean-direction" => Interaction::MeanDirection,
-                _ => Interaction::None,
-            };
+            if let Some(interaction) = chosen(v)? {
+                s.model.interaction = interaction;
+            }
             Ok(())
         },
-        get: |s| {
-            Value::Word(match s.model.interaction {
-                Interaction::Auto => "auto",
-                Interaction::Bidirectional => "bidirectional",
-                Interaction::MeanDirection => "mean-direction",
-                Interaction::None => "none",
-            })
-        },
+        get: |s| Value::Word(s.model.interaction.word()),
     },
     Setting {
         key: "model.yaw_following.headings",
         fmu: Some("yawFollowingHeadings"),
         column: Some("yaw_headings"),
-        words: &[],
+        mode: None,
         meaning: "records that follow the yaw: -1 = off, 0 = keep the configuration's, n >= 2 = \
                   records at n body yaw angles (the configuration's range, else the full circle)",
         apply: |s, v| {
@@ -635,7 +620,7 @@ pub static SETTINGS: [Setting; 23] = [
         key: "model.yaw_following.range_deg",
         fmu: Some("yawFollowingRange"),
         column: None,
-        words: &[],
+        mode: None,
         meaning: "half-width of the covered yaw range about zero, rad (FMU); 0 = keep the \
                   configuration's range (the full circle for records turned on by headings)",
         apply: |s, v| {
@@ -673,7 +658,7 @@ pub static SETTINGS: [Setting; 23] = [
         key: "platform.stiffness[0][0]",
         fmu: Some("stiffnessSurge"),
         column: Some("surge_stiffness"),
-        words: &[],
+        mode: None,
         meaning: "mooring stiffness C_11 in surge, N/m",
         apply: |s, v| {
             s.platform.stiffness[0][0] = number(v)?;
@@ -685,7 +670,7 @@ pub static SETTINGS: [Setting; 23] = [
         key: "platform.stiffness[1][1]",
         fmu: Some("stiffnessSway"),
         column: Some("sway_stiffness"),
-        words: &[],
+        mode: None,
         meaning: "mooring stiffness C_22 in sway, N/m",
         apply: |s, v| {
             s.platform.stiffness[1][1] = number(v)?;
@@ -697,7 +682,7 @@ pub static SETTINGS: [Setting; 23] = [
         key: "platform.stiffness[2][2]",
         fmu: Some("stiffnessYaw"),
         column: Some("yaw_stiffness"),
-        words: &[],
+        mode: None,
         meaning: "mooring stiffness C_66 in yaw, N m/rad",
         apply: |s, v| {
             s.platform.stiffness[2][2] = number(v)?;
@@ -709,7 +694,7 @@ pub static SETTINGS: [Setting; 23] = [
         key: "run.time_step",
         fmu: Some("stepSize"),
         column: Some("time_step"),
-        words: &[],
+        mode: None,
         meaning: "RK4 step h, s (records are sampled at h/2)",
         apply: |s, v| {
             s.run.time_step = number(v)?;
@@ -721,7 +706,7 @@ pub static SETTINGS: [Setting; 23] = [
         key: "run.duration",
         fmu: None,
         column: Some("duration"),
-        words: &[],
+        mode: None,
         meaning: "simulated duration, s (the FMU's is stopTime - startTime)",
         apply: |s, v| {
             s.run.duration = number(v)?;
@@ -733,7 +718,7 @@ pub static SETTINGS: [Setting; 23] = [
         key: "run.memory_limit_gb",
         fmu: Some("memoryLimit"),
         column: None,
-        words: &[],
+        mode: None,
         meaning: "memory the records may take, GB (1e9 bytes); larger estimates are refused",
         apply: |s, v| {
             let gb = number(v)?;
@@ -757,7 +742,8 @@ mod tests {
     use crate::scenario::file::parse;
     use std::path::Path;
 
-    /// Names are unique in each vocabulary, and a key is a key path.
+    /// Names are unique in each vocabulary, a key is a key path, and a mode's FMU parameter
+    /// is the one its definition names.
     #[test]
     fn names_are_unique() {
         for (i, a) in SETTINGS.iter().enumerate() {
@@ -767,7 +753,27 @@ mod tests {
                 assert!(a.column.is_none() || a.column != b.column, "{}", a.key);
             }
             assert!(a.key.contains('.'), "{}", a.key);
+            if let Some(mode) = a.mode {
+                assert_eq!(a.fmu, mode.parameter(), "{}: its mode's parameter", a.key);
+            }
         }
+    }
+
+    /// A mode's FMU code is its word's position among [`Setting::words`] (`interaction`'s
+    /// keep word first), both ways; a code beyond them has no word.
+    #[test]
+    fn codes_and_words_name_each_other() {
+        for s in SETTINGS.iter().filter(|s| s.takes_words()) {
+            let words: Vec<&str> = s.words().collect();
+            for (code, word) in words.iter().enumerate() {
+                assert_eq!(s.code_of(word), Some(code as i32), "{}", s.key);
+                assert_eq!(s.word_of(code as i32), Ok(*word), "{}", s.key);
+            }
+            assert!(s.word_of(-1).is_err() && s.word_of(words.len() as i32).is_err());
+        }
+        let interaction = by_key("model.interaction").unwrap();
+        assert_eq!(interaction.word_of(0), Ok("configuration"));
+        assert_eq!(interaction.word_of(4), Ok("none"));
     }
 
     /// Writing a setting's value back keeps the scenario (get and apply agree), for every

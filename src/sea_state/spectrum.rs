@@ -1,6 +1,7 @@
 //! One-sided wave spectra S(omega) in m^2 s/rad (docs/theory.md#sea-state).
 
 use crate::error::{require_finite, require_positive, Error, Result};
+use crate::model::SpectrumKind;
 use serde::Serialize;
 
 /// A one-sided wave spectrum; m0 = integral of S d omega = Hs^2 / 16.
@@ -18,6 +19,17 @@ pub enum Spectrum {
     PiersonMoskowitz { hs: f64, tp: f64 },
     /// User table, linear interpolation, zero outside the table.
     Tabulated { omega: Vec<f64>, density: Vec<f64> },
+}
+
+impl Spectrum {
+    /// Which of the spectra it is (`[sea] spectrum`).
+    pub fn kind(&self) -> SpectrumKind {
+        match self {
+            Spectrum::Jonswap { .. } => SpectrumKind::Jonswap,
+            Spectrum::PiersonMoskowitz { .. } => SpectrumKind::PiersonMoskowitz,
+            Spectrum::Tabulated { .. } => SpectrumKind::Table,
+        }
+    }
 }
 
 /// Largest accepted peak enhancement factor: DNV-RP-C205 fits A_gamma for gamma up to 7;

@@ -7,7 +7,8 @@
 //! layer's handle module, and `#[no_mangle]` only in the cdylibs' shims. The code is read
 //! as source text (comments and the trailing `#[cfg(test)] mod tests` are left out; the
 //! imports are `crate::a::b` paths and `use crate::{a, b}` lists), so a new edge, cast or
-//! `unsafe` fails here until the page says it. A last test runs the checks on synthetic
+//! `unsafe` fails here until the page says it. Every mode is defined once
+//! (`src/model/modes.rs`). A last test runs the checks on synthetic
 //! code, so each is seen to catch what it forbids.
 
 use std::collections::{BTreeMap, BTreeSet};
@@ -50,6 +51,11 @@ fn rust_files(dir: &str) -> Vec<PathBuf> {
     assert!(!files.is_empty(), "no Rust file under {dir}");
     files.sort();
     files
+}
+
+/// The Rust files of `src/`, sorted.
+fn source_files() -> Vec<PathBuf> {
+    rust_files("src")
 }
 
 /// The files of the library (not the binary's main.rs, cli/ and plot/).
@@ -564,5 +570,203 @@ fn the_checks_catch_what_they_forbid() {
     assert_eq!(
         exports_misplaced("fmi/src/lib.rs", "#[export_name = \"fmi2Reset\"]\n"),
         ["fmi/src/lib.rs:1: names an exported symbol"]
+    );
+}
+
+/// A mode of src/model/modes.rs as this test needs it: its type and each variant's word.
+struct ModeWords {
+    name: &'static str,
+    words: &'static [(&'static str, &'static str)],
+}
+
+/// src/model/modes.rs, the one definition of the modes, as tables (the crate's `modes!` makes
+/// the enums from it, build.rs's its check of the model description).
+macro_rules! modes {
+    ($(
+        $(#[$meta:meta])*
+        $name:ident
+        $(in $parameter:literal $(, keeping $keep:literal: $keep_description:literal)?)? {
+            $($(#[$variant_meta:meta])* $variant:ident = $word:literal: $description:literal,)+
+        }
+    )*) => {
+        /// Every mode, in the file's order.
+        const MODES: &[ModeWords] = &[$(ModeWords {
+            name: stringify!($name),
+            words: &[$((stringify!($variant), $word)),+],
+        }),*];
+    };
+}
+
+include!("../../src/model/modes.rs");
+
+/// The one definition of the modes.
+const MODES_FILE: &str = "model/modes.rs";
+
+/// The string literals of each array of two or more string literals in `code` (`&["a",
+/// "b"]`), with the line where it starts.
+fn string_arrays(code: &str) -> Vec<(usize, Vec<String>)> {
+    let bytes = code.as_bytes();
+    let mut arrays = Vec::new();
+    for (open, _) in code.match_indices('[') {
+        let mut i = open + 1;
+        let mut items = Vec::new();
+        loop {
+            while i < bytes.len() && bytes[i].is_ascii_whitespace() {
+                i += 1;
+            }
+            if bytes.get(i) != Some(&b'"') {
+                break;
+            }
+            let start = i + 1;
+            i = start;
+            while i < bytes.len() && bytes[i] != b'"' {
+                i += if bytes[i] == b'\\' { 2 } else { 1 };
+            }
+            items.push(code[start..i.min(code.len())].to_string());
+            i += 1;
+            while i < bytes.len() && bytes[i].is_ascii_whitespace() {
+                i += 1;
+            }
+            match bytes.get(i) {
+                Some(b',') => i += 1,
+                _ => break,
+            }
+        }
+        while i < bytes.len() && bytes[i].is_ascii_whitespace() {
+            i += 1;
+        }
+        if items.len() >= 2 && bytes.get(i) == Some(&b']') {
+            arrays.push((1 + code[..open].matches('\n').count(), items));
+        }
+    }
+    arrays
+}
+
+/// The enums of `code` that derive `Deserialize` and have only unit variants (words that
+/// serde reads), by name.
+fn word_enums(code: &str) -> Vec<String> {
+    let mut found = Vec::new();
+    for (at, _) in code.match_indices("enum ") {
+        let attributes = &code[code[..at].rfind(['}', ';']).map_or(0, |i| i + 1)..at];
+        if !(attributes.contains("derive(") && attributes.contains("Deserialize")) {
+            continue;
+        }
+        let rest = &code[at + "enum ".len()..];
+        let Some(open) = rest.find('{') else { continue };
+        let name = rest[..open].trim().to_string();
+        let mut depth = 0;
+        let mut body = String::new();
+        for c in rest[open + 1..].chars() {
+            match c {
+                '[' => depth += 1,
+                ']' => depth -= 1,
+                '}' if depth == 0 => break,
+                _ if depth == 0 => body.push(c),
+                _ => {}
+            }
+        }
+        // The body without its attributes (`#[serde(rename = "...")]` dropped above).
+        if !body.contains(['{', '(']) {
+            found.push(name);
+        }
+    }
+    found
+}
+
+/// Where `code` writes a mode's words a second time: a string array with two words of one
+/// mode, a line that pairs a mode's variant with its word (`Interaction::Auto => "auto"`),
+/// or an enum of words that serde reads (a mirror of a mode).
+fn words_written_twice(code: &str) -> Vec<String> {
+    let mut found = Vec::new();
+    for (line, items) in string_arrays(code) {
+        for mode in MODES {
+            let words: Vec<&String> = items
+                .iter()
+                .filter(|item| mode.words.iter().any(|(_, word)| word == item))
+                .collect();
+            if words.len() >= 2 {
+                found.push(format!(
+                    "line {line}: the words of {} as a list {words:?}",
+                    mode.name
+                ));
+            }
+        }
+    }
+    for (n, text) in code.lines().enumerate() {
+        for mode in MODES {
+            for (variant, word) in mode.words {
+                let names_variant = text.match_indices(&format!("::{variant}")).any(|(i, m)| {
+                    !text[i + m.len()..].starts_with(|c: char| c.is_alphanumeric() || c == '_')
+                });
+                let quotes_word = text.contains(&format!("\"{word}\""))
+                    || text.contains(&format!("\\\"{word}\\\""));
+                if names_variant && quotes_word {
+                    found.push(format!(
+                        "line {}: {variant} paired with its word \"{word}\" ({}::word gives it)",
+                        n + 1,
+                        mode.name
+                    ));
+                }
+            }
+        }
+    }
+    for name in word_enums(code) {
+        // `Dof`'s words are the JSON database's (its `Serialize` writes them too): not a mode.
+        if name != "Dof" {
+            found.push(format!(
+                "enum {name}: words that serde reads, a mirror of a mode"
+            ));
+        }
+    }
+    found
+}
+
+/// The check catches each way of writing a mode's words twice.
+#[test]
+fn words_written_twice_are_found() {
+    let drag_list = "const WORDS: &[&str] = &[\n    \"off\",\n    \"separate\", \"combined\"];";
+    assert_eq!(words_written_twice(drag_list).len(), 1, "{drag_list}");
+    assert!(words_written_twice("&[\"off\", \"jonswap\"]").is_empty());
+    for pair in [
+        "Interaction::Auto => \"auto\",",
+        "\"mean-direction\" => Interaction::MeanDirection,",
+        "Spectrum::Jonswap { .. } => \"spectrum = \\\"jonswap\\\"\",",
+    ] {
+        assert_eq!(words_written_twice(pair).len(), 1, "{pair}");
+    }
+    assert!(words_written_twice("DragKind::Offset => \"off\"").is_empty());
+    let mirror = "#[derive(Deserialize, Clone, Copy)]\n#[serde(rename_all = \"kebab-case\")]\n\
+                  enum NewmanFile {\n    Geometric,\n    #[serde(rename = \"x\")]\n    \
+                  Arithmetic,\n}";
+    assert_eq!(words_written_twice(mirror).len(), 1, "{mirror}");
+    let tagged = "#[derive(Deserialize)]\nenum DriftFile {\n    Csv { file: PathBuf },\n}";
+    assert!(words_written_twice(tagged).is_empty());
+}
+
+/// Every mode is defined once, in src/model/modes.rs (its words, codes and descriptions): no
+/// other file of src/ lists a mode's words, pairs a variant with its word, or mirrors a
+/// mode in an enum of its own (tests aside).
+#[test]
+fn every_mode_is_defined_once() {
+    let src = Path::new(ROOT).join("src");
+    let mut found = Vec::new();
+    for file in source_files() {
+        let rel = file
+            .strip_prefix(&src)
+            .unwrap()
+            .to_string_lossy()
+            .into_owned();
+        if rel != MODES_FILE {
+            found.extend(
+                words_written_twice(&code(&file))
+                    .into_iter()
+                    .map(|f| format!("{rel}: {f}")),
+            );
+        }
+    }
+    assert!(
+        found.is_empty(),
+        "a mode's words outside {MODES_FILE}:\n{}",
+        found.join("\n")
     );
 }

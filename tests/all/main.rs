@@ -10,6 +10,7 @@ mod bad_input;
 mod budget;
 mod cli;
 mod cli_words;
+mod configuration;
 mod default_platform;
 mod directional;
 mod drag_current;
