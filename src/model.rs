@@ -249,8 +249,8 @@ impl DragModel {
     }
 }
 
-/// Records of the wave force and damping that follow the body's yaw (issue #5 part 3;
-/// docs/theory.md#the-slowly-varying-force): built at `headings` body yaw angles theta_j and
+/// Records of the wave force and damping that follow the body's yaw
+/// (docs/theory.md#the-slowly-varying-force): built at `headings` body yaw angles theta_j and
 /// interpolated linearly in the instantaneous yaw at every RK4 stage.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct YawFollowing {

@@ -1,4 +1,4 @@
-//! The bounds on a scenario's sizes (issue #15): every count the user controls has an upper
+//! The bounds on a scenario's sizes: every count the user controls has an upper
 //! bound, checked before anything is allocated or computed from it, and the memory a run
 //! may take is limited by [`Run::memory_limit`] (the record plan estimates what its records
 //! need against it, `record_plan::budget`).

@@ -1,4 +1,4 @@
-"""Mesh convergence of the platform's radiation-diffraction solution (issue #14).
+"""Mesh convergence of the platform's radiation-diffraction solution.
 
     python tests/bem/convergence.py target/bem/conv_3.0.npz target/bem/conv_2.5.npz \
         target/bem/platform_2.0.npz

@@ -1,4 +1,4 @@
-"""The default platform's hydro database from its radiation-diffraction solution (issue #14).
+"""The default platform's hydro database from its radiation-diffraction solution.
 
     python tests/bem/make_database.py --bem target/bem/platform_2.0.npz \
         --slowdrift target/release/slowdrift --out src/hydro/default_platform.json \

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Checks of the default platform's radiation-diffraction data (issue #14): creates
+# Checks of the default platform's radiation-diffraction data: creates
 # target/bem-venv with Capytaine from PyPI on first use and runs pytest on tests/bem.
 # The same environment runs the scripts that regenerate the data (docs/bem.md).
 # Environment: PYTHON (interpreter for the venv, python3).

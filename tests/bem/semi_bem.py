@@ -1,4 +1,4 @@
-"""Radiation-diffraction solution of the paper's platform with Capytaine (issue #14).
+"""Radiation-diffraction solution of the paper's platform with Capytaine.
 
 The platform floats freely in deep water with its own mass, inertia and hydrostatics, plus
 the mooring's weak horizontal stiffness and a stated linear viscous damping in heave, roll

@@ -1,4 +1,4 @@
-"""The paper's platform for a radiation-diffraction solution (issue #14).
+"""The paper's platform for a radiation-diffraction solution.
 
 Geometry (Emmerhoff & Sclavounos 1996, SlowDrift's default platform): four columns of
 radius 10 m on a 70 m square (centres at (+-35, +-35)), draft 30 m, standing on four pontoons

@@ -1,4 +1,4 @@
-"""Solves the platform with Capytaine and saves the raw results (issue #14).
+"""Solves the platform with Capytaine and saves the raw results.
 
     python tests/bem/solve_platform.py --size 2.0 --out target/bem/platform_2.0.npz
 

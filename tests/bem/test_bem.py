@@ -1,4 +1,4 @@
-"""Checks of the default platform's radiation-diffraction data (issue #14), run by
+"""Checks of the default platform's radiation-diffraction data, run by
 tests/bem/run_bem.sh in the README's test command.
 
 Independent routes: closed forms of the geometry, Havelock's drift of a deep cylinder, the

@@ -1,4 +1,4 @@
-"""The Capytaine route into SlowDrift (issue #13 part 4), run by tests/bem/run_bem.sh in the
+"""The Capytaine route into SlowDrift, run by tests/bem/run_bem.sh in the
 README's test command: Capytaine 3.0 on a coarse vertical cylinder (radius 5 m, draft 60 m,
 deep water, held fixed) at three frequencies and three headings, its far-field mean drift for
 every pair of headings written as a WAMIT `.8` by Capytaine's own `export_to_wamit` through
@@ -212,7 +212,7 @@ def test_capytaines_own_two_heading_yaw_misses_the_moment_identity():
 
 
 def test_capytaines_finite_depth_drift_falls_short_at_low_kh():
-    """What we found about Capytaine 3.0's far-field drift in finite depth (issue #13 part 4),
+    """What we found about Capytaine 3.0's far-field drift in finite depth,
     and why the route above is deep water only. A bottom-mounted cylinder (radius 5 m, depth
     20 m, no panels on the seabed), held fixed, in waves of 0.5, 0.7, 1.0 and 1.3 rad/s
     (kh = 0.78, 1.20, 2.10, 3.45):

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Wall time of a three-hour run at a 1 s communication step through fmpy's FMU2Slave
-(issue #4 target: under 2 s). Not a test: prints the numbers.
+(the target: under 2 s). Not a test: prints the numbers.
 
 Timed: FMU2Slave construction (loading the library) + instantiate + setupExperiment(0, 10800)
 + enter/exitInitializationMode (which precomputes the records) + 10800 x (doStep, getReal of

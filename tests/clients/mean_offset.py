@@ -1,4 +1,4 @@
-"""The moored platform's mean offset against its mooring's static stiffness (issue #4), one
+"""The moored platform's mean offset against its mooring's static stiffness, one
 check shared by the fmpy-glue loop (test_mooring_loop.py) and the masters that run the
 coupled system (test_system_masters.py).
 

@@ -1,5 +1,5 @@
-"""Closed mooring loop: SlowDrift FMU (or any body with the same interface) + MoorDyn (issue #4),
-in the two explicit coupling schemes a co-simulation master uses (issue #12).
+"""Closed mooring loop: SlowDrift FMU (or any body with the same interface) + MoorDyn,
+in the two explicit coupling schemes a co-simulation master uses.
 
 One MoorDyn call and one body step per communication step, no iteration. At the
 communication point t_n the body's state (X, Y, theta) and velocity (Xdot, Ydot, thetadot)

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Static stiffness of the MoorDyn spread mooring about its neutral position (issue #4).
+"""Static stiffness of the MoorDyn spread mooring about its neutral position.
 
 The platform is MoorDyn's coupled body 1 (6 DOF: x, y, z, roll, pitch, yaw; angles in rad).
 For each offset q = (X, Y, theta) the body is held there, MoorDyn's initial-condition solver

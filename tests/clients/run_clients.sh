@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Python client tests of SlowDrift.fmu (issue #4) and the coupled system (issue #12): fmpy,
+# Python client tests of SlowDrift.fmu and the coupled system: fmpy,
 # fmu-manipulation-toolbox, libcosimpy, ecospy, the closed mooring loop with MoorDyn and the
 # masters running target/fmu/system/. Creates target/client-venv from PyPI on first use and
 # installs Debian's libtbb12 (ecos needs it) when missing (tests/venvs.sh), (re)builds the

@@ -1,4 +1,4 @@
-"""Reading and checking the coupled system's description files (issue #12 part 3): the OSP
+"""Reading and checking the coupled system's description files: the OSP
 model descriptions, the OSP system structure and the SSP system structure description in
 target/fmu/system/ (fmu-pack writes them), against their schemas and against the model
 descriptions of the two FMUs.

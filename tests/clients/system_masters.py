@@ -1,4 +1,4 @@
-"""The coupled system (target/fmu/system/) run by co-simulation masters (issue #12 part 4):
+"""The coupled system (target/fmu/system/) run by co-simulation masters:
 libcosim (libcosimpy) on OspSystemStructure.xml, ecos (ecospy) and fmpy on
 MooredPlatform.ssp. Each runner returns a Run:
 

@@ -1,4 +1,4 @@
-"""Monte Carlo on a Dask cluster (issue #6 part 2): fmu-pack/python/slowdrift_dask on a
+"""Monte Carlo on a Dask cluster: fmu-pack/python/slowdrift_dask on a
 LocalCluster of 3 worker processes (one thread each), against the native
 `slowdrift montecarlo` as the independent route.
 
@@ -22,7 +22,7 @@ separate drag, and a case the model refuses (Hs = -1).
    worker process killed (SIGKILL) while it holds runs: the campaign still completes with
    every run, equal to the native tool's.
 6. Number formatting against values printed by rustc; seeds grouped into tasks.
-7. One campaign per --out whichever tool runs it (issue #15): a client on the --out of a
+7. One campaign per --out whichever tool runs it: a client on the --out of a
    running native campaign is refused naming its pid, and the native tool on the --out of
    a client's campaign is refused naming the client's; the summary is replaced atomically.
 """

@@ -1,4 +1,4 @@
-"""SlowDrift.fmu through fmpy 0.3.32 (issue #4), an independent FMI 2.0 master.
+"""SlowDrift.fmu through fmpy 0.3.32, an independent FMI 2.0 master.
 
 1. fmpy.validate_fmu finds no problem (and does find one in a deliberately broken copy).
 2. fmpy.simulate_fmu with start values, an input signal (ramp and constants on Fx_ext,

@@ -1,4 +1,4 @@
-"""A saved FMU state stands alone (issue #11, item 4), through fmpy 0.3.32.
+"""A saved FMU state stands alone, through fmpy 0.3.32.
 
 fmusim (Reference-FMUs) restores `--initial-fmu-state-file` right after fmi2Instantiate and
 before it sets anything: fmi2DeSerializeFMUstate, fmi2SetFMUstate, fmi2FreeFMUstate, then

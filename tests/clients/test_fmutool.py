@@ -1,4 +1,4 @@
-"""SlowDrift.fmu through fmu-manipulation-toolbox 2.0's checker (issue #4):
+"""SlowDrift.fmu through fmu-manipulation-toolbox 2.0's checker:
 `fmutool -input SlowDrift.fmu -summary -check`.
 
 Its output (stdout) is one log record per line, `LEVEL    | message`. The checks are the FMI

@@ -1,5 +1,5 @@
 """SlowDrift.fmu in libcosim (the Open Simulation Platform's co-simulation library, common in
-maritime co-simulation) through libcosimpy 0.0.6 (issue #4).
+maritime co-simulation) through libcosimpy 0.0.6.
 
 The FMU runs 600 s at a 1 s step with non-default parameters (routes.PARAMETERS, set as
 initial values) in a libcosim execution, observed by a time-series observer; X, Y, theta,

@@ -1,4 +1,4 @@
-"""Mooring.fmu (issue #12 part 2): MoorDyn's lines as an FMU that a master connects to
+"""Mooring.fmu: MoorDyn's lines as an FMU that a master connects to
 SlowDrift.fmu (docs/coupling.md).
 
 1. fmpy's validate_fmu and fmu-manipulation-toolbox's checker find nothing; every Real has

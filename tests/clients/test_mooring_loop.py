@@ -1,4 +1,4 @@
-"""Closed mooring loop (issue #4): SlowDrift.fmu with its internal stiffness switched off,
+"""Closed mooring loop: SlowDrift.fmu with its internal stiffness switched off,
 moored by MoorDyn (mooring/spread_mooring.dat) through Fx_ext, Fy_ext, Mz_ext,
 for the FMU's default experiment (three hours, 1 s communication steps, default sea: JONSWAP
 Hs 7 m, Tp 12 s, head seas). Coupling scheme: explicit Gauss-Seidel, see mooring_loop.py.

@@ -1,4 +1,4 @@
-"""The quasi-static line model of Mooring.fmu (mooringModel = 1, issue #12): every line an
+"""The quasi-static line model of Mooring.fmu (mooringModel = 1): every line an
 elastic catenary on a frictionless seabed (mooring/src/catenary.rs), read from the same
 MoorDyn input file as the dynamic model.
 

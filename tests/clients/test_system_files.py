@@ -1,4 +1,4 @@
-"""The coupled system's description files (issue #12 part 3), as fmu-pack writes them into
+"""The coupled system's description files, as fmu-pack writes them into
 target/fmu/system/: SlowDrift_OspModelDescription.xml and Mooring_OspModelDescription.xml
 (OSP variable groups), OspSystemStructure.xml (OSP, libcosim and ecos) and MooredPlatform.ssp
 (SSP 1.0: SystemStructure.ssd and the two FMUs).

@@ -1,4 +1,4 @@
-"""The moored platform run by co-simulation masters from the system files (issue #12 part 4):
+"""The moored platform run by co-simulation masters from the system files:
 libcosim on OspSystemStructure.xml, ecos and fmpy on MooredPlatform.ssp, three hours each
 (SlowDrift's default experiment, 1 s macro step, default sea, seed 1), against the fmpy-glue
 loop of mooring_loop.py (the same FMUs, the same sea: SlowDrift's records depend on the

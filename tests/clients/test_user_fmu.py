@@ -1,4 +1,4 @@
-"""A user's platform as its own FMU (`fmu-pack --config FILE`, issue #27 part 2), in fmpy and
+"""A user's platform as its own FMU (`fmu-pack --config FILE`), in fmpy and
 libcosim: the FMU packed from tests/data/example.toml (a platform, sea and drift of its own).
 
 1. Its model description shows the file: every start value is the file's value (read here

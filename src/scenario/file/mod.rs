@@ -349,16 +349,16 @@ rows = [
 
     #[test]
     fn complete_file_gives_every_value_in_si_and_radians() {
-        let config = read(COMPLETE).expect("valid file");
+        let scenario = read(COMPLETE).expect("valid file");
         assert_eq!(
-            config.environment,
+            scenario.environment,
             Environment {
                 gravity: 9.81,
                 water_density: 1000.0
             }
         );
         assert_eq!(
-            config.sea,
+            scenario.sea,
             SeaState {
                 spectrum: Spectrum::Jonswap {
                     hs: 4.0,
@@ -373,14 +373,14 @@ rows = [
             }
         );
         assert_eq!(
-            config.current,
+            scenario.current,
             Current {
                 speed: 0.5,
                 direction: 45f64.to_radians()
             }
         );
         assert_eq!(
-            config.run,
+            scenario.run,
             Run {
                 duration: 3600.0,
                 time_step: 0.5,
@@ -390,7 +390,7 @@ rows = [
             }
         );
         assert_eq!(
-            config.platform,
+            scenario.platform,
             Platform {
                 mass: Some(1.0e7),
                 yaw_inertia: Some(5.0e9),
@@ -407,7 +407,7 @@ rows = [
             }
         );
         assert_eq!(
-            config.model,
+            scenario.model,
             ModelOptions {
                 second_order: SecondOrder::Newman,
                 qtf_tolerance: crate::model::DEFAULT_QTF_TOLERANCE,
@@ -423,7 +423,7 @@ rows = [
             }
         );
         assert_eq!(
-            config.initial,
+            scenario.initial,
             InitialCondition {
                 position: [1.0, -2.0, 5f64.to_radians()],
                 velocity: [0.1, 0.2, 0.5f64.to_radians()],
@@ -443,31 +443,34 @@ rows = [
             row(2.0, 90.0, [4.0, 950.0, 6.0]),
         ])
         .expect("valid rows");
-        assert_eq!(inline_table(&config), &expected);
-        assert_eq!(inline_table(&config).headings(), &[0.0, 90f64.to_radians()]);
+        assert_eq!(inline_table(&scenario), &expected);
+        assert_eq!(
+            inline_table(&scenario).headings(),
+            &[0.0, 90f64.to_radians()]
+        );
     }
 
     #[test]
     fn absent_keys_take_their_documented_defaults() {
-        let config = read(MINIMAL).expect("valid file");
-        assert_eq!(config.environment, Environment::default());
-        assert_eq!(config.current, Current::default());
-        assert_eq!(config.model, ModelOptions::default());
-        assert_eq!(config.initial, InitialCondition::default());
-        assert_eq!(config.sea.spreading, Spreading::LongCrested);
-        assert_eq!(config.sea.n_directions, LONG_CRESTED_DIRECTIONS);
-        assert_eq!(config.sea.mean_direction, 0.0);
-        assert_eq!(config.sea.seed, DEFAULT_SEED);
-        assert_eq!(config.sea.band, None);
-        assert_eq!(config.run.time_step, DEFAULT_TIME_STEP);
-        assert_eq!(config.run.start_time, 0.0);
-        assert_eq!(config.run.block_duration, DEFAULT_BLOCK_DURATION);
-        assert_eq!(config.run.memory_limit, limits::DEFAULT_MEMORY_LIMIT);
-        assert_eq!(config.platform.added_mass, None);
-        assert_eq!(config.platform.linear_damping, [[0.0; 3]; 3]);
-        assert_eq!(config.platform.quadratic_damping, [[0.0; 3]; 3]);
-        assert!(config.platform.columns.is_empty());
-        assert!(!inline_table(&config).has_damping());
+        let scenario = read(MINIMAL).expect("valid file");
+        assert_eq!(scenario.environment, Environment::default());
+        assert_eq!(scenario.current, Current::default());
+        assert_eq!(scenario.model, ModelOptions::default());
+        assert_eq!(scenario.initial, InitialCondition::default());
+        assert_eq!(scenario.sea.spreading, Spreading::LongCrested);
+        assert_eq!(scenario.sea.n_directions, LONG_CRESTED_DIRECTIONS);
+        assert_eq!(scenario.sea.mean_direction, 0.0);
+        assert_eq!(scenario.sea.seed, DEFAULT_SEED);
+        assert_eq!(scenario.sea.band, None);
+        assert_eq!(scenario.run.time_step, DEFAULT_TIME_STEP);
+        assert_eq!(scenario.run.start_time, 0.0);
+        assert_eq!(scenario.run.block_duration, DEFAULT_BLOCK_DURATION);
+        assert_eq!(scenario.run.memory_limit, limits::DEFAULT_MEMORY_LIMIT);
+        assert_eq!(scenario.platform.added_mass, None);
+        assert_eq!(scenario.platform.linear_damping, [[0.0; 3]; 3]);
+        assert_eq!(scenario.platform.quadratic_damping, [[0.0; 3]; 3]);
+        assert!(scenario.platform.columns.is_empty());
+        assert!(!inline_table(&scenario).has_damping());
     }
 
     /// A float where a whole number belongs is shown as written, not with its 309 digits.
@@ -550,12 +553,12 @@ rows = [
     #[test]
     fn example_file_loads() {
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/example.toml");
-        let config = load(&path, limits::DEFAULT_MEMORY_LIMIT).expect("the example is valid");
-        let drift = inline_table(&config);
+        let scenario = load(&path, limits::DEFAULT_MEMORY_LIMIT).expect("the example is valid");
+        let drift = inline_table(&scenario);
         assert_eq!(drift.headings().len(), 2);
         assert_eq!(drift.omegas().len(), 6);
         drift
-            .check_covers(config.sea.band(), &[config.sea.mean_direction])
+            .check_covers(scenario.sea.band(), &[scenario.sea.mean_direction])
             .expect("the example's drift table covers its sea state");
     }
 }
