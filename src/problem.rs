@@ -20,6 +20,7 @@ use serde::Serialize;
 
 mod checks;
 pub mod inertia;
+pub mod motions;
 pub mod ranges;
 mod resolve;
 mod steps;

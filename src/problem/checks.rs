@@ -303,7 +303,9 @@ impl Problem {
         self.check_stiffness_against_the_step(&inertia)?;
         require_finite_matrix("platform.linear_damping", &p.linear_damping)?;
         require_finite_matrix("platform.quadratic_damping", &p.quadratic_damping)?;
-        self.validate_columns()
+        self.validate_columns()?;
+        // [platform.motions] checked and its RAOs solvable (problem::motions).
+        self.first_order_motions().map(drop)
     }
 
     /// The columns within their ranges.

@@ -15,6 +15,7 @@
 
 use crate::error::numbers::written;
 use crate::hydro::io::database::{MassProperties, Provenance};
+use crate::hydro::rao::{FirstOrder, RaoTable};
 use crate::scenario::Platform;
 use serde::Serialize;
 
@@ -31,6 +32,13 @@ pub struct BodyData {
     pub added_mass: Option<[[f64; 3]; 3]>,
     /// Where the database's importer took them from.
     pub provenance: Provenance,
+    /// The first-order radiation-diffraction coefficients (6 DOF), for the RAOs
+    /// (`problem::motions`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub first_order: Option<FirstOrder>,
+    /// RAOs the data give directly (a WAMIT `.4`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rao: Option<RaoTable>,
 }
 
 /// Where a value of [`Inertia`] came from.
@@ -186,6 +194,7 @@ mod tests {
             linear_damping: [[0.0; 3]; 3],
             quadratic_damping: [[0.0; 3]; 3],
             columns: Vec::new(),
+            motions: None,
         }
     }
 
@@ -202,6 +211,8 @@ mod tests {
                 low_frequency_added_mass: Some("WAMIT .1 at omega = 0 (PER = -1)".into()),
                 stiffness: None,
             },
+            first_order: None,
+            rao: None,
         }
     }
 

@@ -200,6 +200,8 @@ fn from_database(
             mass_properties: database.mass_properties,
             added_mass: database.low_frequency_added_mass,
             provenance: database.provenance,
+            first_order: database.first_order,
+            rao: database.rao,
         },
         drift,
         qtf,

@@ -34,6 +34,7 @@ impl Problem {
         lines.extend(self.stiffness_lines(&inertia));
         lines.push(self.damping_line());
         lines.push(self.drag_line());
+        lines.push(self.motions_line()?);
         lines.extend(inertia.notes.iter().cloned());
         Ok(lines)
     }
@@ -97,6 +98,38 @@ impl Problem {
             (true, true) => "linear and quadratic ([platform])",
         };
         format!("wave-drift damping: {wave_drift}; extra damping: {extra}")
+    }
+
+    /// The first-order motions (`problem::motions`): where the RAOs come from and the
+    /// natural periods they have, or why there are none.
+    fn motions_line(&self) -> Result<String> {
+        Ok(match self.first_order_motions()? {
+            Some(motions) => {
+                let periods: Vec<String> = motions
+                    .natural_periods
+                    .iter()
+                    .map(|(dof, t)| format!("{dof} {t:.1} s"))
+                    .collect();
+                format!(
+                    "first-order motions: RAOs {}{}",
+                    motions.source,
+                    if periods.is_empty() {
+                        String::new()
+                    } else {
+                        format!(
+                            "; natural periods {} (uncoupled, with A(omega_n))",
+                            periods.join(", ")
+                        )
+                    }
+                )
+            }
+            None if self.hydro.body.first_order.is_some() => format!(
+                "first-order motions: none ({} has first-order coefficients: give [platform.motions] for its RAOs)",
+                self.hydro.body.name
+            ),
+            None => "first-order motions: none (the data have no first-order coefficients or RAOs)"
+                .to_string(),
+        })
     }
 
     fn drag_line(&self) -> String {

@@ -84,6 +84,40 @@ pub struct Platform {
     pub quadratic_damping: [[f64; 3]; 3],
     /// The platform's columns: Morison drag strips and the column solvers (empty = none).
     pub columns: Vec<Cylinder>,
+    /// The rigid body of the first-order (wave-frequency) motions in 6 DOF
+    /// (`[platform.motions]`), when the configuration gives it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub motions: Option<Motions>,
+}
+
+/// What the first-order motions (RAOs, docs/theory.md#first-order-motions-raos) need beyond
+/// the radiation-diffraction data and the platform's mass: `[platform.motions]`. Body frame
+/// (x forward, y to port, z up) about the body reference point, the data's origin; DOFs
+/// surge, sway, heave, roll, pitch, yaw. The slow-drift equations do not use it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Motions {
+    /// Centre of gravity (x_g, y_g, z_g) from the reference point, m.
+    pub centre_of_gravity: [f64; 3],
+    /// The inertia about the centre of gravity.
+    pub inertia: BodyInertia,
+    /// Linear stiffness besides the hydrostatics and the weight (the mooring's,
+    /// linearised), 6x6: N/m, N, N m/m, N m/rad.
+    pub external_stiffness: [[f64; 6]; 6],
+    /// Linear damping besides the radiation damping (viscous: a potential-flow code has
+    /// none, and the heave, roll and pitch resonances need it), 6x6: N s/m, N s, N m s/m,
+    /// N m s/rad.
+    pub external_damping: [[f64; 6]; 6],
+}
+
+/// The inertia of the body about its centre of gravity, body axes.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub enum BodyInertia {
+    /// Radii of gyration (r_x, r_y, r_z) about axes through the centre of gravity, m:
+    /// I = m diag(r_x^2, r_y^2, r_z^2), no products of inertia.
+    RadiiOfGyration([f64; 3]),
+    /// The inertia tensor, kg m^2, symmetric, off-diagonal entries with their minus sign
+    /// (I_xy = -sum m x y).
+    Tensor([[f64; 3]; 3]),
 }
 
 /// Modelling choices.

@@ -214,6 +214,13 @@ fn covers(key: &str, field: &str) -> bool {
 
 /// A key path as the configuration file spells it: `sea.hs` -> `[sea] hs`.
 fn file_key(field: &str) -> String {
+    // The format's one nested table, named as the file writes its header.
+    const SUBTABLES: [&str; 1] = ["platform.motions"];
+    for table in SUBTABLES {
+        if let Some(key) = field.strip_prefix(table).and_then(|k| k.strip_prefix('.')) {
+            return format!("[{table}] {key}");
+        }
+    }
     match field.split_once('.') {
         Some((section, key)) if !section.contains('[') => format!("[{section}] {key}"),
         _ => field.to_string(),

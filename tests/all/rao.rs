@@ -219,28 +219,11 @@ fn body(mass: f64, stiffness: [[f64; 6]; 6], damping: [[f64; 6]; 6]) -> (BodyMat
     )
 }
 
-/// (a) The crate's RAOs (import, then solve) against the equation solved here from the raw
-/// text, with a mooring-like stiffness and viscous damping that couple the DOFs.
-#[test]
-fn iea15_raos_are_the_equation_solved_from_the_raw_files() {
-    let Some(root) = iea15_root_or_skip() else {
-        return;
-    };
-    let raw = raw(&root);
-    let first_order = imported(&root);
-    let mut c_ext = [[0.0; 6]; 6];
-    c_ext[0][0] = 7.0e4;
-    c_ext[1][1] = 7.0e4;
-    c_ext[0][4] = -1.0e6;
-    c_ext[4][0] = -1.0e6;
-    c_ext[5][5] = 5.0e7;
-    let mut b_ext = [[0.0; 6]; 6];
-    b_ext[2][2] = 5.0e5;
-    b_ext[3][3] = 2.0e9;
-    b_ext[4][4] = 2.0e9;
-    b_ext[0][0] = 1.0e5;
-    let (matrices, _) = body(MASS, c_ext, b_ext);
-    let rao = solve(&first_order, &matrices).unwrap();
+/// `rao` against the equation built from the raw text with the platform's mass (`MASS`,
+/// centre of gravity on the z axis at `ZG`), its weight's restoring and `c_ext`, `b_ext`,
+/// solved here at 6 frequencies and 5 headings: each DOF within 1e-9 of the largest motion
+/// (rotations times 100 m).
+fn assert_is_the_raw_equation(rao: &Rao, raw: &Raw, c_ext: [[f64; 6]; 6], b_ext: [[f64; 6]; 6]) {
     assert_eq!(rao.omegas.len(), raw.radiation.len());
     let mass = hand_mass(MASS);
     let mut worst: f64 = 0.0;
@@ -304,6 +287,32 @@ fn iea15_raos_are_the_equation_solved_from_the_raw_files() {
         }
     }
     eprintln!("RAOs: {checked} (omega, beta) pairs, worst relative difference {worst:.2e}");
+}
+
+/// (a) The crate's RAOs (import, then solve) against the equation solved here from the raw
+/// text, with a mooring-like stiffness and viscous damping that couple the DOFs.
+#[test]
+fn iea15_raos_are_the_equation_solved_from_the_raw_files() {
+    let Some(root) = iea15_root_or_skip() else {
+        return;
+    };
+    let raw = raw(&root);
+    let first_order = imported(&root);
+    let mut c_ext = [[0.0; 6]; 6];
+    c_ext[0][0] = 7.0e4;
+    c_ext[1][1] = 7.0e4;
+    c_ext[0][4] = -1.0e6;
+    c_ext[4][0] = -1.0e6;
+    c_ext[5][5] = 5.0e7;
+    let mut b_ext = [[0.0; 6]; 6];
+    b_ext[2][2] = 5.0e5;
+    b_ext[3][3] = 2.0e9;
+    b_ext[4][4] = 2.0e9;
+    b_ext[0][0] = 1.0e5;
+    let (matrices, _) = body(MASS, c_ext, b_ext);
+    let rao = solve(&first_order, &matrices).unwrap();
+    assert_eq!(rao.omegas.len(), raw.radiation.len());
+    assert_is_the_raw_equation(&rao, &raw, c_ext, b_ext);
 }
 
 /// Wavenumber of omega in water of depth h: omega^2 = g k tanh(k h), by Newton.
@@ -614,4 +623,192 @@ fn old_databases_read_and_bad_rao_is_refused() {
         values: vec![vec![[Complex64::new(1.0, -0.5); 6]]],
     };
     assert_eq!(RaoTable::from(&rao).to_rao(), rao);
+}
+
+/// A 6x6 or 3x3 matrix as TOML.
+fn toml_matrix<const N: usize>(m: &[[f64; N]; N]) -> String {
+    let rows: Vec<String> = m
+        .iter()
+        .map(|r| {
+            let v: Vec<String> = r.iter().map(|x| format!("{x:e}")).collect();
+            format!("[{}]", v.join(", "))
+        })
+        .collect();
+    format!("[{}]", rows.join(", "))
+}
+
+/// A configuration of the IEA-15 semi (its WAMIT import saved in `dir`) with `motions`
+/// as its `[platform.motions]` section's body (none when empty).
+fn iea15_configuration(dir: &Path, root: &Path, motions: &str) -> PathBuf {
+    let json = dir.join("iea15.json");
+    if !json.exists() {
+        wamit::import(root, &WamitOptions::default())
+            .unwrap()
+            .database
+            .save(&json)
+            .unwrap();
+    }
+    let motions = if motions.is_empty() {
+        String::new()
+    } else {
+        format!("\n[platform.motions]\n{motions}\n")
+    };
+    write(
+        dir,
+        "iea15.toml",
+        &format!(
+            "[sea]\nspectrum = \"jonswap\"\nhs = 4.0\ntp = 10.0\nband = [0.3, 1.5]\n\n\
+             [run]\nduration = 600.0\n\n\
+             [platform]\nmass = {MASS:e}\nyaw_inertia = {I_YAW:e}\n\
+             stiffness = [[7.0e4, 0, 0], [0, 7.0e4, 0], [0, 0, 5.0e7]]\n{motions}\n\
+             [drift]\nsource = \"database\"\nfile = \"iea15.json\"\n"
+        ),
+    )
+}
+
+/// The configuration's `[platform.motions]` reaches the RAOs: a run of the IEA-15 semi's
+/// WAMIT import with its centre of gravity, inertia tensor, a mooring's stiffness and a
+/// viscous damping gives the RAOs of the equation solved here from the raw files; its
+/// summary states the heave, roll and pitch natural periods computed here from the raw
+/// `.1` and `.hst` (fixed-point on A_ii(omega), the weight's -m g z_g in roll and pitch).
+#[test]
+fn a_configuration_with_motions_runs_the_raw_equation() {
+    let Some(root) = iea15_root_or_skip() else {
+        return;
+    };
+    let raw = raw(&root);
+    let mut c_ext = [[0.0; 6]; 6];
+    c_ext[0][0] = 7.0e4;
+    c_ext[1][1] = 7.0e4;
+    c_ext[5][5] = 5.0e7;
+    let mut b_ext = [[0.0; 6]; 6];
+    b_ext[2][2] = 5.0e5;
+    b_ext[3][3] = 2.0e9;
+    b_ext[4][4] = 2.0e9;
+    let tensor = [
+        [I_ROLL_PITCH, 0.0, 0.0],
+        [0.0, I_ROLL_PITCH, 0.0],
+        [0.0, 0.0, I_YAW],
+    ];
+    let dir = temp_dir("motions-config");
+    let config = iea15_configuration(
+        &dir,
+        &root,
+        &format!(
+            "centre_of_gravity = [0.0, 0.0, {ZG:e}]\ninertia = {}\nexternal_stiffness = {}\n\
+             external_damping = {}",
+            toml_matrix(&tensor),
+            toml_matrix(&c_ext),
+            toml_matrix(&b_ext)
+        ),
+    );
+    let problem = slowdrift::problem::load(&config).unwrap();
+    problem.check().unwrap();
+    let motions = problem
+        .first_order_motions()
+        .unwrap()
+        .expect("RAOs from [platform.motions]");
+    assert_is_the_raw_equation(&motions.rao, &raw, c_ext, b_ext);
+
+    // The natural periods by hand: M_ii + A_ii(omega) against C_ii, A interpolated
+    // linearly in the raw .1's frequencies.
+    let mass = hand_mass(MASS);
+    let mut grid: Vec<(f64, Matrix)> = raw.radiation.iter().map(|r| (r.0, r.1)).collect();
+    grid.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let summary = problem.summary().unwrap().join("\n");
+    for (i, dof) in [(2, "heave"), (3, "roll"), (4, "pitch")] {
+        let c = raw.c[i][i] + c_ext[i][i] + if i > 2 { -MASS * G * ZG } else { 0.0 };
+        let a = |w: f64| {
+            let k = grid.partition_point(|g| g.0 < w).clamp(1, grid.len() - 1);
+            let (l, r) = (&grid[k - 1], &grid[k]);
+            let t = ((w - l.0) / (r.0 - l.0)).clamp(0.0, 1.0);
+            l.1[i][i] + (r.1[i][i] - l.1[i][i]) * t
+        };
+        let mut w = (c / (mass[i][i] + a(grid[0].0))).sqrt();
+        for _ in 0..200 {
+            w = (c / (mass[i][i] + a(w))).sqrt();
+        }
+        let period = format!("{dof} {:.1} s", 2.0 * PI / w);
+        eprintln!("{dof}: natural period {:.3} s", 2.0 * PI / w);
+        assert!(summary.contains(&period), "{period} not in\n{summary}");
+    }
+    assert!(
+        summary.contains("first-order motions: RAOs solved from the first-order coefficients of")
+            && summary.contains("iea15.json with [platform.motions]; natural periods heave"),
+        "{summary}"
+    );
+}
+
+/// Without `[platform.motions]` a database with first-order coefficients runs no RAOs and
+/// the summary says what would give them; with it, a drift source without coefficients and
+/// a section that gives two inertias, none, or a radius that is not positive are refused
+/// at their line, naming the key.
+#[test]
+fn motions_are_what_the_configuration_asks_or_refused() {
+    let Some(root) = iea15_root_or_skip() else {
+        return;
+    };
+    let dir = temp_dir("motions-refused");
+    let problem = slowdrift::problem::load(&iea15_configuration(&dir, &root, "")).unwrap();
+    problem.check().unwrap();
+    assert!(problem.first_order_motions().unwrap().is_none());
+    let summary = problem.summary().unwrap().join("\n");
+    assert!(
+        summary.contains("first-order motions: none (")
+            && summary.contains(
+                "iea15.json has first-order coefficients: give [platform.motions] for its RAOs)"
+            ),
+        "{summary}"
+    );
+
+    let refused = |motions: &str| {
+        let config = iea15_configuration(&dir, &root, motions);
+        let checked = slowdrift::problem::load(&config).and_then(|p| p.check());
+        let message = checked.unwrap_err().to_string();
+        eprintln!("{message}");
+        message
+    };
+    let both = refused(
+        "centre_of_gravity = [0, 0, -14.4]\nradii_of_gyration = [26, 26, 36]\n\
+         inertia = [[1e10, 0, 0], [0, 1e10, 0], [0, 0, 2e10]]",
+    );
+    assert!(
+        both.contains("iea15.toml:") && both.contains("not both"),
+        "{both}"
+    );
+    let none = refused("centre_of_gravity = [0, 0, -14.4]");
+    assert!(
+        none.contains("iea15.toml:") && none.contains("radii_of_gyration"),
+        "{none}"
+    );
+    let negative = refused("centre_of_gravity = [0, 0, -14.4]\nradii_of_gyration = [26, -1, 36]");
+    assert!(
+        negative.contains("radii_of_gyration[1]") && negative.contains("iea15.toml:"),
+        "{negative}"
+    );
+    let impossible = refused(
+        "centre_of_gravity = [0, 0, -14.4]\ninertia = [[1e10, 0, 0], [0, 1e10, 0], [0, 0, 3e10]]",
+    );
+    assert!(impossible.contains("no body has them"), "{impossible}");
+
+    // A drift table has no first-order coefficients.
+    let table = write(
+        &dir,
+        "table.toml",
+        &std::fs::read_to_string(
+            Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/minimal.toml"),
+        )
+        .unwrap()
+        .replace(
+            "[drift]",
+            "[platform.motions]\ncentre_of_gravity = [0, 0, -10]\nradii_of_gyration = [20, 20, 25]\n\n[drift]",
+        ),
+    );
+    let problem = slowdrift::problem::load(&table).unwrap();
+    let message = problem.check().unwrap_err().to_string();
+    assert!(
+        message.contains("table.toml:15: invalid [platform] motions")
+            && message.contains("first-order coefficients"),
+        "{message}"
+    );
 }

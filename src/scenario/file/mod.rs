@@ -214,7 +214,7 @@ impl ConfigFile {
             sea,
             current: self.current.into_core(),
             run: self.run.into_core().map_err(|e| origins.locate(e))?,
-            platform: self.platform.into_core(),
+            platform: self.platform.into_core(&origins)?,
             hydro,
             model,
             initial: self.initial.into_core(),
@@ -231,7 +231,9 @@ mod tests {
         Cylinder, DragModel, DriftDamping, Environment, Interaction, NewmanForm, SecondOrder,
     };
     use crate::scenario::DEFAULT_BLOCK_DURATION;
-    use crate::scenario::{limits, Current, DriftSource, InitialCondition, Platform, Run};
+    use crate::scenario::{
+        limits, BodyInertia, Current, DriftSource, InitialCondition, Motions, Platform, Run,
+    };
     use crate::sea_state::{SeaState, Spectrum, Spreading};
 
     /// A file with only the required keys (the file's lines are the tests' line numbers).
@@ -277,6 +279,14 @@ x = 20.0
 y = -20.0
 diameter = 8.0
 draft = 15.0
+
+[platform.motions]
+centre_of_gravity = [0.5, -0.25, -10.0]
+radii_of_gyration = [20.0, 21.0, 25.0]
+external_stiffness = [[1.0e5, 0, 0, 0, 0, 0], [0, 1.0e5, 0, 0, 0, 0], [0, 0, 0, 0, 0, 0],
+                      [0, 0, 0, 0, 0, 0], [0, 0, 0, 0, 0, 0], [0, 0, 0, 0, 0, 3.0e8]]
+external_damping = [[0, 0, 0, 0, 0, 0], [0, 0, 0, 0, 0, 0], [0, 0, 2.0e5, 0, 0, 0],
+                    [0, 0, 0, 1.0e8, 0, 0], [0, 0, 0, 0, 1.0e8, 0], [0, 0, 0, 0, 0, 0]]
 
 [model]
 newman = "arithmetic"
@@ -404,6 +414,24 @@ rows = [
                     diameter: 8.0,
                     draft: 15.0
                 }],
+                motions: Some(Motions {
+                    centre_of_gravity: [0.5, -0.25, -10.0],
+                    inertia: BodyInertia::RadiiOfGyration([20.0, 21.0, 25.0]),
+                    external_stiffness: std::array::from_fn(|i| {
+                        std::array::from_fn(|j| match (i, j) {
+                            (0, 0) | (1, 1) => 1.0e5,
+                            (5, 5) => 3.0e8,
+                            _ => 0.0,
+                        })
+                    }),
+                    external_damping: std::array::from_fn(|i| {
+                        std::array::from_fn(|j| match (i, j) {
+                            (2, 2) => 2.0e5,
+                            (3, 3) | (4, 4) => 1.0e8,
+                            _ => 0.0,
+                        })
+                    }),
+                }),
             }
         );
         assert_eq!(
@@ -470,6 +498,7 @@ rows = [
         assert_eq!(scenario.platform.linear_damping, [[0.0; 3]; 3]);
         assert_eq!(scenario.platform.quadratic_damping, [[0.0; 3]; 3]);
         assert!(scenario.platform.columns.is_empty());
+        assert_eq!(scenario.platform.motions, None);
         assert!(!inline_table(&scenario).has_damping());
     }
 
