@@ -29,6 +29,7 @@ mod full_qtf_directions;
 mod fuzz;
 mod montecarlo;
 mod nemoh;
+mod nemoh_rao;
 mod newman;
 mod oscillator;
 mod quirks;

@@ -17,7 +17,7 @@ use std::path::PathBuf;
 
 /// The OC3 spar's NEMOH project directory, or `None` after printing a "skipped" line when
 /// the data are absent. Under CI (env var `CI` set) absent data is a failure.
-fn oc3_dir_or_skip() -> Option<PathBuf> {
+pub(crate) fn oc3_dir_or_skip() -> Option<PathBuf> {
     let dir = shared_data_dir().join("nemoh/oc3-hywind");
     if dir.join("Nemoh.cal").is_file() {
         return Some(dir);
@@ -34,7 +34,7 @@ fn oc3_dir_or_skip() -> Option<PathBuf> {
 }
 
 /// The numbers of the lines of a file from line `skip` on.
-fn raw_rows(path: &PathBuf, skip: usize) -> Vec<Vec<f64>> {
+pub(crate) fn raw_rows(path: &PathBuf, skip: usize) -> Vec<Vec<f64>> {
     std::fs::read_to_string(path)
         .unwrap()
         .lines()

@@ -147,7 +147,7 @@ fn hand_mass(mass: f64) -> [[f64; 6]; 6] {
 }
 
 /// Gaussian elimination with partial pivoting on a complex 6x6 system.
-fn gauss(mut a: [[Complex64; 6]; 6], mut b: [Complex64; 6]) -> [Complex64; 6] {
+pub(crate) fn gauss(mut a: [[Complex64; 6]; 6], mut b: [Complex64; 6]) -> [Complex64; 6] {
     for col in 0..6 {
         let p = (col..6)
             .max_by(|&i, &j| a[i][col].norm().total_cmp(&a[j][col].norm()))

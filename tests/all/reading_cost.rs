@@ -12,7 +12,7 @@
 use crate::counting::{live_bytes, peak_bytes, reset_peak};
 use crate::quirks::temp_dir;
 use slowdrift::files::Cost;
-use slowdrift::hydro::io::nemoh::{cal, matrices, qtf as nemoh_qtf};
+use slowdrift::hydro::io::nemoh::{cal, matrices, qtf as nemoh_qtf, tec};
 use slowdrift::hydro::io::wamit::{self, WamitOptions};
 use slowdrift::hydro::io::{database, drift_csv};
 use slowdrift::montecarlo::{cases, runs_file};
@@ -351,6 +351,41 @@ fn the_nemoh_readers_stay_within_their_cost() {
         &|path| {
             let _ = matrices::read_frequency_matrices(path, 1, LIMIT);
             let _ = matrices::read_matrix6(path, LIMIT);
+        },
+    );
+    let head = "VARIABLES=\"w (rad/s)\"\n\"A 1 1\" \"B 1 1\"\n";
+    check(
+        &tec::READING,
+        vec![
+            content(
+                "one number a line",
+                "RadiationCoefficients.tec",
+                repeated(head, "1\n", "", SIZE),
+            ),
+            content(
+                "a zone of one-DOF rows",
+                "RadiationCoefficients.tec",
+                repeated(
+                    &format!("{head}Zone t=\"DoF 1\",I=1000000,F=POINT\n"),
+                    "1 1 1\n",
+                    "",
+                    SIZE,
+                ),
+            ),
+            content(
+                "zone lines",
+                "ExcitationForce.tec",
+                repeated(
+                    head,
+                    "Zone t=\"beta = 1 deg\",I=1,F=POINT\n1 1 1\n",
+                    "",
+                    SIZE,
+                ),
+            ),
+        ],
+        &|path| {
+            let _ = tec::read_radiation(path, 1, 1, LIMIT);
+            let _ = tec::read_excitation(path, 1, LIMIT);
         },
     );
     if let Some(text) = nemoh_cal() {

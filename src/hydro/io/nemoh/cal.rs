@@ -116,6 +116,17 @@ pub const SLOW: [(bool, [f64; 3]); 3] = [
     (true, [0.0, 0.0, 1.0]),
 ];
 
+/// The six rigid-body DOFs in the database's order: translations along x, y, z, rotations
+/// about x, y, z.
+pub const SIX: [(bool, [f64; 3]); 6] = [
+    (false, [1.0, 0.0, 0.0]),
+    (false, [0.0, 1.0, 0.0]),
+    (false, [0.0, 0.0, 1.0]),
+    (true, [1.0, 0.0, 0.0]),
+    (true, [0.0, 1.0, 0.0]),
+    (true, [0.0, 0.0, 1.0]),
+];
+
 /// What reading a Nemoh.cal costs: up to 18 bytes of memory per byte of the file (measured
 /// on its costliest content: blank lines, each a line of the reader's), with a margin for
 /// the allocator's own overhead.
@@ -255,6 +266,44 @@ impl NemohCal {
             }
         }
         Ok(out)
+    }
+}
+
+impl NemohCal {
+    /// The 0-based indices of surge, sway, heave, roll, pitch and yaw among `list` (the
+    /// DOFs or the forces) and the point of its rotations (all three about one point), or
+    /// why not (a DOF missing, rotations about different points).
+    pub fn six_indices(
+        list: &[Generalised],
+    ) -> std::result::Result<([usize; 6], [f64; 3]), String> {
+        let names = ["surge", "sway", "heave", "roll", "pitch", "yaw"];
+        let mut out = [0; 6];
+        for (k, (rotation, direction)) in SIX.iter().enumerate() {
+            out[k] = list
+                .iter()
+                .position(|g| g.is(*rotation, *direction))
+                .ok_or_else(|| format!("no {}", names[k]))?;
+        }
+        let point = list[out[3]].point;
+        for k in [4, 5] {
+            let g = &list[out[k]];
+            if g.point != point {
+                return Err(format!(
+                    "{} (line {}) is about ({}, {}, {}), roll (line {}) about ({}, {}, {}): \
+                     the rotations must share one point",
+                    names[k],
+                    g.line,
+                    g.point[0],
+                    g.point[1],
+                    g.point[2],
+                    list[out[3]].line,
+                    point[0],
+                    point[1],
+                    point[2]
+                ));
+            }
+        }
+        Ok((out, point))
     }
 }
 

@@ -3,7 +3,7 @@
 //! with a line per file.
 
 use super::cal::{FrequencyUnit, Generalised, NemohCal};
-use super::{matrices, qtf};
+use super::{first_order, matrices, qtf};
 use crate::error::{Error, Result};
 use crate::hydro::io::database::{HydroDatabase, MassProperties, Provenance, FORMAT_VERSION};
 use crate::hydro::io::import::{self, drift_points, Import};
@@ -144,6 +144,8 @@ pub fn import(dir: &Path, memory_limit: f64) -> Result<Import> {
         files.push(format!("{}: absent", path.display()));
     }
 
+    let (first_order, rao) = first_order::import(&project, &cal, memory_limit, &mut files)?;
+
     let mut drift = Vec::new();
     let mut qtf_data = None;
     let mut bidirectional_drift = None;
@@ -203,7 +205,8 @@ pub fn import(dir: &Path, memory_limit: f64) -> Result<Import> {
         format_version: FORMAT_VERSION,
         name,
         source: format!(
-            "NEMOH v3 results {} (Nemoh.cal, CM.dat, Mechanics/, the difference-frequency QTF); \
+            "NEMOH v3 results {} (Nemoh.cal, CM.dat, the .tec first-order results, Mechanics/, \
+             the difference-frequency QTF); \
              rho = {} kg/m^3, g = {} m/s^2 from Nemoh.cal; depth {}; QTF conjugated from \
              e^(-i w t); moments about the body origin; drift from the QTF diagonal",
             project.display(),
@@ -223,8 +226,8 @@ pub fn import(dir: &Path, memory_limit: f64) -> Result<Import> {
         drift,
         qtf: qtf_data,
         bidirectional_drift,
-        first_order: None,
-        rao: None,
+        first_order,
+        rao,
         provenance,
     };
     database.validate()?;

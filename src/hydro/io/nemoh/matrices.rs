@@ -30,21 +30,21 @@ pub struct FrequencyMatrices {
 
 /// How the first row of a file writes its numbers: a later row's number written
 /// with less (its exponent lost; on a last line without a newline, fewer digits) is cut.
-struct Reference<'a> {
+pub(super) struct Reference<'a> {
     line: usize,
     fields: Vec<&'a str>,
 }
 
 /// A file's text split into its non-empty lines (1-based line numbers), and whether the
 /// file ends without a newline (so its last line may be cut inside a number).
-struct Lines<'a> {
-    path: String,
-    rows: Vec<(usize, &'a str)>,
+pub(super) struct Lines<'a> {
+    pub(super) path: String,
+    pub(super) rows: Vec<(usize, &'a str)>,
     unterminated_last: Option<usize>,
 }
 
 impl<'a> Lines<'a> {
-    fn new(path: String, text: &'a str) -> Self {
+    pub(super) fn new(path: String, text: &'a str) -> Self {
         let rows: Vec<(usize, &str)> = text
             .lines()
             .enumerate()
@@ -66,7 +66,7 @@ impl<'a> Lines<'a> {
     /// The numbers of `line`, or an error naming `path:line` and the field: not a finite
     /// number, or a cut copy of the same field of `reference`'s row. The first row read
     /// becomes the reference.
-    fn numbers(
+    pub(super) fn numbers(
         &self,
         line: usize,
         text: &'a str,
