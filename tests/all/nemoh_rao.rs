@@ -381,3 +381,114 @@ fn oc3_heave_peaks_at_its_natural_frequency() {
     );
     assert!((wp - wn).abs() <= spacing, "peak {wp} vs omega_n {wn}");
 }
+
+/// The numbers of a line `NAME = value` of NEMOH's Mesh/Hydrostatics.dat (the first `=`'s
+/// value after `name`).
+fn hydrostatics_value(text: &str, name: &str) -> f64 {
+    let line = text.lines().find(|l| l.contains(name)).unwrap();
+    let after = &line[line.find(name).unwrap() + name.len()..];
+    let value = after
+        .trim_start()
+        .trim_start_matches('=')
+        .split_whitespace()
+        .next();
+    value.unwrap().parse().unwrap()
+}
+
+/// The database's hydrostatics are the buoyancy's alone, about the origin: roll and pitch
+/// rho g (I_wp + V z_B) with the displaced volume, the centre of buoyancy and the
+/// waterplane area of NEMOH's own Mesh/Hydrostatics.dat (a file the import does not read),
+/// the waterplane a circle (I_wp = A^2 / (4 pi)); heave rho g A_wp. Within 2e-5: the file's
+/// z_B is written to 5 digits (-62.066 m).
+#[test]
+fn oc3_hydrostatics_are_the_buoyancys_alone() {
+    let Some(dir) = oc3_dir_or_skip() else {
+        return;
+    };
+    let text = std::fs::read_to_string(dir.join("Mesh/Hydrostatics.dat")).unwrap();
+    let (v, zb, area) = (
+        hydrostatics_value(&text, "Displacement"),
+        hydrostatics_value(&text, "ZF"),
+        hydrostatics_value(&text, "Waterplane area"),
+    );
+    let (rho, g) = (1025.0, 9.81);
+    let i_wp = area * area / (4.0 * std::f64::consts::PI);
+    let roll = rho * g * (i_wp + v * zb);
+    let c = imported(&dir).first_order.hydrostatics;
+    eprintln!(
+        "OC3 hydrostatics about the origin: C44 {:.6e}, C55 {:.6e} vs rho g (I_wp + V z_B) \
+         {roll:.6e}; C33 {:.6e} vs rho g A_wp {:.6e}",
+        c[3][3],
+        c[4][4],
+        c[2][2],
+        rho * g * area
+    );
+    for k in [3, 4] {
+        assert!(
+            ((c[k][k] - roll) / roll).abs() < 2e-5,
+            "C{0}{0} {1} vs {roll}",
+            k + 1,
+            c[k][k]
+        );
+    }
+    assert!(((c[2][2] - rho * g * area) / (rho * g * area)).abs() < 1e-5);
+}
+
+/// Two routes to the spar's RAOs agree: the import's (NEMOH's own equation with Kh.dat,
+/// Inertia.dat and Badd.dat, moved to the origin) and a configuration's `[platform.motions]`
+/// giving the same body as Inertia.dat (centre of gravity at the rotations' point, the
+/// inertia about it), which adds the weight's restoring to the database's buoyancy.
+#[test]
+fn oc3_motions_from_a_configuration_are_the_imports() {
+    let Some(dir) = oc3_dir_or_skip() else {
+        return;
+    };
+    let data = imported(&dir);
+    let import = nemoh::import(&dir, LIMIT).unwrap();
+    let work = crate::rao::temp_dir("oc3-motions");
+    let json = work.join("oc3.json");
+    import.database.save(&json).unwrap();
+    let inertia = matrix(&dir.join("Mechanics/Inertia.dat"));
+    let point = roll_point(&dir);
+    let tensor: Vec<String> = (3..6)
+        .map(|i| {
+            let row: Vec<String> = (3..6).map(|j| format!("{:e}", inertia[i][j])).collect();
+            format!("[{}]", row.join(", "))
+        })
+        .collect();
+    let config = work.join("oc3.toml");
+    std::fs::write(
+        &config,
+        format!(
+            "[environment]\ngravity = 9.81\n\n\
+             [sea]\nspectrum = \"jonswap\"\nhs = 4.0\ntp = 10.0\nband = [0.3, 1.5]\n\n\
+             [run]\nduration = 600.0\n\n\
+             [platform]\nstiffness = [[4.1e4, 0, 0], [0, 4.1e4, 0], [0, 0, 1.2e8]]\n\n\
+             [platform.motions]\ncentre_of_gravity = [{:e}, {:e}, {:e}]\ninertia = [{}]\n\n\
+             [drift]\nsource = \"database\"\nfile = \"oc3.json\"\n",
+            point[0],
+            point[1],
+            point[2],
+            tensor.join(", ")
+        ),
+    )
+    .unwrap();
+    let problem = slowdrift::problem::load(&config).unwrap();
+    problem.check().unwrap();
+    let motions = problem.first_order_motions().unwrap().unwrap();
+    let mut worst: f64 = 0.0;
+    for (n, row) in data.rao.values.iter().enumerate() {
+        for (h, expected) in row.iter().enumerate() {
+            let got = motions.rao.values[n][h];
+            let scale = (0..6)
+                .map(|d| expected[d].norm() * if d >= 3 { 100.0 } else { 1.0 })
+                .fold(0.0, f64::max);
+            for d in 0..6 {
+                let unit = if d >= 3 { 100.0 } else { 1.0 };
+                worst = worst.max((got[d] - expected[d]).norm() * unit / scale);
+            }
+        }
+    }
+    eprintln!("OC3: RAOs of [platform.motions] vs the import's, worst {worst:.2e}");
+    assert!(worst < 1e-9, "{worst}");
+}

@@ -26,7 +26,7 @@ const I_ROLL_PITCH: f64 = 1.2507e10;
 const I_YAW: f64 = 2.3667e10;
 const DEPTH: f64 = 200.0;
 
-fn temp_dir(name: &str) -> PathBuf {
+pub fn temp_dir(name: &str) -> PathBuf {
     static COUNTER: AtomicUsize = AtomicUsize::new(0);
     let dir = std::env::temp_dir().join(format!(
         "slowdrift-rao-{}-{}-{name}",

@@ -18,10 +18,12 @@
 //!   the mass, Kh, Km and Badd are moved to the body origin by P^T A P and the excitation by
 //!   M_o = M_r + r x F ([`crate::hydro::reference_point::matrix6_to_origin`]), so the
 //!   database's coefficients and RAOs are about the origin as WAMIT's are.
-//! - Mechanics: `Inertia.dat` is M about the point; `Kh.dat` is the hydrostatic stiffness
-//!   with the weight's restoring already in (NEMOH's hydrosCal adds rho g V (z_B - z_G) to
-//!   roll and pitch, the centre of gravity taken at the rotations' point and the mass rho V),
-//!   hence the first_order's `hydrostatics` and no weight term added; `Km.dat` is NEMOH's
+//! - Mechanics: `Inertia.dat` is M about the point; `Kh.dat` is the restoring of buoyancy
+//!   and weight together (NEMOH's hydrosCal: rho g V (z_B - z_G) in roll and pitch, the
+//!   centre of gravity taken at the rotations' point), moved to the origin as a whole; the
+//!   database's `hydrostatics` are the buoyancy's alone, as for WAMIT (the weight's restoring
+//!   of Inertia.dat's mass at that point taken out), and the RAOs solved here add it back
+//!   with C_ext; `Km.dat` is NEMOH's
 //!   additional (mooring) stiffness, C_ext; `Badd.dat` its additional damping, B_ext. Absent
 //!   Km or Badd are zero (NEMOH writes zeros when they are absent).
 
@@ -30,6 +32,7 @@ use super::{matrices, tec};
 use crate::error::Result;
 use crate::hydro::rao::{self, BodyMatrices, FirstOrder, RaoTable};
 use crate::hydro::reference_point::{force6_to_origin, matrix6_to_origin};
+use crate::hydro::rigid_body::RigidBody;
 use rustfft::num_complex::Complex64;
 use std::path::Path;
 
@@ -97,11 +100,14 @@ pub(crate) fn import(
     }
     let mechanics = |name: &str| project.join("Mechanics").join(name);
     let kh_path = mechanics("Kh.dat");
-    if !kh_path.is_file() {
-        return not_set(
-            files,
-            format!("{} is absent (the hydrostatics)", kh_path.display()),
-        );
+    let inertia_path = mechanics("Inertia.dat");
+    for (path, what) in [
+        (&kh_path, "the hydrostatics"),
+        (&inertia_path, "the mass, whose weight Kh.dat holds"),
+    ] {
+        if !path.is_file() {
+            return not_set(files, format!("{} is absent ({what})", path.display()));
+        }
     }
     let radiation = tec::read_radiation(&radiation_path, 6, 6, memory_limit)?;
     let excitation = tec::read_excitation(&excitation_path, 6, memory_limit)?;
@@ -110,7 +116,22 @@ pub(crate) fn import(
         let ordered = motion.map(|i| motion.map(|j| m[i][j]));
         matrix6_to_origin(point, &ordered)
     };
-    let hydrostatics = about_point(matrices::read_matrix6(&kh_path, memory_limit)?);
+    // Kh.dat is the restoring of buoyancy and weight together (NEMOH's hydrosCal, the
+    // centre of gravity at the rotations' point, where the weight's own restoring is zero);
+    // their sum has no net static force, so P^T K P moves it to the origin exactly. The
+    // database's hydrostatics are the buoyancy's alone (the WAMIT .hst convention of
+    // `crate::problem::motions`): the weight's restoring about the origin, with the mass of
+    // Inertia.dat at the rotations' point, is taken out.
+    let combined = about_point(matrices::read_matrix6(&kh_path, memory_limit)?);
+    let mass = about_point(matrices::read_matrix6(&inertia_path, memory_limit)?);
+    let weight = RigidBody {
+        mass: mass[0][0],
+        centre_of_gravity: point,
+        inertia: [[0.0; 3]; 3],
+    }
+    .weight_stiffness(cal.gravity);
+    let hydrostatics: [[f64; 6]; 6] =
+        std::array::from_fn(|i| std::array::from_fn(|j| combined[i][j] - weight[i][j]));
     let optional = |name: &str, files: &mut Vec<String>, what: &str| -> Result<[[f64; 6]; 6]> {
         let path = mechanics(name);
         if path.is_file() {
@@ -196,29 +217,22 @@ pub(crate) fn import(
             .join(", ")
     ));
     files.push(format!(
-        "{}: first_order's hydrostatics (the weight's restoring included: NEMOH adds \
-         rho g V (z_B - z_G) with G at the rotations' point), moved to the origin",
-        kh_path.display()
+        "{}: buoyancy and weight (the centre of gravity at the rotations' point), moved to \
+         the origin; first_order's hydrostatics the buoyancy's alone (the weight's restoring \
+         of Inertia.dat's mass {} kg taken out)",
+        kh_path.display(),
+        mass[0][0]
     ));
-    let inertia_path = mechanics("Inertia.dat");
-    if !inertia_path.is_file() {
-        files.push(format!(
-            "{}: absent: rao not set (it needs the mass matrix)",
-            inertia_path.display()
-        ));
-        return Ok((Some(first_order), None));
-    }
-    let mass = about_point(matrices::read_matrix6(&inertia_path, memory_limit)?);
     let body = BodyMatrices {
         mass,
-        stiffness: mooring,
+        stiffness: std::array::from_fn(|i| std::array::from_fn(|j| mooring[i][j] + weight[i][j])),
         damping: viscous,
     };
     match rao::solve(&first_order, &body) {
         Ok(solved) => {
             files.push(format!(
                 "{}: the mass matrix, moved to the origin; rao solved from first_order with \
-                 it, C_ext = Km, B_ext = Badd",
+                 it, C_ext = Km + the weight's restoring, B_ext = Badd",
                 inertia_path.display()
             ));
             Ok((Some(first_order), Some(RaoTable::from(&solved))))
