@@ -9,7 +9,8 @@
 //!   hydrostatics hold the buoyancy's part alone, as WAMIT writes `.hst` for a body whose
 //!   mass it was not given), and the section's external stiffness and damping. Data without
 //!   first-order coefficients are an error naming the section.
-//! - not given: the RAOs the data hold directly (a WAMIT `.4`), if any;
+//! - not given: the RAOs the data hold, if any (a WAMIT `.4`; NEMOH's, solved at import
+//!   with its Mechanics/);
 //! - else none.
 //!
 //! Units: RAOs per unit wave amplitude, m/m (surge, sway, heave) and rad/m (roll, pitch,
@@ -47,7 +48,7 @@ impl Problem {
         let Some(motions) = &self.platform.motions else {
             return Ok(data.rao.as_ref().map(|table| FirstOrderMotions {
                 rao: table.to_rao(),
-                source: format!("the RAOs of {} (a WAMIT .4)", data.name),
+                source: format!("the RAOs {} holds", data.name),
                 natural_periods: Vec::new(),
             }));
         };
