@@ -58,8 +58,9 @@ impl Problem {
                 "a rigid body",
                 format!(
                     "needs the first-order coefficients of a radiation-diffraction code, and \
-                     {} has none (a database imported by slowdrift hydro wamit from the .1, \
-                     .3 or .2 and .hst files has them)",
+                     {} has none (a database made by slowdrift hydro wamit from the .1, .3 or \
+                     .2 and .hst files, or by slowdrift hydro nemoh from its .tec results, has \
+                     them)",
                     self.hydro.source
                 ),
             ));
