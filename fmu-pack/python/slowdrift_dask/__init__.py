@@ -1,4 +1,4 @@
-"""slowdrift_dask: `slowdrift montecarlo` on a Dask cluster (issue #6 part 2).
+"""slowdrift_dask: `slowdrift montecarlo` on a Dask cluster.
 
 `python -m slowdrift_dask --cases CASES.csv --seeds N --out RESULTS.csv` runs every
 (case, seed) of a campaign as a Dask task, through SlowDrift.fmu with fmpy (`--backend fmu`,
