@@ -1,5 +1,5 @@
 //! A rigid body's mass properties as the 6x6 matrices of the first-order equation of motion
-//! ([`crate::hydro::rao`]): the mass matrix and the restoring of its weight, about the body
+//! (docs/theory.md#first-order-motions-raos): the mass matrix and the restoring of its weight, about the body
 //! reference point (WAMIT's body origin), DOFs surge, sway, heave, roll, pitch, yaw.
 //!
 //! With S(a) the skew matrix of a (S(a) b = a x b) and r_g the centre of gravity from the

@@ -1,6 +1,5 @@
-//! What an import from a diffraction code's output gives (the same for every code: WAMIT's
-//! [`crate::hydro::io::wamit::import`], NEMOH's [`crate::hydro::io::nemoh::import`]), and
-//! the conversions from the readers' tables to the native database that both use.
+//! What an import from a diffraction code's output gives (the same for every code: the
+//! WAMIT and the NEMOH importers return it), and the conversions from the readers' tables to the native database that both use.
 
 use super::database::{DriftPoint, HydroDatabase, QtfData, QtfMatrix};
 use super::wamit::DifferenceQtf;

@@ -13,7 +13,7 @@
 //!   the complex force) per unit amplitude, N/m, N m/m, with NEMOH's time factor
 //!   e^{-i w t} and the phase relative to the incident elevation at the origin.
 //!
-//! Values are read as written (dimensional, NEMOH's convention); [`super::first_order`]
+//! Values are read as written (dimensional, NEMOH's convention); the first-order import
 //! turns them into the database's. Errors name `file:line` and the field.
 
 use super::cal::FrequencyUnit;
