@@ -445,7 +445,7 @@ fn oc3_motions_from_a_configuration_are_the_imports() {
     };
     let data = imported(&dir);
     let import = nemoh::import(&dir, LIMIT).unwrap();
-    let work = crate::rao::temp_dir("oc3-motions");
+    let work = crate::wamit::temp_dir("oc3-motions");
     let json = work.join("oc3.json");
     import.database.save(&json).unwrap();
     let inertia = matrix(&dir.join("Mechanics/Inertia.dat"));

@@ -7,6 +7,7 @@
 //! long-wave limits of a freely floating body come from linear wave theory. Synthetic files
 //! cover the readers' scaling and refusals and the database's new fields.
 
+use crate::wamit::{temp_dir, with_ext, write};
 use rustfft::num_complex::Complex64;
 use slowdrift::hydro::default_platform;
 use slowdrift::hydro::io::database::HydroDatabase;
@@ -15,7 +16,6 @@ use slowdrift::hydro::rao::{solve, BodyMatrices, FirstOrder, Rao, RaoTable};
 use slowdrift::hydro::rigid_body::RigidBody;
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 const RHO: f64 = 1025.0;
 const G: f64 = 9.80665;
@@ -26,33 +26,14 @@ const I_ROLL_PITCH: f64 = 1.2507e10;
 const I_YAW: f64 = 2.3667e10;
 const DEPTH: f64 = 200.0;
 
-pub fn temp_dir(name: &str) -> PathBuf {
-    static COUNTER: AtomicUsize = AtomicUsize::new(0);
-    let dir = std::env::temp_dir().join(format!(
-        "slowdrift-rao-{}-{}-{name}",
-        std::process::id(),
-        COUNTER.fetch_add(1, Ordering::Relaxed)
-    ));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temporary directory");
-    dir
-}
-
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let path = dir.join(name);
-    std::fs::write(&path, text).expect("temporary file");
-    path
-}
-
-fn ext(root: &Path, e: &str) -> PathBuf {
-    PathBuf::from(format!("{}.{e}", root.display()))
-}
-
 /// The IEA-15 semi's WAMIT files without extension, or `None` after saying so.
 fn iea15_root_or_skip() -> Option<PathBuf> {
     let dir = crate::common::shared_data_dir().join("wamit/iea15-semi");
     let root = dir.join("IEA-15-240-RWT-UMaineSemi");
-    if ext(&root, "3").is_file() && ext(&root, "1").is_file() && ext(&root, "hst").is_file() {
+    if with_ext(&root, "3").is_file()
+        && with_ext(&root, "1").is_file()
+        && with_ext(&root, "hst").is_file()
+    {
         return Some(root);
     }
     if std::env::var_os("CI").is_some() {
@@ -84,7 +65,10 @@ struct Raw {
 
 fn raw(root: &Path) -> Raw {
     let mut radiation: Vec<(f64, Matrix, Matrix)> = Vec::new();
-    for line in std::fs::read_to_string(ext(root, "1")).unwrap().lines() {
+    for line in std::fs::read_to_string(with_ext(root, "1"))
+        .unwrap()
+        .lines()
+    {
         let v = numbers(line);
         if v[0] <= 0.0 {
             continue;
@@ -102,7 +86,10 @@ fn raw(root: &Path) -> Raw {
         radiation[k].2[i][j] = RHO * w * v[4];
     }
     let mut excitation: Vec<(f64, f64, [Complex64; 6])> = Vec::new();
-    for line in std::fs::read_to_string(ext(root, "3")).unwrap().lines() {
+    for line in std::fs::read_to_string(with_ext(root, "3"))
+        .unwrap()
+        .lines()
+    {
         let v = numbers(line);
         let w = 2.0 * PI / v[0];
         let k = match excitation
@@ -118,7 +105,10 @@ fn raw(root: &Path) -> Raw {
         excitation[k].2[v[2] as usize - 1] = RHO * G * Complex64::new(v[5], v[6]);
     }
     let mut c = [[0.0; 6]; 6];
-    for line in std::fs::read_to_string(ext(root, "hst")).unwrap().lines() {
+    for line in std::fs::read_to_string(with_ext(root, "hst"))
+        .unwrap()
+        .lines()
+    {
         let v = numbers(line);
         c[v[0] as usize - 1][v[1] as usize - 1] = RHO * G * v[2];
     }

@@ -22,7 +22,7 @@ const RHO: f64 = 1025.0;
 const G: f64 = 9.80665;
 
 /// A fresh, empty directory under the system's temporary directory.
-fn temp_dir(name: &str) -> PathBuf {
+pub fn temp_dir(name: &str) -> PathBuf {
     static COUNTER: AtomicUsize = AtomicUsize::new(0);
     let dir = std::env::temp_dir().join(format!(
         "slowdrift-wamit-{}-{}-{name}",
@@ -34,13 +34,13 @@ fn temp_dir(name: &str) -> PathBuf {
     dir
 }
 
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
+pub fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
     let path = dir.join(name);
     std::fs::write(&path, text).expect("temporary file");
     path
 }
 
-fn with_ext(root: &Path, ext: &str) -> PathBuf {
+pub fn with_ext(root: &Path, ext: &str) -> PathBuf {
     PathBuf::from(format!("{}.{ext}", root.display()))
 }
 
