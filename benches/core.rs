@@ -70,7 +70,7 @@ use slowdrift::hydro::qtf::MIN_QTF_TOLERANCE;
 use slowdrift::hydro::{DriftRow, DriftTable};
 use slowdrift::model::{
     DragModel, DriftDamping, Environment, Interaction, NewmanForm, SecondOrder,
-    DEFAULT_QTF_TOLERANCE,
+    WaveFrequencyMotion, DEFAULT_QTF_TOLERANCE,
 };
 use slowdrift::problem::Hydro;
 use slowdrift::scenario::{
@@ -155,6 +155,7 @@ fn bench_problem(duration: f64, time_step: f64, drag: DragModel) -> Problem {
             drag,
             strips_per_column: 20,
             yaw_following: None,
+            wave_frequency_motion: WaveFrequencyMotion::On,
         },
         initial: InitialCondition::default(),
         origins: Default::default(),

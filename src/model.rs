@@ -68,7 +68,7 @@ mod modes;
 
 pub use modes::{
     BidirectionalDrift, DragKind, DriftDamping, Interaction, NewmanForm, SecondOrder, SpectrumKind,
-    SpreadingKind,
+    SpreadingKind, WaveFrequencyMotion,
 };
 
 /// A setting that takes one of a few words: an enum defined in `model/modes.rs`.
@@ -307,6 +307,7 @@ mod tests {
         words_read_back::<DriftDamping>();
         words_read_back::<DragKind>();
         words_read_back::<BidirectionalDrift>();
+        words_read_back::<WaveFrequencyMotion>();
     }
 
     /// Another word, or a value that is no word, is refused listing the words.

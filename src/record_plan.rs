@@ -21,17 +21,19 @@ pub use budget::{MemoryEstimate, Term};
 use crate::error::numbers::readable;
 use crate::error::{Error, Result};
 use crate::forces::{
-    direction_pairs, plan_inverse_fft, transfers_on_grid, yaw_transfers, DepthBasis,
-    DirectionTransfer, ForceRecords, InverseFft, Join, QtfFactorisation, QtfGroup, RecordOptions,
-    RecordWork, Segments, Synthesizer, YawGrid,
+    direction_pairs, motion_transfers, plan_inverse_fft, transfers_on_grid, yaw_transfers,
+    DepthBasis, DirectionTransfer, ForceRecords, InverseFft, Join, MotionTransfer,
+    QtfFactorisation, QtfGroup, RecordOptions, RecordWork, Segments, Synthesizer, YawGrid,
 };
 
 use crate::hydro::bidirectional::DirectionPairs;
 use crate::hydro::DriftTable;
 use crate::model::{
-    Cylinder, Dof, DriftDamping, Environment, Interaction, Mode, SecondOrder, YawFollowing,
+    Cylinder, Dof, DriftDamping, Environment, Interaction, Mode, SecondOrder, WaveFrequencyMotion,
+    YawFollowing,
 };
 use crate::problem::{Hydro, Problem};
+use crate::scenario::Motions;
 use crate::sea_state::{Direction, FrequencyGrid, SeaState, Spreading, WaveComponents};
 use serde::Serialize;
 use std::sync::Arc;
@@ -60,6 +62,9 @@ pub struct PlanKey<'a> {
     interaction: Interaction,
     drift_damping: DriftDamping,
     yaw_following: &'a Option<YawFollowing>,
+    wave_frequency_motion: WaveFrequencyMotion,
+    /// The rigid body the RAOs are solved with, and the mass it takes (`problem::motions`).
+    motions: Option<(&'a Motions, Option<f64>)>,
 }
 
 impl PlanKey<'_> {
@@ -81,6 +86,12 @@ impl PlanKey<'_> {
             interaction: problem.model.interaction,
             drift_damping: problem.model.drift_damping,
             yaw_following: &problem.model.yaw_following,
+            wave_frequency_motion: problem.model.wave_frequency_motion,
+            motions: problem
+                .platform
+                .motions
+                .as_ref()
+                .map(|m| (m, problem.platform.mass)),
         }
     }
 }
@@ -111,6 +122,9 @@ pub struct RecordPlan {
     /// (made once here, not per seed); a seed whose spectrum, strips or drafts
     /// differ makes its own.
     depth_bases: Vec<Arc<DepthBasis>>,
+    /// The RAOs on the grid, per body yaw (zero, or the yaw-following grid's) and direction
+    /// (`forces::motion`); `None` without wave-frequency motion.
+    motion: Option<Vec<Vec<MotionTransfer>>>,
 }
 
 /// What the yaw-following records need besides the seed.
@@ -265,7 +279,13 @@ impl RecordPlan {
             }
         };
         let depth_bases = depth_bases(problem, &grid);
+        let yaws: Vec<f64> = match &yaw {
+            Some(y) => (0..y.grid.len()).map(|j| y.grid.yaw(j)).collect(),
+            None => vec![0.0],
+        };
+        let motion = motion_on_grid(problem, &grid, &directions, &yaws)?;
         Ok(RecordPlan {
+            motion,
             problem: problem.clone(),
             depth_bases,
             segments,
@@ -373,6 +393,10 @@ impl RecordPlan {
             ),
             None => records.yaw_following = None,
         }
+        match &self.motion {
+            Some(transfers) => work.motion(&mut records.motion, components, transfers),
+            None => records.motion = None,
+        }
     }
 }
 
@@ -407,6 +431,26 @@ fn depth_bases(problem: &Problem, grid: &FrequencyGrid) -> Vec<Arc<DepthBasis>> 
         }
     }
     bases
+}
+
+/// The RAOs of `problem` on `grid` at every body yaw of `yaws` and wave direction, when its
+/// wave-frequency motion is on and it has RAOs (`problem::motions`).
+fn motion_on_grid(
+    problem: &Problem,
+    grid: &FrequencyGrid,
+    directions: &[Direction],
+    yaws: &[f64],
+) -> Result<Option<Vec<Vec<MotionTransfer>>>> {
+    if problem.model.wave_frequency_motion == WaveFrequencyMotion::Off {
+        return Ok(None);
+    }
+    let Some(motions) = problem.first_order_motions()? else {
+        return Ok(None);
+    };
+    yaws.iter()
+        .map(|&yaw| motion_transfers(&motions.rao, grid, directions, yaw))
+        .collect::<Result<Vec<_>>>()
+        .map(Some)
 }
 
 /// The sea's wave directions against the drift data's headings: a direction the data do

@@ -12,7 +12,7 @@ pub use recording::reserve_recorded;
 use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};
 use crate::error::numbers::written;
 use crate::error::{Error, Result};
-use crate::forces::{ForceRecords, Segments};
+use crate::forces::{ForceRecords, Segments, WholeMotion};
 use crate::problem::Problem;
 use crate::record_plan::{QtfRank, RecordPlan, Segment};
 use crate::sea_state::FrequencyGrid;
@@ -150,6 +150,9 @@ pub struct Outputs {
     pub forces: ForceBreakdown,
     /// The external force last applied.
     pub external_force: [f64; 3],
+    /// The slow drift with the wave-frequency motion on it (`forces::motion`; the slow
+    /// drift alone where there is none).
+    pub motion: WholeMotion,
 }
 
 impl Outputs {
@@ -157,8 +160,10 @@ impl Outputs {
     /// is bounded by the steps).
     fn first_non_finite(&self) -> Option<&'static str> {
         let f = &self.forces;
-        let named: [(&'static str, &[f64]); 5] = [
+        let named: [(&'static str, &[f64]); 7] = [
             ("eta", std::slice::from_ref(&self.wave_elevation)),
+            ("X_wf", &self.motion.wave_frequency),
+            ("Xdot_total", &self.motion.total_rate),
             ("F_wave", &f.wave),
             ("F_damping", &f.damping),
             ("F_drag", &f.drag),
@@ -462,13 +467,22 @@ impl Simulation {
             &self.state.position,
             &self.state.velocity,
         );
+        let (position, velocity) = (self.state.position, self.state.velocity);
+        let motion = match &self.segment.records.motion {
+            Some(records) => {
+                let (x, v) = records.at(&at, &yaw);
+                WholeMotion::of(position, velocity, x, v)
+            }
+            None => WholeMotion::slow_drift(position, velocity),
+        };
         let outputs = Outputs {
             time: t,
-            position: self.state.position,
-            velocity: self.state.velocity,
+            position,
+            velocity,
             wave_elevation: self.segment.records.elevation.at(&at),
             forces,
             external_force: self.state.external_force,
+            motion,
         };
         match outputs.first_non_finite() {
             None => Ok(outputs),

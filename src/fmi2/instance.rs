@@ -661,6 +661,24 @@ fn output_value(o: &Outputs, vr: u32) -> f64 {
         vr::FX_DRAG => o.forces.drag[0],
         vr::FY_DRAG => o.forces.drag[1],
         vr::MZ_DRAG => o.forces.drag[2],
+        vr::X_WF => o.motion.wave_frequency[0],
+        vr::Y_WF => o.motion.wave_frequency[1],
+        vr::Z_WF => o.motion.wave_frequency[2],
+        vr::ROLL_WF => o.motion.wave_frequency[3],
+        vr::PITCH_WF => o.motion.wave_frequency[4],
+        vr::YAW_WF => o.motion.wave_frequency[5],
+        vr::X_TOTAL => o.motion.total[0],
+        vr::Y_TOTAL => o.motion.total[1],
+        vr::Z_TOTAL => o.motion.total[2],
+        vr::ROLL_TOTAL => o.motion.total[3],
+        vr::PITCH_TOTAL => o.motion.total[4],
+        vr::YAW_TOTAL => o.motion.total[5],
+        vr::XDOT_TOTAL => o.motion.total_rate[0],
+        vr::YDOT_TOTAL => o.motion.total_rate[1],
+        vr::ZDOT_TOTAL => o.motion.total_rate[2],
+        vr::ROLLDOT_TOTAL => o.motion.total_rate[3],
+        vr::PITCHDOT_TOTAL => o.motion.total_rate[4],
+        vr::YAWDOT_TOTAL => o.motion.total_rate[5],
         other => unreachable!("value reference {other} is not an output"),
     }
 }
@@ -678,6 +696,7 @@ mod tests {
             wave_elevation: 0.0,
             forces: Default::default(),
             external_force: [0.0; 3],
+            motion: Default::default(),
         };
         for v in VARIABLES {
             match v.causality {

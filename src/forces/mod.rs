@@ -7,6 +7,7 @@
 mod depth_basis;
 mod directional;
 mod kinematics;
+mod motion;
 mod newman;
 mod qtf;
 mod record;
@@ -19,6 +20,7 @@ mod yaw_following;
 pub use depth_basis::{DepthBasis, KINEMATICS_TOLERANCE};
 pub use directional::{add_cross_terms, cross_direction_force, direction_pairs, CrossWork};
 pub use kinematics::{distinct_kinematics, ColumnKinematics, KinematicsWork};
+pub use motion::{motion_transfers, MotionRecords, MotionTransfer, WholeMotion};
 pub use newman::NewmanBuilder;
 pub use qtf::{GridQtf, QtfFactorisation, QtfGroup};
 pub use record::{Record, RecordClock, SamplePoint};
@@ -65,6 +67,9 @@ pub struct ForceRecords {
     /// Force and damping records at a set of body yaw angles (`model.yaw_following`);
     /// when set, they replace `wave_force` and `damping` (see [`ForceRecords::wave_force_at`]).
     pub yaw_following: Option<YawFollowingRecords>,
+    /// The wave-frequency motion of the body (`forces::motion`), when the problem has RAOs
+    /// and the motion is on.
+    pub motion: Option<MotionRecords>,
 }
 
 /// The buffers of a build of records, kept from one build to the next: the records of a
@@ -85,6 +90,8 @@ pub struct RecordWork {
     cross: CrossWork,
     /// Scratch of the yaw-following records.
     yaw: YawWork,
+    /// Scratch of the wave-frequency motion records.
+    motion: motion::MotionWork,
 }
 
 impl RecordWork {
@@ -111,6 +118,7 @@ impl RecordWork {
             kinematics: KinematicsWork::with_bases(bases),
             cross: CrossWork::default(),
             yaw: YawWork::default(),
+            motion: motion::MotionWork::default(),
         }
     }
 
@@ -142,6 +150,22 @@ impl RecordWork {
             &mut self.synth,
             &mut self.newman,
             &mut self.yaw,
+        );
+    }
+
+    /// The wave-frequency motion records of `components` into `records` (their buffers
+    /// reused), one set per body yaw of `transfers` (`forces::motion`).
+    pub fn motion(
+        &mut self,
+        records: &mut Option<MotionRecords>,
+        components: &WaveComponents,
+        transfers: &[Vec<MotionTransfer>],
+    ) {
+        records.get_or_insert_with(MotionRecords::default).rebuild(
+            components,
+            transfers,
+            &mut self.synth,
+            &mut self.motion,
         );
     }
 
@@ -193,13 +217,14 @@ impl ForceRecords {
             damping: None,
             kinematics: Vec::new(),
             yaw_following: None,
+            motion: None,
         }
     }
 
     /// [`ForceRecords::build`] into these records, reusing their buffers and `work`'s:
     /// through a joined synthesizer, the records of the stream segment its join is building
     /// (`forces::stream`: the segment's record length, on the segment's clock). The
-    /// yaw-following records are left as they are.
+    /// yaw-following and wave-frequency motion records are left as they are.
     pub fn rebuild(
         &mut self,
         components: &WaveComponents,

@@ -61,6 +61,11 @@ pub struct YawPoint {
 }
 
 impl YawPoint {
+    /// (lo, hi, frac): records `lo` and `hi` weigh 1 - frac and frac.
+    pub(super) fn parts(&self) -> (usize, usize, f64) {
+        (self.lo, self.hi, self.frac)
+    }
+
     /// The mean-position records (yaw following off).
     pub const MEAN_POSITION: YawPoint = YawPoint {
         lo: 0,

@@ -8,7 +8,7 @@ pub mod column_drift;
 pub mod columns;
 pub mod default_platform;
 mod drift_table;
-mod heading_grid;
+pub(crate) mod heading_grid;
 pub mod io;
 pub mod qtf;
 pub mod rao;

@@ -93,6 +93,17 @@ modes! {
         Combined = "combined": "C_D (U + u)|U + u|, E&S 9",
     }
 
+    /// Whether the wave-frequency (first-order) motion of the RAOs is added to the slow drift
+    /// (`[model] wave_frequency_motion`; docs/theory.md#wave-frequency-motion). It never
+    /// enters the slow-drift equations.
+    WaveFrequencyMotion in "waveFrequencyMotion" {
+        /// The slow drift alone: the wave-frequency outputs zero, the totals the slow drift.
+        Off = "off": "the slow drift alone",
+        /// The default: the RAOs' wave-frequency motion on the slow drift where the platform
+        /// has RAOs (problem::motions), none otherwise.
+        On = "on": "the RAOs' wave-frequency motion on the slow drift, where the platform has RAOs",
+    }
+
     /// Where a database source's bi-directional drift comes from instead of its own table
     /// (`[drift] bidirectional`; absent: the database's own, if any).
     BidirectionalDrift {

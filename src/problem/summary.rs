@@ -6,7 +6,7 @@
 use super::{Inertia, Origin, Problem};
 use crate::error::numbers::written;
 use crate::error::Result;
-use crate::model::{DragModel, DriftDamping, Mode};
+use crate::model::{DragModel, DriftDamping, Mode, WaveFrequencyMotion};
 
 /// The DOFs' names in the lines, with the units of a stiffness and a mass of each.
 const DOFS: [(&str, &str, &str); 3] = [
@@ -103,6 +103,26 @@ impl Problem {
     /// The first-order motions (`problem::motions`): where the RAOs come from and the
     /// natural periods they have, or why there are none.
     fn motions_line(&self) -> Result<String> {
+        let motions = self.motions_source_line()?;
+        Ok(match (self.model.wave_frequency_motion, motions.1) {
+            (WaveFrequencyMotion::Off, true) => format!(
+                "{}; wave-frequency motion: off ([model] wave_frequency_motion), the totals are \
+                 the slow drift",
+                motions.0
+            ),
+            (_, true) => format!(
+                "{}; wave-frequency motion: on (outputs *_wf and *_total; the slow-drift \
+                 equations do not use it)",
+                motions.0
+            ),
+            (_, false) => motions.0,
+        })
+    }
+
+    /// [`Problem::motions_line`]'s first part, and whether there are RAOs.
+    fn motions_source_line(&self) -> Result<(String, bool)> {
+        let has = |line: String| (line, true);
+        let none = |line: String| (line, false);
         Ok(match self.first_order_motions()? {
             Some(motions) => {
                 let periods: Vec<String> = motions
@@ -110,7 +130,7 @@ impl Problem {
                     .iter()
                     .map(|(dof, t)| format!("{dof} {t:.1} s"))
                     .collect();
-                format!(
+                has(format!(
                     "first-order motions: RAOs {}{}",
                     motions.source,
                     if periods.is_empty() {
@@ -121,14 +141,16 @@ impl Problem {
                             periods.join(", ")
                         )
                     }
-                )
+                ))
             }
-            None if self.hydro.body.first_order.is_some() => format!(
+            None if self.hydro.body.first_order.is_some() => none(format!(
                 "first-order motions: none ({} has first-order coefficients: give [platform.motions] for its RAOs)",
                 self.hydro.body.name
+            )),
+            None => none(
+                "first-order motions: none (the data have no first-order coefficients or RAOs)"
+                    .to_string(),
             ),
-            None => "first-order motions: none (the data have no first-order coefficients or RAOs)"
-                .to_string(),
         })
     }
 

@@ -21,7 +21,7 @@ use crate::error::numbers::written;
 use crate::error::{bytes_text, Error, Result};
 use crate::forces::distinct_kinematics;
 use crate::hydro::bidirectional::BidirectionalSource;
-use crate::model::{DragModel, Interaction, Mode, NewmanForm, SecondOrder};
+use crate::model::{DragModel, Interaction, Mode, NewmanForm, SecondOrder, WaveFrequencyMotion};
 use crate::problem::Problem;
 use crate::scenario::limits::over_budget;
 use crate::sea_state::FrequencyGrid;
@@ -165,6 +165,30 @@ impl MemoryEstimate {
                 yaw.headings.to_string(),
                 format!("the records at {y} yaw angles"),
                 y * FORCE_AND_DAMPING * F64 * l + eta + y * d * newman_series * tail,
+            ));
+        }
+        let has_raos = problem.platform.motions.is_some() || problem.hydro.body.rao.is_some();
+        if model.wave_frequency_motion == WaveFrequencyMotion::On && has_raos {
+            // `forces::motion`: the RAOs of every direction per body yaw on the grid; per
+            // yaw the position and velocity of six DOFs (their records, six joined pair
+            // series' tails), the twelve coefficient rows and one pair series.
+            let sets = model
+                .yaw_following
+                .as_ref()
+                .map_or(1.0, |y| y.headings as f64);
+            let key = "model.wave_frequency_motion";
+            let word = || WaveFrequencyMotion::On.word().to_string();
+            plan.push(term(
+                key,
+                word(),
+                format!("the RAOs of {d} directions at {sets} body yaw angles"),
+                sets * d * 6.0 * C64 * g,
+            ));
+            run.push(term(
+                key,
+                word(),
+                format!("the wave-frequency motion records at {sets} body yaw angles"),
+                sets * (12.0 * F64 * l + 6.0 * tail) + 12.0 * C64 * g + C64 * l,
             ));
         }
         if model.drag != DragModel::Off {

@@ -19,7 +19,7 @@ pub use origin::{Origins, Written};
 
 use crate::model::{
     Cylinder, DragModel, DriftDamping, Environment, Interaction, NewmanForm, SecondOrder,
-    YawFollowing, DEFAULT_QTF_TOLERANCE,
+    WaveFrequencyMotion, YawFollowing, DEFAULT_QTF_TOLERANCE,
 };
 use crate::sea_state::SeaState;
 use serde::Serialize;
@@ -139,6 +139,8 @@ pub struct ModelOptions {
     /// Wave force and damping records that follow the yaw; `None` (the default) = the
     /// paper's records at the mean position and zero yaw.
     pub yaw_following: Option<YawFollowing>,
+    /// Whether the RAOs' wave-frequency motion is added to the slow drift (outputs only).
+    pub wave_frequency_motion: WaveFrequencyMotion,
 }
 
 impl Default for ModelOptions {
@@ -152,6 +154,7 @@ impl Default for ModelOptions {
             drag: DragModel::Off,
             strips_per_column: 20,
             yaw_following: None,
+            wave_frequency_motion: WaveFrequencyMotion::On,
         }
     }
 }

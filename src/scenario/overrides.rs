@@ -28,7 +28,8 @@
 use super::{Current, ModelOptions, Platform, Run, Scenario, Written, DEFAULT_N_DIRECTIONS};
 use crate::error::numbers::written;
 use crate::model::{
-    DragKind, DragModel, DriftDamping, Interaction, Mode, SpectrumKind, Vocabulary, YawFollowing,
+    DragKind, DragModel, DriftDamping, Interaction, Mode, SpectrumKind, Vocabulary,
+    WaveFrequencyMotion, YawFollowing,
 };
 use crate::sea_state::SeaState;
 use crate::sea_state::{Spectrum, Spreading};
@@ -248,7 +249,7 @@ fn drag_is(kind: DragKind) -> String {
 }
 
 /// The table, in the order it is applied.
-pub static SETTINGS: [Setting; 23] = [
+pub static SETTINGS: [Setting; 24] = [
     Setting {
         key: "sea.spreading_exponent",
         fmu: Some("spreadingExponent"),
@@ -563,6 +564,21 @@ pub static SETTINGS: [Setting; 23] = [
             Ok(())
         },
         get: |s| Value::Word(s.model.drift_damping.word()),
+    },
+    Setting {
+        key: "model.wave_frequency_motion",
+        fmu: WaveFrequencyMotion::VOCABULARY.parameter(),
+        column: Some("wave_frequency_motion"),
+        mode: Some(&WaveFrequencyMotion::VOCABULARY),
+        meaning: "the RAOs' wave-frequency motion on the slow drift (outputs only): on (where \
+                  the platform has RAOs) or off",
+        apply: |s, v| {
+            if let Some(motion) = chosen(v)? {
+                s.model.wave_frequency_motion = motion;
+            }
+            Ok(())
+        },
+        get: |s| Value::Word(s.model.wave_frequency_motion.word()),
     },
     Setting {
         key: "model.interaction",

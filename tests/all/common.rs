@@ -5,7 +5,7 @@
 use slowdrift::hydro::{DriftRow, DriftTable};
 use slowdrift::model::{
     Cylinder, DragModel, DriftDamping, Environment, Interaction, NewmanForm, SecondOrder,
-    DEFAULT_QTF_TOLERANCE,
+    WaveFrequencyMotion, DEFAULT_QTF_TOLERANCE,
 };
 use slowdrift::problem::Hydro;
 use slowdrift::scenario::{
@@ -121,6 +121,7 @@ pub fn base_problem(duration: f64, time_step: f64, seed: u64) -> Problem {
             drag: DragModel::Off,
             strips_per_column: 20,
             yaw_following: None,
+            wave_frequency_motion: WaveFrequencyMotion::On,
         },
         initial: InitialCondition::default(),
         origins: Default::default(),

@@ -44,4 +44,5 @@ mod unphysical;
 mod user_data;
 mod wamit;
 mod wamit_directions;
+mod wave_frequency;
 mod yaw_following;

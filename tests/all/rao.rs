@@ -20,14 +20,14 @@ use std::path::{Path, PathBuf};
 const RHO: f64 = 1025.0;
 const G: f64 = 9.80665;
 /// The platform alone (SOURCE.md, from OpenFAST's ElastoDyn input).
-const MASS: f64 = 1.7838e7;
-const ZG: f64 = -14.4;
-const I_ROLL_PITCH: f64 = 1.2507e10;
-const I_YAW: f64 = 2.3667e10;
+pub(crate) const MASS: f64 = 1.7838e7;
+pub(crate) const ZG: f64 = -14.4;
+pub(crate) const I_ROLL_PITCH: f64 = 1.2507e10;
+pub(crate) const I_YAW: f64 = 2.3667e10;
 const DEPTH: f64 = 200.0;
 
 /// The IEA-15 semi's WAMIT files without extension, or `None` after saying so.
-fn iea15_root_or_skip() -> Option<PathBuf> {
+pub(crate) fn iea15_root_or_skip() -> Option<PathBuf> {
     let dir = crate::common::shared_data_dir().join("wamit/iea15-semi");
     let root = dir.join("IEA-15-240-RWT-UMaineSemi");
     if with_ext(&root, "3").is_file()
@@ -616,7 +616,7 @@ fn old_databases_read_and_bad_rao_is_refused() {
 }
 
 /// A 6x6 or 3x3 matrix as TOML.
-fn toml_matrix<const N: usize>(m: &[[f64; N]; N]) -> String {
+pub(crate) fn toml_matrix<const N: usize>(m: &[[f64; N]; N]) -> String {
     let rows: Vec<String> = m
         .iter()
         .map(|r| {

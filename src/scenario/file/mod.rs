@@ -448,6 +448,7 @@ rows = [
                 },
                 strips_per_column: 12,
                 yaw_following: None,
+                wave_frequency_motion: crate::model::WaveFrequencyMotion::On,
             }
         );
         assert_eq!(

@@ -2,7 +2,10 @@
 
 use super::{chosen, refused, required};
 use crate::model::YawFollowing;
-use crate::model::{DragKind, DragModel, DriftDamping, Interaction, Mode, NewmanForm, SecondOrder};
+use crate::model::{
+    DragKind, DragModel, DriftDamping, Interaction, Mode, NewmanForm, SecondOrder,
+    WaveFrequencyMotion,
+};
 use crate::scenario::ModelOptions;
 use serde::Deserialize;
 
@@ -24,6 +27,7 @@ pub(super) struct ModelFile {
     cd_fast: Option<f64>,
     strips_per_column: Option<usize>,
     yaw_following: Option<YawFollowingFile>,
+    wave_frequency_motion: Option<WaveFrequencyMotion>,
 }
 
 /// `model.yaw_following`: `{ headings = n }` (the full circle) or
@@ -77,6 +81,9 @@ impl ModelFile {
                     .range_deg
                     .map(|[min, max]| (min.to_radians(), max.to_radians())),
             }),
+            wave_frequency_motion: self
+                .wave_frequency_motion
+                .unwrap_or(default.wave_frequency_motion),
         })
     }
 

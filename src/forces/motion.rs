@@ -1,0 +1,314 @@
+//! Wave-frequency (first-order) motion records: the rigid body's linear response to the same
+//! wave components as the force records (docs/theory.md#wave-frequency-motion).
+//!
+//! For DOF i (surge, sway, heave, roll, pitch, yaw) of the body reference point, in the
+//! body-related frame that follows the slow drift (SIMO's convention: axes turned by the
+//! slow yaw theta), with the RAOs xi_i(omega, beta) of `hydro::rao` (Re{xi e^{i omega t}},
+//! phase relative to the elevation at the reference point):
+//!
+//! ```text
+//! x_i(t)  = Re sum_j c_ij e^{i omega_j t},        c_ij = sum_k a_jk xi_i(omega_j, beta_k - theta)
+//! x_i'(t) = Re sum_j i omega_j c_ij e^{i omega_j t}
+//! ```
+//!
+//! a_jk the amplitudes of direction k (`sea_state::WaveComponents`, the elevation at the
+//! origin is Re sum_jk a_jk e^{i omega_j t}), beta_k its heading (towards which it
+//! propagates, from +X), theta the body yaw the records are made at: zero (the mean
+//! position, as the force records), or every yaw of the yaw-following grid, between which
+//! the records are interpolated linearly in the instantaneous slow yaw, as the force records
+//! are (`forces::yaw_following`). The RAOs are interpolated linearly in frequency and in the
+//! relative heading (real and imaginary parts apart), across the closing gap when their
+//! headings cover the circle, and never beyond their grid.
+//!
+//! Cost: the position and the velocity of two DOFs share one transform (two real series in
+//! one, `Synthesizer::append_two_real_series`): six transforms per segment and body yaw,
+//! one per DOF. The records are linear signals, so the stream joins them as it joins the
+//! elevation (`forces::stream`).
+
+use super::record::{Record, SamplePoint};
+use super::synthesis::Synthesizer;
+use super::yaw_following::YawPoint;
+use crate::error::numbers::written;
+use crate::error::{Error, Result};
+use crate::hydro::heading_grid::heading_bracket;
+use crate::hydro::rao::Rao;
+use crate::model::FREQUENCY_MATCH_TOLERANCE;
+use crate::sea_state::{Direction, FrequencyGrid, WaveComponents};
+use rustfft::num_complex::Complex64;
+
+/// The RAOs of the six DOFs on a frequency grid, for one wave direction at one body yaw.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MotionTransfer {
+    /// `rao[j][i]`: xi_i(omega_j, beta - theta) at the grid's frequency j.
+    rao: Vec<[Complex64; 6]>,
+}
+
+/// The RAOs of every direction of `directions` on `grid`'s frequencies, at the relative
+/// headings beta_k - `yaw`. Refused: a frequency of the band outside the RAOs' frequencies,
+/// a relative heading outside their headings (nothing is extrapolated); the error names the
+/// gap and the remedies.
+pub fn motion_transfers(
+    rao: &Rao,
+    grid: &FrequencyGrid,
+    directions: &[Direction],
+    yaw: f64,
+) -> Result<Vec<MotionTransfer>> {
+    let omegas = &rao.omegas;
+    let (lo, hi) = (omegas[0], omegas[omegas.len() - 1]);
+    let (band_lo, band_hi) = (grid.omega(0), grid.omega(grid.count - 1));
+    if band_lo < lo * (1.0 - FREQUENCY_MATCH_TOLERANCE)
+        || band_hi > hi * (1.0 + FREQUENCY_MATCH_TOLERANCE)
+    {
+        return Err(Error::invalid(
+            "first-order motions",
+            format!("RAOs on [{}, {}] rad/s", written(lo), written(hi)),
+            format!(
+                "do not cover the wave band [{:.4}, {:.4}] rad/s (nothing is extrapolated): \
+                 narrow [sea] band, give RAOs over the band, or turn the wave-frequency \
+                 motion off ([model] wave_frequency_motion = \"off\")",
+                band_lo, band_hi
+            ),
+        ));
+    }
+    directions
+        .iter()
+        .map(|d| {
+            let relative = d.heading - yaw;
+            let h = heading_bracket(&rao.headings, relative).ok_or_else(|| {
+                Error::invalid(
+                    "first-order motions",
+                    format!("the relative heading {:.3} deg", relative.to_degrees()),
+                    format!(
+                        "is outside the RAOs' headings [{:.3}, {:.3}] deg (nothing is \
+                         extrapolated): give RAOs at those headings, turn the sea, or turn \
+                         the wave-frequency motion off ([model] wave_frequency_motion = \
+                         \"off\")",
+                        rao.headings[0].to_degrees(),
+                        rao.headings[rao.headings.len() - 1].to_degrees()
+                    ),
+                )
+            })?;
+            let along = |n: usize| -> [Complex64; 6] {
+                let (a, b) = (&rao.values[n][h.lo], &rao.values[n][h.hi]);
+                std::array::from_fn(|i| a[i] * (1.0 - h.frac) + b[i] * h.frac)
+            };
+            let transfer = (0..grid.count)
+                .map(|j| {
+                    let w = grid.omega(j).clamp(lo, hi);
+                    let upper = omegas
+                        .partition_point(|&v| v <= w)
+                        .clamp(1, omegas.len() - 1);
+                    if omegas.len() == 1 {
+                        return along(0);
+                    }
+                    let s = (w - omegas[upper - 1]) / (omegas[upper] - omegas[upper - 1]);
+                    let (a, b) = (along(upper - 1), along(upper));
+                    std::array::from_fn(|i| a[i] * (1.0 - s) + b[i] * s)
+                })
+                .collect();
+            Ok(MotionTransfer { rao: transfer })
+        })
+        .collect()
+}
+
+/// The wave-frequency motion of one body yaw: position and velocity of the six DOFs, body
+/// frame (m, rad; m/s, rad/s).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct MotionSet {
+    pub position: [Record; 6],
+    pub velocity: [Record; 6],
+}
+
+/// The wave-frequency motion records of a segment: one set at zero yaw, or one per yaw of
+/// the yaw-following grid (the same grid as the force records').
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct MotionRecords {
+    pub sets: Vec<MotionSet>,
+}
+
+/// The buffers of the motion records' synthesis.
+#[derive(Debug, Clone, Default)]
+pub struct MotionWork {
+    /// c_ij per DOF, then i omega_j c_ij per DOF.
+    coefficients: [Vec<Complex64>; 12],
+    series: Vec<Complex64>,
+}
+
+impl MotionRecords {
+    /// The records of `components` for `transfers[set][direction]` (one set per body yaw),
+    /// written into these records' buffers.
+    pub fn rebuild(
+        &mut self,
+        components: &WaveComponents,
+        transfers: &[Vec<MotionTransfer>],
+        synth: &mut Synthesizer,
+        work: &mut MotionWork,
+    ) {
+        let grid = &components.grid;
+        self.sets.resize_with(transfers.len(), MotionSet::default);
+        for (set, directions) in self.sets.iter_mut().zip(transfers) {
+            for c in work.coefficients.iter_mut() {
+                c.clear();
+                c.resize(grid.count, Complex64::default());
+            }
+            for (k, transfer) in directions.iter().enumerate() {
+                let amplitudes = components.of_direction(k);
+                for (j, (a, xi)) in amplitudes.iter().zip(&transfer.rao).enumerate() {
+                    for i in 0..6 {
+                        work.coefficients[i][j] += a * xi[i];
+                    }
+                }
+            }
+            let i_omega = |j: usize| Complex64::new(0.0, grid.omega(j));
+            for i in 0..6 {
+                let (position, velocity) = work.coefficients.split_at_mut(6);
+                for (j, (v, c)) in velocity[i].iter_mut().zip(&position[i]).enumerate() {
+                    *v = i_omega(j) * c;
+                }
+            }
+            let records = set.position.iter_mut().chain(set.velocity.iter_mut());
+            let mut records: Vec<&mut Record> = records.collect();
+            for pair in 0..6 {
+                let (x, y) = (2 * pair, 2 * pair + 1);
+                work.series.clear();
+                synth.append_two_real_series(
+                    &work.coefficients[x],
+                    &work.coefficients[y],
+                    &mut work.series,
+                );
+                let mut xs = std::mem::take(records[x]).into_samples();
+                xs.clear();
+                xs.extend(work.series.iter().map(|c| c.re));
+                *records[x] = Record::new(xs);
+                let mut ys = std::mem::take(records[y]).into_samples();
+                ys.clear();
+                ys.extend(work.series.iter().map(|c| c.im));
+                *records[y] = Record::new(ys);
+            }
+        }
+    }
+
+    /// The position and velocity of the six DOFs at a located time and yaw, body frame:
+    /// linear in the yaw between the grid's records (exactly a grid yaw's records there).
+    pub fn at(&self, at: &SamplePoint, yaw: &YawPoint) -> ([f64; 6], [f64; 6]) {
+        let (lo, hi, frac) = yaw.parts();
+        let (lo, hi) = (&self.sets[lo], &self.sets[hi]);
+        let blend = |a: &Record, b: &Record| {
+            let x = a.at(at);
+            if frac == 0.0 {
+                x
+            } else {
+                x + frac * (b.at(at) - x)
+            }
+        };
+        (
+            std::array::from_fn(|i| blend(&lo.position[i], &hi.position[i])),
+            std::array::from_fn(|i| blend(&lo.velocity[i], &hi.velocity[i])),
+        )
+    }
+}
+
+/// The slow drift plus the wave-frequency motion (docs/theory.md#wave-frequency-motion):
+/// `wave_frequency` is the body-frame motion x_wf of [`MotionRecords::at`] turned into the
+/// inertial axes, the totals the slow drift's (X, Y, 0, 0, 0, theta) plus it, and the rates
+/// their exact time derivatives.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct WholeMotion {
+    /// (X_wf, Y_wf, Z_wf, roll_wf, pitch_wf, yaw_wf), inertial axes: m, rad.
+    pub wave_frequency: [f64; 6],
+    /// (X, Y, Z, roll, pitch, yaw) totals: m, rad.
+    pub total: [f64; 6],
+    /// Their time derivatives: m/s, rad/s.
+    pub total_rate: [f64; 6],
+}
+
+impl WholeMotion {
+    /// The whole motion of a slow drift (position q = (X, Y, theta), velocity qd) with the
+    /// body-frame wave-frequency motion x_b and its rate v_b. With R(theta) the rotation by
+    /// theta about Z, translations and the small rotation vector (roll, pitch) turn alike:
+    ///
+    /// ```text
+    /// [X_wf, Y_wf]         = R(theta) [x_b0, x_b1],   [roll_wf, pitch_wf] = R(theta) [x_b3, x_b4]
+    /// Z_wf = x_b2,  yaw_wf = x_b5
+    /// X_total = X + X_wf, Y_total = Y + Y_wf, Z_total = Z_wf, roll_total = roll_wf,
+    /// pitch_total = pitch_wf, yaw_total = theta + yaw_wf
+    /// d/dt R(theta) u = R(theta) u' + theta' R(theta + pi/2) u
+    /// ```
+    ///
+    /// (roll and pitch are small rotations about the inertial X and Y axes: the body's
+    /// orientation is (I + [roll, pitch, 0]x) R(yaw_total) to first order in them).
+    pub fn of(q: [f64; 3], qd: [f64; 3], x_b: [f64; 6], v_b: [f64; 6]) -> Self {
+        let (s, c) = q[2].sin_cos();
+        let turn = |u: f64, v: f64| [c * u - s * v, s * u + c * v];
+        let rate = |u: f64, v: f64, du: f64, dv: f64| {
+            let [a, b] = turn(du, dv);
+            let [p, r] = turn(u, v);
+            // d/dt R(theta) = theta' R(theta) J, J u = (-u_1, u_0): R(theta) J u = (-r, p)
+            // with (p, r) = R(theta) u.
+            [a - qd[2] * r, b + qd[2] * p]
+        };
+        let [x, y] = turn(x_b[0], x_b[1]);
+        let [roll, pitch] = turn(x_b[3], x_b[4]);
+        let wave_frequency = [x, y, x_b[2], roll, pitch, x_b[5]];
+        let [xd, yd] = rate(x_b[0], x_b[1], v_b[0], v_b[1]);
+        let [rolld, pitchd] = rate(x_b[3], x_b[4], v_b[3], v_b[4]);
+        WholeMotion {
+            wave_frequency,
+            total: [q[0] + x, q[1] + y, x_b[2], roll, pitch, q[2] + x_b[5]],
+            total_rate: [
+                qd[0] + xd,
+                qd[1] + yd,
+                v_b[2],
+                rolld,
+                pitchd,
+                qd[2] + v_b[5],
+            ],
+        }
+    }
+
+    /// The slow drift alone (no wave-frequency motion).
+    pub fn slow_drift(q: [f64; 3], qd: [f64; 3]) -> Self {
+        Self::of(q, qd, [0.0; 6], [0.0; 6])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The rates are the time derivatives of the totals: central differences of a motion
+    /// whose yaw and body-frame motion vary together.
+    #[test]
+    fn the_rates_are_the_derivatives_of_the_totals() {
+        let q = |t: f64| [3.0 * t, -t * t, 0.4 + 0.3 * t];
+        let qd = |t: f64| [3.0, -2.0 * t, 0.3];
+        let xb = |t: f64| -> [f64; 6] { std::array::from_fn(|i| (t * (i + 1) as f64).sin()) };
+        let vb = |t: f64| -> [f64; 6] {
+            std::array::from_fn(|i| (i + 1) as f64 * (t * (i + 1) as f64).cos())
+        };
+        let t = 0.7;
+        let h = 1e-5;
+        let at = |t: f64| WholeMotion::of(q(t), qd(t), xb(t), vb(t));
+        let (now, plus, minus) = (at(t), at(t + h), at(t - h));
+        for i in 0..6 {
+            let numeric = (plus.total[i] - minus.total[i]) / (2.0 * h);
+            assert!(
+                (numeric - now.total_rate[i]).abs() < 1e-8,
+                "DOF {i}: {numeric} vs {}",
+                now.total_rate[i]
+            );
+        }
+        // At zero yaw the body frame is the inertial one.
+        let still = WholeMotion::of([1.0, 2.0, 0.0], [0.0; 3], xb(t), vb(t));
+        assert_eq!(still.wave_frequency, xb(t));
+        // A quarter turn: the body's surge is the inertial +Y, its roll a rotation about +Y.
+        let turned = WholeMotion::of(
+            [0.0, 0.0, std::f64::consts::FRAC_PI_2],
+            [0.0; 3],
+            [1.0, 0.0, 0.0, 1.0, 0.0, 0.0],
+            [0.0; 6],
+        );
+        assert!(turned.wave_frequency[0].abs() < 1e-15 && turned.wave_frequency[1] == 1.0);
+        assert!(turned.wave_frequency[3].abs() < 1e-15 && turned.wave_frequency[4] == 1.0);
+    }
+}
