@@ -198,14 +198,34 @@ fn run_to_end(sim: &mut Simulation) -> Result<Vec<Outputs>, String> {
 
 fn print_summary(sim: &Simulation, outputs: &[Outputs], transient: f64) -> Result<(), String> {
     let dt = sim.problem().run.time_step;
-    let rows: [(&str, f64, &str); 3] = [
-        ("surge", 1.0, "m"),
-        ("sway", 1.0, "m"),
-        ("yaw", 180.0 / std::f64::consts::PI, "deg"),
+    let deg = 180.0 / std::f64::consts::PI;
+    type Read = fn(&Outputs) -> f64;
+    let mut rows: Vec<(&str, f64, &str, Read)> = vec![
+        ("surge", 1.0, "m", |o| o.position[0]),
+        ("sway", 1.0, "m", |o| o.position[1]),
+        ("yaw", deg, "deg", |o| o.position[2]),
     ];
-    let summaries = (0..3)
-        .map(|i| {
-            let record: Vec<f64> = outputs.iter().map(|o| o.position[i] * rows[i].1).collect();
+    // With wave-frequency motion: its six DOFs (inertial axes) and the totals.
+    if sim.records().motion.is_some() {
+        rows.extend::<[(&str, f64, &str, Read); 12]>([
+            ("X_wf", 1.0, "m", |o| o.motion.wave_frequency[0]),
+            ("Y_wf", 1.0, "m", |o| o.motion.wave_frequency[1]),
+            ("Z_wf", 1.0, "m", |o| o.motion.wave_frequency[2]),
+            ("roll_wf", deg, "deg", |o| o.motion.wave_frequency[3]),
+            ("pitch_wf", deg, "deg", |o| o.motion.wave_frequency[4]),
+            ("yaw_wf", deg, "deg", |o| o.motion.wave_frequency[5]),
+            ("X_total", 1.0, "m", |o| o.motion.total[0]),
+            ("Y_total", 1.0, "m", |o| o.motion.total[1]),
+            ("Z_total", 1.0, "m", |o| o.motion.total[2]),
+            ("roll_total", deg, "deg", |o| o.motion.total[3]),
+            ("pitch_total", deg, "deg", |o| o.motion.total[4]),
+            ("yaw_total", deg, "deg", |o| o.motion.total[5]),
+        ]);
+    }
+    let summaries = rows
+        .iter()
+        .map(|(_, scale, _, read)| {
+            let record: Vec<f64> = outputs.iter().map(|o| read(o) * scale).collect();
             summarize(&record, dt, transient).map_err(|e| e.to_string())
         })
         .collect::<Result<Vec<Summary>, String>>()?;
@@ -216,12 +236,12 @@ fn print_summary(sim: &Simulation, outputs: &[Outputs], transient: f64) -> Resul
         written(dt)
     );
     println!(
-        "{:<10} {:>14} {:>14} {:>14} {:>14}",
+        "{:<18} {:>14} {:>14} {:>14} {:>14}",
         "DOF", "mean", "rms", "max", "min"
     );
-    for ((name, _, unit), s) in rows.iter().zip(&summaries) {
+    for ((name, _, unit, _), s) in rows.iter().zip(&summaries) {
         println!(
-            "{:<10} {:>14.4} {:>14.4} {:>14.4} {:>14.4}",
+            "{:<18} {:>14.4} {:>14.4} {:>14.4} {:>14.4}",
             format!("{name} [{unit}]"),
             s.mean,
             s.rms,
@@ -238,7 +258,11 @@ fn write_csv(path: &std::path::Path, outputs: &[Outputs]) -> std::io::Result<()>
         w,
         "time_s,X_m,Y_m,theta_rad,Xdot_m_s,Ydot_m_s,thetadot_rad_s,eta_m,\
          Fx_wave_N,Fy_wave_N,Mz_wave_Nm,Fx_damping_N,Fy_damping_N,Mz_damping_Nm,\
-         Fx_drag_N,Fy_drag_N,Mz_drag_Nm"
+         Fx_drag_N,Fy_drag_N,Mz_drag_Nm,\
+         X_wf_m,Y_wf_m,Z_wf_m,roll_wf_rad,pitch_wf_rad,yaw_wf_rad,\
+         X_total_m,Y_total_m,Z_total_m,roll_total_rad,pitch_total_rad,yaw_total_rad,\
+         Xdot_total_m_s,Ydot_total_m_s,Zdot_total_m_s,rolldot_total_rad_s,\
+         pitchdot_total_rad_s,yawdot_total_rad_s"
     )?;
     for o in outputs {
         let f = &o.forces;
@@ -250,6 +274,9 @@ fn write_csv(path: &std::path::Path, outputs: &[Outputs]) -> std::io::Result<()>
             .chain(&f.wave)
             .chain(&f.damping)
             .chain(&f.drag)
+            .chain(&o.motion.wave_frequency)
+            .chain(&o.motion.total)
+            .chain(&o.motion.total_rate)
             // 17 significant digits: every f64 reads back bit for bit.
             .map(|v| format!("{v:.16e}"))
             .collect();

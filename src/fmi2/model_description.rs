@@ -202,7 +202,7 @@ mod tests {
             .filter(|(_, v)| v.causality == Causality::Output)
             .map(|(i, _)| i + 1)
             .collect();
-        assert_eq!(outputs.len(), 16);
+        assert_eq!(outputs.len(), 34);
         let indices = |name: &str| -> Vec<usize> {
             tags(&section(name), "Unknown")
                 .iter()

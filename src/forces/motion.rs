@@ -154,8 +154,8 @@ impl MotionRecords {
             for (k, transfer) in directions.iter().enumerate() {
                 let amplitudes = components.of_direction(k);
                 for (j, (a, xi)) in amplitudes.iter().zip(&transfer.rao).enumerate() {
-                    for i in 0..6 {
-                        work.coefficients[i][j] += a * xi[i];
+                    for (c, x) in work.coefficients.iter_mut().zip(xi) {
+                        c[j] += a * x;
                     }
                 }
             }

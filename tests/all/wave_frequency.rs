@@ -338,3 +338,74 @@ fn the_totals_add_the_motion_to_an_unchanged_slow_drift() {
         "{summary}"
     );
 }
+
+/// The FMU gives the same whole motion as the native run of its configuration, bit for bit;
+/// `waveFrequencyMotion` = 0 (off) makes the wave-frequency outputs zero and the totals the
+/// slow drift, which is unchanged.
+#[test]
+fn the_fmu_outputs_the_whole_motion_and_turns_it_off() {
+    use crate::fmu::{bits, native_outputs, Fmu};
+    use slowdrift::fmi2::model_description::vr;
+    use slowdrift::fmi2::types::fmi2Status;
+    let Some(root) = iea15_root_or_skip() else {
+        return;
+    };
+    let dir = temp_dir("wave-frequency-fmu");
+    let config = configuration(&dir, &root, 3, "");
+    let stop = 300.0;
+    let run = |off: bool| {
+        let fmu = Fmu::new(if off { "motion-off" } else { "motion-on" });
+        assert_eq!(fmu.setup(0.0, Some(stop)), fmi2Status::fmi2OK);
+        let path = config.to_str().unwrap();
+        assert_eq!(fmu.set_string(vr::HYDRO_DATABASE, path), fmi2Status::fmi2OK);
+        if off {
+            assert_eq!(
+                fmu.set_int(vr::WAVE_FREQUENCY_MOTION, 0),
+                fmi2Status::fmi2OK
+            );
+        }
+        assert_eq!(fmu.init(), fmi2Status::fmi2OK, "{}", fmu.messages());
+        fmu
+    };
+    let (on, off) = (run(false), run(true));
+    let mut problem = slowdrift::problem::load(&config).unwrap();
+    problem.run.duration = stop;
+    let mut native = Simulation::new(problem).unwrap();
+    let total = [
+        vr::X_TOTAL,
+        vr::Y_TOTAL,
+        vr::Z_TOTAL,
+        vr::ROLL_TOTAL,
+        vr::PITCH_TOTAL,
+    ];
+    let wave_frequency = [
+        vr::X_WF,
+        vr::Y_WF,
+        vr::Z_WF,
+        vr::ROLL_WF,
+        vr::PITCH_WF,
+        vr::YAW_WF,
+    ];
+    let mut heave = 0.0f64;
+    for n in 0..stop as usize {
+        let t = n as f64;
+        assert_eq!(
+            bits(&on.outputs()),
+            bits(&native_outputs(&native.outputs().unwrap())),
+            "t = {t} s"
+        );
+        let (_, slow) = off.get_reals(&[vr::X, vr::Y, vr::THETA]);
+        let (_, moved) = on.get_reals(&[vr::X, vr::Y, vr::THETA]);
+        assert_eq!(slow, moved, "the slow drift is the same, t = {t} s");
+        let (_, zeros) = off.get_reals(&wave_frequency);
+        assert_eq!(zeros, [0.0; 6]);
+        let (_, totals) = off.get_reals(&total);
+        assert_eq!(totals, [slow[0], slow[1], 0.0, 0.0, 0.0]);
+        let (_, z) = on.get_reals(&[vr::Z_WF]);
+        heave = heave.max(z[0].abs());
+        on.step_with(t, 1.0, [0.0; 3]);
+        off.step_with(t, 1.0, [0.0; 3]);
+        native.advance(1.0, [0.0; 3]).unwrap();
+    }
+    assert!(heave > 0.1, "heave reached only {heave} m");
+}

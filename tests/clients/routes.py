@@ -23,7 +23,11 @@ DEFAULT_TOML = os.path.join(REPO, "src", "scenario", "default.toml")
 # The FMU's outputs in the order of the native CSV's columns after time_s.
 OUTPUTS = ("X", "Y", "theta", "Xdot", "Ydot", "thetadot", "eta",
            "Fx_wave", "Fy_wave", "Mz_wave", "Fx_damping", "Fy_damping", "Mz_damping",
-           "Fx_drag", "Fy_drag", "Mz_drag")
+           "Fx_drag", "Fy_drag", "Mz_drag",
+           "X_wf", "Y_wf", "Z_wf", "roll_wf", "pitch_wf", "yaw_wf",
+           "X_total", "Y_total", "Z_total", "roll_total", "pitch_total", "yaw_total",
+           "Xdot_total", "Ydot_total", "Zdot_total", "rolldot_total", "pitchdot_total",
+           "yawdot_total")
 INPUTS = ("Fx_ext", "Fy_ext", "Mz_ext")
 
 # Non-default FMU parameters used by the comparisons: an oblique sea (30 deg) so that sway and
