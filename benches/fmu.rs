@@ -32,7 +32,9 @@
 //! at a time whatever the stop time. Timed with the packed FMU's resources (its
 //! `platform.toml`, written by `write_resources` into a temporary folder) and without (no
 //! fmuResourceLocation: the embedded default); both read the default platform's data
-//! compiled into the library, whose parse is timed on its own at the end.
+//! compiled into the library, whose parse is timed on its own at the end. And the
+//! initialisation of the embedded default (stop time 3 h) with the wave-frequency motion on
+//! and off (`waveFrequencyMotion` 1 and 0), alternated: the cost of its records.
 
 use criterion::Criterion;
 use slowdrift::fmi2::exports::*;
@@ -245,6 +247,16 @@ fn check_same_run(core: &mut Core, fmu: &mut Fmu) {
 /// fmi2Instantiate, fmi2SetupExperiment, fmi2EnterInitializationMode and
 /// fmi2ExitInitializationMode; fmi2FreeInstance after the timing.
 fn initialisation(stop: Option<f64>, resources: Option<&CString>) -> (f64, f64) {
+    initialisation_with(stop, resources, None)
+}
+
+/// [`initialisation`] with `waveFrequencyMotion` set to `motion` (0 off, 1 on) after
+/// fmi2SetupExperiment when given.
+fn initialisation_with(
+    stop: Option<f64>,
+    resources: Option<&CString>,
+    motion: Option<i32>,
+) -> (f64, f64) {
     let name = CString::new("init").unwrap();
     let guid = CString::new(GUID).unwrap();
     let (defined, stop_time) = match stop {
@@ -271,6 +283,13 @@ fn initialisation(stop: Option<f64>, resources: Option<&CString>) -> (f64, f64) 
             fmi2SetupExperiment(c, fmi2False, 0.0, 0.0, defined, stop_time),
             "fmi2SetupExperiment",
         );
+        if let Some(code) = motion {
+            let reference = [vr::WAVE_FREQUENCY_MOTION];
+            ok(
+                fmi2SetInteger(c, reference.as_ptr(), 1, [code].as_ptr()),
+                "waveFrequencyMotion",
+            );
+        }
         ok(fmi2EnterInitializationMode(c), "enter");
         let before_exit = Instant::now();
         ok(fmi2ExitInitializationMode(c), "exit");
@@ -424,6 +443,26 @@ fn main() {
         }
     }
     std::fs::remove_dir_all(&dir).ok();
+
+    // The wave-frequency motion's cost (issue #29: at most 25 % more initialisation with it
+    // on than off): the embedded default, stop time 3 h, on and off alternated.
+    let rounds = 31;
+    initialisation_with(Some(THREE_HOURS), None, Some(1)); // warm-up
+    let (mut on, mut off) = (Vec::new(), Vec::new());
+    for _ in 0..rounds {
+        on.push(initialisation_with(Some(THREE_HOURS), None, Some(1)).0);
+        off.push(initialisation_with(Some(THREE_HOURS), None, Some(0)).0);
+    }
+    let (on, off) = (median(on), median(off));
+    println!(
+        "\nFMU initialisation of the embedded default, stop time 3 h, medians of {rounds} \
+         alternated rounds: waveFrequencyMotion = 1 (on) {:.2} ms, = 0 (off) {:.2} ms: \
+         {:+.1} % (target at most +25 %: {})",
+        on * 1e3,
+        off * 1e3,
+        (on / off - 1.0) * 100.0,
+        if on <= 1.25 * off { "met" } else { "NOT met" }
+    );
 
     // The part of each initialisation that reads the compiled-in database (about 0.6 MB of
     // JSON, parsed per instance).

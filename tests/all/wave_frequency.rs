@@ -409,3 +409,41 @@ fn the_fmu_outputs_the_whole_motion_and_turns_it_off() {
     }
     assert!(heave > 0.1, "heave reached only {heave} m");
 }
+
+/// With yaw following, the motion records at each body yaw theta_j of the grid are those of
+/// the mean position in the same sea turned by -theta_j (the relative heading is all the
+/// RAOs see): a run at 20 deg with records at 12 yaws against runs at 20 deg - theta_j.
+#[test]
+fn yaw_following_motion_is_the_sea_at_the_relative_heading() {
+    let Some(root) = iea15_root_or_skip() else {
+        return;
+    };
+    let dir = temp_dir("wave-frequency-yaw");
+    let config = configuration(&dir, &root, 5, "yaw_following = { headings = 12 }");
+    let mut problem = slowdrift::problem::load(&config).unwrap();
+    problem.run.duration = 600.0;
+    let following = Simulation::new(problem.clone()).unwrap();
+    let sets = &following.records().motion.as_ref().unwrap().sets;
+    assert_eq!(sets.len(), 12);
+    for (j, set) in sets.iter().enumerate() {
+        let theta = 2.0 * PI * (j as f64 / 12.0 - 0.5);
+        let mut turned = problem.clone();
+        turned.model.yaw_following = None;
+        turned.sea.mean_direction = HEADING_DEG.to_radians() - theta;
+        let mean_position = Simulation::new(turned).unwrap();
+        let own = &mean_position.records().motion.as_ref().unwrap().sets[0];
+        for i in 0..6 {
+            let (a, b) = (set.position[i].samples(), own.position[i].samples());
+            let scale = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+            let worst = a
+                .iter()
+                .zip(b)
+                .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+            assert!(
+                worst <= 1e-12 * scale,
+                "yaw {:.0} deg, DOF {i}: {worst:e} of {scale:e}",
+                theta.to_degrees()
+            );
+        }
+    }
+}
