@@ -1,9 +1,10 @@
 //! The mooring FMU of SlowDrift's co-simulation (docs/coupling.md): MoorDyn's mooring lines
-//! on a platform that moves in the horizontal plane, as an FMI 2.0 co-simulation FMU
+//! on a platform that moves in six degrees of freedom, as an FMI 2.0 co-simulation FMU
 //! (`target/fmu/Mooring.fmu`, packed by `fmu-pack`).
 //!
-//! - [`planar`]: SlowDrift's planar motion and force (X, Y, theta; Fx, Fy, Mz) against
-//!   MoorDyn's six coupled degrees of freedom: the frame and sign conventions, in one place.
+//! - [`motion`]: the platform's motion and force (X, Y, Z, roll, pitch, theta; Fx, Fy, Fz,
+//!   Mx, My, Mz) against MoorDyn's six coupled degrees of freedom: the frame, angle and sign
+//!   conventions, in one place.
 //! - [`moordyn`]: MoorDyn's C library, loaded at run time from beside this library, behind
 //!   a safe type (one mooring system, closed when dropped).
 //! - [`catenary`], [`lines_file`], [`quasi_static`]: the quasi-static alternative to
@@ -20,5 +21,5 @@ pub mod catenary;
 pub mod fmi2;
 pub mod lines_file;
 pub mod moordyn;
-pub mod planar;
+pub mod motion;
 pub mod quasi_static;

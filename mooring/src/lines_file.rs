@@ -137,7 +137,18 @@ pub fn parse(text: &str) -> Result<Vec<MooringLine>, (usize, String)> {
         }
     }
     let mut lines = Vec::new();
-    for (n, words, length) in rows {
+    for (k, (n, words, length)) in rows.into_iter().enumerate() {
+        // MoorDyn refuses any other numbering; the FMU's fairleadTension outputs follow it.
+        if words[0].parse::<usize>() != Ok(k + 1) {
+            return Err((
+                n,
+                format!(
+                    "line ID {} where {} is due: MoorDyn numbers the lines 1, 2, ... in order",
+                    words[0],
+                    k + 1
+                ),
+            ));
+        }
         let point = |i: usize| {
             points
                 .get(&words[i])
@@ -232,5 +243,15 @@ mod tests {
         assert!(e.contains("not on the seabed"), "{e}");
         let (_, e) = at(&SPREAD.replace("1    chain84   1        9", "1    chain99   1        9"));
         assert!(e.contains("no line type chain99"), "{e}");
+        let (n, e) = at(&SPREAD.replace("3    chain84", "9    chain84"));
+        assert!(
+            SPREAD
+                .lines()
+                .nth(n - 1)
+                .unwrap()
+                .starts_with("3    chain84"),
+            "{n}"
+        );
+        assert!(e.contains("line ID 9 where 3 is due"), "{e}");
     }
 }

@@ -237,18 +237,25 @@ impl System {
         Ok(f)
     }
 
-    /// The largest fairlead tension of the lines, N (0 without lines).
-    pub fn max_fairlead_tension(&self) -> Result<f64, String> {
-        let mut max: f64 = 0.0;
-        for &line in &self.lines {
-            let mut t = 0.0;
-            // SAFETY: a line of this live system and a valid out-pointer.
-            self.check("MoorDyn_GetLineFairTen", unsafe {
-                (self.library.api.line_fairlead_tension)(line, &mut t)
-            })?;
-            max = max.max(t);
-        }
-        Ok(max)
+    /// The number of lines (MoorDyn's lines 1, 2, ..., in the input file's order).
+    pub fn line_count(&self) -> usize {
+        self.lines.len()
+    }
+
+    /// The fairlead tension of each line (N; MoorDyn's `GetLineFairTen`, the tension at the
+    /// line's end B), in MoorDyn's order of lines.
+    pub fn fairlead_tensions(&self) -> Result<Vec<f64>, String> {
+        self.lines
+            .iter()
+            .map(|&line| {
+                let mut t = 0.0;
+                // SAFETY: a line of this live system and a valid out-pointer.
+                self.check("MoorDyn_GetLineFairTen", unsafe {
+                    (self.library.api.line_fairlead_tension)(line, &mut t)
+                })?;
+                Ok(t)
+            })
+            .collect()
     }
 }
 

@@ -214,13 +214,21 @@ def initial_value_problems(initial, variables_of):
     return problems
 
 
+# The mooring's inputs of the platform's out-of-plane motion: SlowDrift.fmu has no output
+# for them yet, so the system leaves them at their start value 0 (the platform in the
+# horizontal plane, the mooring's outputs those of the planar inputs alone).
+UNDRIVEN = {("mooring", n) for n in ("Z", "roll", "pitch", "Zdot", "rolldot", "pitchdot")}
+
+
 def input_coverage_problems(pairs, variables_of):
-    """Every input of both FMUs (the parameters apart) is driven by exactly one output."""
+    """Every input of both FMUs (the parameters apart) is driven by exactly one output, but
+    those of UNDRIVEN, which no output drives."""
     problems = []
     driven = [end for _start, end in pairs]
     for sim, variables in variables_of.items():
         for name, v in variables.items():
-            if v.causality == "input" and driven.count((sim, name)) != 1:
+            due = 0 if (sim, name) in UNDRIVEN else 1
+            if v.causality == "input" and driven.count((sim, name)) != due:
                 problems.append(f"input {sim}.{name} is driven {driven.count((sim, name))} times")
     return problems
 

@@ -59,6 +59,31 @@ def test_coupled_body_dof_order_and_yaw_sign():
     assert body6((1.0, 2.0, 3.0)) == [1.0, 2.0, 0.0, 0.0, 0.0, 3.0]
 
 
+def test_coupled_body_rotation_is_rx_ry_rz():
+    """MoorDyn 2.7.2 turns a coupled body's points by Rx(roll) Ry(pitch) Rz(yaw) of its r6
+    (source/Misc.hpp, Euler2Quat; mooring/src/motion.rs relies on it): a fairlead lands at
+    x + Rx Ry Rz p, not at x + Rz Ry Rx p, which differs by centimetres at these angles."""
+    r6 = [1.0, 2.0, -0.5, 0.05, -0.04, 0.3]
+    with quiet():
+        md = moordyn.Create(DEFAULT_DAT)
+        moordyn.Init(md, r6, [0.0] * 6)
+        p = np.array(moordyn.GetPointPos(moordyn.GetPoint(md, 9)))
+        moordyn.Close(md)
+
+    def rot(axis, a):
+        c, s = np.cos(a), np.sin(a)
+        i, j = [k for k in range(3) if k != axis]
+        m = np.eye(3)
+        m[i, i], m[i, j], m[j, i], m[j, j] = c, -s, s, c
+        return m if axis != 1 else m.T  # about Y: z x -> x (right-handed)
+
+    rel = np.array([45.0, 35.0, -20.0])  # point 9 in the body frame
+    xyz = np.array(r6[:3]) + rot(0, r6[3]) @ rot(1, r6[4]) @ rot(2, r6[5]) @ rel
+    zyx = np.array(r6[:3]) + rot(2, r6[5]) @ rot(1, r6[4]) @ rot(0, r6[3]) @ rel
+    assert np.allclose(p, xyz, atol=1e-9), (p, xyz)
+    assert np.max(np.abs(p - zyx)) > 0.05
+
+
 def test_quiet_restores_stdout(capfd):
     """quiet() hides what MoorDyn's C++ code writes to file descriptors 1 and 2, and only that."""
     import os

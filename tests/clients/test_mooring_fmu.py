@@ -54,7 +54,10 @@ def test_validate_and_check(mooring_fmu):
     units = {v.name: v.unit for v in md.modelVariables if v.type == "Real"}
     assert units == {"X": "m", "Y": "m", "theta": "rad", "Xdot": "m/s", "Ydot": "m/s",
                      "thetadot": "rad/s", "Fx": "N", "Fy": "N", "Mz": "N.m",
-                     "fairleadTensionMax": "N"}
+                     "fairleadTensionMax": "N", "Z": "m", "roll": "rad", "pitch": "rad",
+                     "Zdot": "m/s", "rolldot": "rad/s", "pitchdot": "rad/s", "Fz": "N",
+                     "Mx": "N.m", "My": "N.m",
+                     **{f"fairleadTension{n}": "N" for n in range(1, 9)}}
     assert all(u.dependencies == [] for u in md.outputs)
 
 

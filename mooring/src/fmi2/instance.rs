@@ -2,6 +2,9 @@
 //! lines it drives: MoorDyn's dynamic lines or the quasi-static catenaries
 //! (`mooringModel`).
 //!
+//! The inputs are the platform's 6-DOF position and velocity, the outputs the lines' force
+//! and moment and their fairlead tensions (frames and angles: [`crate::motion`]).
+//!
 //! Coupling per communication step (`fmi2DoStep(t, h)`): the fairleads move from the
 //! inputs' position at t along their velocity (MoorDyn's coupled-body kinematics are linear
 //! over a call) and the outputs become the line force at t + h: MoorDyn advances its lines
@@ -16,14 +19,15 @@
 //! the state machine, turns C pointers into the arguments here and reports every failure,
 //! an [`Error`], with one status and log policy. A bad argument (an unknown value reference,
 //! a non-finite input, a fixed parameter set late) is [`Error::Argument`]; what the lines
-//! refuse (the file, MoorDyn, a catenary without solution) is [`Error::Model`].
+//! refuse (the file, MoorDyn, a catenary without solution, a file whose number of lines is
+//! not the outputs' [`LINE_COUNT`]) is [`Error::Model`].
 
 use super::variables::{
-    Real, DEFAULT_MOORING, DYNAMIC, GUID, INPUTS, MODEL_IDENTIFIER, MOORING_FILE, MOORING_MODEL,
-    OUTPUTS, QUASI_STATIC,
+    Real, DEFAULT_MOORING, DYNAMIC, GUID, INPUTS, LINE_COUNT, MODEL_IDENTIFIER, MOORING_FILE,
+    MOORING_MODEL, OUTPUTS, POSITION, QUASI_STATIC, VELOCITY,
 };
 use crate::moordyn::{this_library_dir, Library, System, LIBRARY_FILE};
-use crate::planar::{body6, planar_force};
+use crate::motion::{HEAVE, PITCH, ROLL, SURGE, SWAY, YAW};
 use crate::quasi_static::QuasiStatic;
 use slowdrift_fmi::fmi2::machine::MachineState;
 use slowdrift_fmi::fmi2::{Context, Instantiation, Model};
@@ -52,6 +56,8 @@ pub struct Instance {
     time: f64,
     inputs: [f64; INPUTS.len()],
     outputs: [f64; OUTPUTS.len()],
+    /// Each line's fairlead tension (the outputs fairleadTension1, 2, ...).
+    tensions: [f64; LINE_COUNT],
     lines: Option<Lines>,
     /// The inputs, file and model the lines were made for, while in initialisation mode.
     made_for: Option<([f64; INPUTS.len()], String, i32)>,
@@ -95,6 +101,7 @@ impl Model for Instance {
             time: 0.0,
             inputs: [0.0; INPUTS.len()],
             outputs: [0.0; OUTPUTS.len()],
+            tensions: [0.0; LINE_COUNT],
             lines: None,
             made_for: None,
             strings: Vec::new(),
@@ -127,21 +134,22 @@ impl Model for Instance {
         self.time = 0.0;
         self.inputs = [0.0; INPUTS.len()];
         self.outputs = [0.0; OUTPUTS.len()];
+        self.tensions = [0.0; LINE_COUNT];
     }
 
     /// Inputs, and outputs (in initialisation mode, the lines are made at the inputs'
     /// position to give them).
     fn get_real(&mut self, cx: &Context, vrs: &[u32], values: &mut [f64]) -> Result<(), Error> {
         for (&vr, value) in vrs.iter().zip(values) {
-            *value = match Real::of(vr) {
-                Some(Real::Input(i)) => self.inputs[i],
-                Some(Real::Output(i)) => {
-                    if cx.state() == MachineState::InitializationMode {
-                        self.make_lines()?;
-                    }
-                    self.outputs[i]
-                }
-                None => return Err(no_variable("Real", vr)),
+            let real = Real::of(vr).ok_or_else(|| no_variable("Real", vr))?;
+            let output = !matches!(real, Real::Input(_));
+            if output && cx.state() == MachineState::InitializationMode {
+                self.make_lines()?;
+            }
+            *value = match real {
+                Real::Input(i) => self.inputs[i],
+                Real::Output(i) => self.outputs[i],
+                Real::LineTension(i) => self.tensions[i],
             };
         }
         Ok(())
@@ -182,13 +190,13 @@ impl Model for Instance {
                 Some(Real::Input(i)) => {
                     return Err(Error::Argument(format!(
                         "{} = {value} must be finite",
-                        INPUTS[i]
+                        INPUTS[i].0
                     )))
                 }
-                Some(Real::Output(i)) => {
+                Some(output) => {
                     return Err(Error::Argument(format!(
                         "{} is an output: it cannot be set",
-                        OUTPUTS[i]
+                        output.name()
                     )))
                 }
                 None => return Err(no_variable("Real", vr)),
@@ -267,9 +275,9 @@ impl Model for Instance {
             }
             Lines::QuasiStatic(quasi_static) => {
                 // The position the fairleads reach at t + h, as MoorDyn moves them.
-                let i = self.inputs;
-                let q = [i[0] + h * i[3], i[1] + h * i[4], i[2] + h * i[5]];
-                self.set_quasi_static_outputs(quasi_static, q)
+                let (x, xd) = self.kinematics();
+                let reached = std::array::from_fn(|k| x[k] + h * xd[k]);
+                self.set_quasi_static_outputs(quasi_static, reached)
                     .map_err(|e| format!("{e} in the step from t = {t} s"))
             }
         };
@@ -304,16 +312,17 @@ impl Instance {
         self.lines = None;
         let input = self.input_file();
         let named = |e: String| Error::Model(with_parameter(&self.mooring_file, &input, e));
+        let (x, xd) = self.kinematics();
         let lines = if self.mooring_model == QUASI_STATIC {
             let lines = QuasiStatic::read(&input).map_err(named)?;
-            let q = [self.inputs[0], self.inputs[1], self.inputs[2]];
-            self.set_quasi_static_outputs(&lines, q)
+            check_line_count(lines.line_count(), &input).map_err(named)?;
+            self.set_quasi_static_outputs(&lines, x)
                 .map_err(Error::Model)?;
             Lines::QuasiStatic(lines)
         } else {
-            let (x, xd) = self.kinematics();
             let mut system =
                 System::new(Arc::clone(&self.library), &input, x, xd).map_err(named)?;
+            check_line_count(system.line_count(), &input).map_err(named)?;
             let force = system.step(x, xd, self.time, 0.0).map_err(Error::Model)?;
             self.set_outputs(&system, force).map_err(Error::Model)?;
             Lines::Dynamic(system)
@@ -323,34 +332,67 @@ impl Instance {
         Ok(())
     }
 
+    /// MoorDyn's coupled position (x, y, z, roll, pitch, yaw) and its rate, from the inputs
+    /// as they are ([`crate::motion`]: the identity to first order in roll and pitch).
     fn kinematics(&self) -> ([f64; 6], [f64; 6]) {
-        let i = &self.inputs;
-        (body6([i[0], i[1], i[2]]), body6([i[3], i[4], i[5]]))
+        (
+            POSITION.map(|i| self.inputs[i]),
+            VELOCITY.map(|i| self.inputs[i]),
+        )
     }
 
     fn set_outputs(&mut self, system: &System, force: [f64; 6]) -> Result<(), String> {
-        let [fx, fy, mz] = planar_force(force);
-        let tension = system.max_fairlead_tension()?;
-        self.check_and_set([fx, fy, mz, tension], "MoorDyn")
+        let tensions = system.fairlead_tensions()?;
+        self.check_and_set(force, &tensions, "MoorDyn")
     }
 
-    /// The outputs: the quasi-static lines' force with the platform at q.
-    fn set_quasi_static_outputs(&mut self, lines: &QuasiStatic, q: [f64; 3]) -> Result<(), String> {
-        let f = lines.force(q)?;
-        let [fx, fy, mz] = f.planar;
-        self.check_and_set([fx, fy, mz, f.max_tension], "the quasi-static lines")
+    /// The outputs: the quasi-static lines' force with the platform at r6.
+    fn set_quasi_static_outputs(
+        &mut self,
+        lines: &QuasiStatic,
+        r6: [f64; 6],
+    ) -> Result<(), String> {
+        let f = lines.force(r6)?;
+        self.check_and_set(f.force, &f.tensions, "the quasi-static lines")
     }
 
-    fn check_and_set(&mut self, outputs: [f64; OUTPUTS.len()], from: &str) -> Result<(), String> {
-        if let Some(i) = outputs.iter().position(|v| !v.is_finite()) {
+    /// Sets the outputs from the force (Fx, Fy, Fz, Mx, My, Mz) and the lines' fairlead
+    /// tensions, all finite (else an error naming the output and the time).
+    fn check_and_set(&mut self, f: [f64; 6], tensions: &[f64], from: &str) -> Result<(), String> {
+        if tensions.len() != LINE_COUNT {
             return Err(format!(
-                "{from} returned {} = {} at t = {} s",
-                OUTPUTS[i], outputs[i], self.time
+                "{from} returned {} fairlead tensions for the FMU's {LINE_COUNT} outputs",
+                tensions.len()
+            ));
+        }
+        let max = tensions.iter().fold(0.0, |m: f64, &t| m.max(t));
+        let outputs = [f[SURGE], f[SWAY], f[YAW], max, f[HEAVE], f[ROLL], f[PITCH]];
+        let named = (0..OUTPUTS.len()).map(Real::Output).zip(outputs);
+        let lines = (0..tensions.len())
+            .map(Real::LineTension)
+            .zip(tensions.iter().copied());
+        if let Some((real, value)) = named.chain(lines).find(|(_, v)| !v.is_finite()) {
+            return Err(format!(
+                "{from} returned {} = {value} at t = {} s",
+                real.name(),
+                self.time
             ));
         }
         self.outputs = outputs;
+        self.tensions.copy_from_slice(tensions);
         Ok(())
     }
+}
+
+/// A mooring of [`LINE_COUNT`] lines, as the modelDescription.xml's outputs say.
+fn check_line_count(count: usize, input: &Path) -> Result<(), String> {
+    if count == LINE_COUNT {
+        return Ok(());
+    }
+    Err(format!(
+        "{} has {count} mooring lines, and this FMU has {LINE_COUNT} fairlead tension outputs          (fairleadTension1 to fairleadTension{LINE_COUNT}, one per line of the mooring it was          packed with): its modelDescription.xml is fixed, so give a file of {LINE_COUNT} lines,          or use an FMU whose modelDescription.xml declares {count} (docs/coupling.md, the line          outputs)",
+        input.display()
+    ))
 }
 
 /// The FMU's `resources` folder beside this library: `<unpacked FMU>/resources`, two levels
