@@ -86,8 +86,8 @@ def draw(rows, params, group_of):
            f'<rect width="{width}" height="{height}" fill="white"/>',
            text(width / 2, 30, "The moored platform in a co-simulation master "
                 "(target/fmu/system/)", 16, "middle", "bold"),
-           text(width / 2, 52, "OspSystemStructure.xml and MooredPlatform.ssp: the same nine "
-                "connections, 1 s macro step", 13, "middle")]
+           text(width / 2, 52, "OspSystemStructure.xml and MooredPlatform.ssp: the same "
+                f"{len(rows)} connections, 1 s macro step", 13, "middle")]
     y_of = {r[0]: top + 20 + pitch * i for i, r in enumerate(rows)}
     x1, x2 = left + box_w, right
     for name, members in groups:
@@ -96,7 +96,7 @@ def draw(rows, params, group_of):
                    f'rx="6" fill="{GROUP_FILL.get(name, "#eeeeee")}"/>')
         out.append(text(x1 + 16, y0 + 13, f"OSP group {name}", 11, fill="#555"))
     box_h = pitch * len(rows) + 24
-    for x, title, sub in ((left, "SlowDrift.fmu", "the platform: surge, sway, yaw"),
+    for x, title, sub in ((left, "SlowDrift.fmu", "slow drift + wave-frequency motion"),
                           (right, "Mooring.fmu", "MoorDyn's lines (spread mooring)")):
         out.append(f'<rect x="{x}" y="{top - 16}" width="{box_w}" height="{box_h}" rx="8" '
                    'fill="#f7f7f7" stroke="#333" stroke-width="1.5"/>')

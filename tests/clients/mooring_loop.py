@@ -23,7 +23,9 @@ from t_n to t_n + dt:
   -K dt / 2, the same size with the opposite sign, and again no mean force.
 
 The body interface: state() -> (q, qdot) as arrays (X, Y, theta), (Xdot, Ydot, thetadot);
-set_force(F) with F = (Fx, Fy, Mz) in the inertial frame; do_step(t, dt).
+set_force(F) with F = (Fx, Fy, Mz) in the inertial frame; do_step(t, dt); optionally
+motion() -> (pose, rates), the 6-DOF whole motion the mooring follows (SlowDrift's totals:
+slow drift plus wave-frequency motion), else the mooring follows state().
 """
 
 import os
@@ -38,6 +40,13 @@ DEFAULT_FMU = os.path.join(REPO, "target", "fmu", "SlowDrift.fmu")
 
 STATE_NAMES = ("X", "Y", "theta")
 RATE_NAMES = ("Xdot", "Ydot", "thetadot")
+# SlowDrift's whole motion (slow drift plus wave-frequency motion) and the mooring FMU's
+# inputs it drives, in MoorDyn's order (x, y, z, roll, pitch, yaw).
+TOTAL_NAMES = ("X_total", "Y_total", "Z_total", "roll_total", "pitch_total", "yaw_total")
+TOTAL_RATE_NAMES = ("Xdot_total", "Ydot_total", "Zdot_total", "rolldot_total",
+                    "pitchdot_total", "yawdot_total")
+POSE_NAMES = ("X", "Y", "Z", "roll", "pitch", "theta")
+POSE_RATE_NAMES = ("Xdot", "Ydot", "Zdot", "rolldot", "pitchdot", "thetadot")
 INPUT_NAMES = ("Fx_ext", "Fy_ext", "Mz_ext")
 
 # Columns of the record returned by run_loop / run_free.
@@ -109,6 +118,14 @@ class FmuBody:
         v = np.array(self.fmu.getReal(self.state_vr), dtype=float)
         return v[:3], v[3:]
 
+    def motion(self):
+        """The whole motion a mooring follows: (pose, rates), 6 DOF each, SlowDrift's
+        totals (the slow drift alone where they are absent)."""
+        if not all(n in self.vr for n in TOTAL_NAMES + TOTAL_RATE_NAMES):
+            return self.state()
+        v = np.array(self.fmu.getReal([self.vr[n] for n in TOTAL_NAMES + TOTAL_RATE_NAMES]))
+        return v[:6], v[6:]
+
     def set_force(self, f):
         self.fmu.setReal(self.input_vr, [float(x) for x in f])
 
@@ -134,7 +151,8 @@ class FmuBody:
 
 class MooringFmu:
     """Mooring.fmu through fmpy with the interface of mooring_stiffness.Mooring:
-    step(q, qdot, t, dt) sets the inputs X..thetadot to the state at t, steps the FMU from t
+    step(q, qdot, t, dt) sets the inputs X..thetadot (or, for a 6-DOF q, X, Y, Z, roll,
+    pitch, theta and their rates) to the motion at t, steps the FMU from t
     to t + dt and returns its outputs (Fx, Fy, Mz), the line force at t + dt."""
 
     def __init__(self, dat=None, q0=(0.0, 0.0, 0.0), qdot0=(0.0, 0.0, 0.0), path=None,
@@ -150,21 +168,26 @@ class MooringFmu:
                              modelIdentifier=self.md.coSimulation.modelIdentifier,
                              instanceName=instance_name)
         self.in_vr = [self.vr[n] for n in STATE_NAMES + RATE_NAMES]
+        self.in_vr6 = [self.vr[n] for n in POSE_NAMES + POSE_RATE_NAMES]
         self.out_vr = [self.vr[n] for n in ("Fx", "Fy", "Mz")]
         self.fmu.instantiate()
         self.fmu.setupExperiment(startTime=0.0)
         if dat is not None:
             self.fmu.setString([self.vr["mooringFile"]], [dat])
         self.fmu.enterInitializationMode()
-        self.fmu.setReal(self.in_vr, [float(x) for x in (*q0, *qdot0)])
+        self.fmu.setReal(self._inputs(q0), [float(x) for x in (*q0, *qdot0)])
         self.fmu.exitInitializationMode()
+
+    def _inputs(self, q):
+        """The inputs a planar state (3) or a whole motion (6) sets."""
+        return self.in_vr6 if len(q) == 6 else self.in_vr
 
     def initial_force(self):
         """The outputs (Fx, Fy, Mz) after initialisation: the static line force at q0."""
         return np.array(self.fmu.getReal(self.out_vr))
 
     def step(self, q, qdot, t, dt):
-        self.fmu.setReal(self.in_vr, [float(x) for x in (*q, *qdot)])
+        self.fmu.setReal(self._inputs(q), [float(x) for x in (*q, *qdot)])
         self.fmu.doStep(currentCommunicationPoint=t, communicationStepSize=dt)
         return np.array(self.fmu.getReal(self.out_vr))
 
@@ -197,13 +220,15 @@ def run_loop(body, duration, dt=1.0, dat=DEFAULT_DAT, mooring=Mooring, scheme="g
         raise ValueError(f"scheme must be gauss-seidel or jacobi, not {scheme!r}")
     n = int(round(duration / dt))
     rec = np.empty((n + 1, len(COLUMNS)))
-    q, qd = body.state()
-    with mooring(dat, q0=q, qdot0=qd) as mooring:
+    moving = getattr(body, "motion", body.state)
+    pose, rates = moving()
+    with mooring(dat, q0=pose, qdot0=rates) as mooring:
         held = mooring.initial_force() if scheme == "jacobi" else None
         for k in range(n):
             t = k * dt
             q, qd = body.state()
-            f = mooring.step(q, qd, t, dt)
+            pose, rates = moving()
+            f = mooring.step(pose, rates, t, dt)
             if scheme == "gauss-seidel":
                 held = f
             rec[k] = (t, *q, *qd, *held)

@@ -62,7 +62,12 @@ def quiet():
 
 
 def body6(q):
-    """(X, Y, theta) -> MoorDyn's 6-DOF coupled-body vector (x, y, z, roll, pitch, yaw)."""
+    """(X, Y, theta) -> MoorDyn's 6-DOF coupled-body vector (x, y, z, roll, pitch, yaw); a
+    6-DOF vector (X, Y, Z, roll, pitch, yaw) as it is (roll and pitch small rotations about
+    the inertial X and Y axes, which MoorDyn's Rx Ry Rz rotation takes unchanged to first
+    order: mooring/src/motion.rs)."""
+    if len(q) == 6:
+        return [float(x) for x in q]
     return [float(q[0]), float(q[1]), 0.0, 0.0, 0.0, float(q[2])]
 
 
@@ -75,7 +80,7 @@ class Mooring:
     """One MoorDyn instance of the spread mooring, driven in the horizontal plane.
 
     step(q, qdot, t, dt): the lines advance from t to t + dt while MoorDyn moves the
-    fairleads from q along qdot (its coupled-body kinematics are linear over a step: the
+    fairleads from q along qdot (planar (X, Y, theta) or the 6-DOF pose of body6) (its coupled-body kinematics are linear over a step: the
     position given is the one at t); returns the line force on the platform at t + dt as
     (Fx, Fy, Mz), inertial frame, about the body reference point.
     """

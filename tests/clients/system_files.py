@@ -214,10 +214,9 @@ def initial_value_problems(initial, variables_of):
     return problems
 
 
-# The mooring's inputs of the platform's out-of-plane motion: SlowDrift.fmu has no output
-# for them yet, so the system leaves them at their start value 0 (the platform in the
-# horizontal plane, the mooring's outputs those of the planar inputs alone).
-UNDRIVEN = {("mooring", n) for n in ("Z", "roll", "pitch", "Zdot", "rolldot", "pitchdot")}
+# Inputs that no output drives (none: the system connects SlowDrift's whole motion to all
+# twelve of the mooring's motion inputs).
+UNDRIVEN = set()
 
 
 def input_coverage_problems(pairs, variables_of):

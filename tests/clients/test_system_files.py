@@ -78,8 +78,8 @@ def test_schemas_catch_a_broken_file(system):
     good = text(system, "SlowDrift_OspModelDescription.xml")
     assert sf.schema_problems(md, good.replace('axis="z"', 'axis="yaw"', 1))
     # A port without its velocity group.
-    start = good.index("<LinearVelocity")
-    end = good.index("</LinearVelocity>") + len("</LinearVelocity>")
+    start = good.index('<LinearVelocity name="velocity">')
+    end = good.index("</LinearVelocity>", start) + len("</LinearVelocity>")
     assert sf.schema_problems(md, good[:start] + good[end:])
     oss = sf.osp_system_structure_schema()
     good = text(system, "OspSystemStructure.xml")
@@ -93,13 +93,22 @@ def test_osp_model_descriptions_match_the_fmus(system, variables_of):
                                                  variables_of[sim]) == [], sim
     # The groups an OSP user connects by meaning, with the FMUs' units.
     slowdrift, mooring = (groups_of(system)[s] for s in ("slowdrift", "mooring"))
+    # SlowDrift gives its whole motion (the totals), the mooring takes it.
     assert sf.group_variables(slowdrift, "linearMechanicalPort") == [
-        ("Fx_ext", "N", "x"), ("Fy_ext", "N", "y"), ("Xdot", "m/s", "x"), ("Ydot", "m/s", "y")]
+        ("Fx_ext", "N", "x"), ("Fy_ext", "N", "y"), ("Xdot_total", "m/s", "x"),
+        ("Ydot_total", "m/s", "y")]
     assert sf.group_variables(mooring, "linearMechanicalPort") == [
         ("Fx", "N", "x"), ("Fy", "N", "y"), ("Xdot", "m/s", "x"), ("Ydot", "m/s", "y")]
+    motion = {"position": (["X_total", "Y_total"], ["X", "Y"]),
+              "heading": (["yaw_total"], ["theta"]),
+              "heave": (["Z_total"], ["Z"]),
+              "rollPitch": (["roll_total", "pitch_total"], ["roll", "pitch"]),
+              "heaveVelocity": (["Zdot_total"], ["Zdot"]),
+              "rollPitchRate": (["rolldot_total", "pitchdot_total"], ["rolldot", "pitchdot"])}
+    for group, (platform, lines) in motion.items():
+        assert [v[0] for v in sf.group_variables(slowdrift, group)] == platform, group
+        assert [v[0] for v in sf.group_variables(mooring, group)] == lines, group
     for g in (slowdrift, mooring):
-        assert [v[0] for v in sf.group_variables(g, "position")] == ["X", "Y"]
-        assert [v[0] for v in sf.group_variables(g, "heading")] == ["theta"]
         assert [v[1] for v in sf.group_variables(g, "angularMechanicalPort")] == ["N.m", "rad/s"]
 
 
@@ -111,7 +120,7 @@ def test_osp_system_structure(system, variables_of):
     pairs, problems = sf.expand_group_connections(connections, groups_of(system), variables_of)
     assert problems == []
     assert sf.input_coverage_problems(pairs, variables_of) == []
-    assert len(pairs) == 9
+    assert len(pairs) == 15  # 12 motion inputs of the mooring, 3 force inputs of SlowDrift
 
 
 def test_ssp(system, variables_of):
