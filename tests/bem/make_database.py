@@ -22,6 +22,11 @@ SlowDrift's conventions (slowdrift_rao). Above 2.0 rad/s there is no RAO (the co
 columns are held fixed) and none is needed: the platform hardly moves there (surge 0.01 m/m
 at 1.6 rad/s). Before writing, the RAOs are checked against Capytaine's own
 `capytaine.post_pro.rao` on the same solution and matrices (capytaines_rao).
+
+With --keep-drift, OUT, its bi-directional table and MODEL are read rather than rewritten:
+everything recomputed must agree with them within KEEP_TOLERANCE of each component's largest
+value (the same solution: a re-solve differs from the committed one in round-off only), and
+OUT gets the new `rao` and `source` alone, its other bytes unchanged.
 """
 
 import argparse
@@ -50,6 +55,11 @@ SIGNIFICANT_DIGITS = 6
 # Capytaine's own RAOs of the same solution that is round-off (6 x 6 solves).
 RAO_DIGITS = 4
 RAO_ROUND_OFF = 1e-10
+# --keep-drift: the largest difference, as a fraction of each component's largest value,
+# between the recomputed drift, bi-directional drift, low-frequency added mass and model and
+# the committed ones (a re-solve of the same mesh differs in round-off: 8e-12 of the largest
+# in #29's, where a few values written to 6 digits changed in their 6th).
+KEEP_TOLERANCE = 1e-5
 # Mooring: the paper's natural periods in surge and sway (200 s) and yaw (100 s).
 SURGE_PERIOD = 200.0
 YAW_PERIOD = 100.0
@@ -157,6 +167,51 @@ def column_solver(slowdrift, omegas, heading_step_deg):
     return np.array(table["omegas"]), np.array(table["headings"]), t
 
 
+def largest_change(old, new):
+    """max |new - old| over the last axis's components, each as a fraction of that
+    component's largest |old| (a component zero throughout: as a fraction of 1)."""
+    old, new = np.asarray(old, float), np.asarray(new, float)
+    old, new = old.reshape(-1, old.shape[-1]), new.reshape(-1, new.shape[-1])
+    scale = np.abs(old).max(axis=0)
+    scale[scale == 0] = 1.0
+    return float((np.abs(new - old).max(axis=0) / scale).max())
+
+
+def kept(path, model_path, database, bidirectional, model):
+    """--keep-drift: the committed database at `path` with the recomputed `rao` and
+    `source`, its other fields untouched, after checking that what was recomputed
+    (`database`, `bidirectional`, `model`) is the committed data within KEEP_TOLERANCE."""
+    committed = json.loads(path.read_text())
+    committed_table = json.loads(path.with_name(path.stem + "_bidirectional.json").read_text())
+    committed_model = json.loads(model_path.read_text())
+    drift = lambda d: [[p[k] for k in ("omega", "heading", "surge", "sway", "yaw")]
+                       for p in d["drift"]]
+    whole = lambda m: np.ravel(m)[:, None]  # one component: scaled by the whole matrix
+    changes = {
+        "drift": largest_change(drift(committed), drift(database)),
+        "bidirectional drift": max(largest_change(committed_table[k], bidirectional[k])
+                                   for k in ("re", "im", "omegas", "headings")),
+        "low-frequency added mass": largest_change(whole(committed["low_frequency_added_mass"]),
+                                                   whole(database["low_frequency_added_mass"])),
+        "mass properties": largest_change(
+            [list(committed["mass_properties"].values())],
+            [list(database["mass_properties"].values())]),
+        "model": max(largest_change(whole(committed_model[k]), whole(model[k]))
+                     for k in ("inertia", "stiffness", "mooring_stiffness", "viscous_damping")),
+    }
+    print("--keep-drift: recomputed against committed, largest change as a fraction of each "
+          "component's largest: " + ", ".join(f"{k} {v:.2e}" for k, v in changes.items()))
+    if any(v > KEEP_TOLERANCE for v in changes.values()):
+        raise SystemExit(f"the recomputed data differ from the committed by more than "
+                         f"{KEEP_TOLERANCE}: regenerate without --keep-drift")
+    for key in ("format_version", "name", "water_density", "gravity", "stiffness", "qtf",
+                "provenance"):
+        if committed[key] != database[key]:
+            raise SystemExit(f"--keep-drift: the committed {key} is not this script's")
+    # Field order of this script's own output (rao before provenance).
+    return {k: database[k] if k in ("rao", "source") else committed[k] for k in database}
+
+
 def rounded(values, digits=SIGNIFICANT_DIGITS):
     """Nested lists of `values` to `digits` significant digits (the file's size; far below
     the solution's own accuracy)."""
@@ -171,6 +226,10 @@ def main():
                         help="the database to write (JSON; its bi-directional table beside it)")
     parser.add_argument("--model", required=True,
                         help="where to write the platform's 6-DOF model (JSON)")
+    parser.add_argument("--keep-drift", action="store_true",
+                        help="add the RAOs to the committed OUT, leaving the rest of OUT, its "
+                             "bi-directional table and MODEL as they are (after checking that "
+                             "they are what this solution gives)")
     args = parser.parse_args()
     bem = dict(np.load(args.bem))
     props, inertia, stiffness, mooring, damping, added, natural = platform_matrices(bem)
@@ -186,7 +245,8 @@ def main():
         "mooring_stiffness": mooring.tolist(), "viscous_damping": damping.tolist(),
         "natural_frequencies": {"heave": natural[2], "roll": natural[3], "pitch": natural[4]},
     }
-    pathlib.Path(args.model).write_text(json.dumps(model, indent=1) + "\n")
+    if not args.keep_drift:
+        pathlib.Path(args.model).write_text(json.dumps(model, indent=1) + "\n")
     t_bem = slowdrift_drift(bem, inertia, stiffness, damping)
     omega_bem, headings = bem["omega"], bem["heading"]
     x = semi_bem.motions(bem, inertia, stiffness, damping)
@@ -266,9 +326,12 @@ def main():
         "im": rounded(t[keep].imag),
     }
     out = pathlib.Path(args.out)
+    if args.keep_drift:
+        database = kept(out, pathlib.Path(args.model), database, bidirectional, model)
+    else:
+        out.with_name(out.stem + "_bidirectional.json").write_text(
+            json.dumps(bidirectional, separators=(",", ":")) + "\n")
     out.write_text(json.dumps(database, separators=(",", ":")) + "\n")
-    out.with_name(out.stem + "_bidirectional.json").write_text(
-        json.dumps(bidirectional, separators=(",", ":")) + "\n")
     print(f"{args.out}: {len(omegas)} frequencies x {len(headings)} headings; mass "
           f"{props['mass']:.5g} kg, yaw inertia {props['i_zz']:.5g} kg m^2, low-frequency added "
           f"mass {added[0, 0]:.5g} kg, {added[5, 5]:.5g} kg m^2; mooring "
