@@ -425,7 +425,7 @@ fn main() {
     }
     std::fs::remove_dir_all(&dir).ok();
 
-    // The part of each initialisation that reads the compiled-in database (about 0.6 MB of
+    // The part of each initialisation that reads the compiled-in database (about 1.0 MB of
     // JSON, parsed per instance).
     let parse = median(
         (0..15)
