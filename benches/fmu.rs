@@ -464,7 +464,7 @@ fn main() {
         if on <= 1.25 * off { "met" } else { "NOT met" }
     );
 
-    // The part of each initialisation that reads the compiled-in database (about 0.6 MB of
+    // The part of each initialisation that reads the compiled-in database (about 1.0 MB of
     // JSON, parsed per instance).
     let parse = median(
         (0..15)

@@ -2,14 +2,15 @@
 //! diffraction solution of the paper's columns on their pontoons (`tests/bem`, Capytaine; the
 //! column solver above 1.6-2.0 rad/s; docs/bem.md). Two JSON texts in the native format of
 //! `hydro::io::database`: the database without its bi-directional drift (read whenever the
-//! default is resolved, about 0.6 MB) and that table alone (about 5.6 MB, read only when a
-//! spread sea asks for it, see [`super::bidirectional::BidirectionalSource::Embedded`]).
+//! default is resolved, about 1.0 MB, of which 0.43 MB are its RAOs) and that table alone
+//! (about 5.6 MB, read only when a spread sea asks for it, see
+//! [`super::bidirectional::BidirectionalSource::Embedded`]).
 
 use super::bidirectional::BidirectionalTable;
 use super::io::database::HydroDatabase;
 use crate::error::Result;
 
-/// The database (drift table, mass properties, low-frequency added mass), without
+/// The database (drift table, mass properties, low-frequency added mass, RAOs), without
 /// `bidirectional_drift`.
 pub const DATABASE: &str = include_str!("default_platform.json");
 

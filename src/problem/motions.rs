@@ -48,7 +48,7 @@ impl Problem {
         let Some(motions) = &self.platform.motions else {
             return Ok(data.rao.as_ref().map(|table| FirstOrderMotions {
                 rao: table.to_rao(),
-                source: format!("the RAOs {} holds", data.name),
+                source: format!("held by {}", data.name),
                 natural_periods: Vec::new(),
             }));
         };

@@ -98,7 +98,8 @@ fn the_default_runs_the_database_platform() {
 }
 
 /// The default is resolved from precomputed data (no solver runs at start-up): the
-/// bi-directional drift is the embedded table, read when a spread sea needs it.
+/// bi-directional drift is the embedded table, read when a spread sea needs it, and the
+/// first-order motions are the embedded RAOs, which the run's summary names.
 #[test]
 fn default_resolves_from_tables() {
     let problem = default_problem().unwrap();
@@ -106,4 +107,125 @@ fn default_resolves_from_tables() {
         problem.hydro.bidirectional,
         Some(slowdrift::hydro::bidirectional::BidirectionalSource::Embedded { .. })
     ));
+    let motions = problem.first_order_motions().unwrap().unwrap();
+    assert_eq!(motions.rao, database().rao.unwrap().to_rao());
+    let summary = problem.summary().unwrap().join("\n");
+    assert!(
+        summary.contains("first-order motions: RAOs held by the embedded default_platform.json"),
+        "{summary}"
+    );
+}
+
+/// The embedded RAOs (the database's `rao`, tests/bem/make_database.py) in waves long
+/// against the platform (90 m wide; k L = 0.015 at 0.04 rad/s, 0.09 at 0.1 rad/s), against
+/// the long-wave limits of the moored floating body the data describe, which do not come
+/// from the radiation-diffraction solution. Conventions (SlowDrift's): elevation
+/// Re{e^{i (omega t - k (x cos b + y sin b))}} (deep water, k = omega^2 / g), motions
+/// Re{xi e^{i omega t}} about the body origin on the waterplane, the heading b the
+/// direction the waves travel towards, from +x; roll, pitch, yaw positive about +x, +y, +z.
+///
+/// - Surge and sway: the hull is uniformly dense (mass rho V), so the long wave's force
+///   (rho V + A11) i omega u (u = omega cos b, the water's velocity) drives the same mass
+///   M + A11 against the mooring, whose stiffness is set for a 200 s period with A11 at
+///   0.04 rad/s (docs/bem.md): xi = -i omega^2 / (omega^2 - omega_s^2) (cos b, sin b),
+///   omega_s = 2 pi / 200 s (unmoored: -i, the water particles' excursion). Checked at 0.04
+///   and 0.06 rad/s within 3 %: the Froude-Krylov force is the mesh's volume's, within
+///   0.3 % of V, which the near resonance amplifies 2.6 times at 0.04 rad/s.
+/// - Heave follows the surface, xi_3 -> 1 (the mooring has no heave stiffness), within
+///   (omega / omega_n)^2 = 0.03 and the excitation's long-wave shortfall (5 % together),
+///   and lags it as a damped oscillator with the viscous damping the model states (5 % of
+///   critical, B33 and omega_n = 0.2318 rad/s in tests/bem/platform_model.json):
+///   tan(lag) = omega B33 / (C33 (1 - (omega / omega_n)^2)), C33 = rho g 4 pi r^2 of the
+///   four columns (r = 10 m), within 1 % (the radiation damping, the excitation's own phase
+///   and A33's change from omega_n to 0.04 rad/s are all small there). Under e^{-i omega t}
+///   the lag would be a lead.
+/// - Pitch and roll tilt with the surface: i k cos b and -i k sin b, at 0.1 rad/s within
+///   10 % of k ((omega / omega_n)^2 = 0.12 with omega_n = 0.284 rad/s, partly cancelled by
+///   the wave's moment on the pontoons; at 0.04 rad/s the surge's resonance still pulls
+///   pitch through the added-mass coupling).
+/// - Yaw: none (the platform has two vertical planes of symmetry, x and y).
+///
+/// A conjugated table (the other time convention) fails every imaginary part; headings
+/// taken the other way round (-b) flip sway and roll; headings the waves come from (b +
+/// pi) flip surge and pitch; 90 degrees off swaps surge and sway.
+#[test]
+fn embedded_raos_meet_the_long_wave_limits() {
+    use rustfft::num_complex::Complex64;
+    use std::f64::consts::PI;
+    let db = database();
+    let table = db.rao.as_ref().expect("the default platform holds RAOs");
+    table.validate().unwrap();
+    let rao = table.to_rao();
+    let headings: Vec<f64> = (0..36).map(|h| (10.0 * h as f64).to_radians()).collect();
+    assert_eq!(rao.headings.len(), headings.len());
+    for (a, b) in rao.headings.iter().zip(&headings) {
+        assert!((a - b).abs() < 1e-12, "headings {:?}", rao.headings);
+    }
+    let at = |w: f64| {
+        rao.omegas
+            .iter()
+            .position(|&v| (v - w).abs() < 1e-9)
+            .unwrap_or_else(|| panic!("no {w} rad/s in {:?}", rao.omegas))
+    };
+    let (rho, g) = (db.water_density, db.gravity);
+    let i = Complex64::new(0.0, 1.0);
+    let model: serde_json::Value =
+        serde_json::from_str(include_str!("../bem/platform_model.json")).unwrap();
+    let b33 = model["viscous_damping"][2][2].as_f64().unwrap();
+    let omega_n = model["natural_frequencies"]["heave"].as_f64().unwrap();
+    let radius = default_scenario().unwrap().platform.columns[0].diameter / 2.0;
+    let c33 = rho * g * 4.0 * PI * radius * radius;
+    let omega_s = 2.0 * PI / 200.0;
+    let mut worst = [0.0_f64; 4];
+    for (h, &b) in headings.iter().enumerate() {
+        let (c, s) = (b.cos(), b.sin());
+        for w in [0.04, 0.06] {
+            let xi = rao.values[at(w)][h];
+            let limit = -i * w * w / (w * w - omega_s * omega_s);
+            let miss = ((xi[0] - limit * c).norm_sqr() + (xi[1] - limit * s).norm_sqr()).sqrt()
+                / limit.norm();
+            worst[0] = worst[0].max(miss);
+            assert!(
+                miss < 0.03,
+                "{w} rad/s, {:.0} deg: surge {} sway {} vs {} (cos, sin)",
+                b.to_degrees(),
+                xi[0],
+                xi[1],
+                limit
+            );
+        }
+        let w = 0.04;
+        let xi = rao.values[at(w)][h];
+        let oscillator = w * b33 / (c33 * (1.0 - (w / omega_n).powi(2)));
+        let lag = (-xi[2].arg()).tan() / oscillator;
+        worst[1] = worst[1].max((xi[2] - 1.0).norm());
+        worst[2] = worst[2].max((lag - 1.0).abs());
+        assert!((xi[2] - 1.0).norm() < 0.05, "{w} rad/s: heave {}", xi[2]);
+        assert!(
+            (lag - 1.0).abs() < 0.01,
+            "{w} rad/s: heave {} lags by {lag:.4} of the oscillator's {oscillator:.5}",
+            xi[2]
+        );
+        assert!(xi[5].norm() < 1e-3 * w * w / g, "{w} rad/s: yaw {}", xi[5]);
+        let w = 0.1;
+        let k = w * w / g;
+        let xi = rao.values[at(w)][h];
+        let miss = ((xi[3] + i * k * s).norm_sqr() + (xi[4] - i * k * c).norm_sqr()).sqrt() / k;
+        worst[3] = worst[3].max(miss);
+        assert!(
+            miss < 0.1,
+            "{w} rad/s, {:.0} deg: roll {} pitch {} vs k = {k}",
+            b.to_degrees(),
+            xi[3],
+            xi[4]
+        );
+    }
+    eprintln!(
+        "embedded RAOs against the long-wave limits, worst over 36 headings: surge and sway \
+         {:.2} %, heave {:.2} %, heave's lag {:.2} %, roll and pitch {:.2} % of k",
+        100.0 * worst[0],
+        100.0 * worst[1],
+        100.0 * worst[2],
+        100.0 * worst[3]
+    );
 }

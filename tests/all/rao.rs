@@ -582,13 +582,13 @@ fn import_fills_first_order_and_rao_and_the_database_keeps_them() {
     );
 }
 
-/// Databases written before `first_order` and `rao` existed still read (the embedded
-/// default platform's, and a small hand-written one), with neither; a `rao` of the wrong
-/// shape is refused naming its field and line.
+/// Databases written before `first_order` and `rao` existed still read (a small
+/// hand-written one), with neither, and the embedded default platform's has its RAOs and no
+/// first-order coefficients; a `rao` of the wrong shape is refused naming its field and line.
 #[test]
 fn old_databases_read_and_bad_rao_is_refused() {
     let db = default_platform::database().unwrap();
-    assert!(db.first_order.is_none() && db.rao.is_none());
+    assert!(db.first_order.is_none() && db.rao.is_some());
     let old = r#"{"format_version": 1, "name": "old", "source": "hand", "water_density": 1025.0,
         "gravity": 9.80665, "mass_properties": null, "low_frequency_added_mass": null,
         "stiffness": null, "drift": [{"omega": 0.5, "heading": 0.0, "surge": 1.0, "sway": 0.0,

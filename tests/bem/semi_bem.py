@@ -83,17 +83,19 @@ def symmetric(quarter):
     return cpt.ReflectionSymmetricMesh(half=half, plane="yOz")
 
 
-def floating_body(size, props):
+def floating_body(size, props, rotation_center=None):
     """The platform's wetted surface (panels of about `size` m) with a lid on its waterplane
     (Capytaine's extended boundary integral, which removes the irregular frequencies; the
     first of the columns' interior lies near 1.5 rad/s, inside the band), six rigid DOFs
-    about the centre of gravity."""
+    about the centre of gravity (or about `rotation_center`)."""
     import capytaine as cpt
     quarter = geometry.quarter_mesh(size)
     mesh = symmetric(quarter)
     lid = symmetric(quarter.generate_lid())
     centre = (0.0, 0.0, props["z_g"])
-    return cpt.FloatingBody(mesh=mesh, lid_mesh=lid, dofs=cpt.rigid_body_dofs(rotation_center=centre),
+    rotation_center = centre if rotation_center is None else rotation_center
+    return cpt.FloatingBody(mesh=mesh, lid_mesh=lid,
+                            dofs=cpt.rigid_body_dofs(rotation_center=rotation_center),
                             center_of_mass=centre, mass=props["mass"], name=f"platform {size} m")
 
 

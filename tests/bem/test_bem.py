@@ -11,6 +11,7 @@ import pathlib
 
 import numpy as np
 import pytest
+import xarray as xr
 from scipy.special import h1vp
 
 import make_database
@@ -115,13 +116,24 @@ def test_coarse_mesh_reproduces_the_database(database):
     """Capytaine on the coarsest mesh of the convergence study (3 m panels) at two
     frequencies of the database, with the committed 6-DOF model, gives the database's mean
     and bi-directional drift within 3 % of the largest value of each component there (the
-    study's change from 3 m to 2 m panels is at most 1.6 %)."""
+    study's change from 3 m to 2 m panels is at most 1.6 %), and its RAOs within 3 % of each
+    DOF's largest there."""
     model = json.loads(MODEL.read_text())
     omegas = np.array([0.52, 1.0])
     bem = semi_bem.solve(3.0, omegas, solve_platform.HEADINGS, solve_platform.N_THETA)
-    t = make_database.slowdrift_drift(bem, np.array(model["inertia"]), np.array(model["stiffness"]),
-                                      np.array(model["viscous_damping"]))
+    matrices = [np.array(model[k]) for k in ("inertia", "stiffness", "viscous_damping")]
+    t = make_database.slowdrift_drift(bem, *matrices)
+    rao = make_database.slowdrift_rao(semi_bem.motions(bem, *matrices),
+                                      model["centre_of_gravity_z"])
     database, table = database
+    stored = database["rao"]
+    assert np.allclose(stored["headings"], solve_platform.HEADINGS)
+    at = [int(np.argmin(np.abs(np.array(stored["omegas"]) - w))) for w in omegas]
+    assert np.allclose(np.array(stored["omegas"])[at], omegas)
+    stored = (np.array(stored["re"]) + 1j * np.array(stored["im"]))[at]
+    change = np.abs(rao - stored).max(axis=(0, 1)) / np.abs(stored).max(axis=(0, 1))
+    print("RAOs of the 3 m mesh against the database's, per DOF:", np.round(change, 4))
+    assert (change < 0.03).all()
     headings = np.array(table["headings"])
     assert np.allclose(headings, solve_platform.HEADINGS)
     for n, w in enumerate(omegas):
@@ -148,3 +160,86 @@ def test_coarse_mesh_reproduces_the_low_frequency_added_mass(database):
     stored = np.array(database["low_frequency_added_mass"])
     for i in range(3):
         assert stored[i][i] == pytest.approx(fresh[i, i], rel=0.015), (i, stored[i][i], fresh[i, i])
+
+
+def rao_solution(body, omegas, headings, inertia, hydrostatics):
+    """Capytaine's dataset of `body` (deep water) with the body's inertia and hydrostatic
+    stiffness given the way Capytaine's `rao` reads them (on the body, copied into the
+    dataset by fill_dataset), and the same solution as semi_bem.solve's plain arrays."""
+    import capytaine as cpt
+    body.inertia_matrix = body.add_dofs_labels_to_matrix(inertia)
+    body.hydrostatic_stiffness = body.add_dofs_labels_to_matrix(hydrostatics)
+    test_matrix = xr.Dataset(coords={
+        "omega": omegas, "wave_direction": headings, "radiating_dof": list(body.dofs),
+        "water_depth": [np.inf], "rho": [semi_bem.RHO], "g": [semi_bem.G]})
+    ds = cpt.BEMSolver().fill_dataset(test_matrix, body, progress_bar=False, hydrostatics=True)
+    square = ("omega", "influenced_dof", "radiating_dof")
+    bem = {"omega": omegas, "heading": headings, "dofs": np.array(list(body.dofs)),
+           "added_mass": ds["added_mass"].transpose(*square).values,
+           "radiation_damping": ds["radiation_damping"].transpose(*square).values,
+           "excitation": ds["excitation_force"].transpose(
+               "omega", "wave_direction", "influenced_dof").values}
+    return ds, bem
+
+
+def test_rao_route_against_capytaines_own_rao():
+    """The route make_database writes the database's `rao` with (semi_bem.motions, then
+    make_database.slowdrift_rao) on a fresh solution of the platform (4 m panels, near the
+    heave resonance and at the sea's peak, head, oblique and beam seas), with the committed
+    6-DOF model, against Capytaine's own `capytaine.post_pro.rao` (inertia and hydrostatic
+    stiffness on the body, the mooring as its `stiffness`, the viscous damping as its
+    `dissipation`):
+
+    - the same solution, DOFs about the centre of gravity G: semi_bem.motions is Capytaine's
+      RAO to round-off;
+    - a second body whose rotations are about the body origin O, solved afresh by Capytaine,
+      with the model moved to O by the kinematics of a rigid body, q_G = T q_O (t_G = t_O +
+      theta x (G - O)), so that each matrix K becomes T^T K T (the same energies; the
+      mooring acts on G's displacement): its RAO, conjugated to SlowDrift's e^{+i omega t},
+      is the route's to round-off. The route without its conjugation, or without moving the
+      translations to O, misses it by far.
+
+    Conventions: Capytaine's RAOs are per unit amplitude of Re[e^{i k (x cos b + y sin b) -
+    i omega t}], SlowDrift's of Re[e^{i (omega t - k (x cos b + y sin b))}]; both headings are
+    the direction the wave travels towards, from +x."""
+    model = json.loads(MODEL.read_text())
+    inertia, stiffness = np.array(model["inertia"]), np.array(model["stiffness"])
+    mooring, damping = np.array(model["mooring_stiffness"]), np.array(model["viscous_damping"])
+    hydrostatics = stiffness - mooring
+    props = semi_bem.mass_properties()
+    z_g = props["z_g"]
+    omegas = np.array([0.24, 0.52])
+    headings = np.radians([0.0, 30.0, 90.0])
+    from capytaine.post_pro.rao import rao
+
+    def capytaine(ds, mooring, damping):
+        labelled = lambda m: xr.DataArray(m, dims=("influenced_dof", "radiating_dof"),
+                                          coords={"influenced_dof": ds["influenced_dof"].values,
+                                                  "radiating_dof": ds["radiating_dof"].values})
+        x = rao(ds, dissipation=labelled(damping), stiffness=labelled(mooring))
+        return x.squeeze(drop=True).transpose("omega", "wave_direction", "radiating_dof").values
+
+    about_g = semi_bem.floating_body(4.0, props)
+    ds_g, bem_g = rao_solution(about_g, omegas, headings, inertia, hydrostatics)
+    x_g = semi_bem.motions(bem_g, inertia, stiffness, damping)
+    own_g = capytaine(ds_g, mooring, damping)
+    scale = np.abs(own_g).max(axis=(0, 1))
+    same = (np.abs(x_g - own_g).max(axis=(0, 1)) / scale).max()
+
+    t = np.eye(6)
+    t[0, 4], t[1, 3] = z_g, -z_g
+    moved = lambda k: t.T @ k @ t
+    about_o = semi_bem.floating_body(4.0, props, rotation_center=(0.0, 0.0, 0.0))
+    ds_o, _ = rao_solution(about_o, omegas, headings, moved(inertia), moved(hydrostatics))
+    own_o = np.conj(capytaine(ds_o, moved(mooring), moved(damping)))
+    route = make_database.slowdrift_rao(x_g, z_g)
+    scale = np.abs(own_o).max(axis=(0, 1))
+    miss = lambda x: (np.abs(x - own_o).max(axis=(0, 1)) / scale).max()
+    unconjugated = np.conj(route)
+    untranslated = np.conj(x_g)
+    print(f"RAO route vs Capytaine's rao: same solution (about G) {same:.1e}; about O, solved "
+          f"afresh, {miss(route):.1e}; without the conjugation {miss(unconjugated):.2f}, "
+          f"without the move to O {miss(untranslated):.2f} of each DOF's largest")
+    assert same < 1e-10
+    assert miss(route) < 1e-9
+    assert miss(unconjugated) > 0.1 and miss(untranslated) > 0.1
