@@ -179,18 +179,7 @@ impl Problem {
         if band == default || band.0 >= band.1 {
             return None;
         }
-        let variance = |a: f64, b: f64| {
-            if b <= a {
-                return 0.0;
-            }
-            let panels = 400;
-            let h = (b - a) / panels as f64;
-            let density = |w: f64| self.sea.spectrum.density(w);
-            let inner: f64 = (1..panels)
-                .map(|i| if i % 2 == 1 { 4.0 } else { 2.0 } * density(a + i as f64 * h))
-                .sum();
-            (density(a) + inner + density(b)) * h / 3.0
-        };
+        let variance = |a: f64, b: f64| self.sea_variance(a, b);
         let total = variance(default.0, default.1);
         let left_out = (variance(default.0, band.0) + variance(band.1, default.1)) / total;
         (left_out <= DEFAULT_BAND_TRIM_LIMIT).then_some(BandTrim {
@@ -198,6 +187,21 @@ impl Problem {
             band,
             variance_left_out: left_out,
         })
+    }
+
+    /// The elevation variance of the sea between `a` and `b` rad/s (m^2): Simpson's rule on
+    /// 400 panels of the spectrum's density; zero when b <= a.
+    pub(crate) fn sea_variance(&self, a: f64, b: f64) -> f64 {
+        if b <= a {
+            return 0.0;
+        }
+        let panels = 400;
+        let h = (b - a) / panels as f64;
+        let density = |w: f64| self.sea.spectrum.density(w);
+        let inner: f64 = (1..panels)
+            .map(|i| if i % 2 == 1 { 4.0 } else { 2.0 } * density(a + i as f64 * h))
+            .sum();
+        (density(a) + inner + density(b)) * h / 3.0
     }
 
     /// The drift table with the wave-drift damping a run of this problem uses: the table's

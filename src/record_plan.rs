@@ -447,6 +447,7 @@ fn motion_on_grid(
     let Some(motions) = problem.first_order_motions()? else {
         return Ok(None);
     };
+    problem.check_rao_gap(&motions.rao)?;
     yaws.iter()
         .map(|&yaw| motion_transfers(&motions.rao, grid, directions, yaw))
         .collect::<Result<Vec<_>>>()

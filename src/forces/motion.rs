@@ -18,7 +18,9 @@
 //! the records are interpolated linearly in the instantaneous slow yaw, as the force records
 //! are (`forces::yaw_following`). The RAOs are interpolated linearly in frequency and in the
 //! relative heading (real and imaginary parts apart), across the closing gap when their
-//! headings cover the circle, and never beyond their grid.
+//! headings cover the circle, and never beyond their grid: outside their frequencies the
+//! motion is zero, which the problem allows for at most 1 % of the band's variance
+//! (`Problem::check_rao_gap`), and a relative heading outside their headings is refused.
 //!
 //! Cost: the position and the velocity of two DOFs share one transform (two real series in
 //! one, `Synthesizer::append_two_real_series`): six transforms per segment and body yaw,
@@ -28,7 +30,6 @@
 use super::record::{Record, SamplePoint};
 use super::synthesis::Synthesizer;
 use super::yaw_following::YawPoint;
-use crate::error::numbers::written;
 use crate::error::{Error, Result};
 use crate::hydro::heading_grid::heading_bracket;
 use crate::hydro::rao::Rao;
@@ -44,9 +45,9 @@ pub struct MotionTransfer {
 }
 
 /// The RAOs of every direction of `directions` on `grid`'s frequencies, at the relative
-/// headings beta_k - `yaw`. Refused: a frequency of the band outside the RAOs' frequencies,
-/// a relative heading outside their headings (nothing is extrapolated); the error names the
-/// gap and the remedies.
+/// headings beta_k - `yaw`; zero at a frequency outside the RAOs' (the problem bounds the
+/// variance there: `Problem::check_rao_gap`). Refused: a relative heading outside their
+/// headings (nothing is extrapolated); the error names the gap and the remedies.
 pub fn motion_transfers(
     rao: &Rao,
     grid: &FrequencyGrid,
@@ -55,21 +56,9 @@ pub fn motion_transfers(
 ) -> Result<Vec<MotionTransfer>> {
     let omegas = &rao.omegas;
     let (lo, hi) = (omegas[0], omegas[omegas.len() - 1]);
-    let (band_lo, band_hi) = (grid.omega(0), grid.omega(grid.count - 1));
-    if band_lo < lo * (1.0 - FREQUENCY_MATCH_TOLERANCE)
-        || band_hi > hi * (1.0 + FREQUENCY_MATCH_TOLERANCE)
-    {
-        return Err(Error::invalid(
-            "first-order motions",
-            format!("RAOs on [{}, {}] rad/s", written(lo), written(hi)),
-            format!(
-                "do not cover the wave band [{:.4}, {:.4}] rad/s (nothing is extrapolated): \
-                 narrow [sea] band, give RAOs over the band, or turn the wave-frequency \
-                 motion off ([model] wave_frequency_motion = \"off\")",
-                band_lo, band_hi
-            ),
-        ));
-    }
+    let covered = |w: f64| {
+        w >= lo * (1.0 - FREQUENCY_MATCH_TOLERANCE) && w <= hi * (1.0 + FREQUENCY_MATCH_TOLERANCE)
+    };
     directions
         .iter()
         .map(|d| {
@@ -94,6 +83,9 @@ pub fn motion_transfers(
             };
             let transfer = (0..grid.count)
                 .map(|j| {
+                    if !covered(grid.omega(j)) {
+                        return [Complex64::default(); 6];
+                    }
                     let w = grid.omega(j).clamp(lo, hi);
                     let upper = omegas
                         .partition_point(|&v| v <= w)
@@ -117,6 +109,25 @@ pub fn motion_transfers(
 pub struct MotionSet {
     pub position: [Record; 6],
     pub velocity: [Record; 6],
+}
+
+impl MotionSet {
+    /// Record `i` of position (0 .. 6) then velocity (6 .. 12).
+    fn record_mut(&mut self, i: usize) -> &mut Record {
+        if i < 6 {
+            &mut self.position[i]
+        } else {
+            &mut self.velocity[i - 6]
+        }
+    }
+}
+
+/// Writes `samples` into `record`, reusing its buffer.
+fn refill(record: &mut Record, samples: impl Iterator<Item = f64>) {
+    let mut buffer = std::mem::take(record).into_samples();
+    buffer.clear();
+    buffer.extend(samples);
+    *record = Record::new(buffer);
 }
 
 /// The wave-frequency motion records of a segment: one set at zero yaw, or one per yaw of
@@ -166,8 +177,6 @@ impl MotionRecords {
                     *v = i_omega(j) * c;
                 }
             }
-            let records = set.position.iter_mut().chain(set.velocity.iter_mut());
-            let mut records: Vec<&mut Record> = records.collect();
             for pair in 0..6 {
                 let (x, y) = (2 * pair, 2 * pair + 1);
                 work.series.clear();
@@ -176,14 +185,8 @@ impl MotionRecords {
                     &work.coefficients[y],
                     &mut work.series,
                 );
-                let mut xs = std::mem::take(records[x]).into_samples();
-                xs.clear();
-                xs.extend(work.series.iter().map(|c| c.re));
-                *records[x] = Record::new(xs);
-                let mut ys = std::mem::take(records[y]).into_samples();
-                ys.clear();
-                ys.extend(work.series.iter().map(|c| c.im));
-                *records[y] = Record::new(ys);
+                refill(set.record_mut(x), work.series.iter().map(|c| c.re));
+                refill(set.record_mut(y), work.series.iter().map(|c| c.im));
             }
         }
     }

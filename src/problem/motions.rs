@@ -88,6 +88,56 @@ impl Problem {
     }
 }
 
+impl Problem {
+    /// The share of the simulated band's elevation variance at frequencies the RAOs do not
+    /// reach (below their first or above their last frequency), where the wave-frequency
+    /// motion takes them as zero (`forces::motion`); and the RAOs' range, rad/s.
+    pub fn rao_gap(&self, rao: &Rao) -> (f64, (f64, f64)) {
+        let (lo, hi) = (rao.omegas[0], rao.omegas[rao.omegas.len() - 1]);
+        let (a, b) = self.band();
+        let tolerance = crate::model::FREQUENCY_MATCH_TOLERANCE;
+        let below = if a < lo * (1.0 - tolerance) {
+            self.sea_variance(a, lo.min(b))
+        } else {
+            0.0
+        };
+        let above = if b > hi * (1.0 + tolerance) {
+            self.sea_variance(hi.max(a), b)
+        } else {
+            0.0
+        };
+        let total = self.sea_variance(a, b);
+        let share = if total > 0.0 {
+            (below + above) / total
+        } else {
+            0.0
+        };
+        (share, (lo, hi))
+    }
+
+    /// [`Problem::rao_gap`] within [`super::DEFAULT_BAND_TRIM_LIMIT`] of the band's variance,
+    /// else refused naming the first-order motions, the RAOs' range and the band.
+    pub fn check_rao_gap(&self, rao: &Rao) -> Result<()> {
+        let (share, (lo, hi)) = self.rao_gap(rao);
+        if share <= super::DEFAULT_BAND_TRIM_LIMIT {
+            return Ok(());
+        }
+        let (a, b) = self.band();
+        Err(Error::invalid(
+            "first-order motions",
+            format!("RAOs on [{}, {}] rad/s", written(lo), written(hi)),
+            format!(
+                "leave out {:.1} % of the variance of the wave band [{a:.4}, {b:.4}] rad/s (at \
+                 most {} % may be left without motion; nothing is extrapolated): narrow [sea] \
+                 band, give RAOs over the band, or turn the wave-frequency motion off ([model] \
+                 wave_frequency_motion = \"off\")",
+                share * 100.0,
+                super::DEFAULT_BAND_TRIM_LIMIT * 100.0
+            ),
+        ))
+    }
+}
+
 /// The rigid body of `[platform.motions]` with the platform's `mass`.
 fn rigid_body(mass: f64, motions: &Motions) -> RigidBody {
     match motions.inertia {

@@ -112,8 +112,17 @@ impl Problem {
             ),
             (_, true) => format!(
                 "{}; wave-frequency motion: on (outputs *_wf and *_total; the slow-drift \
-                 equations do not use it)",
-                motions.0
+                 equations do not use it){}",
+                motions.0,
+                self.first_order_motions()?
+                    .map(|m| self.rao_gap(&m.rao))
+                    .filter(|(share, _)| *share > 0.0)
+                    .map(|(share, (lo, hi))| format!(
+                        "; the RAOs span {lo} to {hi} rad/s, the band outside ({:.2} % of its \
+                         variance) moves the body not at all",
+                        share * 100.0
+                    ))
+                    .unwrap_or_default()
             ),
             (_, false) => motions.0,
         })

@@ -447,3 +447,35 @@ fn yaw_following_motion_is_the_sea_at_the_relative_heading() {
         }
     }
 }
+
+/// RAOs that leave more than 1 % of the band's variance without motion are refused, naming
+/// the RAOs' range and the switch; with the motion off the same sea runs. The embedded
+/// default's RAOs end at 2 rad/s, inside its default band (0.26 .. 2.09 rad/s), and its
+/// summary states the share left out.
+#[test]
+fn raos_that_miss_the_band_are_refused_unless_the_motion_is_off() {
+    let mut problem = slowdrift::problem::default_problem().unwrap();
+    let summary = problem.summary().unwrap().join("\n");
+    assert!(
+        summary.contains("the RAOs span 0.04 to 2 rad/s, the band outside (0.08 % of its variance)"),
+        "{summary}"
+    );
+    problem.sea.band = Some((0.5, 3.0));
+    match &mut problem.sea.spectrum {
+        slowdrift::sea_state::Spectrum::Jonswap { tp, hs, .. } => {
+            *tp = 5.0;
+            *hs = 2.0;
+        }
+        other => panic!("{other:?}"),
+    }
+    problem.run.duration = 100.0;
+    let message = Simulation::new(problem.clone()).unwrap_err().to_string();
+    assert!(
+        message.contains("first-order motions")
+            && message.contains("RAOs on [0.04, 2] rad/s")
+            && message.contains("wave_frequency_motion = \"off\""),
+        "{message}"
+    );
+    problem.model.wave_frequency_motion = slowdrift::model::WaveFrequencyMotion::Off;
+    Simulation::new(problem).unwrap();
+}
