@@ -457,7 +457,8 @@ fn raos_that_miss_the_band_are_refused_unless_the_motion_is_off() {
     let mut problem = slowdrift::problem::default_problem().unwrap();
     let summary = problem.summary().unwrap().join("\n");
     assert!(
-        summary.contains("the RAOs span 0.04 to 2 rad/s, the band outside (0.08 % of its variance)"),
+        summary
+            .contains("the RAOs span 0.04 to 2 rad/s, the band outside (0.08 % of its variance)"),
         "{summary}"
     );
     problem.sea.band = Some((0.5, 3.0));
