@@ -12,6 +12,8 @@ both runs. Asserted, each from an independent route:
   default platform's RAOs, whose rms is set by its spectrum; the fairleads' wave-frequency
   motion stretches the lines at wave frequencies, so the tension's standard deviation grows
   (dynamic tension, absent from a mooring that follows the slow drift alone);
+- the lines' drag under the fairleads' wave-frequency motion damps the slow drift (Huse's
+  mooring-line damping): in the same sea the slow-drift surge varies less about its mean;
 - the slow drift's mean offset stays the lines' static one within the scatter of a mean:
   the wave-frequency motion has zero mean and the slow-drift equations take the lines'
   horizontal force as before.
@@ -95,18 +97,22 @@ def test_the_whole_motion_drives_the_lines(runs):
     rows = []
     for label, slow, lines in (("with", on, lines_on), ("without", off, lines_off)):
         busiest = max(TENSIONS, key=lambda n: lines[n][TRANSIENT:].mean())
+        surge = slow["X"][TRANSIENT:]
         rows.append((label, statistics(lines["fairleadTensionMax"]), busiest,
-                     statistics(lines[busiest]), slow["X"][TRANSIENT:].mean(),
-                     np.sqrt(np.mean(slow["X"][TRANSIENT:] ** 2))))
+                     statistics(lines[busiest]), surge.mean(), np.sqrt(np.mean(surge ** 2)),
+                     surge.std()))
     print("\nwave-frequency motion | largest fairlead tension mean, std, max (MN) | "
-          "most loaded line: mean, std, max (MN) | slow-drift surge mean, rms (m)")
-    for label, (m, s, x), busiest, (bm, bs, bx), mean, rms in rows:
+          "most loaded line: mean, std, max (MN) | slow-drift surge mean, rms, std (m)")
+    for label, (m, s, x), busiest, (bm, bs, bx), mean, rms, std in rows:
         print(f"{label:<8} | {m / 1e6:.3f} {s / 1e6:.3f} {x / 1e6:.3f} | {busiest}: "
-              f"{bm / 1e6:.3f} {bs / 1e6:.3f} {bx / 1e6:.3f} | {mean:.3f} {rms:.3f}")
+              f"{bm / 1e6:.3f} {bs / 1e6:.3f} {bx / 1e6:.3f} | {mean:.3f} {rms:.3f} {std:.3f}")
     print(f"heave rms with the motion {heave:.3f} m")
     with_std, without_std = rows[0][1][1], rows[1][1][1]
     # Dynamic tension from the fairleads' wave-frequency motion.
     assert with_std > without_std, (with_std, without_std)
+    # The lines' drag under the wave-frequency motion damps the slow drift (Huse's
+    # mooring-line damping): the same sea, less slow-drift surge about its mean.
+    assert rows[0][6] < rows[1][6], (rows[0][6], rows[1][6])
     # The mean offset: the same static lines, within the scatter of the mean of each run.
     scatter = [mean_scatter(x["X"][TRANSIENT:], 1.0, T_CORR) for x in (on, off)]
     assert abs(rows[0][4] - rows[1][4]) < 3.0 * np.hypot(*scatter), (rows, scatter)
