@@ -207,11 +207,16 @@ class MooringFmu:
         self.close()
 
 
-def run_loop(body, duration, dt=1.0, dat=DEFAULT_DAT, mooring=Mooring, scheme="gauss-seidel"):
+def run_loop(body, duration, dt=1.0, dat=DEFAULT_DAT, mooring=Mooring, scheme="gauss-seidel",
+             zero_start=False):
     """Couple body and the MoorDyn mooring explicitly for duration seconds of steps dt.
     mooring: the class of the mooring model (MoorDyn through its Python API, Mooring, or
     through the mooring FMU, MooringFmu; the Jacobi scheme needs MooringFmu's
     initial_force). scheme: "gauss-seidel" or "jacobi" (module docstring).
+
+    zero_start: the mooring starts from inputs 0 (initialised, and given for its first step,
+    at the origin at rest) as fmpy's SSP master starts every connector at 0, instead of the
+    body's motion at t_0.
 
     Returns an array with COLUMNS: row n holds the state at t_n and the force applied over
     the step from t_n (the last row's force is the last one MoorDyn returned).
@@ -222,12 +227,15 @@ def run_loop(body, duration, dt=1.0, dat=DEFAULT_DAT, mooring=Mooring, scheme="g
     rec = np.empty((n + 1, len(COLUMNS)))
     moving = getattr(body, "motion", body.state)
     pose, rates = moving()
+    if zero_start:
+        pose, rates = np.zeros_like(pose), np.zeros_like(rates)
     with mooring(dat, q0=pose, qdot0=rates) as mooring:
         held = mooring.initial_force() if scheme == "jacobi" else None
         for k in range(n):
             t = k * dt
             q, qd = body.state()
-            pose, rates = moving()
+            if k > 0 or not zero_start:
+                pose, rates = moving()
             f = mooring.step(pose, rates, t, dt)
             if scheme == "gauss-seidel":
                 held = f
@@ -252,6 +260,15 @@ def run_free(body, duration, dt=1.0):
     q, qd = body.state()
     rec[n, :7] = (n * dt, *q, *qd)
     return rec
+
+
+def slow_part(x, dt, window=60.0):
+    """The moving average of x over `window` seconds (edges shrink the window): the slow
+    part of a record whose wave-frequency part (periods below 20 s, from the fairleads'
+    wave-frequency motion) the average removes."""
+    n = max(1, int(round(window / dt)))
+    kernel = np.ones(n)
+    return np.convolve(x, kernel, mode="same") / np.convolve(np.ones(len(x)), kernel, mode="same")
 
 
 def mean_scatter(x, dt, t_corr):

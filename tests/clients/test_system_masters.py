@@ -15,7 +15,10 @@ How the schemes differ, and what agreement they allow:
   mooring FMU) makes the same calls with the same values as these masters, so each master's
   run must equal it bit for bit: every state and every held force, all 10800 steps. Any
   difference (a parameter or a connection the master ignored, another ordering, a step
-  stamped differently) fails.
+  stamped differently) fails. fmpy's SSP master starts every connector at 0, so the mooring
+  it runs starts from the origin at rest rather than from the platform's whole motion at
+  t_0 (which has wave-frequency heave and pitch): its reference is the Jacobi loop started
+  so (run_loop(zero_start=True)).
 - The Jacobi and Gauss-Seidel loops differ by one step of delay in the force: for the lines'
   surge stiffness K the Gauss-Seidel loop's force leads the mid-step force by dt / 2 (a
   numerical damping + K dt / 2), the Jacobi loop's lags by dt / 2 (- K dt / 2): damping
@@ -43,7 +46,8 @@ import pytest
 
 import mean_offset
 import system_masters as sm
-from mooring_loop import LINES_ONLY, FmuBody, MooringFmu, default_experiment, mean_scatter, run_loop
+from mooring_loop import (LINES_ONLY, FmuBody, MooringFmu, default_experiment, mean_scatter,
+                          run_loop, slow_part)
 from system_files import system_dir
 
 MASTERS = ("libcosim", "ecos", "fmpy")
@@ -69,6 +73,16 @@ def jacobi(fmu, mooring_fmu, steps):
 
 
 @pytest.fixture(scope="module")
+def jacobi_from_zero(fmu, mooring_fmu, steps):
+    """The Jacobi glue loop with the mooring started from inputs 0, as fmpy's SSP master
+    starts every connector (the platform's whole motion at t_0 is not 0: its wave-frequency
+    heave and pitch)."""
+    with FmuBody(fmu, LINES_ONLY, instance_name="jacobi-zero") as body:
+        return run_loop(body, float(steps), 1.0, dat=None, mooring=MooringFmu, scheme="jacobi",
+                        zero_start=True)
+
+
+@pytest.fixture(scope="module")
 def runs(fmu, mooring_fmu, steps):
     system = system_dir(fmu)
     out = {}
@@ -80,8 +94,9 @@ def runs(fmu, mooring_fmu, steps):
 
 
 @pytest.mark.parametrize("master", MASTERS)
-def test_master_equals_the_jacobi_glue_loop(runs, jacobi, master):
-    assert sm.differences(runs[master], sm.Run.from_record(jacobi)) == []
+def test_master_equals_the_jacobi_glue_loop(runs, jacobi, jacobi_from_zero, master):
+    reference = jacobi_from_zero if master == "fmpy" else jacobi
+    assert sm.differences(runs[master], sm.Run.from_record(reference)) == []
     assert np.max(np.abs(runs[master].states[:, 0])) > 1.0, "the platform moves"
 
 
@@ -90,7 +105,8 @@ def test_master_bounded_with_the_static_stiffness_offset(runs, glue_runs, stiffn
     rec = runs[master].record()
     assert np.all(np.isfinite(rec))
     assert np.max(np.abs(rec[:, 1:3])) < BOUND and np.max(np.abs(rec[:, 3])) < BOUND_YAW
-    assert np.corrcoef(rec[:-1, 1], rec[:-1, 7])[0, 1] < -0.9, "the line force restores"
+    slow_force = slow_part(rec[:-1, 7], glue_runs["dt"])
+    assert np.corrcoef(rec[:-1, 1], slow_force)[0, 1] < -0.9, "the line force restores"
     diff, tol, report = mean_offset.check(rec, glue_runs["linear"], glue_runs["K"], stiffness,
                                           glue_runs["dt"], label=master)
     print(f"\n{master}: {report}")
