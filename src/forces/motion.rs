@@ -86,13 +86,13 @@ pub fn motion_transfers(
                     if !covered(grid.omega(j)) {
                         return [Complex64::default(); 6];
                     }
+                    if omegas.len() == 1 {
+                        return along(0);
+                    }
                     let w = grid.omega(j).clamp(lo, hi);
                     let upper = omegas
                         .partition_point(|&v| v <= w)
                         .clamp(1, omegas.len() - 1);
-                    if omegas.len() == 1 {
-                        return along(0);
-                    }
                     let s = (w - omegas[upper - 1]) / (omegas[upper] - omegas[upper - 1]);
                     let (a, b) = (along(upper - 1), along(upper));
                     std::array::from_fn(|i| a[i] * (1.0 - s) + b[i] * s)
@@ -278,6 +278,63 @@ impl WholeMotion {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// RAOs interpolated linearly in frequency and heading, zero outside their frequencies,
+    /// and a table of one frequency read at it without a bracket.
+    #[test]
+    fn transfers_interpolate_inside_and_are_zero_outside() {
+        let grid = FrequencyGrid::new(0.0, 200.0, 0.5, (0.3, 1.2)).unwrap();
+        let value = |w: f64, h: f64| Complex64::new(w, h);
+        let omegas = vec![0.2, 0.6, 1.0];
+        let headings = vec![0.0, 1.0];
+        let rao = Rao {
+            values: omegas
+                .iter()
+                .map(|&w| headings.iter().map(|&h| [value(w, h); 6]).collect())
+                .collect(),
+            omegas,
+            headings,
+        };
+        let direction = [Direction {
+            heading: 0.75,
+            weight: 1.0,
+        }];
+        let t = motion_transfers(&rao, &grid, &direction, 0.5).unwrap();
+        for (j, xi) in t[0].rao.iter().enumerate() {
+            let w = grid.omega(j);
+            // Bilinear in (w, relative heading 0.25): exact for a function linear in both.
+            let expected = if w <= 1.0 {
+                value(w, 0.25)
+            } else {
+                Complex64::default()
+            };
+            assert!(
+                (xi[3] - expected).norm() < 1e-12,
+                "omega {w}: {} vs {expected}",
+                xi[3]
+            );
+        }
+        let single = Rao {
+            omegas: vec![0.6],
+            headings: vec![0.0],
+            values: vec![vec![[value(0.6, 0.0); 6]]],
+        };
+        let one = [Direction {
+            heading: 0.0,
+            weight: 1.0,
+        }];
+        let t = motion_transfers(&single, &grid, &one, 0.0).unwrap();
+        assert!(t[0]
+            .rao
+            .iter()
+            .all(|xi| xi[0] == Complex64::default() || xi[0] == value(0.6, 0.0)));
+        // A relative heading outside the headings is refused.
+        let outside = [Direction {
+            heading: 2.0,
+            weight: 1.0,
+        }];
+        assert!(motion_transfers(&rao, &grid, &outside, 0.0).is_err());
+    }
 
     /// The rates are the time derivatives of the totals: central differences of a motion
     /// whose yaw and body-frame motion vary together.
