@@ -84,7 +84,7 @@ def test_loop_equals_the_python_api_loop(fmu, mooring_fmu):
 
 
 class Logged:
-    """Mooring.fmu with a logger that keeps the error lines."""
+    """Mooring.fmu with a logger that keeps the discard and error lines."""
 
     def __init__(self, path):
         from fmpy import extract, read_model_description
@@ -93,7 +93,7 @@ class Logged:
         self.errors = []
 
         def logger(env, instance, status, category, message):
-            if status >= 3:
+            if status >= 2:
                 self.errors.append(message.decode().replace("%%", "%"))
 
         self._logger = fmi2CallbackLoggerTYPE(logger)
@@ -125,6 +125,15 @@ def test_bad_input_is_named(mooring_fmu, tmp_path):
     with pytest.raises(FMICallException):
         m.fmu.setReal([m.vr["theta"]], [math.nan])
     assert any("theta" in e and "finite" in e for e in m.errors), m.errors
+
+    # A step longer than an hour is discarded at once, naming the bound (1e308 s of MoorDyn
+    # steps would never return), and the instance's time stays where it was.
+    m = Logged(mooring_fmu)
+    m.fmu.enterInitializationMode()
+    m.fmu.exitInitializationMode()
+    with pytest.raises(FMICallException):
+        m.fmu.doStep(currentCommunicationPoint=0.0, communicationStepSize=1e308)
+    assert any("communicationStepSize = 1e308" in e and "3600 s" in e for e in m.errors), m.errors
 
     # A MoorDyn file whose body is fixed, not coupled: nothing for the platform to drive.
     text = open(DEFAULT_DAT).read().replace("1    coupled     0", "1    fixed       0")

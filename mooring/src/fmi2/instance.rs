@@ -40,6 +40,12 @@ use std::sync::Arc;
 /// `currentCommunicationPoint` must match the instance's time within this, relative to
 /// max(1, |t|).
 const TIME_TOLERANCE: f64 = 1e-9;
+/// The longest communication step, s. Over a call the fairleads move along the inputs'
+/// velocity in a straight line (MoorDyn's coupled-body kinematics), which a master's step of
+/// a second or so keeps true; an hour is 90 000 of the default mooring's MoorDyn steps (0.04
+/// s, a few seconds of work) and bounds the time one call may take (a step of 1e308 s would
+/// never return).
+const MAX_STEP: f64 = 3600.0;
 
 /// The lines of one instance, as `mooringModel` chose.
 enum Lines {
@@ -253,6 +259,12 @@ impl Model for Instance {
         if !(h.is_finite() && h > 0.0) {
             return Err(Error::Argument(format!(
                 "communicationStepSize = {h} must be positive"
+            )));
+        }
+        if h > MAX_STEP {
+            return Err(Error::Discard(format!(
+                "communicationStepSize = {h:e} s is longer than the longest step of {MAX_STEP} s \
+                 (the fairleads move in a straight line over a step): take shorter steps"
             )));
         }
         if !t.is_finite() || (t - self.time).abs() > TIME_TOLERANCE * self.time.abs().max(1.0) {
