@@ -105,7 +105,7 @@ pub trait Model: Sized {
 
 /// A model whose state can be saved, restored and serialized (`canGetAndSetFMUstate`,
 /// `canSerializeFMUstate`). A model without it answers the six state functions with
-/// [`super::functions::without_saved_states`].
+/// `without_saved_states` of the C functions (functions/mod.rs).
 pub trait SavedStates: Model {
     /// A saved state (boxed behind an `fmi2FMUstate`).
     type State;

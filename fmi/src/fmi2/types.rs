@@ -10,8 +10,8 @@
 
 use std::ffi::{c_char, c_int, c_uint, c_void};
 
-/// `fmi2Component`: the opaque instance handle (a `Box<Component<M>>` behind it, see
-/// [`super::handle`]).
+/// `fmi2Component`: the opaque instance handle (a `Box<Component<M>>` behind it: the
+/// typed handles of handle.rs).
 pub type fmi2Component = *mut c_void;
 /// `fmi2ComponentEnvironment`: the host's pointer, handed back to its callbacks unchanged.
 pub type fmi2ComponentEnvironment = *mut c_void;
