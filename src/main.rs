@@ -199,33 +199,33 @@ fn run_to_end(sim: &mut Simulation) -> Result<Vec<Outputs>, String> {
 fn print_summary(sim: &Simulation, outputs: &[Outputs], transient: f64) -> Result<(), String> {
     let dt = sim.problem().run.time_step;
     let deg = 180.0 / std::f64::consts::PI;
-    type Read = fn(&Outputs) -> f64;
-    let mut rows: Vec<(&str, f64, &str, Read)> = vec![
-        ("surge", 1.0, "m", |o| o.position[0]),
-        ("sway", 1.0, "m", |o| o.position[1]),
-        ("yaw", deg, "deg", |o| o.position[2]),
-    ];
+    // (name, scale, unit, the output's DOFs, which DOF)
+    type Dofs = fn(&Outputs) -> &[f64];
+    let mut rows: Vec<(String, f64, &str, Dofs, usize)> = ["surge", "sway", "yaw"]
+        .iter()
+        .enumerate()
+        .map(|(i, name)| {
+            let (scale, unit) = if i == 2 { (deg, "deg") } else { (1.0, "m") };
+            (name.to_string(), scale, unit, (|o| &o.position) as Dofs, i)
+        })
+        .collect();
     // With wave-frequency motion: its six DOFs (inertial axes) and the totals.
     if sim.records().motion.is_some() {
-        rows.extend::<[(&str, f64, &str, Read); 12]>([
-            ("X_wf", 1.0, "m", |o| o.motion.wave_frequency[0]),
-            ("Y_wf", 1.0, "m", |o| o.motion.wave_frequency[1]),
-            ("Z_wf", 1.0, "m", |o| o.motion.wave_frequency[2]),
-            ("roll_wf", deg, "deg", |o| o.motion.wave_frequency[3]),
-            ("pitch_wf", deg, "deg", |o| o.motion.wave_frequency[4]),
-            ("yaw_wf", deg, "deg", |o| o.motion.wave_frequency[5]),
-            ("X_total", 1.0, "m", |o| o.motion.total[0]),
-            ("Y_total", 1.0, "m", |o| o.motion.total[1]),
-            ("Z_total", 1.0, "m", |o| o.motion.total[2]),
-            ("roll_total", deg, "deg", |o| o.motion.total[3]),
-            ("pitch_total", deg, "deg", |o| o.motion.total[4]),
-            ("yaw_total", deg, "deg", |o| o.motion.total[5]),
-        ]);
+        let parts: [(&str, Dofs); 2] = [
+            ("wf", |o| &o.motion.wave_frequency),
+            ("total", |o| &o.motion.total),
+        ];
+        for (suffix, dofs) in parts {
+            for (i, dof) in ["X", "Y", "Z", "roll", "pitch", "yaw"].iter().enumerate() {
+                let (scale, unit) = if i < 3 { (1.0, "m") } else { (deg, "deg") };
+                rows.push((format!("{dof}_{suffix}"), scale, unit, dofs, i));
+            }
+        }
     }
     let summaries = rows
         .iter()
-        .map(|(_, scale, _, read)| {
-            let record: Vec<f64> = outputs.iter().map(|o| read(o) * scale).collect();
+        .map(|(_, scale, _, dofs, i)| {
+            let record: Vec<f64> = outputs.iter().map(|o| dofs(o)[*i] * scale).collect();
             summarize(&record, dt, transient).map_err(|e| e.to_string())
         })
         .collect::<Result<Vec<Summary>, String>>()?;
@@ -239,7 +239,7 @@ fn print_summary(sim: &Simulation, outputs: &[Outputs], transient: f64) -> Resul
         "{:<18} {:>14} {:>14} {:>14} {:>14}",
         "DOF", "mean", "rms", "max", "min"
     );
-    for ((name, _, unit, _), s) in rows.iter().zip(&summaries) {
+    for ((name, _, unit, _, _), s) in rows.iter().zip(&summaries) {
         println!(
             "{:<18} {:>14.4} {:>14.4} {:>14.4} {:>14.4}",
             format!("{name} [{unit}]"),
