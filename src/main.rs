@@ -52,8 +52,8 @@ enum Command {
     Hydro(cli::hydro::HydroArgs),
     /// Many seeds of one case or of a table of cases on all cores, resumably
     Montecarlo(cli::montecarlo::MontecarloArgs),
-    /// The paper's studies (E&S 1996 Figs 3-5 and 7-15) as CSV and figures (PNG and SVG) in a
-    /// directory
+    /// The paper's studies (E&S 1996 Figs 3-5 and 7-15) and the motion spectra against the
+    /// frequency domain as CSV and figures (PNG and SVG) in a directory
     Study(cli::study::StudyArgs),
 }
 

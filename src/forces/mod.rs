@@ -20,7 +20,7 @@ mod yaw_following;
 pub use depth_basis::{DepthBasis, KINEMATICS_TOLERANCE};
 pub use directional::{add_cross_terms, cross_direction_force, direction_pairs, CrossWork};
 pub use kinematics::{distinct_kinematics, ColumnKinematics, KinematicsWork};
-pub use motion::{motion_transfers, MotionRecords, MotionTransfer, WholeMotion};
+pub use motion::{motion_transfers, MotionRecords, MotionTransfer, RaoAlong, WholeMotion};
 pub use newman::NewmanBuilder;
 pub use qtf::{GridQtf, QtfFactorisation, QtfGroup};
 pub use record::{Record, RecordClock, SamplePoint};

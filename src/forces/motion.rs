@@ -31,7 +31,7 @@ use super::record::{Record, SamplePoint};
 use super::synthesis::Synthesizer;
 use super::yaw_following::YawPoint;
 use crate::error::{Error, Result};
-use crate::hydro::heading_grid::heading_bracket;
+use crate::hydro::heading_grid::{heading_bracket, Bracket};
 use crate::hydro::rao::Rao;
 use crate::model::FREQUENCY_MATCH_TOLERANCE;
 use crate::sea_state::{Direction, FrequencyGrid, WaveComponents};
@@ -54,53 +54,76 @@ pub fn motion_transfers(
     directions: &[Direction],
     yaw: f64,
 ) -> Result<Vec<MotionTransfer>> {
-    let omegas = &rao.omegas;
-    let (lo, hi) = (omegas[0], omegas[omegas.len() - 1]);
-    let covered = |w: f64| {
-        w >= lo * (1.0 - FREQUENCY_MATCH_TOLERANCE) && w <= hi * (1.0 + FREQUENCY_MATCH_TOLERANCE)
-    };
     directions
         .iter()
         .map(|d| {
-            let relative = d.heading - yaw;
-            let h = heading_bracket(&rao.headings, relative).ok_or_else(|| {
-                Error::invalid(
-                    "first-order motions",
-                    format!("the relative heading {:.3} deg", relative.to_degrees()),
-                    format!(
-                        "is outside the RAOs' headings [{:.3}, {:.3}] deg (nothing is \
-                         extrapolated): give RAOs at those headings, turn the sea, or turn \
-                         the wave-frequency motion off ([model] wave_frequency_motion = \
-                         \"off\")",
-                        rao.headings[0].to_degrees(),
-                        rao.headings[rao.headings.len() - 1].to_degrees()
-                    ),
-                )
-            })?;
-            let along = |n: usize| -> [Complex64; 6] {
-                let (a, b) = (&rao.values[n][h.lo], &rao.values[n][h.hi]);
-                std::array::from_fn(|i| a[i] * (1.0 - h.frac) + b[i] * h.frac)
-            };
-            let transfer = (0..grid.count)
-                .map(|j| {
-                    if !covered(grid.omega(j)) {
-                        return [Complex64::default(); 6];
-                    }
-                    if omegas.len() == 1 {
-                        return along(0);
-                    }
-                    let w = grid.omega(j).clamp(lo, hi);
-                    let upper = omegas
-                        .partition_point(|&v| v <= w)
-                        .clamp(1, omegas.len() - 1);
-                    let s = (w - omegas[upper - 1]) / (omegas[upper] - omegas[upper - 1]);
-                    let (a, b) = (along(upper - 1), along(upper));
-                    std::array::from_fn(|i| a[i] * (1.0 - s) + b[i] * s)
-                })
-                .collect();
-            Ok(MotionTransfer { rao: transfer })
+            let along = RaoAlong::new(rao, d.heading - yaw)?;
+            Ok(MotionTransfer {
+                rao: (0..grid.count).map(|j| along.at(grid.omega(j))).collect(),
+            })
         })
         .collect()
+}
+
+/// The RAOs at one relative heading (interpolated linearly between the two headings that
+/// bracket it), as a function of frequency: the interpolation of the records and of the
+/// frequency-domain predictions (`studies::motion_spectra`).
+#[derive(Debug, Clone, Copy)]
+pub struct RaoAlong<'a> {
+    rao: &'a Rao,
+    bracket: Bracket,
+}
+
+impl<'a> RaoAlong<'a> {
+    /// The RAOs at the relative heading `relative` (rad, any number of turns). Refused: a
+    /// heading outside their headings (nothing is extrapolated); the error names the gap and
+    /// the remedies.
+    pub fn new(rao: &'a Rao, relative: f64) -> Result<Self> {
+        let bracket = heading_bracket(&rao.headings, relative).ok_or_else(|| {
+            Error::invalid(
+                "first-order motions",
+                format!("the relative heading {:.3} deg", relative.to_degrees()),
+                format!(
+                    "is outside the RAOs' headings [{:.3}, {:.3}] deg (nothing is \
+                     extrapolated): give RAOs at those headings, turn the sea, or turn \
+                     the wave-frequency motion off ([model] wave_frequency_motion = \
+                     \"off\")",
+                    rao.headings[0].to_degrees(),
+                    rao.headings[rao.headings.len() - 1].to_degrees()
+                ),
+            )
+        })?;
+        Ok(RaoAlong { rao, bracket })
+    }
+
+    /// xi_i(omega) of the six DOFs, linear in frequency between the RAOs' frequencies (real
+    /// and imaginary parts apart); zero outside them (within the frequency tolerance).
+    pub fn at(&self, omega: f64) -> [Complex64; 6] {
+        let omegas = &self.rao.omegas;
+        let (lo, hi) = (omegas[0], omegas[omegas.len() - 1]);
+        let covered = omega >= lo * (1.0 - FREQUENCY_MATCH_TOLERANCE)
+            && omega <= hi * (1.0 + FREQUENCY_MATCH_TOLERANCE);
+        if !covered {
+            return [Complex64::default(); 6];
+        }
+        if omegas.len() == 1 {
+            return self.along(0);
+        }
+        let w = omega.clamp(lo, hi);
+        let upper = omegas
+            .partition_point(|&v| v <= w)
+            .clamp(1, omegas.len() - 1);
+        let s = (w - omegas[upper - 1]) / (omegas[upper] - omegas[upper - 1]);
+        let (a, b) = (self.along(upper - 1), self.along(upper));
+        std::array::from_fn(|i| a[i] * (1.0 - s) + b[i] * s)
+    }
+
+    /// The RAOs at frequency index `n`, interpolated in heading.
+    fn along(&self, n: usize) -> [Complex64; 6] {
+        let h = &self.bracket;
+        let (a, b) = (&self.rao.values[n][h.lo], &self.rao.values[n][h.hi]);
+        std::array::from_fn(|i| a[i] * (1.0 - h.frac) + b[i] * h.frac)
+    }
 }
 
 /// The wave-frequency motion of one body yaw: position and velocity of the six DOFs, body

@@ -294,7 +294,7 @@ fn help_lists_the_options_with_units_and_defaults() {
     assert_lists(
         &["study", "--help"],
         &[
-            "Usage: slowdrift study <drift|waves|boxplots|transient|sensitivity>",
+            "Usage: slowdrift study <drift|waves|boxplots|transient|sensitivity|motion>",
             "waves",
             "boxplots",
             "transient",
@@ -580,7 +580,7 @@ fn study_sensitivity_runs_plots_and_resumes() {
 fn study_refuses_bad_arguments() {
     let dir = temp_dir("bad");
     let out = dir.to_str().unwrap();
-    let kinds = "<drift|waves|boxplots|transient|sensitivity>";
+    let kinds = "<drift|waves|boxplots|transient|sensitivity|motion>";
     for (args, expected) in [
         (vec!["study"], vec![kinds]),
         (
@@ -745,5 +745,54 @@ fn out_is_checked_before_any_work() {
         .collect();
     left.sort();
     assert_eq!(left, ["plain.csv"]);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `study motion` on the default over 2^13 s: the spectra (simulated and predicted rows of
+/// every drawn part), the variances per DOF with the damping parts, and the figure; the
+/// DOFs a head sea does not excite are named as not drawn.
+#[test]
+fn study_motion_writes_spectra_variances_and_figure() {
+    let dir = temp_dir("motion");
+    let run = slowdrift(&[
+        "study",
+        "motion",
+        "--duration",
+        "8192",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    assert!(
+        stdout.contains("slow drift, sway Y: not excited"),
+        "{stdout}"
+    );
+    let csv = std::fs::read_to_string(dir.join("motion_spectra.csv")).unwrap();
+    for part in [
+        "slow-drift,surge X,simulated,",
+        "slow-drift,surge X,predicted,",
+        "wave-frequency,heave,simulated,",
+        "wave-frequency,pitch,predicted,",
+    ] {
+        assert!(csv.contains(part), "no {part}");
+    }
+    let variances = std::fs::read_to_string(dir.join("motion_variances.csv")).unwrap();
+    assert_eq!(variances.lines().count(), 1 + 3 + 6, "{variances}");
+    let surge: Vec<&str> = variances.lines().nth(1).unwrap().split(',').collect();
+    assert_eq!(surge[..2], ["slow-drift", "surge X"]);
+    let drag: f64 = surge[6].parse().unwrap();
+    assert!(drag > 0.0, "the default's drag damps: {surge:?}");
+    assert_figure(&dir, "motion_spectra");
+    assert!(
+        slowdrift(&["study", "motion", "--duration", "0", "--out", "x"])
+            .status
+            .code()
+            .is_some_and(|c| c != 0)
+    );
     std::fs::remove_dir_all(&dir).ok();
 }

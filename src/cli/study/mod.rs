@@ -1,11 +1,13 @@
-//! `slowdrift study <drift|waves|boxplots|transient|sensitivity>`: the paper's studies (E&S
-//! 1996 Figs 3-5 and 7-15) for a platform, each written as data (CSV) and as a figure (PNG and SVG) in
+//! `slowdrift study <drift|waves|boxplots|transient|sensitivity|motion>`: the paper's studies
+//! (E&S 1996 Figs 3-5 and 7-15) and the motion spectra against the frequency domain for a
+//! platform, each written as data (CSV) and as a figure (PNG and SVG) in
 //! `--out DIR`. The computations are [`slowdrift::studies`] and the Monte Carlo campaign
 //! of `slowdrift montecarlo` (resumable: the per-run files in DIR are read back and only
 //! missing runs are made); the drawing is [`crate::plot`].
 
 mod boxplots;
 mod drift;
+mod motion;
 mod sensitivity;
 mod transient;
 mod waves;
@@ -25,7 +27,7 @@ use std::path::{Path, PathBuf};
 #[derive(Args)]
 #[command(
     subcommand_required = true,
-    subcommand_value_name = "drift|waves|boxplots|transient|sensitivity"
+    subcommand_value_name = "drift|waves|boxplots|transient|sensitivity|motion"
 )]
 pub struct StudyArgs {
     #[command(subcommand)]
@@ -49,6 +51,9 @@ enum Study {
     /// Surge mean and rms against a column of a case table (E&S Figs 12-15); resumable
     /// (DIR/CASES.runs.csv)
     Sensitivity(SensitivityArgs),
+    /// The slow drift's and the wave-frequency motion's spectra of one long run against
+    /// their frequency-domain predictions
+    Motion(MotionArgs),
 }
 
 /// `study drift`.
@@ -168,6 +173,25 @@ struct SensitivityArgs {
     out: PathBuf,
 }
 
+/// `study motion`.
+#[derive(Args)]
+struct MotionArgs {
+    /// Platform and sea (TOML) [default: the embedded default platform]
+    #[arg(long, value_name = "FILE.toml", allow_hyphen_values = true)]
+    config: Option<PathBuf>,
+    /// Length of the record analysed, after the transient, s
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true, default_value = "65536",
+          value_parser = seconds(true))]
+    duration: f64,
+    /// Start-up transient simulated before the record and dropped, s [default: ten
+    /// undamped surge natural periods]
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true, value_parser = seconds(false))]
+    transient: Option<f64>,
+    /// Directory of the CSV and the figures (PNG and SVG), created if missing
+    #[arg(long, value_name = "DIR", allow_hyphen_values = true)]
+    out: PathBuf,
+}
+
 /// `--exponents A..B`: record lengths 2^A .. 2^B s (inclusive).
 #[derive(Clone)]
 struct Exponents(Vec<u32>);
@@ -188,6 +212,7 @@ pub fn run(args: StudyArgs) -> Result<(), Failure> {
         Study::Boxplots(a) => (&a.config, &a.out),
         Study::Transient(a) => (&a.config, &a.out),
         Study::Sensitivity(a) => (&a.config, &a.out),
+        Study::Motion(a) => (&a.config, &a.out),
     };
     super::out::directory(out)?;
     let base = match config {
@@ -210,6 +235,7 @@ pub fn run(args: StudyArgs) -> Result<(), Failure> {
         Study::Boxplots(a) => boxplots::boxplots(&base, a),
         Study::Transient(a) => Ok(transient::transient(&base, a)?),
         Study::Sensitivity(a) => sensitivity::sensitivity(&base, a),
+        Study::Motion(a) => Ok(motion::motion(&base, a)?),
     }
 }
 
