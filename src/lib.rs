@@ -65,6 +65,7 @@ mod simulation;
 mod special;
 pub mod stats;
 pub mod studies;
+pub mod wind;
 
 pub use error::{Error, Result};
 pub use problem::Problem;

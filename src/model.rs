@@ -68,7 +68,7 @@ mod modes;
 
 pub use modes::{
     BidirectionalDrift, DragKind, DriftDamping, Interaction, NewmanForm, SecondOrder, SpectrumKind,
-    SpreadingKind, WaveFrequencyMotion,
+    SpreadingKind, WaveFrequencyMotion, WindProfileKind, WindSpectrumKind,
 };
 
 /// A setting that takes one of a few words: an enum defined in `model/modes.rs`.
@@ -308,6 +308,8 @@ mod tests {
         words_read_back::<DragKind>();
         words_read_back::<BidirectionalDrift>();
         words_read_back::<WaveFrequencyMotion>();
+        words_read_back::<WindSpectrumKind>();
+        words_read_back::<WindProfileKind>();
     }
 
     /// Another word, or a value that is no word, is refused listing the words.
@@ -349,6 +351,9 @@ mod tests {
             ["off", "separate", "combined"]
         );
         assert_eq!(NewmanForm::VOCABULARY.parameter(), None);
+        // The wind's modes have no FMU parameter yet.
+        assert_eq!(WindSpectrumKind::VOCABULARY.parameter(), None);
+        assert_eq!(WindProfileKind::VOCABULARY.parameter(), None);
     }
 
     #[test]

@@ -112,4 +112,34 @@ modes! {
         ColumnArray = "column-array":
             "the deep-water column solver on the platform's columns",
     }
+
+    /// The kind of the wind's gust spectrum, the longitudinal turbulence of the wind speed
+    /// (`[wind] spectrum`; `wind::GustSpectrum::kind`, docs/theory.md#wind).
+    WindSpectrumKind {
+        /// NPD / Froya (ISO 19901-1, DNV-RP-C205 sec. 2.3.4).
+        Npd = "npd": "NPD (Froya; ISO 19901-1, DNV-RP-C205) from the 1-hour mean at 10 m",
+        /// API RP 2A (sec. 2.3.2).
+        Api = "api": "API RP 2A from the 1-hour mean at the height and the turbulence intensity",
+        /// Harris (1971).
+        Harris = "harris": "Harris (1971), length 1800 m, from U10 and the drag coefficient",
+        /// Davenport (1961).
+        Davenport = "davenport": "Davenport (1961), length 1200 m, from U10 and the drag coefficient",
+        /// Kaimal (IEC 61400-1).
+        Kaimal = "kaimal": "Kaimal (IEC 61400-1) from the 10-min mean, intensity and length scale",
+        /// Ochi and Shin (1988).
+        OchiShin = "ochi-shin": "Ochi & Shin (1988) from U10 and the drag coefficient",
+        /// No gust: the mean speed alone.
+        Constant = "constant": "no gust: the mean speed alone",
+    }
+
+    /// The mean wind profile, the mean speed from its reference height to the height of the
+    /// wind force (`[wind] profile`; `wind::WindProfile::kind`, docs/theory.md#wind).
+    WindProfileKind {
+        /// U(z) = U_r (z / z_r)^alpha.
+        PowerLaw = "power-law": "U_r (z / z_r)^alpha",
+        /// U(z) = U_r ln(z / z0) / ln(z_r / z0).
+        Logarithmic = "logarithmic": "U_r ln(z / z0) / ln(z_r / z0)",
+        /// ISO 19901-1 / NPD: U(z) = U0 [1 + C ln(z / 10)] from the 1-hour mean.
+        Npd = "npd": "ISO 19901-1 / NPD from the 1-hour mean, with its averaging periods",
+    }
 }
