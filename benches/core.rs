@@ -137,6 +137,7 @@ fn bench_problem(duration: f64, time_step: f64, drag: DragModel) -> Problem {
             band: None,
         },
         current: Current::default(),
+        wind: slowdrift::wind::WindField::default(),
         run: Run {
             duration,
             time_step,

@@ -22,6 +22,7 @@ use crate::model::{
     WaveFrequencyMotion, YawFollowing, DEFAULT_QTF_TOLERANCE,
 };
 use crate::sea_state::SeaState;
+use crate::wind::WindField;
 use serde::Serialize;
 use std::path::PathBuf;
 
@@ -216,6 +217,10 @@ pub struct Scenario<H = DriftSource> {
     pub environment: Environment,
     pub sea: SeaState,
     pub current: Current,
+    /// The wind (`[wind]`; none by default). Not serialised when calm, so that a
+    /// scenario without wind keeps the fingerprint it had before wind existed.
+    #[serde(skip_serializing_if = "WindField::is_calm")]
+    pub wind: WindField,
     pub run: Run,
     pub platform: Platform,
     pub hydro: H,
@@ -241,6 +246,7 @@ impl<H> Scenario<H> {
             environment: self.environment,
             sea: self.sea,
             current: self.current,
+            wind: self.wind,
             run: self.run,
             platform: self.platform,
             hydro,

@@ -8,8 +8,11 @@
 //! records, the wind force and the `[wind]` configuration come later; the settings named by
 //! the errors here (`wind.speed`, `wind.height`, ...) are the keys that section will have.
 
+mod field;
 mod profile;
 mod spectrum;
+
+pub use field::{WindField, DEFAULT_AIR_DENSITY, DEFAULT_DRAG_COEFFICIENT};
 
 pub use profile::{
     npd_mean, npd_turbulence_intensity, WindProfile, NPD_REFERENCE_HEIGHT, NPD_REFERENCE_PERIOD,

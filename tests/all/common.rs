@@ -103,6 +103,7 @@ pub fn base_problem(duration: f64, time_step: f64, seed: u64) -> Problem {
         environment: Environment::default(),
         sea: long_crested(jonswap(6.0, 10.0), seed),
         current: Current::default(),
+        wind: slowdrift::wind::WindField::default(),
         run: Run {
             duration,
             time_step,

@@ -23,6 +23,7 @@ use super::{ModelOptions, Origins, Scenario};
 use crate::error::{Error, Location, Result};
 use crate::files::Cost;
 use crate::model::Mode;
+use crate::wind::WindField;
 use serde::Deserialize;
 use std::ops::Range;
 use std::path::Path;
@@ -213,6 +214,7 @@ impl ConfigFile {
             environment: self.environment.into_core(),
             sea,
             current: self.current.into_core(),
+            wind: WindField::default(),
             run: self.run.into_core().map_err(|e| origins.locate(e))?,
             platform: self.platform.into_core(&origins)?,
             hydro,
