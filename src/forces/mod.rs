@@ -6,6 +6,7 @@
 
 mod depth_basis;
 mod directional;
+mod gust;
 mod kinematics;
 mod motion;
 mod newman;
@@ -19,6 +20,7 @@ mod yaw_following;
 
 pub use depth_basis::{DepthBasis, KINEMATICS_TOLERANCE};
 pub use directional::{add_cross_terms, cross_direction_force, direction_pairs, CrossWork};
+pub use gust::GustStream;
 pub use kinematics::{distinct_kinematics, ColumnKinematics, KinematicsWork};
 pub use motion::{motion_transfers, MotionRecords, MotionTransfer, RaoAlong, WholeMotion};
 pub use newman::NewmanBuilder;

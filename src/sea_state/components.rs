@@ -114,7 +114,6 @@ impl FrequencyGrid {
     }
 }
 
-/// Smallest integer >= n whose only prime factors are 2, 3, 5 and 7.
 /// The generator of block `k` of the sea with seed `seed`. Block 0: xoshiro256++ seeded
 /// from `seed` (its four state words are SplitMix64's first four outputs from `seed`).
 /// Block k >= 1: the state (first two SplitMix64 outputs from `seed`, first two from k),
@@ -140,6 +139,24 @@ fn block_generator(seed: u64, k: u64) -> Xoshiro256PlusPlus {
     Xoshiro256PlusPlus::from_seed(state)
 }
 
+/// The gusts' complex amplitudes of block `k` of the wind with seed `seed`: b_n = scale_n
+/// (xi + i xi'), xi, xi' independent standard normal, in increasing frequency, written into
+/// `out` (its length that of `scale`). Their generator is the waves' of (seed, k)
+/// (`block_generator`) after xoshiro256++'s long jump, 2^192 draws ahead: a stream of its
+/// own that no block's wave draws (a few 10^5) reach, so the wind and the waves of one seed
+/// are independent, a seed gives the same gusts whatever the waves, and adding wind leaves
+/// the sea as it was (its draws are untouched).
+pub fn gust_amplitudes(seed: u64, k: u64, scale: &[f64], out: &mut Vec<Complex64>) {
+    let mut rng = block_generator(seed, k);
+    rng.long_jump();
+    out.clear();
+    out.extend(scale.iter().map(|&s| {
+        let (xi, xi_prime) = standard_normal_pair(&mut rng);
+        Complex64::new(s * xi, s * xi_prime)
+    }));
+}
+
+/// Smallest integer >= n whose only prime factors are 2, 3, 5 and 7.
 fn smooth_length_at_least(n: usize) -> usize {
     (n.max(1)..)
         .find(|&m| {

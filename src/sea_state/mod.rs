@@ -6,7 +6,7 @@ mod components;
 mod spectrum;
 mod spreading;
 
-pub use components::{FrequencyGrid, WaveComponents};
+pub use components::{gust_amplitudes, FrequencyGrid, WaveComponents};
 pub use spectrum::{Spectrum, MAX_STEEPNESS};
 pub use spreading::{Direction, Spreading};
 

@@ -45,4 +45,5 @@ mod user_data;
 mod wamit;
 mod wamit_directions;
 mod wave_frequency;
+mod wind;
 mod yaw_following;
