@@ -25,6 +25,7 @@ pub mod ranges;
 mod resolve;
 mod steps;
 mod summary;
+pub mod wind;
 pub use inertia::{BodyData, Inertia, Origin};
 pub use resolve::{default_problem, load, resolve, resolve_hydro};
 

@@ -22,9 +22,10 @@ use crate::error::numbers::readable;
 use crate::error::{Error, Result};
 use crate::forces::{
     direction_pairs, motion_transfers, plan_inverse_fft, transfers_on_grid, yaw_transfers,
-    DepthBasis, DirectionTransfer, ForceRecords, InverseFft, Join, MotionTransfer,
-    QtfFactorisation, QtfGroup, RecordOptions, RecordWork, Segments, Synthesizer, YawGrid,
+    DepthBasis, DirectionTransfer, ForceRecords, GustStream, InverseFft, Join, MotionTransfer,
+    QtfFactorisation, QtfGroup, Record, RecordOptions, RecordWork, Segments, Synthesizer, YawGrid,
 };
+use crate::wind::GustSpectrum;
 
 use crate::hydro::bidirectional::DirectionPairs;
 use crate::hydro::DriftTable;
@@ -65,6 +66,8 @@ pub struct PlanKey<'a> {
     wave_frequency_motion: WaveFrequencyMotion,
     /// The rigid body the RAOs are solved with, and the mass it takes (`problem::motions`).
     motions: Option<(&'a Motions, Option<f64>)>,
+    /// The gust spectrum at the force's height (`None`: calm, or a wind the check refuses).
+    gust: Option<GustSpectrum>,
 }
 
 impl PlanKey<'_> {
@@ -92,6 +95,7 @@ impl PlanKey<'_> {
                 .motions
                 .as_ref()
                 .map(|m| (m, problem.platform.mass)),
+            gust: problem.run_wind().ok().flatten().map(|w| w.gust),
         }
     }
 }
@@ -125,6 +129,8 @@ pub struct RecordPlan {
     /// The RAOs on the grid, per body yaw (zero, or the yaw-following grid's) and direction
     /// (`forces::motion`); `None` without wave-frequency motion.
     motion: Option<Vec<Vec<MotionTransfer>>>,
+    /// The gusts of the wind (`forces::gust`), their spectrum on the grid; `None` when calm.
+    gust: Option<GustStream>,
 }
 
 /// What the yaw-following records need besides the seed.
@@ -284,12 +290,17 @@ impl RecordPlan {
             None => vec![0.0],
         };
         let motion = motion_on_grid(problem, &grid, &directions, &yaws)?;
+        let fft = plan_inverse_fft(&grid);
+        let gust = problem
+            .run_wind()?
+            .map(|w| GustStream::new(&w.gust, &grid, segments, fft.clone()));
         Ok(RecordPlan {
             motion,
+            gust,
             problem: problem.clone(),
             depth_bases,
             segments,
-            fft: plan_inverse_fft(&grid),
+            fft,
             grid,
             transfers,
             pairs,
@@ -329,6 +340,7 @@ impl RecordPlan {
             records: ForceRecords::empty(),
             work: RecordWork::with_bases(synth, &self.grid, self.depth_bases.clone()),
             components: WaveComponents::generate_block(&problem.sea, self.grid.clone(), 0),
+            gust: self.gust.clone(),
         };
         self.build(problem, &mut segment, 0, true);
         segment
@@ -355,6 +367,7 @@ impl RecordPlan {
             records,
             work,
             components,
+            gust,
             ..
         } = segment;
         work.synth()
@@ -397,6 +410,15 @@ impl RecordPlan {
             Some(transfers) => work.motion(&mut records.motion, components, transfers),
             None => records.motion = None,
         }
+        match gust {
+            Some(gust) => gust.build(
+                problem.sea.seed,
+                k,
+                after_previous,
+                records.gust.get_or_insert_with(Record::zero),
+            ),
+            None => records.gust = None,
+        }
     }
 }
 
@@ -408,6 +430,8 @@ pub(crate) struct Segment {
     pub records: ForceRecords,
     work: RecordWork,
     components: WaveComponents,
+    /// The gust records' stream (the plan's, with its own join and buffers).
+    gust: Option<GustStream>,
 }
 
 /// The depth kernel of every distinct draft of `problem`'s drag columns on `grid` (none

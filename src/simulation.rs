@@ -153,6 +153,8 @@ pub struct Outputs {
     /// The slow drift with the wave-frequency motion on it (`forces::motion`; the slow
     /// drift alone where there is none).
     pub motion: WholeMotion,
+    /// The wind speed at the height of the wind force (mean + gust), m/s; 0 when calm.
+    pub wind_speed: f64,
 }
 
 impl Outputs {
@@ -160,8 +162,10 @@ impl Outputs {
     /// is bounded by the steps).
     fn first_non_finite(&self) -> Option<&'static str> {
         let f = &self.forces;
-        let named: [(&'static str, &[f64]); 7] = [
+        let named: [(&'static str, &[f64]); 9] = [
             ("eta", std::slice::from_ref(&self.wave_elevation)),
+            ("windVelocity", std::slice::from_ref(&self.wind_speed)),
+            ("Fx_wind", &f.wind),
             ("X_wf", &self.motion.wave_frequency),
             ("Xdot_total", &self.motion.total_rate),
             ("F_wave", &f.wave),
@@ -483,6 +487,7 @@ impl Simulation {
             forces,
             external_force: self.state.external_force,
             motion,
+            wind_speed: self.model.wind_speed(&self.segment.records, &at),
         };
         match outputs.first_non_finite() {
             None => Ok(outputs),

@@ -1,14 +1,15 @@
 //! Equations of motion in surge, sway and yaw (E&S 1; docs/theory.md#equations-of-motion):
 //!
-//!   S (M + A) S^T q'' + S B(t) (S^T q' - u_c) + C q = S (D(t) + f_drag + f_extra) + F_ext
+//!   S (M + A) S^T q'' + S B(t) (S^T q' - u_c) + C q = S (D(t) + f_drag + f_extra + f_wind) + F_ext
 //!
 //! q = (X, Y, theta) inertial; S = S(theta) rotates body-frame vectors into the inertial
 //! frame; M + A the rigid and low-frequency added mass (body frame); B(t) the wave-drift
 //! damping acting on the body's velocity relative to the current u_c (E&S section 3);
 //! C the mooring stiffness on q; D(t) the slowly varying wave force (body frame);
 //! f_drag the Morison drag (body frame); f_extra = -B_lin v - B_quad v|v| the user's extra
-//! damping on the body-frame velocity v = S^T q'; F_ext an external force in the inertial
-//! frame. Second-order terms in the slow velocities are neglected, as in the paper. Since
+//! damping on the body-frame velocity v = S^T q'; f_wind the wind's force from the relative
+//! velocity of the wind (mean + gust) and the body (`wind::WindForce`,
+//! docs/theory.md#wind-force); F_ext an external force in the inertial frame. Second-order terms in the slow velocities are neglected, as in the paper. Since
 //! S is orthogonal, q'' = S (M + A)^{-1} S^T (right-hand side).
 
 use crate::error::numbers::written_matrix;
@@ -16,6 +17,7 @@ use crate::error::{Error, Result};
 use crate::forces::{drag_force, ForceRecords, SamplePoint, YawPoint};
 use crate::model::DragModel;
 use crate::problem::Problem;
+use crate::wind::WindForce;
 use nalgebra::{Matrix3, Vector3};
 
 /// Forces acting on the body at one instant, inertial frame (N, N, N m).
@@ -31,6 +33,8 @@ pub struct ForceBreakdown {
     pub extra_damping: [f64; 3],
     /// Mooring stiffness force -C q.
     pub stiffness: [f64; 3],
+    /// The wind's force S f_wind.
+    pub wind: [f64; 3],
 }
 
 /// The time-independent parts of the equations of motion.
@@ -44,6 +48,8 @@ pub struct SlowDriftModel {
     water_density: f64,
     /// Current velocity, inertial frame (X, Y), m/s.
     current: [f64; 2],
+    /// The wind's force and its mean speed at the force's height (m/s); `None` when calm.
+    wind: Option<(WindForce, f64)>,
 }
 
 fn matrix(m: &[[f64; 3]; 3]) -> Matrix3<f64> {
@@ -105,6 +111,7 @@ impl SlowDriftModel {
             drag: problem.model.drag,
             water_density: problem.environment.water_density,
             current: [problem.current.speed * c, problem.current.speed * s],
+            wind: problem.run_wind()?.map(|w| (w.force, w.mean)),
         })
     }
 
@@ -181,12 +188,28 @@ impl SlowDriftModel {
         let quadratic = velocity.map(|v| v * v.abs());
         let extra = -(self.linear_damping * velocity) - self.quadratic_damping * quadratic;
         let stiffness = -(self.stiffness * Vector3::from(*q));
+        let wind = match &self.wind {
+            Some((force, _)) => {
+                Vector3::from(force.force(self.wind_speed(records, at), q[2], velocity.into()))
+            }
+            None => Vector3::zeros(),
+        };
         ForceBreakdown {
             wave: rotation.to_inertial(&wave).into(),
             damping: rotation.to_inertial(&damping).into(),
             drag: rotation.to_inertial(&drag).into(),
             extra_damping: rotation.to_inertial(&extra).into(),
             stiffness: stiffness.into(),
+            wind: rotation.to_inertial(&wind).into(),
+        }
+    }
+
+    /// The wind speed at the force's height at a located instant, m/s: the mean plus the
+    /// gust record; 0 when calm.
+    pub fn wind_speed(&self, records: &ForceRecords, at: &SamplePoint) -> f64 {
+        match &self.wind {
+            Some((_, mean)) => mean + records.gust.as_ref().map_or(0.0, |g| g.at(at)),
+            None => 0.0,
         }
     }
 }
@@ -200,6 +223,7 @@ impl ForceBreakdown {
                 + self.drag[i]
                 + self.extra_damping[i]
                 + self.stiffness[i]
+                + self.wind[i]
                 + external[i]
         })
     }

@@ -697,6 +697,7 @@ mod tests {
             forces: Default::default(),
             external_force: [0.0; 3],
             motion: Default::default(),
+            wind_speed: 0.0,
         };
         for v in VARIABLES {
             match v.causality {

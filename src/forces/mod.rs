@@ -72,6 +72,9 @@ pub struct ForceRecords {
     /// The wave-frequency motion of the body (`forces::motion`), when the problem has RAOs
     /// and the motion is on.
     pub motion: Option<MotionRecords>,
+    /// The gust of the wind about its mean at the force's height, m/s (`forces::gust`),
+    /// when there is wind.
+    pub gust: Option<Record>,
 }
 
 /// The buffers of a build of records, kept from one build to the next: the records of a
@@ -220,13 +223,14 @@ impl ForceRecords {
             kinematics: Vec::new(),
             yaw_following: None,
             motion: None,
+            gust: None,
         }
     }
 
     /// [`ForceRecords::build`] into these records, reusing their buffers and `work`'s:
     /// through a joined synthesizer, the records of the stream segment its join is building
     /// (`forces::stream`: the segment's record length, on the segment's clock). The
-    /// yaw-following and wave-frequency motion records are left as they are.
+    /// yaw-following, wave-frequency motion and gust records are left as they are.
     pub fn rebuild(
         &mut self,
         components: &WaveComponents,

@@ -61,6 +61,7 @@ impl Problem {
         self.sea.validate(self.environment.gravity)?;
         ranges::CURRENT_SPEED.check("current.speed", self.current.speed)?;
         ranges::DIRECTION.check_degrees("current.direction_deg", self.current.direction)?;
+        self.run_wind()?;
         if self.run.duration.is_nan() || self.run.duration <= 0.0 {
             return Err(Error::invalid(
                 "run.duration",

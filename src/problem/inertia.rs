@@ -195,6 +195,7 @@ mod tests {
             quadratic_damping: [[0.0; 3]; 3],
             columns: Vec::new(),
             motions: None,
+            wind: None,
         }
     }
 

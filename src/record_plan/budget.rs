@@ -191,6 +191,17 @@ impl MemoryEstimate {
                 sets * (12.0 * F64 * l + 6.0 * tail) + 12.0 * C64 * g + C64 * l,
             ));
         }
+        if !problem.wind.is_calm() {
+            // `forces::gust`, in the plan and in the simulation's segment: the amplitudes'
+            // scale (half the grid), the joined synthesizer's block and the series (one
+            // grid each), the amplitudes (half a grid), the record and its tail.
+            run.push(term(
+                "wind.speed",
+                written(problem.wind.speed),
+                "the gust records".to_string(),
+                2.0 * ((0.5 * F64 + 2.5 * C64) * l + F64 * l + tail),
+            ));
+        }
         if model.drag != DragModel::Off {
             let c = distinct_kinematics(&problem.platform.columns, &directions) as f64;
             let s = model.strips_per_column as f64;

@@ -22,7 +22,7 @@ use crate::model::{
     WaveFrequencyMotion, YawFollowing, DEFAULT_QTF_TOLERANCE,
 };
 use crate::sea_state::SeaState;
-use crate::wind::WindField;
+use crate::wind::{WindField, WindLoad};
 use serde::Serialize;
 use std::path::PathBuf;
 
@@ -89,6 +89,10 @@ pub struct Platform {
     /// (`[platform.motions]`), when the configuration gives it.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub motions: Option<Motions>,
+    /// The wind's force on the platform, its coefficients (`[platform.wind]`), when the
+    /// configuration gives them.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wind: Option<WindLoad>,
 }
 
 /// What the first-order motions (RAOs, docs/theory.md#first-order-motions-raos) need beyond

@@ -9,10 +9,12 @@
 //! the errors here (`wind.speed`, `wind.height`, ...) are the keys that section will have.
 
 mod field;
+mod load;
 mod profile;
 mod spectrum;
 
 pub use field::{WindField, DEFAULT_AIR_DENSITY, DEFAULT_DRAG_COEFFICIENT};
+pub use load::{CoefficientTable, WindArea, WindCoefficients, WindForce, WindLoad};
 
 pub use profile::{
     npd_mean, npd_turbulence_intensity, WindProfile, NPD_REFERENCE_HEIGHT, NPD_REFERENCE_PERIOD,

@@ -94,6 +94,7 @@ pub fn oscillator_platform(mass: f64, yaw_inertia: f64, periods: [f64; 3], zeta:
         quadratic_damping: [[0.0; 3]; 3],
         columns: Vec::new(),
         motions: None,
+        wind: None,
     }
 }
 

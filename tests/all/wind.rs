@@ -50,3 +50,224 @@ fn gust_records_have_their_spectrum() {
         println!("{spectrum:?}: {checked} bands, worst {worst:.2} sd");
     }
 }
+
+/// A platform in a wind along +X on a table of C_x = 1 at every angle (C_y = C_mz = 0),
+/// A_x = 3000 m^2, force height 10 m, with surge and sway period `period` s, linear damping
+/// ratio `zeta` and mass `mass`, under a sea of Hs 1 mm (its drift force is negligible: 1e-6
+/// of a 1-m sea's).
+fn windy_problem(
+    speed: f64,
+    spectrum: slowdrift::model::WindSpectrumKind,
+    (mass, period, zeta): (f64, f64, f64),
+    duration: f64,
+    seed: u64,
+) -> slowdrift::Problem {
+    use slowdrift::wind::{CoefficientTable, WindCoefficients, WindField, WindLoad};
+    let mut problem = crate::common::base_problem(duration, 0.5, seed);
+    problem.sea.spectrum = slowdrift::sea_state::Spectrum::PiersonMoskowitz { hs: 1e-3, tp: 10.0 };
+    problem.platform =
+        crate::common::oscillator_platform(mass, 1e12, [period, period, 100.0], zeta);
+    let angles: Vec<f64> = [-180.0f64, -90.0, 0.0, 90.0]
+        .iter()
+        .map(|d| d.to_radians())
+        .collect();
+    problem.platform.wind = Some(WindLoad {
+        height: 10.0,
+        coefficients: WindCoefficients::Table(CoefficientTable {
+            cx: vec![1.0; 4],
+            cy: vec![0.0; 4],
+            cmz: vec![0.0; 4],
+            angles,
+            area_x: 3000.0,
+            area_y: 3000.0,
+            length: 50.0,
+            centre: [0.0, 0.0],
+        }),
+    });
+    problem.wind = WindField {
+        speed,
+        spectrum,
+        ..WindField::default()
+    };
+    problem
+}
+
+const AREA: f64 = 3000.0;
+const AIR: f64 = 1.225;
+
+/// A steady wind (no gust) damps a free surge oscillation by rho_air C A U (the linearised
+/// d/du of 1/2 rho C A (U - u)^2): the logarithmic decrement of the oscillation about the
+/// mean offset F / k equals 2 pi zeta / sqrt(1 - zeta^2), zeta = rho C A U / (2 sqrt(k m)),
+/// within 2 % (the quadratic term's share, (u / U)^2, is 0.1 %).
+#[test]
+fn a_steady_wind_damps_the_slow_drift() {
+    use std::f64::consts::PI;
+    let (speed, mass) = (20.0, 5.0e7);
+    let mut problem = windy_problem(
+        speed,
+        slowdrift::model::WindSpectrumKind::Constant,
+        (mass, 150.0, 0.0),
+        1500.0,
+        1,
+    );
+    let k = problem.platform.stiffness[0][0];
+    let mean_force = 0.5 * AIR * AREA * speed * speed;
+    let offset = mean_force / k;
+    problem.initial.position = [offset + 3.0, 0.0, 0.0];
+    let mut sim = slowdrift::Simulation::new(problem).unwrap();
+    let mut x = Vec::new();
+    while sim.time() < 1500.0 {
+        x.push(sim.outputs().unwrap().position[0] - offset);
+        sim.step([0.0; 3]).unwrap();
+    }
+    // Successive maxima of the oscillation (three-point peaks).
+    let peaks: Vec<f64> = (1..x.len() - 1)
+        .filter(|&i| x[i] > x[i - 1] && x[i] >= x[i + 1] && x[i] > 0.0)
+        .map(|i| x[i])
+        .collect();
+    assert!(peaks.len() >= 4, "{peaks:?}");
+    let decrement = (peaks[0] / peaks[3]).ln() / 3.0;
+    let zeta = AIR * AREA * speed / (2.0 * (k * mass).sqrt());
+    let expected = 2.0 * PI * zeta / (1.0 - zeta * zeta).sqrt();
+    assert!(
+        (decrement / expected - 1.0).abs() < 0.02,
+        "decrement {decrement} vs {expected} (zeta {zeta})"
+    );
+}
+
+/// The platform held (mass 1e10 kg, surge period 2 pi s, critically half-damped: it moves
+/// by 1e-4 m and 1e-4 m/s): the wind force's mean is 1/2 rho A (U^2 + sigma_u^2)
+/// within four standard errors, and its Welch spectrum in bands from 0.02 to 1.5 rad/s is
+/// the linearised gust force's, (2 F / U)^2 S_u = (rho A U)^2 S_u, within five standard
+/// deviations and 3 % (the u^2 term's share is sigma_u^2 / (2 U^2), 0.5 % here).
+#[test]
+fn the_gust_force_of_a_held_platform_is_the_linearised_spectrum() {
+    let speed = 20.0;
+    let problem = windy_problem(
+        speed,
+        slowdrift::model::WindSpectrumKind::Npd,
+        (1e10, 2.0 * std::f64::consts::PI, 0.5),
+        32768.0,
+        4,
+    );
+    let wind = problem.run_wind().unwrap().unwrap();
+    assert!((wind.mean - speed).abs() < 1e-9, "NPD at 10 m: U0 itself");
+    let mut sim = slowdrift::Simulation::new(problem).unwrap();
+    let mut force = Vec::new();
+    let mut speeds = Vec::new();
+    while sim.time() < 32768.0 {
+        let out = sim.outputs().unwrap();
+        force.push(out.forces.wind[0]);
+        speeds.push(out.wind_speed);
+        sim.step([0.0; 3]).unwrap();
+    }
+    let n = force.len() as f64;
+    let variance_u = {
+        let m = speeds.iter().sum::<f64>() / n;
+        speeds.iter().map(|u| (u - m).powi(2)).sum::<f64>() / n
+    };
+    let mean = force.iter().sum::<f64>() / n;
+    let expected = 0.5 * AIR * AREA * (speed * speed + variance_u);
+    let linear = AIR * AREA * speed;
+    // sd of the mean: sqrt(S_F(0) / (2 T)) with S_F(0) per Hz = linear^2 S_u(f = 0).
+    let sd = (linear * linear * wind.gust.density(0.0) / (2.0 * n * 0.5)).sqrt();
+    assert!(
+        (mean - expected).abs() < 4.0 * sd,
+        "{mean} vs {expected} (sd {sd})"
+    );
+    let (checked, worst) = welch_bands_match(&force, 0.5, 2048, 8, (0.02, 1.5), 0.03, |a, b| {
+        linear * linear * simpson(|w| wind.gust.density_per_rad(w), a, b, 64)
+    });
+    assert!(checked >= 20, "{checked}");
+    println!("held platform: {checked} bands, worst {worst:.2} sd");
+}
+
+/// Wind alone on the oscillator: the slow-drift surge variance over 8 seeds of 2^15 s
+/// against the frequency-domain integral of |H|^2 (rho A U)^2 S_u with the wind's damping
+/// rho A U in H, within four standard errors of the seeds' mean (their own scatter) and
+/// 3 % (the quadratic terms).
+#[test]
+fn surge_under_gusts_matches_the_frequency_domain() {
+    let (speed, mass, zeta) = (20.0, 5.0e7, 0.02);
+    let runs: Vec<f64> = slowdrift::studies::parallel_map(8, 2, |i| {
+        let problem = windy_problem(
+            speed,
+            slowdrift::model::WindSpectrumKind::Npd,
+            (mass, 150.0, zeta),
+            32768.0 + 1500.0,
+            100 + i as u64,
+        );
+        let mut sim = slowdrift::Simulation::new(problem).unwrap();
+        let mut x = Vec::new();
+        while sim.time() < 32768.0 + 1500.0 {
+            if sim.time() >= 1500.0 {
+                x.push(sim.outputs().unwrap().position[0]);
+            }
+            sim.step([0.0; 3]).unwrap();
+        }
+        let n = x.len() as f64;
+        let m = x.iter().sum::<f64>() / n;
+        x.iter().map(|v| (v - m).powi(2)).sum::<f64>() / n
+    });
+    let problem = windy_problem(
+        speed,
+        slowdrift::model::WindSpectrumKind::Npd,
+        (mass, 150.0, zeta),
+        100.0,
+        1,
+    );
+    let wind = problem.run_wind().unwrap().unwrap();
+    let k = problem.platform.stiffness[0][0];
+    let damping = problem.platform.linear_damping[0][0] + AIR * AREA * speed;
+    let linear = AIR * AREA * speed;
+    let transfer = |w: f64| 1.0 / ((k - mass * w * w).powi(2) + (damping * w).powi(2));
+    // The records' band: d_omega / 2 of the 16384-s block to the Nyquist frequency of 0.25 s.
+    let (lo, hi) = (std::f64::consts::PI / 16384.0, 4.0 * std::f64::consts::PI);
+    let expected = simpson(
+        |w| linear * linear * wind.gust.density_per_rad(w) * transfer(w),
+        lo,
+        hi,
+        200_000,
+    );
+    let mean = runs.iter().sum::<f64>() / runs.len() as f64;
+    let sd = (runs.iter().map(|v| (v - mean).powi(2)).sum::<f64>()
+        / (runs.len() as f64 - 1.0)
+        / runs.len() as f64)
+        .sqrt();
+    println!("surge variance {mean} +- {sd} vs {expected}");
+    assert!(
+        (mean - expected).abs() < 4.0 * sd + 0.03 * expected,
+        "{mean} +- {sd} vs {expected}"
+    );
+}
+
+/// One seed, one wind and one sea: the wind speed of a run of 20 000 s is the first part of a
+/// run of 40 000 s bit for bit (the gusts do not depend on the stop time), and the wave
+/// elevation with the wind is the elevation without it, bit for bit (adding wind does not
+/// change the sea).
+#[test]
+fn the_wind_of_a_seed_does_not_depend_on_the_stop_time_or_touch_the_sea() {
+    let run = |duration: f64, speed: f64| {
+        let problem = windy_problem(
+            speed,
+            slowdrift::model::WindSpectrumKind::Kaimal,
+            (5.0e7, 150.0, 0.05),
+            duration,
+            8,
+        );
+        let mut sim = slowdrift::Simulation::new(problem).unwrap();
+        let mut out = Vec::new();
+        while sim.time() < 20_000.0 {
+            let o = sim.outputs().unwrap();
+            out.push((o.wind_speed, o.wave_elevation));
+            sim.step([0.0; 3]).unwrap();
+        }
+        out
+    };
+    let short = run(20_000.0, 15.0);
+    assert_eq!(short, run(40_000.0, 15.0));
+    let calm = run(20_000.0, 0.0);
+    assert!(calm.iter().all(|(u, _)| *u == 0.0));
+    assert!(short.iter().zip(&calm).all(|(w, c)| w.1 == c.1));
+    assert!(short.iter().any(|(u, _)| (u - short[0].0).abs() > 0.1));
+}

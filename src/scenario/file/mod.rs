@@ -434,6 +434,7 @@ rows = [
                         })
                     }),
                 }),
+                wind: None,
             }
         );
         assert_eq!(

@@ -74,6 +74,7 @@ impl PlatformFile {
                 })
                 .collect(),
             motions,
+            wind: None,
         })
     }
 }
