@@ -24,6 +24,7 @@
 
 use crate::error::{require_finite, require_positive, Error, Result};
 use serde::Serialize;
+use std::cmp::Ordering;
 use std::f64::consts::PI;
 
 /// The platform's wind coefficients (`[platform.wind]`).
@@ -131,7 +132,7 @@ impl CoefficientTable {
             ));
         }
         for w in self.angles.windows(2) {
-            if !(w[1] > w[0]) {
+            if w[1].partial_cmp(&w[0]) != Some(Ordering::Greater) {
                 return Err(Error::invalid(
                     "platform.wind.angle_deg",
                     w[1].to_degrees(),
@@ -140,7 +141,7 @@ impl CoefficientTable {
             }
         }
         let span = self.angles[n - 1] - self.angles[0];
-        if !(span < 2.0 * PI) {
+        if span.partial_cmp(&(2.0 * PI)) != Some(Ordering::Less) {
             return Err(Error::invalid(
                 "platform.wind.angle_deg",
                 format!("a span of {} deg", span.to_degrees()),
