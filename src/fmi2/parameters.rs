@@ -486,8 +486,9 @@ mod tests {
 
     /// Every parameter of the model description is hydroDatabase or writes a setting of the
     /// override table, and every FMU name of the table is a parameter; a setting in degrees
-    /// has an FMU variable in radians. (A mode's parameter is an Integer whose min, max and
-    /// description give exactly its codes: build.rs checks it against `model/modes.rs`.)
+    /// that has an FMU variable has it in radians. (A mode's parameter is an Integer whose
+    /// min, max and description give exactly its codes: build.rs checks it against
+    /// `model/modes.rs`.)
     #[test]
     fn parameters_and_the_override_table_name_each_other() {
         use crate::scenario::overrides::{by_fmu, SETTINGS};
@@ -509,8 +510,11 @@ mod tests {
                 .unwrap_or_else(|| panic!("{name}"));
             assert_eq!(v.causality, Causality::Parameter, "{name}");
         }
-        for s in SETTINGS.iter().filter(|s| s.in_degrees()) {
-            let name = s.fmu.expect("an angle setting has an FMU variable");
+        for name in SETTINGS
+            .iter()
+            .filter(|s| s.in_degrees())
+            .filter_map(|s| s.fmu)
+        {
             let element = xml_element(name);
             assert!(
                 element.contains("declaredType=\"Angle\" unit=\"rad\""),

@@ -3,7 +3,8 @@
 //!
 //! Columns (any subset, any order): `name`, and the case-table columns of the override
 //! table ([`crate::scenario::overrides::SETTINGS`]: `hs`, `tp`, `gamma`, `direction_deg`,
-//! `spreading_exponent`, `n_directions`, `current_speed`, `current_direction_deg`, `drag`,
+//! `spreading_exponent`, `n_directions`, `current_speed`, `current_direction_deg`,
+//! `wind_speed`, `wind_direction_deg`, `wind_spectrum`, `wind_reference_height`, `drag`,
 //! `cd`, `cd_slow`, `cd_fast`, `drift_damping`, `interaction`, `yaw_headings`,
 //! `surge_stiffness`, `sway_stiffness`, `yaw_stiffness`, `time_step`, `duration`), each with
 //! the rule, unit and vocabulary of its setting: an override changes only what it names; a

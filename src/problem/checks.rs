@@ -12,7 +12,7 @@ use crate::error::{
 };
 use crate::hydro::bidirectional::BidirectionalSource;
 use crate::hydro::qtf::check_tolerance;
-use crate::model::{Dof, DragModel, DriftDamping, Interaction, Mode, SecondOrder};
+use crate::model::{Dof, DragModel, DriftDamping, Interaction, Mode, SecondOrder, WindProfileKind};
 use crate::scenario::limits;
 
 impl Problem {
@@ -61,6 +61,7 @@ impl Problem {
         self.sea.validate(self.environment.gravity)?;
         ranges::CURRENT_SPEED.check("current.speed", self.current.speed)?;
         ranges::DIRECTION.check_degrees("current.direction_deg", self.current.direction)?;
+        self.check_wind()?;
         self.run_wind()?;
         if self.run.duration.is_nan() || self.run.duration <= 0.0 {
             return Err(Error::invalid(
@@ -110,6 +111,52 @@ impl Problem {
         self.validate_qtf()?;
         self.validate_interaction()?;
         ranges::check_initial_state(&self.initial.position, &self.initial.velocity)
+    }
+
+    /// The wind (`[wind]`): its direction within a turn either way, its values
+    /// (`WindField::validate`) and, when there is wind, its gust spectrum at the reference
+    /// height, so that a speed over an averaging period the spectrum does not take is
+    /// refused before a run. That refusal names the setting written last of the averaging
+    /// period, the spectrum and the profile (the period when none is written); the height of
+    /// the spectrum is the reference height, and is named so.
+    fn check_wind(&self) -> Result<()> {
+        let wind = &self.wind;
+        ranges::DIRECTION.check_degrees("wind.direction_deg", wind.direction)?;
+        wind.validate()?;
+        if wind.is_calm() {
+            return Ok(());
+        }
+        let converts = wind.profile.kind() == WindProfileKind::Npd;
+        let period = wind.averaging_period;
+        let mismatch = !converts && (wind.spectrum_period() - period).abs() > 1e-9 * period;
+        wind.gust_spectrum(wind.reference_height)
+            .map(drop)
+            .map_err(|e| match e {
+                Error::InvalidValue { field, reason, .. }
+                    if mismatch && field == "wind.averaging_period" =>
+                {
+                    let keys = ["wind.averaging_period", "wind.spectrum", "wind.profile"];
+                    match self.origins.latest(&keys) {
+                        "wind.spectrum" => Error::invalid(keys[1], wind.spectrum.word(), reason),
+                        "wind.profile" => {
+                            Error::invalid(keys[2], wind.profile.kind().word(), reason)
+                        }
+                        _ => Error::invalid(keys[0], period, reason),
+                    }
+                }
+                Error::InvalidValue {
+                    field,
+                    value,
+                    reason,
+                    at,
+                } if field == "wind.height" => Error::InvalidValue {
+                    field: "wind.reference_height".into(),
+                    value,
+                    reason,
+                    at,
+                },
+                other => other,
+            })
     }
 
     /// The sea's peak period and band within their physical ranges

@@ -1,12 +1,19 @@
 //! What a run uses and where each part comes from: one line per choice that matters (the
 //! data, the masses, the stiffness and the natural periods it gives, the damping, the
-//! drag), printed by `slowdrift simulate` and `montecarlo` before they run and logged by
+//! drag, the wind), printed by `slowdrift simulate` and `montecarlo` before they run and logged by
 //! the FMU at initialisation. Values in SI units, four significant digits.
 
 use super::{Inertia, Origin, Problem};
-use crate::error::numbers::written;
+use crate::error::numbers::{readable, written};
 use crate::error::Result;
-use crate::model::{DragModel, DriftDamping, Mode, WaveFrequencyMotion};
+use crate::model::{DragModel, DriftDamping, Mode, WaveFrequencyMotion, WindSpectrumKind};
+
+/// The band over which the wind line gives the turbulence intensity the gust spectrum
+/// implies, Hz: from a period of about 3 hours to 1 s, the slow drift's and well beyond.
+const WIND_BAND: (f64, f64) = (1e-4, 1.0);
+
+/// What the wind line says of the wind's effect until the wind force is applied.
+const WIND_NOT_APPLIED: &str = "read and checked: it does not load the platform yet";
 
 /// The DOFs' names in the lines, with the units of a stiffness and a mass of each.
 const DOFS: [(&str, &str, &str); 3] = [
@@ -34,6 +41,7 @@ impl Problem {
         lines.extend(self.stiffness_lines(&inertia));
         lines.push(self.damping_line());
         lines.push(self.drag_line());
+        lines.push(self.wind_line()?);
         lines.push(self.motions_line()?);
         lines.extend(inertia.notes.iter().cloned());
         Ok(lines)
@@ -163,6 +171,45 @@ impl Problem {
         })
     }
 
+    /// The wind (`[wind]`): none when calm; else the speed as given (its averaging period,
+    /// height and direction), the profile and the spectrum, and at the reference height the
+    /// mean the gusts fluctuate about (over the spectrum's averaging period) with the
+    /// standard deviation and turbulence intensity (sigma / that mean) of the gust spectrum
+    /// over [`WIND_BAND`].
+    fn wind_line(&self) -> Result<String> {
+        let wind = &self.wind;
+        if wind.is_calm() {
+            return Ok("wind: none".to_string());
+        }
+        let z = wind.reference_height;
+        let spectrum = wind.gust_spectrum(z)?;
+        let mean = wind.mean_at(z)?;
+        let gusts = match wind.spectrum {
+            WindSpectrumKind::Constant => "no gusts".to_string(),
+            _ => {
+                let sigma = spectrum.variance(WIND_BAND.0, WIND_BAND.1)?.sqrt();
+                format!(
+                    "turbulence intensity {:.3} (sigma {sigma:.2} m/s over {} to {} Hz)",
+                    sigma / mean,
+                    written(WIND_BAND.0),
+                    written(WIND_BAND.1)
+                )
+            }
+        };
+        Ok(format!(
+            "wind: {} m/s, the {} s mean at {} m, towards {} deg; profile {}, spectrum {}; at \
+             {} m the {} s mean {mean:.2} m/s, {gusts}; {WIND_NOT_APPLIED}",
+            written(wind.speed),
+            written(wind.averaging_period),
+            written(z),
+            readable(wind.direction.to_degrees()),
+            wind.profile.kind().word(),
+            wind.spectrum.word(),
+            written(z),
+            written(wind.spectrum_period()),
+        ))
+    }
+
     fn drag_line(&self) -> String {
         let strips = format!(
             "{} strips on each of {} columns",
@@ -210,4 +257,109 @@ fn mass_lines(inertia: &Inertia) -> Vec<String> {
     };
     lines.push(format!("{added} ({})", inertia.added_mass_origin));
     lines
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::problem::resolve;
+    use crate::scenario::file::parse;
+    use crate::wind::GustSpectrum;
+    use crate::Problem;
+    use std::path::Path;
+
+    const MINIMAL: &str = include_str!("../../tests/data/minimal.toml");
+
+    /// MINIMAL with a `[wind]` section of `keys`, resolved.
+    fn with_wind(keys: &str) -> Problem {
+        let text = MINIMAL.replace("[drift]", &format!("[wind]\n{keys}\n\n[drift]"));
+        let problem = resolve(&parse(&text, "test.toml", Path::new(".")).unwrap()).unwrap();
+        problem.check().unwrap();
+        problem
+    }
+
+    /// The summary's line that starts with "wind:".
+    fn wind_line(problem: &Problem) -> String {
+        let lines = problem.summary().unwrap();
+        let wind: Vec<&String> = lines.iter().filter(|l| l.starts_with("wind:")).collect();
+        assert_eq!(wind.len(), 1, "{lines:?}");
+        wind[0].clone()
+    }
+
+    /// No wind is one line saying so.
+    #[test]
+    fn calm_is_no_wind() {
+        let problem = with_wind("");
+        assert_eq!(wind_line(&problem), "wind: none");
+        let problem = with_wind("speed = 0\nspectrum = \"kaimal\"");
+        assert_eq!(wind_line(&problem), "wind: none");
+    }
+
+    /// The NPD wind: the speed as given, and at the reference height its 1-hour mean with
+    /// the intensity the spectrum implies over 1e-4 to 1 Hz: sigma from the spectrum's
+    /// band variance (7.0992 m^2/s^2 over all frequencies at 20 m/s and 10 m, I = 0.133,
+    /// docs/theory.md#wind; the band holds 89 %: 0.13 m^2/s^2 lie below 1e-4 Hz, where S is
+    /// about S(0) = 1280 m^2/s^2 per Hz, and 0.6 above 1 Hz in its f^-5/3 tail).
+    #[test]
+    fn the_wind_line_gives_the_mean_and_the_intensity_of_the_spectrum() {
+        let problem = with_wind("speed = 20.0\ndirection_deg = 30.0");
+        let line = wind_line(&problem);
+        let npd = GustSpectrum::Npd {
+            speed: 20.0,
+            height: 10.0,
+        };
+        let sigma = npd.variance(1e-4, 1.0).unwrap().sqrt();
+        assert!(
+            sigma * sigma < 7.0992 - 0.6 && sigma * sigma > 7.0992 - 1.0,
+            "{sigma}"
+        );
+        assert_eq!(
+            line,
+            format!(
+                "wind: 20 m/s, the 3600 s mean at 10 m, towards 30 deg; profile npd, spectrum \
+                 npd; at 10 m the 3600 s mean 20.00 m/s, turbulence intensity {:.3} (sigma \
+                 {sigma:.2} m/s over 1e-4 to 1 Hz); read and checked: it does not load the \
+                 platform yet",
+                sigma / 20.0
+            )
+        );
+        assert!(line.contains("turbulence intensity 0.12"), "{line}");
+    }
+
+    /// Harris from the 10-min mean at 50 m with the power law: its mean at 50 m is the speed
+    /// given, and its variance 6.6776 kappa U10^2 (docs/theory.md#wind) with U10 = 20
+    /// (10/50)^0.12 brought down by the power law, the intensity relative to the mean at 50 m.
+    /// The constant wind has no gusts.
+    #[test]
+    fn the_wind_line_brings_the_spectrum_to_the_reference_height() {
+        let problem = with_wind(
+            "speed = 20.0\nreference_height = 50.0\naveraging_period = 600\n\
+             profile = \"power-law\"\nspectrum = \"harris\"",
+        );
+        let line = wind_line(&problem);
+        let u10 = 20.0 * 0.2f64.powf(0.12);
+        let whole = (6.6776 * 0.002 * u10 * u10).sqrt() / 20.0;
+        let shown: f64 = line
+            .split("turbulence intensity ")
+            .nth(1)
+            .and_then(|rest| rest.split(' ').next())
+            .and_then(|i| i.parse().ok())
+            .unwrap_or_else(|| panic!("{line}"));
+        assert!(
+            shown < whole + 5e-4 && shown > 0.95 * whole,
+            "{shown} vs {whole}: {line}"
+        );
+        assert!(
+            line.starts_with(
+                "wind: 20 m/s, the 600 s mean at 50 m, towards 0 deg; profile power-law, \
+                 spectrum harris; at 50 m the 600 s mean 20.00 m/s, "
+            ),
+            "{line}"
+        );
+        let constant = with_wind("speed = 12.0\nspectrum = \"constant\"");
+        assert!(
+            wind_line(&constant).contains("at 10 m the 3600 s mean 12.00 m/s, no gusts"),
+            "{}",
+            wind_line(&constant)
+        );
+    }
 }

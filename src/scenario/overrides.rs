@@ -29,10 +29,11 @@ use super::{Current, ModelOptions, Platform, Run, Scenario, Written, DEFAULT_N_D
 use crate::error::numbers::written;
 use crate::model::{
     DragKind, DragModel, DriftDamping, Interaction, Mode, SpectrumKind, Vocabulary,
-    WaveFrequencyMotion, YawFollowing,
+    WaveFrequencyMotion, WindSpectrumKind, YawFollowing,
 };
 use crate::sea_state::SeaState;
 use crate::sea_state::{Spectrum, Spreading};
+use crate::wind::WindField;
 
 /// A value written for a setting.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -71,6 +72,7 @@ const LARGEST_EXACT_WHOLE: f64 = 9_007_199_254_740_992.0;
 pub struct Parts<'a> {
     pub sea: &'a mut SeaState,
     pub current: &'a mut Current,
+    pub wind: &'a mut WindField,
     pub run: &'a mut Run,
     pub platform: &'a mut Platform,
     pub model: &'a mut ModelOptions,
@@ -80,6 +82,7 @@ pub struct Parts<'a> {
 pub struct View<'a> {
     pub sea: &'a SeaState,
     pub current: &'a Current,
+    pub wind: &'a WindField,
     pub run: &'a Run,
     pub platform: &'a Platform,
     pub model: &'a ModelOptions,
@@ -121,6 +124,7 @@ impl Setting {
         let parts = Parts {
             sea: &mut scenario.sea,
             current: &mut scenario.current,
+            wind: &mut scenario.wind,
             run: &mut scenario.run,
             platform: &mut scenario.platform,
             model: &mut scenario.model,
@@ -135,6 +139,7 @@ impl Setting {
         (self.get)(View {
             sea: &scenario.sea,
             current: &scenario.current,
+            wind: &scenario.wind,
             run: &scenario.run,
             platform: &scenario.platform,
             model: &scenario.model,
@@ -249,7 +254,7 @@ fn drag_is(kind: DragKind) -> String {
 }
 
 /// The table, in the order it is applied.
-pub static SETTINGS: [Setting; 24] = [
+pub static SETTINGS: [Setting; 28] = [
     Setting {
         key: "sea.spreading_exponent",
         fmu: Some("spreadingExponent"),
@@ -447,6 +452,60 @@ pub static SETTINGS: [Setting; 24] = [
             Ok(())
         },
         get: |s| Value::Number(s.current.direction),
+    },
+    Setting {
+        key: "wind.speed",
+        fmu: None,
+        column: Some("wind_speed"),
+        mode: None,
+        meaning: "mean wind speed at the reference height over the averaging period, m/s \
+                  (0 = no wind)",
+        apply: |s, v| {
+            s.wind.speed = number(v)?;
+            Ok(())
+        },
+        get: |s| Value::Number(s.wind.speed),
+    },
+    Setting {
+        key: "wind.direction_deg",
+        fmu: None,
+        column: Some("wind_direction_deg"),
+        mode: None,
+        meaning: "direction the wind blows towards, from +X counter-clockwise (deg in the file \
+                  and case table)",
+        apply: |s, v| {
+            s.wind.direction = number(v)?;
+            Ok(())
+        },
+        get: |s| Value::Number(s.wind.direction),
+    },
+    Setting {
+        key: "wind.spectrum",
+        fmu: WindSpectrumKind::VOCABULARY.parameter(),
+        column: Some("wind_spectrum"),
+        mode: Some(&WindSpectrumKind::VOCABULARY),
+        meaning: "gust spectrum: npd, api, harris, davenport, kaimal, ochi-shin or constant; \
+                  the configuration's drag_coefficient, turbulence_intensity and length_scale \
+                  stay, used where the spectrum uses them",
+        apply: |s, v| {
+            if let Some(spectrum) = chosen(v)? {
+                s.wind.spectrum = spectrum;
+            }
+            Ok(())
+        },
+        get: |s| Value::Word(s.wind.spectrum.word()),
+    },
+    Setting {
+        key: "wind.reference_height",
+        fmu: None,
+        column: Some("wind_reference_height"),
+        mode: None,
+        meaning: "height of the wind speed above the still water level, m",
+        apply: |s, v| {
+            s.wind.reference_height = number(v)?;
+            Ok(())
+        },
+        get: |s| Value::Number(s.wind.reference_height),
     },
     Setting {
         key: "model.drag",
@@ -855,6 +914,43 @@ mod tests {
                 .unwrap();
             assert_eq!(from_override, from_file, "{key}");
         }
+    }
+
+    /// The wind's settings give the scenario that the same keys of `[wind]` give: the
+    /// direction in degrees in the file, radians in the table's values; the spectrum by its
+    /// word, a word of another mode refused listing the spectra.
+    #[test]
+    fn wind_overrides_equal_the_wind_section() {
+        let minimal = include_str!("../../tests/data/minimal.toml");
+        let wind = "[wind]\nspeed = 12.0\ndirection_deg = 45.0\nspectrum = \"api\"\n\
+                    reference_height = 20.0\n\n[drift]";
+        let from_file = parse(&minimal.replace("[drift]", wind), "w.toml", Path::new(".")).unwrap();
+        let mut from_override = parse(minimal, "m.toml", Path::new(".")).unwrap();
+        assert_ne!(from_override, from_file);
+        let at = || Written::Fmu {
+            variable: "x",
+            code: None,
+        };
+        for (key, value) in [
+            ("wind.speed", Value::Number(12.0)),
+            ("wind.direction_deg", Value::Number(45f64.to_radians())),
+            ("wind.spectrum", Value::Word("api")),
+            ("wind.reference_height", Value::Number(20.0)),
+        ] {
+            let setting = by_key(key).unwrap_or_else(|| panic!("{key}"));
+            setting.apply(&mut from_override, value, at()).unwrap();
+            assert_eq!(setting.get(&from_override), value, "{key}");
+        }
+        assert_eq!(from_override, from_file);
+        assert_eq!(
+            by_column("wind_direction_deg").unwrap().key,
+            "wind.direction_deg"
+        );
+        assert!(by_key("wind.direction_deg").unwrap().in_degrees());
+        assert!(matches!(
+            by_key("wind.spectrum").unwrap().apply(&mut from_override, Value::Word("jonswap"), at()),
+            Err(Refusal::Invalid(why)) if why.contains("npd, api, harris, davenport, kaimal, ochi-shin, constant")
+        ));
     }
 
     #[test]

@@ -13,7 +13,10 @@
 //! spectrum's period (the constant wind's: over the period given).
 
 use super::profile::{WindProfile, NPD_REFERENCE_HEIGHT, NPD_REFERENCE_PERIOD};
-use super::spectrum::{api_turbulence_intensity, iec_length_scale, GustSpectrum};
+use super::spectrum::{
+    api_turbulence_intensity, iec_length_scale, require_drag_coefficient, require_intensity,
+    GustSpectrum,
+};
 use crate::error::{require_finite, require_positive, Error, Result};
 use crate::model::{Mode, WindSpectrumKind};
 use serde::Serialize;
@@ -79,7 +82,8 @@ impl WindField {
         self.speed == 0.0
     }
 
-    /// Checks what does not depend on the force's height; the error names the setting.
+    /// Checks what does not depend on the force's height (the spectrum's parameters too,
+    /// whether or not there is wind); the error names the setting.
     pub fn validate(&self) -> Result<()> {
         require_finite("wind.speed", self.speed)?;
         if self.speed < 0.0 {
@@ -93,6 +97,13 @@ impl WindField {
         require_positive("wind.reference_height", self.reference_height)?;
         require_positive("wind.averaging_period", self.averaging_period)?;
         require_positive("wind.air_density", self.air_density)?;
+        require_drag_coefficient(self.drag_coefficient)?;
+        if let Some(intensity) = self.turbulence_intensity {
+            require_intensity(intensity)?;
+        }
+        if let Some(length) = self.length_scale {
+            require_positive("wind.length_scale", length)?;
+        }
         self.profile.validate()
     }
 

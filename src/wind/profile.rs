@@ -12,6 +12,15 @@ pub const NPD_REFERENCE_HEIGHT: f64 = 10.0;
 /// The averaging period of the NPD profile's U0, T0 = 1 hour, s.
 pub const NPD_REFERENCE_PERIOD: f64 = 3600.0;
 
+/// The power-law exponent alpha when none is given (`[wind] profile_exponent`): DNV-RP-C205
+/// sec. 2.3.2's open sea.
+pub const DEFAULT_POWER_LAW_EXPONENT: f64 = 0.12;
+
+/// The logarithmic profile's roughness length z0 when none is given (`[wind]
+/// roughness_length`), m: within DNV-RP-C205 table 2-1's 1e-4 to 3e-3 m for the open sea
+/// with waves.
+pub const DEFAULT_ROUGHNESS_LENGTH: f64 = 0.001;
+
 /// The largest power-law exponent accepted: offshore profiles have alpha of about 0.1-0.14
 /// (DNV-RP-C205 table 2-1 lists up to 0.4 for cities); 1 would make the speed grow as the
 /// height itself.

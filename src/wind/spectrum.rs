@@ -361,7 +361,7 @@ fn ochi_shin_shape_over_f_star(f_star: f64) -> f64 {
     }
 }
 
-fn require_drag_coefficient(kappa: f64) -> Result<()> {
+pub(super) fn require_drag_coefficient(kappa: f64) -> Result<()> {
     require_positive("wind.drag_coefficient", kappa)?;
     if kappa > MAX_DRAG_COEFFICIENT {
         return Err(Error::invalid(
@@ -376,7 +376,7 @@ fn require_drag_coefficient(kappa: f64) -> Result<()> {
     Ok(())
 }
 
-fn require_intensity(intensity: f64) -> Result<()> {
+pub(super) fn require_intensity(intensity: f64) -> Result<()> {
     require_positive("wind.turbulence_intensity", intensity)?;
     if intensity > 1.0 {
         return Err(Error::invalid(

@@ -397,3 +397,47 @@ fn unreadable_csv_is_an_io_error() {
     let err = parse_text(&minimal_with_csv(&missing)).expect_err("no file");
     assert!(matches!(err, Error::Io { .. }), "{err:?}");
 }
+
+/// The case table's wind columns set the wind of the base in the file's units (degrees for
+/// `wind_direction_deg`), and a value the wind cannot take fails that case's check naming
+/// the row and column.
+#[test]
+fn case_table_wind_columns_set_the_wind() {
+    use slowdrift::model::WindSpectrumKind;
+    use slowdrift::montecarlo::cases::parse_case_table;
+    let base = parse_text(&MINIMAL.replace("[drift]", "[wind]\nspeed = 10.0\n\n[drift]"))
+        .expect("valid base");
+    let table = "name, wind_speed, wind_direction_deg, wind_spectrum, wind_reference_height\n\
+                 storm, 25, 90, kaimal, 20\n\
+                 keep, , , , \n\
+                 gale, -3, , , \n";
+    let rows = parse_case_table(table, "cases.csv").expect("a valid table");
+    let cases: Vec<_> = rows
+        .iter()
+        .map(|row| row.case(&base, None, "cases.csv").expect("a case"))
+        .collect();
+    let storm = &cases[0].problem.wind;
+    assert_eq!(storm.speed, 25.0);
+    assert_eq!(storm.direction, 90f64.to_radians());
+    assert_eq!(storm.spectrum, WindSpectrumKind::Kaimal);
+    assert_eq!(storm.reference_height, 20.0);
+    cases[0].problem.check().expect("the storm case is valid");
+    assert_eq!(cases[1].problem, base);
+    let err = cases[2]
+        .problem
+        .check()
+        .expect_err("a negative speed")
+        .to_string();
+    assert!(
+        err.starts_with("cases.csv:4: invalid row 3, column 'wind_speed' = -3: must be at least 0"),
+        "{err}"
+    );
+    let err = parse_case_table("wind_spectrum\nfroya\n", "cases.csv")
+        .expect_err("not a spectrum")
+        .to_string();
+    assert_eq!(
+        err,
+        "cases.csv:2: row 1, column 'wind_spectrum': 'froya' is not one of npd, api, harris, \
+         davenport, kaimal, ochi-shin, constant"
+    );
+}

@@ -3,8 +3,8 @@
 //!
 //! This module reads the text and names errors by file and line ([`load`], [`parse`]); each
 //! section is read by the file of what it describes: `sea` (`[environment]`, `[sea]`,
-//! `[current]`), `platform` (`[platform]`, `[[platform.columns]]`), `run` (`[run]`,
-//! `[initial]`), `model` (`[model]`) and `drift` (`[drift]`). Degrees become radians there,
+//! `[current]`), `wind` (`[wind]`), `platform` (`[platform]`, `[[platform.columns]]`), `run`
+//! (`[run]`, `[initial]`), `model` (`[model]`) and `drift` (`[drift]`). Degrees become radians there,
 //! once; modes are read from their words (`model::Mode`). The reader refuses what does not
 //! fit the format (unknown keys, wrong types, keys that the section's choice does not use);
 //! values are checked when the problem is (`problem::Problem::check`).
@@ -14,6 +14,7 @@ mod model;
 mod platform;
 mod run;
 mod sea;
+mod wind;
 
 pub use run::DEFAULT_TIME_STEP;
 pub use sea::{DEFAULT_SEED, LONG_CRESTED_DIRECTIONS};
@@ -23,7 +24,6 @@ use super::{ModelOptions, Origins, Scenario};
 use crate::error::{Error, Location, Result};
 use crate::files::Cost;
 use crate::model::Mode;
-use crate::wind::WindField;
 use serde::Deserialize;
 use std::ops::Range;
 use std::path::Path;
@@ -177,6 +177,8 @@ struct ConfigFile {
     sea: Spanned<sea::SeaFile>,
     #[serde(default)]
     current: sea::CurrentFile,
+    #[serde(default)]
+    wind: wind::WindFile,
     run: run::RunFile,
     platform: platform::PlatformFile,
     #[serde(default)]
@@ -214,7 +216,7 @@ impl ConfigFile {
             environment: self.environment.into_core(),
             sea,
             current: self.current.into_core(),
-            wind: WindField::default(),
+            wind: self.wind.into_core(&origins)?,
             run: self.run.into_core().map_err(|e| origins.locate(e))?,
             platform: self.platform.into_core(&origins)?,
             hydro,
