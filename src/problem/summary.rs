@@ -12,9 +12,6 @@ use crate::model::{DragModel, DriftDamping, Mode, WaveFrequencyMotion, WindSpect
 /// implies, Hz: from a period of about 3 hours to 1 s, the slow drift's and well beyond.
 const WIND_BAND: (f64, f64) = (1e-4, 1.0);
 
-/// What the wind line says of the wind's effect until the wind force is applied.
-const WIND_NOT_APPLIED: &str = "read and checked: it does not load the platform yet";
-
 /// The DOFs' names in the lines, with the units of a stiffness and a mass of each.
 const DOFS: [(&str, &str, &str); 3] = [
     ("surge", "N/m", "kg"),
@@ -172,18 +169,26 @@ impl Problem {
     }
 
     /// The wind (`[wind]`): none when calm; else the speed as given (its averaging period,
-    /// height and direction), the profile and the spectrum, and at the reference height the
-    /// mean the gusts fluctuate about (over the spectrum's averaging period) with the
-    /// standard deviation and turbulence intensity (sigma / that mean) of the gust spectrum
-    /// over [`WIND_BAND`].
+    /// height and direction), the profile and the spectrum, and at the height of the wind
+    /// force (`[platform.wind]`, its form) the mean the gusts fluctuate about (over the
+    /// spectrum's averaging period) with the standard deviation and turbulence intensity
+    /// (sigma / that mean) of the gust spectrum over [`WIND_BAND`].
     fn wind_line(&self) -> Result<String> {
         let wind = &self.wind;
-        if wind.is_calm() {
+        let Some(run) = self.run_wind()? else {
             return Ok("wind: none".to_string());
-        }
-        let z = wind.reference_height;
-        let spectrum = wind.gust_spectrum(z)?;
-        let mean = wind.mean_at(z)?;
+        };
+        let (z, spectrum, mean) = (run.height, run.gust, run.mean);
+        let form = match self.platform.wind.as_ref().map(|w| &w.coefficients) {
+            Some(crate::wind::WindCoefficients::Areas(areas)) => {
+                let n = areas.len();
+                format!(
+                    "{n} projected area{} (API RP 2SK)",
+                    if n == 1 { "" } else { "s" }
+                )
+            }
+            _ => "coefficients against the relative angle".to_string(),
+        };
         let gusts = match wind.spectrum {
             WindSpectrumKind::Constant => "no gusts".to_string(),
             _ => {
@@ -198,10 +203,11 @@ impl Problem {
         };
         Ok(format!(
             "wind: {} m/s, the {} s mean at {} m, towards {} deg; profile {}, spectrum {}; at \
-             {} m the {} s mean {mean:.2} m/s, {gusts}; {WIND_NOT_APPLIED}",
+             the force's height {} m the {} s mean {mean:.2} m/s, {gusts}; on {form} \
+             ([platform.wind])",
             written(wind.speed),
             written(wind.averaging_period),
-            written(z),
+            written(wind.reference_height),
             readable(wind.direction.to_degrees()),
             wind.profile.kind().word(),
             wind.spectrum.word(),
@@ -270,8 +276,15 @@ mod tests {
     const MINIMAL: &str = include_str!("../../tests/data/minimal.toml");
 
     /// MINIMAL with a `[wind]` section of `keys`, resolved.
-    fn with_wind(keys: &str) -> Problem {
-        let text = MINIMAL.replace("[drift]", &format!("[wind]\n{keys}\n\n[drift]"));
+    /// MINIMAL with `[wind]` `keys` on one projected area whose height, `force_height`, is
+    /// the force's.
+    fn with_wind(keys: &str, force_height: f64) -> Problem {
+        let area = format!(
+            "[platform.wind]\nheight = {force_height}\n[[platform.wind.areas]]\nx = 0.0\n\
+             y = 0.0\nheight = {force_height}\narea_x = 100.0\narea_y = 100.0\n\
+             shape_coefficient = 1.0\n\n"
+        );
+        let text = MINIMAL.replace("[drift]", &format!("[wind]\n{keys}\n\n{area}[drift]"));
         let problem = resolve(&parse(&text, "test.toml", Path::new(".")).unwrap()).unwrap();
         problem.check().unwrap();
         problem
@@ -288,9 +301,9 @@ mod tests {
     /// No wind is one line saying so.
     #[test]
     fn calm_is_no_wind() {
-        let problem = with_wind("");
+        let problem = with_wind("", 10.0);
         assert_eq!(wind_line(&problem), "wind: none");
-        let problem = with_wind("speed = 0\nspectrum = \"kaimal\"");
+        let problem = with_wind("speed = 0\nspectrum = \"kaimal\"", 10.0);
         assert_eq!(wind_line(&problem), "wind: none");
     }
 
@@ -301,7 +314,7 @@ mod tests {
     /// about S(0) = 1280 m^2/s^2 per Hz, and 0.6 above 1 Hz in its f^-5/3 tail).
     #[test]
     fn the_wind_line_gives_the_mean_and_the_intensity_of_the_spectrum() {
-        let problem = with_wind("speed = 20.0\ndirection_deg = 30.0");
+        let problem = with_wind("speed = 20.0\ndirection_deg = 30.0", 10.0);
         let line = wind_line(&problem);
         let npd = GustSpectrum::Npd {
             speed: 20.0,
@@ -316,9 +329,9 @@ mod tests {
             line,
             format!(
                 "wind: 20 m/s, the 3600 s mean at 10 m, towards 30 deg; profile npd, spectrum \
-                 npd; at 10 m the 3600 s mean 20.00 m/s, turbulence intensity {:.3} (sigma \
-                 {sigma:.2} m/s over 1e-4 to 1 Hz); read and checked: it does not load the \
-                 platform yet",
+                 npd; at the force's height 10 m the 3600 s mean 20.00 m/s, turbulence \
+                 intensity {:.3} (sigma {sigma:.2} m/s over 1e-4 to 1 Hz); on 1 projected \
+                 area (API RP 2SK) ([platform.wind])",
                 sigma / 20.0
             )
         );
@@ -334,6 +347,7 @@ mod tests {
         let problem = with_wind(
             "speed = 20.0\nreference_height = 50.0\naveraging_period = 600\n\
              profile = \"power-law\"\nspectrum = \"harris\"",
+            50.0,
         );
         let line = wind_line(&problem);
         let u10 = 20.0 * 0.2f64.powf(0.12);
@@ -351,13 +365,14 @@ mod tests {
         assert!(
             line.starts_with(
                 "wind: 20 m/s, the 600 s mean at 50 m, towards 0 deg; profile power-law, \
-                 spectrum harris; at 50 m the 600 s mean 20.00 m/s, "
+                 spectrum harris; at the force's height 50 m the 600 s mean 20.00 m/s, "
             ),
             "{line}"
         );
-        let constant = with_wind("speed = 12.0\nspectrum = \"constant\"");
+        let constant = with_wind("speed = 12.0\nspectrum = \"constant\"", 10.0);
         assert!(
-            wind_line(&constant).contains("at 10 m the 3600 s mean 12.00 m/s, no gusts"),
+            wind_line(&constant)
+                .contains("at the force's height 10 m the 3600 s mean 12.00 m/s, no gusts"),
             "{}",
             wind_line(&constant)
         );

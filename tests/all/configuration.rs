@@ -441,3 +441,61 @@ fn case_table_wind_columns_set_the_wind() {
          davenport, kaimal, ochi-shin, constant"
     );
 }
+
+/// `[platform.wind]` as a table (angles in degrees read as radians, the centre defaulting
+/// to the origin) and as areas; a table key beside the areas, a missing table key and a
+/// short coefficient row refused naming the key and its line; `[wind]` without
+/// `[platform.wind]` refused naming the speed.
+#[test]
+fn platform_wind_coefficients_are_read_and_checked() {
+    use slowdrift::wind::WindCoefficients;
+    let table = "[platform.wind]\nheight = 30.0\nangle_deg = [-180.0, -90.0, 0.0, 90.0]\n\
+                 cx = [-0.8, 0.0, 0.8, 0.0]\ncy = [0.0, -0.9, 0.0, 0.9]\n\
+                 cmz = [0.0, 0.05, 0.0, -0.05]\narea_x = 2500.0\narea_y = 3000.0\n\
+                 length = 90.0\n\n";
+    let with = |block: &str| MINIMAL.replace("[drift]", &format!("{block}[drift]"));
+    let problem = parse_text(&with(table)).unwrap();
+    let load = problem.platform.wind.as_ref().unwrap();
+    assert_eq!(load.height, 30.0);
+    match &load.coefficients {
+        WindCoefficients::Table(t) => {
+            assert!((t.angles[1] + std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+            assert_eq!(t.centre, [0.0, 0.0]);
+            assert_eq!(t.cmz[3], -0.05);
+        }
+        other => panic!("{other:?}"),
+    }
+    let areas = "[platform.wind]\nheight = 20.0\n[[platform.wind.areas]]\nx = 1.0\ny = 2.0\n\
+                 height = 20.0\narea_x = 10.0\narea_y = 20.0\nshape_coefficient = 1.5\n\n";
+    match &parse_text(&with(areas))
+        .unwrap()
+        .platform
+        .wind
+        .unwrap()
+        .coefficients
+    {
+        WindCoefficients::Areas(a) => assert_eq!((a.len(), a[0].centre), (1, [1.0, 2.0])),
+        other => panic!("{other:?}"),
+    }
+    let mixed = with(&areas.replace("height = 20.0\n[[", "height = 20.0\nlength = 5.0\n[["));
+    let err = error_text(&mixed);
+    assert!(
+        err.contains("[platform] wind.length") && err.contains("not both"),
+        "{err}"
+    );
+    let missing = with(&table.replace("length = 90.0\n", ""));
+    assert!(error_text(&missing).contains("[platform] wind.length"));
+    let short = with(&table.replace("cy = [0.0, -0.9, 0.0, 0.9]", "cy = [0.0, -0.9, 0.0]"));
+    let err = error_text(&short);
+    assert!(
+        err.contains("[platform] wind.cy")
+            && err.contains(&format!(":{}:", key_line(&short, "cy"))),
+        "{err}"
+    );
+    let windy = MINIMAL.replace("[drift]", "[wind]\nspeed = 15.0\n\n[drift]");
+    let err = error_text(&windy);
+    assert!(
+        err.contains("[wind] speed") && err.contains("[platform.wind]"),
+        "{err}"
+    );
+}

@@ -3,6 +3,7 @@
 use crate::error::{Error, Result};
 use crate::model::Cylinder;
 use crate::scenario::{BodyInertia, Motions, Origins, Platform};
+use crate::wind::{CoefficientTable, WindArea, WindCoefficients, WindLoad};
 use serde::Deserialize;
 
 /// `[platform]`; every matrix is indexed (surge, sway, yaw) like [`Platform`].
@@ -20,6 +21,40 @@ pub(super) struct PlatformFile {
     #[serde(default)]
     columns: Vec<ColumnFile>,
     motions: Option<MotionsFile>,
+    wind: Option<WindLoadFile>,
+}
+
+/// `[platform.wind]`: the wind coefficients, body frame (docs/configuration.md#platform-wind):
+/// a table against the relative angle, or `[[platform.wind.areas]]`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct WindLoadFile {
+    /// m above still water.
+    height: f64,
+    angle_deg: Option<Vec<f64>>,
+    cx: Option<Vec<f64>>,
+    cy: Option<Vec<f64>>,
+    cmz: Option<Vec<f64>>,
+    /// m^2, m^2, m.
+    area_x: Option<f64>,
+    area_y: Option<f64>,
+    length: Option<f64>,
+    /// (x, y), m.
+    centre: Option<[f64; 2]>,
+    #[serde(default)]
+    areas: Vec<WindAreaFile>,
+}
+
+/// `[[platform.wind.areas]]`, body frame, m and m^2.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct WindAreaFile {
+    x: f64,
+    y: f64,
+    height: f64,
+    area_x: f64,
+    area_y: f64,
+    shape_coefficient: f64,
 }
 
 /// `[platform.motions]`: body frame about the reference point (docs/configuration.md).
@@ -56,6 +91,10 @@ impl PlatformFile {
             Some(m) => Some(m.into_core().map_err(|e| origins.locate(e))?),
             None => None,
         };
+        let wind = match self.wind {
+            Some(w) => Some(w.into_core().map_err(|e| origins.locate(e))?),
+            None => None,
+        };
         Ok(Platform {
             mass: self.mass,
             yaw_inertia: self.yaw_inertia,
@@ -74,8 +113,76 @@ impl PlatformFile {
                 })
                 .collect(),
             motions,
-            wind: None,
+            wind,
         })
+    }
+}
+
+impl WindLoadFile {
+    /// The coefficients, checked: the table's keys all given (the centre defaults to the
+    /// reference point) or areas alone.
+    fn into_core(self) -> Result<WindLoad> {
+        let table_keys = [
+            ("angle_deg", self.angle_deg.is_some()),
+            ("cx", self.cx.is_some()),
+            ("cy", self.cy.is_some()),
+            ("cmz", self.cmz.is_some()),
+            ("area_x", self.area_x.is_some()),
+            ("area_y", self.area_y.is_some()),
+            ("length", self.length.is_some()),
+            ("centre", self.centre.is_some()),
+        ];
+        let coefficients = if self.areas.is_empty() {
+            let missing = |key: &str| {
+                Error::invalid(
+                    format!("platform.wind.{key}"),
+                    "missing",
+                    "the coefficient table needs angle_deg, cx, cy, cmz, area_x, area_y and \
+                     length (or give [[platform.wind.areas]] instead)",
+                )
+            };
+            WindCoefficients::Table(CoefficientTable {
+                angles: self
+                    .angle_deg
+                    .ok_or_else(|| missing("angle_deg"))?
+                    .iter()
+                    .map(|d| d.to_radians())
+                    .collect(),
+                cx: self.cx.ok_or_else(|| missing("cx"))?,
+                cy: self.cy.ok_or_else(|| missing("cy"))?,
+                cmz: self.cmz.ok_or_else(|| missing("cmz"))?,
+                area_x: self.area_x.ok_or_else(|| missing("area_x"))?,
+                area_y: self.area_y.ok_or_else(|| missing("area_y"))?,
+                length: self.length.ok_or_else(|| missing("length"))?,
+                centre: self.centre.unwrap_or([0.0, 0.0]),
+            })
+        } else {
+            if let Some((key, _)) = table_keys.iter().find(|(_, given)| *given) {
+                return Err(Error::invalid(
+                    format!("platform.wind.{key}"),
+                    "beside [[platform.wind.areas]]",
+                    "give the coefficient table or the areas, not both",
+                ));
+            }
+            WindCoefficients::Areas(
+                self.areas
+                    .into_iter()
+                    .map(|a| WindArea {
+                        centre: [a.x, a.y],
+                        height: a.height,
+                        area_x: a.area_x,
+                        area_y: a.area_y,
+                        shape_coefficient: a.shape_coefficient,
+                    })
+                    .collect(),
+            )
+        };
+        let load = WindLoad {
+            height: self.height,
+            coefficients,
+        };
+        load.validate()?;
+        Ok(load)
     }
 }
 
