@@ -24,6 +24,11 @@
 //! slow term gives 1/2 rho D dz C_DS J(U_c). Strips at their midpoints from the keel to the
 //! mean surface, the yaw rate through the strip's lever.
 //!
+//! Wind (docs/theory.md#wind-force), linearised about the mean wind on the body at rest at
+//! the mean position: the gust force F_i ~ (dF_i/dU) u(t), so its spectrum (dF_i/dU)^2
+//! S_u(mu), independent of the waves' and added to theirs, and the wind damping -dF_i/dv_i
+//! added to B_ii (both by central differences of `wind::WindForce`).
+//!
 //! Left out, so what the comparison shows: the coupling between the DOFs, the cross terms
 //! between directions of a spread sea, the full QTF's off-diagonal (Newman's rule stands
 //! for it), the slowly varying parts of the damping and of the drag, the drag's own slowly
@@ -98,11 +103,13 @@ pub struct DampingParts {
     pub drag: f64,
     /// The quadratic damping's equivalent linear damping.
     pub quadratic: f64,
+    /// The wind's damping -dF_i/dv_i about the mean wind.
+    pub wind: f64,
 }
 
 impl DampingParts {
     pub fn total(&self) -> f64 {
-        self.linear + self.wave_drift + self.drag + self.quadratic
+        self.linear + self.wave_drift + self.drag + self.quadratic + self.wind
     }
 }
 
@@ -114,8 +121,10 @@ pub struct SlowDriftPrediction {
     pub damping: [DampingParts; 3],
     /// Spacing of the difference-frequency grid, rad/s.
     pub d_mu: f64,
-    /// S_F,i(m d_mu), m = 0 .. SLOW_GRID - 1 (N^2 s/rad, N^2 m^2 s/rad for yaw).
+    /// S_F,i(m d_mu), m = 0 .. SLOW_GRID - 1 (N^2 s/rad, N^2 m^2 s/rad for yaw): the waves'.
     force: [Vec<f64>; 3],
+    /// The gust force's spectrum on the same grid (zeros when calm).
+    wind_force: [Vec<f64>; 3],
 }
 
 impl SlowDriftPrediction {
@@ -156,11 +165,13 @@ impl SlowDriftPrediction {
             }
         }
         let drag = drag_damping(problem);
+        let (wind_damping, wind_force) = wind_linearised(problem, d_mu)?;
         let damping = std::array::from_fn(|i| DampingParts {
             linear: problem.platform.linear_damping[i][i],
             wave_drift: wave_drift[i],
             drag: drag[i][i],
             quadratic: 0.0,
+            wind: wind_damping[i],
         });
         let mut prediction = SlowDriftPrediction {
             mass,
@@ -168,6 +179,7 @@ impl SlowDriftPrediction {
             damping,
             d_mu,
             force,
+            wind_force,
         };
         for i in 0..3 {
             let bq = problem.platform.quadratic_damping[i][i];
@@ -199,9 +211,27 @@ impl SlowDriftPrediction {
         self.force[dof][m]
     }
 
-    /// S_q,i at the grid's m-th difference frequency (m^2 s/rad; rad^2 s/rad for yaw).
+    /// S_q,i at the grid's m-th difference frequency (m^2 s/rad; rad^2 s/rad for yaw): the
+    /// waves' part and the wind's.
     pub fn density(&self, dof: usize, m: usize) -> f64 {
+        self.wave_density(dof, m) + self.wind_density(dof, m)
+    }
+
+    /// The waves' part of [`SlowDriftPrediction::density`].
+    pub fn wave_density(&self, dof: usize, m: usize) -> f64 {
         self.force[dof][m] * self.transfer_squared(dof, m as f64 * self.d_mu)
+    }
+
+    /// The wind gusts' part of [`SlowDriftPrediction::density`] (zero when calm).
+    pub fn wind_density(&self, dof: usize, m: usize) -> f64 {
+        self.wind_force[dof][m] * self.transfer_squared(dof, m as f64 * self.d_mu)
+    }
+
+    /// Whether the prediction has a wind part.
+    pub fn has_wind(&self) -> bool {
+        self.wind_force[0].iter().any(|&s| s > 0.0)
+            || self.wind_force[1].iter().any(|&s| s > 0.0)
+            || self.wind_force[2].iter().any(|&s| s > 0.0)
     }
 
     /// The predicted variance of DOF `dof` (m^2, rad^2): the trapezoidal integral of the
@@ -248,6 +278,40 @@ fn add_force_spectrum(
                 0.0
             };
     }
+}
+
+/// The wind linearised about its mean on the body at rest at the mean position: the
+/// damping -dF_i/dv_i (N s/m, N m s/rad) and the gust force's spectrum (dF_i/dU)^2 S_u on the
+/// grid m d_mu (central differences of the force, steps 1e-4 of the mean speed and 1e-4 m/s,
+/// 1e-6 rad/s); zeros when calm.
+fn wind_linearised(problem: &Problem, d_mu: f64) -> Result<([f64; 3], [Vec<f64>; 3])> {
+    let zero = || std::array::from_fn(|_| vec![0.0; SLOW_GRID]);
+    let Some(wind) = problem.run_wind()? else {
+        return Ok(([0.0; 3], zero()));
+    };
+    let force = |speed: f64, v: [f64; 3]| wind.force.force(speed, 0.0, v);
+    let du = 1e-4 * wind.mean;
+    let (up, down) = (
+        force(wind.mean + du, [0.0; 3]),
+        force(wind.mean - du, [0.0; 3]),
+    );
+    let gain: [f64; 3] = std::array::from_fn(|i| (up[i] - down[i]) / (2.0 * du));
+    let damping = std::array::from_fn(|i| {
+        let step = if i == 2 { 1e-6 } else { 1e-4 };
+        let mut v = [0.0; 3];
+        v[i] = step;
+        let plus = force(wind.mean, v)[i];
+        v[i] = -step;
+        let minus = force(wind.mean, v)[i];
+        -(plus - minus) / (2.0 * step)
+    });
+    let mut spectra = zero();
+    for (i, spectrum) in spectra.iter_mut().enumerate() {
+        for (m, s) in spectrum.iter_mut().enumerate() {
+            *s = gain[i] * gain[i] * wind.gust.density_per_rad(m as f64 * d_mu);
+        }
+    }
+    Ok((damping, spectra))
 }
 
 fn trapezoid(f: &[f64], h: f64) -> f64 {
@@ -379,6 +443,8 @@ pub struct MotionRecord {
     /// The wave-frequency motion of the six DOFs (inertial axes), m and rad; zeros where
     /// the run has none.
     pub wave_frequency: [Vec<f64>; 6],
+    /// The wind speed at the force's height, m/s; zeros when calm.
+    pub wind_speed: Vec<f64>,
 }
 
 /// Runs `problem` for `transient + length` seconds and keeps the motion of the last
@@ -405,6 +471,7 @@ pub fn motion_record(problem: &Problem, transient: f64, length: f64) -> Result<M
         dt,
         slow: Default::default(),
         wave_frequency: Default::default(),
+        wind_speed: Vec::new(),
     };
     for n in 0..skip + count {
         if n >= skip {
@@ -415,6 +482,7 @@ pub fn motion_record(problem: &Problem, transient: f64, length: f64) -> Result<M
             for i in 0..6 {
                 record.wave_frequency[i].push(out.motion.wave_frequency[i]);
             }
+            record.wind_speed.push(out.wind_speed);
         }
         sim.step([0.0; 3])?;
     }

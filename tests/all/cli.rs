@@ -788,6 +788,36 @@ fn study_motion_writes_spectra_variances_and_figure() {
     let drag: f64 = surge[6].parse().unwrap();
     assert!(drag > 0.0, "the default's drag damps: {surge:?}");
     assert_figure(&dir, "motion_spectra");
+    // With wind: the slow drift's prediction in its two parts, and the wind speed's spectrum.
+    let windy = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/default_wind.toml");
+    let run = slowdrift(&[
+        "study",
+        "motion",
+        "--config",
+        windy.to_str().unwrap(),
+        "--duration",
+        "8192",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let csv = std::fs::read_to_string(dir.join("motion_spectra.csv")).unwrap();
+    for part in [
+        "slow-drift,surge X,predicted wave drift,",
+        "slow-drift,surge X,predicted wind gusts,",
+        "wind,speed,simulated,",
+        "wind,speed,predicted,",
+    ] {
+        assert!(csv.contains(part), "no {part}");
+    }
+    let variances = std::fs::read_to_string(dir.join("motion_variances.csv")).unwrap();
+    let surge: Vec<&str> = variances.lines().nth(1).unwrap().split(',').collect();
+    let wind_damping: f64 = surge[8].parse().unwrap();
+    assert!(wind_damping > 0.0, "{surge:?}");
     assert!(
         slowdrift(&["study", "motion", "--duration", "0", "--out", "x"])
             .status

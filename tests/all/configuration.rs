@@ -405,8 +405,10 @@ fn unreadable_csv_is_an_io_error() {
 fn case_table_wind_columns_set_the_wind() {
     use slowdrift::model::WindSpectrumKind;
     use slowdrift::montecarlo::cases::parse_case_table;
-    let base = parse_text(&MINIMAL.replace("[drift]", "[wind]\nspeed = 10.0\n\n[drift]"))
-        .expect("valid base");
+    let wind = "[wind]\nspeed = 10.0\n\n[platform.wind]\nheight = 20.0\n\
+                [[platform.wind.areas]]\nx = 0.0\ny = 0.0\nheight = 20.0\narea_x = 100.0\n\
+                area_y = 100.0\nshape_coefficient = 1.0\n\n[drift]";
+    let base = parse_text(&MINIMAL.replace("[drift]", wind)).expect("valid base");
     let table = "name, wind_speed, wind_direction_deg, wind_spectrum, wind_reference_height\n\
                  storm, 25, 90, kaimal, 20\n\
                  keep, , , , \n\

@@ -26,6 +26,31 @@ const UNMOORED_RANGE: f64 = 0.2;
 /// left out, and the summary says so.
 const NOT_EXCITED: f64 = 1e-6;
 
+/// How a quantity is drawn: its unit on the figure, its SI unit (the CSVs') and the factor
+/// from the SI unit to the figure's.
+#[derive(Clone, Copy)]
+struct Quantity {
+    unit: &'static str,
+    si: &'static str,
+    scale: f64,
+}
+
+const LENGTH: Quantity = Quantity {
+    unit: "m",
+    si: "m",
+    scale: 1.0,
+};
+const ANGLE: Quantity = Quantity {
+    unit: "deg",
+    si: "rad",
+    scale: 180.0 / std::f64::consts::PI,
+};
+const SPEED: Quantity = Quantity {
+    unit: "(m/s)",
+    si: "m/s",
+    scale: 1.0,
+};
+
 /// The DOFs and whether each is an angle (drawn in degrees; the CSVs keep radians).
 const SLOW_NAMES: [(&str, bool); 3] = [("surge X", false), ("sway Y", false), ("yaw θ", true)];
 const WAVE_NAMES: [(&str, bool); 6] = [
@@ -58,7 +83,7 @@ pub(super) fn motion(base: &Problem, args: &MotionArgs) -> Result<(), String> {
     let record = motion_record(base, transient, args.duration).map_err(explain)?;
     let mut csv = String::from("part,dof,source,omega_rad_s,density\n");
     let mut summary =
-        String::from("part,dof,simulated_variance,predicted_variance,damping_linear,damping_wave_drift,damping_drag,damping_quadratic\n");
+        String::from("part,dof,simulated_variance,predicted_variance,damping_linear,damping_wave_drift,damping_drag,damping_quadratic,damping_wind\n");
     let mut panels = Vec::new();
 
     for (i, &(name, angle)) in SLOW_NAMES.iter().enumerate() {
@@ -77,22 +102,47 @@ pub(super) fn motion(base: &Problem, args: &MotionArgs) -> Result<(), String> {
             .collect();
         rows(&mut csv, "slow-drift", name, "simulated", &simulated);
         rows(&mut csv, "slow-drift", name, "predicted", &predicted);
+        // With wind, the prediction's two parts: the waves' and the gusts'.
+        let parts: Vec<(&str, Vec<(f64, f64)>)> = if slow.has_wind() {
+            let part = |density: &dyn Fn(usize) -> f64| -> Vec<(f64, f64)> {
+                slow.mu()
+                    .enumerate()
+                    .skip(1)
+                    .take_while(|(_, mu)| *mu <= slow_top)
+                    .map(|(m, mu)| (mu, density(m)))
+                    .collect()
+            };
+            vec![
+                ("wave drift", part(&|m| slow.wave_density(i, m))),
+                ("wind gusts", part(&|m| slow.wind_density(i, m))),
+            ]
+        } else {
+            Vec::new()
+        };
+        for (label, points) in &parts {
+            let source = format!("predicted {label}");
+            rows(&mut csv, "slow-drift", name, &source, points);
+        }
         let d = &slow.damping[i];
         let variances = (variance(&record.slow[i]), slow.variance(i));
         writeln!(
             summary,
-            "slow-drift,{name},{},{},{},{},{},{}",
-            variances.0, variances.1, d.linear, d.wave_drift, d.drag, d.quadratic
+            "slow-drift,{name},{},{},{},{},{},{},{}",
+            variances.0, variances.1, d.linear, d.wave_drift, d.drag, d.quadratic, d.wind
         )
         .ok();
-        panels.extend(panel(
-            format!("slow drift, {name}"),
-            angle,
-            slow_top,
-            variances,
-            simulated,
-            predicted,
-        ));
+        let quantity = if angle { ANGLE } else { LENGTH };
+        panels.extend(
+            panel(
+                format!("slow drift, {name}"),
+                quantity,
+                slow_top,
+                variances,
+                simulated,
+                predicted,
+            )
+            .map(|p| with_parts(p, quantity, parts)),
+        );
     }
     if let Some(wave) = &wave {
         let (lo, hi) = base.band();
@@ -113,13 +163,13 @@ pub(super) fn motion(base: &Problem, args: &MotionArgs) -> Result<(), String> {
             let variances = (variance(&record.wave_frequency[i]), predicted_variance);
             writeln!(
                 summary,
-                "wave-frequency,{name},{},{},,,,",
+                "wave-frequency,{name},{},{},,,,,",
                 variances.0, variances.1
             )
             .ok();
             panels.extend(panel(
                 format!("wave-frequency {name}"),
-                angle,
+                if angle { ANGLE } else { LENGTH },
                 hi,
                 variances,
                 simulated,
@@ -128,6 +178,33 @@ pub(super) fn motion(base: &Problem, args: &MotionArgs) -> Result<(), String> {
         }
     } else {
         println!("no wave-frequency motion (no RAOs, or [model] wave_frequency_motion = \"off\"): slow drift only");
+    }
+    if let Some(wind) = base.run_wind().map_err(explain)? {
+        // The wind speed at the force's height: its Welch spectrum against the gust spectrum.
+        let top = 1.0;
+        let simulated = welch(&record.wind_speed, record.dt, SLOW_SEGMENT, top)?;
+        let predicted: Vec<(f64, f64)> = (1..=400)
+            .map(|n| {
+                let w = n as f64 * top / 400.0;
+                (w, wind.gust.density_per_rad(w))
+            })
+            .collect();
+        rows(&mut csv, "wind", "speed", "simulated", &simulated);
+        rows(&mut csv, "wind", "speed", "predicted", &predicted);
+        let sigma2 = wind
+            .gust
+            .variance(0.5 / args.duration, 0.5 / record.dt)
+            .map_err(explain)?;
+        let variances = (variance(&record.wind_speed), sigma2);
+        writeln!(summary, "wind,speed,{},{},,,,,", variances.0, variances.1).ok();
+        panels.extend(panel(
+            format!("wind speed at {} m", wind.height),
+            SPEED,
+            top,
+            variances,
+            simulated,
+            predicted,
+        ));
     }
     let rows = panels.len().div_ceil(3).max(1) as u32;
     let figure = Figure {
@@ -152,6 +229,22 @@ pub(super) fn motion(base: &Problem, args: &MotionArgs) -> Result<(), String> {
     print!("{summary}");
     report(&written);
     Ok(())
+}
+
+/// `panel` with the prediction's parts drawn beside its total (dashed, in the palette's
+/// third and fourth colours), scaled as the panel (degrees for angles).
+fn with_parts(mut panel: Panel, quantity: Quantity, parts: Vec<(&str, Vec<(f64, f64)>)>) -> Panel {
+    let scale = quantity.scale * quantity.scale;
+    for (colour, (label, points)) in parts.into_iter().enumerate() {
+        let points = points.into_iter().map(|(w, s)| (w, s * scale)).collect();
+        panel.series.push(Series::new(
+            format!("frequency domain: {label}"),
+            points,
+            Style::Dashed,
+            2 + colour,
+        ));
+    }
+    panel
 }
 
 /// The Welch estimate of `record` (mean removed by the estimator's segments) up to `top`.
@@ -184,24 +277,20 @@ fn rows(csv: &mut String, part: &str, dof: &str, source: &str, points: &[(f64, f
 /// title; `None` (and a line saying so) when the DOF is not excited.
 fn panel(
     title: String,
-    angle: bool,
+    quantity: Quantity,
     top: f64,
     variances: (f64, f64),
     simulated: Vec<(f64, f64)>,
     predicted: Vec<(f64, f64)>,
 ) -> Option<Panel> {
-    let (unit, scale) = if angle {
-        ("deg", std::f64::consts::PI.recip() * 180.0)
-    } else {
-        ("m", 1.0)
-    };
+    let Quantity { unit, si, scale } = quantity;
     if variances.0.max(variances.1).sqrt() < NOT_EXCITED {
         println!(
             "{title}: not excited (standard deviations {:.1e} simulated, {:.1e} predicted, \
              below {NOT_EXCITED:e} {}): not drawn",
             variances.0.sqrt(),
             variances.1.sqrt(),
-            if angle { "rad" } else { "m" }
+            si
         );
         return None;
     }
