@@ -171,8 +171,14 @@ mod tests {
     use crate::problem::resolve;
 
     /// MINIMAL with a `[wind]` section of `keys`.
+    /// A minimal file with `[wind]` `keys` and, after them, one projected area at the
+    /// reference height 10 m for the wind to load.
     fn with_wind(keys: &str) -> String {
-        minimal_with(&format!("[wind]\n{keys}"))
+        minimal_with(&format!(
+            "[wind]\n{keys}\n\n[platform.wind]\nheight = 10.0\n[[platform.wind.areas]]\n\
+             x = 0.0\ny = 0.0\nheight = 10.0\narea_x = 100.0\narea_y = 100.0\n\
+             shape_coefficient = 1.0"
+        ))
     }
 
     /// The 1-based line of `key` in the `[wind]` section of `text`.
