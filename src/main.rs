@@ -222,6 +222,17 @@ fn print_summary(sim: &Simulation, outputs: &[Outputs], transient: f64) -> Resul
             }
         }
     }
+    // With wind: the instantaneous wind speed at the force's height and the wind force in X.
+    if !sim.problem().wind.is_calm() {
+        rows.push((
+            "wind speed".into(),
+            1.0,
+            "m/s",
+            |o| std::slice::from_ref(&o.wind_speed),
+            0,
+        ));
+        rows.push(("Fx_wind".into(), 1.0, "N", |o| &o.forces.wind, 0));
+    }
     let summaries = rows
         .iter()
         .map(|(_, scale, _, dofs, i)| {
@@ -262,7 +273,8 @@ fn write_csv(path: &std::path::Path, outputs: &[Outputs]) -> std::io::Result<()>
          X_wf_m,Y_wf_m,Z_wf_m,roll_wf_rad,pitch_wf_rad,yaw_wf_rad,\
          X_total_m,Y_total_m,Z_total_m,roll_total_rad,pitch_total_rad,yaw_total_rad,\
          Xdot_total_m_s,Ydot_total_m_s,Zdot_total_m_s,rolldot_total_rad_s,\
-         pitchdot_total_rad_s,yawdot_total_rad_s"
+         pitchdot_total_rad_s,yawdot_total_rad_s,\
+         windVelocity_m_s,Fx_wind_N,Fy_wind_N,Mz_wind_Nm"
     )?;
     for o in outputs {
         let f = &o.forces;
@@ -277,6 +289,8 @@ fn write_csv(path: &std::path::Path, outputs: &[Outputs]) -> std::io::Result<()>
             .chain(&o.motion.wave_frequency)
             .chain(&o.motion.total)
             .chain(&o.motion.total_rate)
+            .chain(std::iter::once(&o.wind_speed))
+            .chain(&f.wind)
             // 17 significant digits: every f64 reads back bit for bit.
             .map(|v| format!("{v:.16e}"))
             .collect();

@@ -351,8 +351,12 @@ mod tests {
             ["off", "separate", "combined"]
         );
         assert_eq!(NewmanForm::VOCABULARY.parameter(), None);
-        // The wind's modes have no FMU parameter yet.
-        assert_eq!(WindSpectrumKind::VOCABULARY.parameter(), None);
+        // The wind's spectrum keeps the configuration's at 0 (kaimal is 5); its profile has no
+        // FMU parameter.
+        let spectrum = WindSpectrumKind::VOCABULARY;
+        assert_eq!(spectrum.parameter(), Some("windSpectrum"));
+        assert_eq!(spectrum.codes().position(|w| w == "kaimal"), Some(5));
+        assert_eq!(spectrum.codes().next(), spectrum.keep());
         assert_eq!(WindProfileKind::VOCABULARY.parameter(), None);
     }
 

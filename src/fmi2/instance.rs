@@ -679,6 +679,10 @@ fn output_value(o: &Outputs, vr: u32) -> f64 {
         vr::ROLLDOT_TOTAL => o.motion.total_rate[3],
         vr::PITCHDOT_TOTAL => o.motion.total_rate[4],
         vr::YAWDOT_TOTAL => o.motion.total_rate[5],
+        vr::WIND_VELOCITY => o.wind_speed,
+        vr::FX_WIND => o.forces.wind[0],
+        vr::FY_WIND => o.forces.wind[1],
+        vr::MZ_WIND => o.forces.wind[2],
         other => unreachable!("value reference {other} is not an output"),
     }
 }

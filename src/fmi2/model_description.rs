@@ -202,7 +202,7 @@ mod tests {
             .filter(|(_, v)| v.causality == Causality::Output)
             .map(|(i, _)| i + 1)
             .collect();
-        assert_eq!(outputs.len(), 34);
+        assert_eq!(outputs.len(), 38);
         let indices = |name: &str| -> Vec<usize> {
             tags(&section(name), "Unknown")
                 .iter()
@@ -248,6 +248,13 @@ mod tests {
             ("Tp", start::TP, 1.0, 30.0),
             ("spreadingExponent", start::SPREADING_EXPONENT, 0.0, 100.0),
             ("currentSpeed", start::CURRENT_SPEED, 0.0, 5.0),
+            ("windSpeed", start::WIND_SPEED, 0.0, 0.0),
+            (
+                "windReferenceHeight",
+                start::WIND_REFERENCE_HEIGHT,
+                1.0,
+                100.0,
+            ),
             ("cdSlow", start::CD_SLOW, 0.0, 3.0),
             ("cdFast", start::CD_FAST, 0.0, 3.0),
             ("cd", start::CD, 0.0, 3.0),
@@ -266,6 +273,7 @@ mod tests {
             ("nDirections", start::N_DIRECTIONS, 1, 360),
             ("dragModel", start::DRAG_MODEL, 0, 2),
             ("driftDamping", start::DRIFT_DAMPING, 0, 2),
+            ("windSpectrum", start::WIND_SPECTRUM, 0, 7),
         ];
         for (name, x, lo, hi) in integers {
             assert!((lo..=hi).contains(&x), "{name} = {x} outside [{lo}, {hi}]");

@@ -728,6 +728,10 @@ mod tests {
         );
         assert_eq!(c.sea.seed, start::SEED as u64);
         assert_eq!(c.current.speed, start::CURRENT_SPEED);
+        assert_eq!(c.wind.speed, start::WIND_SPEED, "no wind");
+        assert_eq!(c.wind.direction, start::WIND_DIRECTION);
+        assert_eq!(c.wind.reference_height, start::WIND_REFERENCE_HEIGHT);
+        assert_eq!(start::WIND_SPECTRUM, 0, "0 = keep the configuration's");
         assert_eq!(c.run.time_step, start::STEP_SIZE);
         let stiffness = [
             start::STIFFNESS_SURGE,

@@ -115,7 +115,7 @@ modes! {
 
     /// The kind of the wind's gust spectrum, the longitudinal turbulence of the wind speed
     /// (`[wind] spectrum`; `wind::GustSpectrum::kind`, docs/theory.md#wind).
-    WindSpectrumKind {
+    WindSpectrumKind in "windSpectrum", keeping "configuration": "keep the configuration's" {
         /// NPD / Froya (ISO 19901-1, DNV-RP-C205 sec. 2.3.4).
         Npd = "npd": "NPD (Froya; ISO 19901-1, DNV-RP-C205) from the 1-hour mean at 10 m",
         /// API RP 2A (sec. 2.3.2).

@@ -455,7 +455,7 @@ pub static SETTINGS: [Setting; 28] = [
     },
     Setting {
         key: "wind.speed",
-        fmu: None,
+        fmu: Some("windSpeed"),
         column: Some("wind_speed"),
         mode: None,
         meaning: "mean wind speed at the reference height over the averaging period, m/s \
@@ -468,11 +468,11 @@ pub static SETTINGS: [Setting; 28] = [
     },
     Setting {
         key: "wind.direction_deg",
-        fmu: None,
+        fmu: Some("windDirection"),
         column: Some("wind_direction_deg"),
         mode: None,
         meaning: "direction the wind blows towards, from +X counter-clockwise (deg in the file \
-                  and case table)",
+                  and case table, rad in the FMU)",
         apply: |s, v| {
             s.wind.direction = number(v)?;
             Ok(())
@@ -484,7 +484,8 @@ pub static SETTINGS: [Setting; 28] = [
         fmu: WindSpectrumKind::VOCABULARY.parameter(),
         column: Some("wind_spectrum"),
         mode: Some(&WindSpectrumKind::VOCABULARY),
-        meaning: "gust spectrum: npd, api, harris, davenport, kaimal, ochi-shin or constant; \
+        meaning: "gust spectrum: configuration (keep), npd, api, harris, davenport, kaimal, \
+                  ochi-shin or constant; \
                   the configuration's drag_coefficient, turbulence_intensity and length_scale \
                   stay, used where the spectrum uses them",
         apply: |s, v| {
@@ -497,7 +498,7 @@ pub static SETTINGS: [Setting; 28] = [
     },
     Setting {
         key: "wind.reference_height",
-        fmu: None,
+        fmu: Some("windReferenceHeight"),
         column: Some("wind_reference_height"),
         mode: None,
         meaning: "height of the wind speed above the still water level, m",

@@ -439,8 +439,8 @@ fn case_table_wind_columns_set_the_wind() {
         .to_string();
     assert_eq!(
         err,
-        "cases.csv:2: row 1, column 'wind_spectrum': 'froya' is not one of npd, api, harris, \
-         davenport, kaimal, ochi-shin, constant"
+        "cases.csv:2: row 1, column 'wind_spectrum': 'froya' is not one of configuration, npd, api, \
+         harris, davenport, kaimal, ochi-shin, constant"
     );
 }
 

@@ -133,6 +133,10 @@ pub fn native_outputs(o: &Outputs) -> Vec<f64> {
             "rolldot_total" => o.motion.total_rate[3],
             "pitchdot_total" => o.motion.total_rate[4],
             "yawdot_total" => o.motion.total_rate[5],
+            "windVelocity" => o.wind_speed,
+            "Fx_wind" => o.forces.wind[0],
+            "Fy_wind" => o.forces.wind[1],
+            "Mz_wind" => o.forces.wind[2],
             other => panic!("unknown output {other}"),
         })
         .collect()

@@ -320,3 +320,75 @@ fn the_motion_prediction_takes_the_wind() {
         * prediction.d_mu;
     assert!(waves < 1e-6 * predicted, "{waves}");
 }
+
+/// The FMU with `windSpeed` = 15 m/s, `windDirection` = 0.5 rad and `windSpectrum` = 5
+/// (kaimal) over the packed default gives every output, the wind's (`windVelocity`,
+/// `Fx_wind`, `Fy_wind`, `Mz_wind`) and the motion, of the library's run of the default with
+/// that `[wind]`, bit for bit over 200 steps of 1 s under a varying external force;
+/// `windSpeed` = 0 (the other wind parameters set all the same) gives wind outputs of zero
+/// and the default's run without wind.
+#[test]
+fn the_fmu_wind_outputs_are_the_librarys() {
+    use crate::fmu::{bits, default_platform, external, native_outputs, Fmu};
+    use slowdrift::fmi2::model_description::vr;
+    use slowdrift::fmi2::types::fmi2Status;
+    use slowdrift::model::{Mode, WindSpectrumKind};
+    use slowdrift::scenario::overrides::by_fmu;
+    let stop = 200.0;
+    let kaimal = 5;
+    let spectrum = by_fmu("windSpectrum").unwrap();
+    assert_eq!(
+        spectrum.code_of(WindSpectrumKind::Kaimal.word()),
+        Some(kaimal)
+    );
+    let run = |speed: f64| {
+        let fmu = Fmu::new(&format!("wind-{speed}"));
+        assert_eq!(fmu.setup(0.0, Some(stop)), fmi2Status::fmi2OK);
+        assert_eq!(fmu.set_real(vr::WIND_SPEED, speed), fmi2Status::fmi2OK);
+        assert_eq!(fmu.set_real(vr::WIND_DIRECTION, 0.5), fmi2Status::fmi2OK);
+        assert_eq!(fmu.set_int(vr::WIND_SPECTRUM, kaimal), fmi2Status::fmi2OK);
+        assert_eq!(fmu.init(), fmi2Status::fmi2OK, "{}", fmu.messages());
+        fmu
+    };
+    let native = |speed: f64| {
+        let mut problem = default_platform().clone();
+        problem.wind.speed = speed;
+        problem.wind.direction = 0.5;
+        problem.wind.spectrum = WindSpectrumKind::Kaimal;
+        problem.run.duration = stop;
+        slowdrift::Simulation::new(problem).unwrap()
+    };
+    let (windy, calm) = (run(15.0), run(0.0));
+    let (mut windy_native, mut calm_native) = (native(15.0), native(0.0));
+    let mut calm_default = crate::fmu::native(1, 0.0, 0.0, stop);
+    let wind = [vr::WIND_VELOCITY, vr::FX_WIND, vr::FY_WIND, vr::MZ_WIND];
+    let (mut speeds, mut pushed) = (Vec::new(), 0.0f64);
+    for n in 0..stop as usize {
+        let t = n as f64;
+        let expected = native_outputs(&windy_native.outputs().unwrap());
+        assert_eq!(bits(&windy.outputs()), bits(&expected), "t = {t} s");
+        let calm_expected = native_outputs(&calm_native.outputs().unwrap());
+        assert_eq!(bits(&calm.outputs()), bits(&calm_expected), "t = {t} s");
+        assert_eq!(
+            bits(&calm_expected),
+            bits(&native_outputs(&calm_default.outputs().unwrap())),
+            "t = {t} s: no wind is the default's run"
+        );
+        let (_, zeros) = calm.get_reals(&wind);
+        assert_eq!(zeros, [0.0; 4], "t = {t} s");
+        let (_, blown) = windy.get_reals(&wind);
+        speeds.push(blown[0]);
+        pushed = pushed.max(blown[1].hypot(blown[2]));
+        for (fmu, sim) in [(&windy, &mut windy_native), (&calm, &mut calm_native)] {
+            fmu.step_with(t, 1.0, external(n));
+            sim.advance(1.0, external(n)).unwrap();
+        }
+        calm_default.advance(1.0, external(n)).unwrap();
+    }
+    let spread = speeds
+        .iter()
+        .fold(0.0f64, |m, u| m.max((u - speeds[0]).abs()));
+    assert!(speeds.iter().all(|u| *u > 5.0), "{speeds:?}");
+    assert!(spread > 0.1, "the gusts move the wind speed: {spread} m/s");
+    assert!(pushed > 1.0e4, "the wind pushes: {pushed} N");
+}

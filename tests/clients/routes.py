@@ -27,7 +27,7 @@ OUTPUTS = ("X", "Y", "theta", "Xdot", "Ydot", "thetadot", "eta",
            "X_wf", "Y_wf", "Z_wf", "roll_wf", "pitch_wf", "yaw_wf",
            "X_total", "Y_total", "Z_total", "roll_total", "pitch_total", "yaw_total",
            "Xdot_total", "Ydot_total", "Zdot_total", "rolldot_total", "pitchdot_total",
-           "yawdot_total")
+           "yawdot_total", "windVelocity", "Fx_wind", "Fy_wind", "Mz_wind")
 INPUTS = ("Fx_ext", "Fy_ext", "Mz_ext")
 
 # Non-default FMU parameters used by the comparisons: an oblique sea (30 deg) so that sway and
