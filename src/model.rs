@@ -68,7 +68,7 @@ mod modes;
 
 pub use modes::{
     BidirectionalDrift, DragKind, DriftDamping, Interaction, NewmanForm, SecondOrder, SpectrumKind,
-    SpreadingKind, WaveFrequencyMotion, WindProfileKind, WindSpectrumKind,
+    SpreadingKind, WaveFrequencyMotion, WindProfileKind, WindSource, WindSpectrumKind,
 };
 
 /// A setting that takes one of a few words: an enum defined in `model/modes.rs`.
@@ -310,6 +310,7 @@ mod tests {
         words_read_back::<WaveFrequencyMotion>();
         words_read_back::<WindSpectrumKind>();
         words_read_back::<WindProfileKind>();
+        words_read_back::<WindSource>();
     }
 
     /// Another word, or a value that is no word, is refused listing the words.

@@ -95,7 +95,12 @@ impl PlanKey<'_> {
                 .motions
                 .as_ref()
                 .map(|m| (m, problem.platform.mass)),
-            gust: problem.run_wind().ok().flatten().map(|w| w.gust),
+            gust: problem
+                .run_wind()
+                .ok()
+                .flatten()
+                .and_then(|w| w.gusts)
+                .map(|g| g.spectrum),
         }
     }
 }
@@ -293,7 +298,8 @@ impl RecordPlan {
         let fft = plan_inverse_fft(&grid);
         let gust = problem
             .run_wind()?
-            .map(|w| GustStream::new(&w.gust, &grid, segments, fft.clone()));
+            .and_then(|w| w.gusts)
+            .map(|g| GustStream::new(&g.spectrum, &grid, segments, fft.clone()));
         Ok(RecordPlan {
             motion,
             gust,

@@ -9,6 +9,7 @@ pub mod bounds;
 mod recording;
 pub use recording::reserve_recorded;
 
+pub use crate::dynamics::Held;
 use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};
 use crate::error::numbers::written;
 use crate::error::{Error, Result};
@@ -35,11 +36,14 @@ pub struct Snapshot {
     velocity: [f64; 3],
     /// The external force of the last step, inertial frame (N, N, N m).
     external_force: [f64; 3],
+    /// The input wind speed at the force's height, m/s, held from [`Simulation::hold_wind_input`]
+    /// on (used when the wind's source is the input).
+    wind_input: f64,
 }
 
 impl Snapshot {
-    /// Length of [`Snapshot::to_bytes`]: 12 little-endian 8-byte fields.
-    pub const BYTES: usize = 12 * 8;
+    /// Length of [`Snapshot::to_bytes`]: 13 little-endian 8-byte fields.
+    pub const BYTES: usize = 13 * 8;
 
     /// Current time, s.
     pub fn time(&self) -> f64 {
@@ -52,7 +56,8 @@ impl Snapshot {
     }
 
     /// Refuses a snapshot that no simulation can be in: a value that is not finite (the
-    /// time, its origin and step, the external force), a step that is not positive, a state
+    /// time, its origin and step, the external force, the wind input), a step that is not
+    /// positive, a negative wind input, a state
     /// beyond the bounds of a physical state ([`bounds`]). [`Snapshot::from_bytes`] and
     /// [`Simulation::restore`] both check it; whether it suits a simulation (its step, the
     /// records at its time) is the restore's question.
@@ -65,6 +70,7 @@ impl Snapshot {
             ("external_force[0]", f[0]),
             ("external_force[1]", f[1]),
             ("external_force[2]", f[2]),
+            ("wind_input", self.wind_input),
             ("time", self.time()),
         ];
         for (name, value) in named {
@@ -83,18 +89,27 @@ impl Snapshot {
                 "must be greater than zero",
             ));
         }
+        if self.wind_input < 0.0 {
+            return Err(Error::invalid(
+                "snapshot wind_input",
+                self.wind_input,
+                "must be at least 0 m/s",
+            ));
+        }
         Ok(())
     }
 
     /// Position-independent bytes, little-endian, in this order: origin (f64), count (u64),
-    /// step (f64), position (3 f64), velocity (3 f64), external force (3 f64).
+    /// step (f64), position (3 f64), velocity (3 f64), external force (3 f64), wind input
+    /// (f64).
     pub fn to_bytes(&self) -> [u8; Self::BYTES] {
         let mut out = [0u8; Self::BYTES];
         let words = [self.origin.to_bits(), self.count, self.step.to_bits()]
             .into_iter()
             .chain(self.position.iter().map(|v| v.to_bits()))
             .chain(self.velocity.iter().map(|v| v.to_bits()))
-            .chain(self.external_force.iter().map(|v| v.to_bits()));
+            .chain(self.external_force.iter().map(|v| v.to_bits()))
+            .chain(std::iter::once(self.wind_input.to_bits()));
         for (chunk, word) in out.chunks_exact_mut(8).zip(words) {
             chunk.copy_from_slice(&word.to_le_bytes());
         }
@@ -114,7 +129,7 @@ impl Snapshot {
         let mut words = bytes
             .chunks_exact(8)
             .map(|c| u64::from_le_bytes(c.try_into().expect("chunks of 8")));
-        let mut next = || words.next().expect("12 words");
+        let mut next = || words.next().expect("13 words");
         let mut real = || f64::from_bits(next());
         let origin = real();
         let count = real().to_bits();
@@ -123,6 +138,7 @@ impl Snapshot {
         let position = triple();
         let velocity = triple();
         let external_force = triple();
+        let wind_input = real();
         let snapshot = Snapshot {
             origin,
             count,
@@ -130,6 +146,7 @@ impl Snapshot {
             position,
             velocity,
             external_force,
+            wind_input,
         };
         snapshot.check()?;
         Ok(snapshot)
@@ -153,7 +170,8 @@ pub struct Outputs {
     /// The slow drift with the wave-frequency motion on it (`forces::motion`; the slow
     /// drift alone where there is none).
     pub motion: WholeMotion,
-    /// The wind speed at the height of the wind force (mean + gust), m/s; 0 when calm.
+    /// The wind speed at the height of the wind force (mean + gust, or the input held), m/s;
+    /// 0 when calm.
     pub wind_speed: f64,
 }
 
@@ -355,6 +373,28 @@ impl Simulation {
         self.whole_steps(1, external)
     }
 
+    /// Holds the input wind speed `speed` (m/s, at the height of the wind force) from now
+    /// on, for the steps and the outputs: the wind's speed when its source is the input
+    /// (`[wind] source = "input"`), unused otherwise. Refused: a speed that is not finite or
+    /// is negative (the state unchanged).
+    pub fn hold_wind_input(&mut self, speed: f64) -> Result<()> {
+        if !speed.is_finite() {
+            return Err(Error::NonFiniteInput {
+                field: "wind_input".into(),
+                value: speed,
+            });
+        }
+        if speed < 0.0 {
+            return Err(Error::invalid(
+                "wind_input",
+                speed,
+                "must be at least 0 m/s (the wind speed at the force's height)",
+            ));
+        }
+        self.state.wind_input = speed;
+        Ok(())
+    }
+
     /// Advances by `interval` with the external force held constant: whole steps of h when
     /// the interval is a whole number of them, else ceil(interval/h) equal substeps that end
     /// exactly at the old time + interval.
@@ -417,12 +457,16 @@ impl Simulation {
             s.velocity[2],
         ];
         let (model, records) = (&self.model, &self.segment.records);
+        let held = Held {
+            force: external,
+            wind_speed: s.wind_input,
+        };
         let next = rk4_step(t, &y, h, |time, y| {
             let at = records.clock.locate(time)?;
             let yaw = records.locate_yaw(time, y[2])?;
             let q = [y[0], y[1], y[2]];
             let qd = [y[3], y[4], y[5]];
-            let qdd = model.acceleration(records, &at, &yaw, &q, &qd, &external);
+            let qdd = model.acceleration(records, &at, &yaw, &q, &qd, &held);
             Ok::<_, Error>([qd[0], qd[1], qd[2], qdd[0], qdd[1], qdd[2]])
         })?;
         let (position, velocity) = ([next[0], next[1], next[2]], [next[3], next[4], next[5]]);
@@ -446,7 +490,7 @@ impl Simulation {
             let yaw = records.locate_yaw(t, s.position[2])?;
             Ok(self
                 .model
-                .forces(records, &at, &yaw, &s.position, &s.velocity))
+                .forces(records, &at, &yaw, &s.position, &s.velocity, s.wind_input))
         });
         let cause = match forces {
             Ok(forces) => bounds::cause(&self.model, &forces, external, s.position[2], h),
@@ -470,6 +514,7 @@ impl Simulation {
             &yaw,
             &self.state.position,
             &self.state.velocity,
+            self.state.wind_input,
         );
         let (position, velocity) = (self.state.position, self.state.velocity);
         let motion = match &self.segment.records.motion {
@@ -487,7 +532,9 @@ impl Simulation {
             forces,
             external_force: self.state.external_force,
             motion,
-            wind_speed: self.model.wind_speed(&self.segment.records, &at),
+            wind_speed: self
+                .model
+                .wind_speed(&self.segment.records, &at, self.state.wind_input),
         };
         match outputs.first_non_finite() {
             None => Ok(outputs),
@@ -558,6 +605,7 @@ fn initial_state(problem: &Problem) -> Snapshot {
         position: problem.initial.position,
         velocity: problem.initial.velocity,
         external_force: [0.0; 3],
+        wind_input: 0.0,
     }
 }
 
@@ -574,8 +622,10 @@ mod tests {
             position: [1.0 / 3.0, -0.0, f64::MIN_POSITIVE],
             velocity: [999.5, -2.5e-7, 7.0],
             external_force: [3e6, -4e6, 5e9],
+            wind_input: 17.25,
         };
         let bytes = snapshot.to_bytes();
+        assert_eq!(&bytes[96..], &17.25f64.to_le_bytes());
         assert_eq!(&bytes[..8], &(-12.5f64).to_le_bytes());
         assert_eq!(&bytes[8..16], &0x0123_4567_89ab_cdefu64.to_le_bytes());
         let back = Snapshot::from_bytes(&bytes).unwrap();
@@ -593,9 +643,14 @@ mod tests {
             position: [0.0; 3],
             velocity: [0.0; 3],
             external_force: [0.0; 3],
+            wind_input: 0.0,
         }
         .to_bytes();
         assert!(Snapshot::from_bytes(&bytes).is_ok());
+        let mut negative = bytes;
+        negative[96..].copy_from_slice(&(-1.0f64).to_le_bytes());
+        let err = Snapshot::from_bytes(&negative).unwrap_err().to_string();
+        assert!(err.contains("wind_input"), "{err}");
         for len in [0, Snapshot::BYTES - 1, Snapshot::BYTES + 1] {
             let mut v = bytes.to_vec();
             v.resize(len, 0);

@@ -48,8 +48,19 @@ pub struct SlowDriftModel {
     water_density: f64,
     /// Current velocity, inertial frame (X, Y), m/s.
     current: [f64; 2],
-    /// The wind's force and its mean speed at the force's height (m/s); `None` when calm.
-    wind: Option<(WindForce, f64)>,
+    /// The wind's force and its mean speed at the force's height (m/s; `None`: the speed is
+    /// the input's); `None` when calm.
+    wind: Option<(WindForce, Option<f64>)>,
+}
+
+/// What the outside holds constant over a step.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Held {
+    /// The external force F_ext, inertial frame (N, N, N m).
+    pub force: [f64; 3],
+    /// The wind speed at the force's height, m/s, used when the wind's source is the input
+    /// (`WindSource::Input`).
+    pub wind_speed: f64,
 }
 
 fn matrix(m: &[[f64; 3]; 3]) -> Matrix3<f64> {
@@ -111,12 +122,14 @@ impl SlowDriftModel {
             drag: problem.model.drag,
             water_density: problem.environment.water_density,
             current: [problem.current.speed * c, problem.current.speed * s],
-            wind: problem.run_wind()?.map(|w| (w.force, w.mean)),
+            wind: problem
+                .run_wind()?
+                .map(|w| (w.force, w.gusts.map(|g| g.mean))),
         })
     }
 
     /// The forces at a located instant and yaw (`records.locate_yaw(t, q[2])`) for state
-    /// (q, q') (inertial frame).
+    /// (q, q') (inertial frame), with the input wind speed `wind_input` (m/s).
     pub fn forces(
         &self,
         records: &ForceRecords,
@@ -124,13 +137,14 @@ impl SlowDriftModel {
         yaw: &YawPoint,
         q: &[f64; 3],
         qd: &[f64; 3],
+        wind_input: f64,
     ) -> ForceBreakdown {
-        self.forces_rotated(&Rotation::new(q[2]), records, at, yaw, q, qd)
+        self.forces_rotated(&Rotation::new(q[2]), records, at, yaw, q, qd, wind_input)
     }
 
-    /// The acceleration q'' at a located instant and yaw for state (q, q') and the external
-    /// force `external` (inertial frame): E&S 1 solved for q'', with the forces of
-    /// [`SlowDriftModel::forces`].
+    /// The acceleration q'' at a located instant and yaw for state (q, q') and what the
+    /// outside holds (the external force, inertial frame; the input wind): E&S 1 solved for
+    /// q'', with the forces of [`SlowDriftModel::forces`].
     pub fn acceleration(
         &self,
         records: &ForceRecords,
@@ -138,12 +152,12 @@ impl SlowDriftModel {
         yaw: &YawPoint,
         q: &[f64; 3],
         qd: &[f64; 3],
-        external: &[f64; 3],
+        held: &Held,
     ) -> [f64; 3] {
         let rotation = Rotation::new(q[2]);
         let total = self
-            .forces_rotated(&rotation, records, at, yaw, q, qd)
-            .total(external);
+            .forces_rotated(&rotation, records, at, yaw, q, qd, held.wind_speed)
+            .total(&held.force);
         let body = rotation.to_body(&Vector3::from(total));
         rotation.to_inertial(&(self.inverse_mass * body)).into()
     }
@@ -158,6 +172,7 @@ impl SlowDriftModel {
     }
 
     /// [`SlowDriftModel::forces`] with S(theta) already taken.
+    #[allow(clippy::too_many_arguments)]
     fn forces_rotated(
         &self,
         rotation: &Rotation,
@@ -166,6 +181,7 @@ impl SlowDriftModel {
         yaw: &YawPoint,
         q: &[f64; 3],
         qd: &[f64; 3],
+        wind_input: f64,
     ) -> ForceBreakdown {
         let velocity = rotation.to_body(&Vector3::from(*qd));
         let current = rotation.to_body(&Vector3::new(self.current[0], self.current[1], 0.0));
@@ -189,9 +205,11 @@ impl SlowDriftModel {
         let extra = -(self.linear_damping * velocity) - self.quadratic_damping * quadratic;
         let stiffness = -(self.stiffness * Vector3::from(*q));
         let wind = match &self.wind {
-            Some((force, _)) => {
-                Vector3::from(force.force(self.wind_speed(records, at), q[2], velocity.into()))
-            }
+            Some((force, _)) => Vector3::from(force.force(
+                self.wind_speed(records, at, wind_input),
+                q[2],
+                velocity.into(),
+            )),
             None => Vector3::zeros(),
         };
         ForceBreakdown {
@@ -205,10 +223,12 @@ impl SlowDriftModel {
     }
 
     /// The wind speed at the force's height at a located instant, m/s: the mean plus the
-    /// gust record; 0 when calm.
-    pub fn wind_speed(&self, records: &ForceRecords, at: &SamplePoint) -> f64 {
+    /// gust record, or the input `wind_input` when the wind's source is the input; 0 when
+    /// calm.
+    pub fn wind_speed(&self, records: &ForceRecords, at: &SamplePoint, wind_input: f64) -> f64 {
         match &self.wind {
-            Some((_, mean)) => mean + records.gust.as_ref().map_or(0.0, |g| g.at(at)),
+            Some((_, Some(mean))) => mean + records.gust.as_ref().map_or(0.0, |g| g.at(at)),
+            Some((_, None)) => wind_input,
             None => 0.0,
         }
     }

@@ -16,7 +16,7 @@ use crate::fmi2::model_description::{
 };
 use crate::problem::Problem;
 use crate::scenario::Scenario;
-use crate::simulation::{Outputs, Simulation};
+use crate::simulation::{Held, Outputs, Simulation};
 use slowdrift_fmi::fmi2::machine::MachineState;
 use slowdrift_fmi::fmi2::{Context, Instantiation, Model, SavedStates};
 use slowdrift_fmi::text::c_text;
@@ -40,8 +40,8 @@ pub struct Instance {
     resources: Option<PathBuf>,
     parameters: Parameters,
     experiment: Experiment,
-    /// Fx_ext, Fy_ext, Mz_ext (inertial frame), held over each step.
-    inputs: [f64; 3],
+    /// Fx_ext, Fy_ext, Mz_ext (inertial frame) and windVelocity_ext, held over each step.
+    inputs: Held,
     /// Built in initialisation mode when an output is first read, else at
     /// ExitInitializationMode; dropped when a parameter changes.
     built: Option<Built>,
@@ -89,10 +89,12 @@ impl Instance {
         Ok(self.parameters.to_problem(base, &self.experiment)?)
     }
 
-    /// The simulation, built now if needed.
+    /// The simulation, built now if needed (holding the input wind from its start).
     fn simulation(&mut self) -> Result<&mut Simulation, FmuError> {
         if self.built.is_none() {
-            self.built = Some(Built::new(self.problem()?)?);
+            let mut built = Built::new(self.problem()?)?;
+            built.simulation.hold_wind_input(self.inputs.wind_speed)?;
+            self.built = Some(built);
         }
         Ok(&mut self.built.as_mut().expect("built above").simulation)
     }
@@ -258,7 +260,7 @@ impl Model for Instance {
                     FmuValue::Real(x) => x,
                     _ => unreachable!("a Real parameter"),
                 },
-                Causality::Input => self.inputs[input_index(vr)],
+                Causality::Input => *input_slot(&mut self.inputs, vr),
                 _ => self.output(cx.state(), vr)?,
             };
         }
@@ -318,6 +320,14 @@ impl Model for Instance {
                 }
                 .into());
             }
+            if vr == vr::WIND_VELOCITY_EXT && value < 0.0 {
+                return Err(Error::invalid(
+                    "windVelocity_ext",
+                    value,
+                    "must be at least 0 m/s (the wind speed at the force's height)",
+                )
+                .into());
+            }
         }
         for (&vr, &value) in vrs.iter().zip(values) {
             if kept(cx.state(), VariableType::Real, vr) {
@@ -326,7 +336,7 @@ impl Model for Instance {
             match self.parameters.write(vr, FmuValue::Real(value)) {
                 Some(true) => self.parameters_changed(),
                 Some(false) => {}
-                None => self.inputs[input_index(vr)] = value,
+                None => *input_slot(&mut self.inputs, vr) = value,
             }
         }
         Ok(())
@@ -440,7 +450,10 @@ impl Model for Instance {
                 ),
             )));
         }
-        let advanced = simulation.advance(h, inputs).map(|()| simulation.time());
+        let advanced = simulation
+            .hold_wind_input(inputs.wind_speed)
+            .and_then(|()| simulation.advance(h, inputs.force))
+            .map(|()| simulation.time());
         // Outputs are computed when a getter first asks for them after the step.
         self.outputs = None;
         match advanced {
@@ -623,17 +636,21 @@ fn spacing(t: f64) -> f64 {
     f64::from_bits(a.to_bits() + 1) - a
 }
 
-fn start_inputs() -> [f64; 3] {
+fn start_inputs() -> Held {
     use crate::fmi2::model_description::start;
-    [start::FX_EXT, start::FY_EXT, start::MZ_EXT]
+    Held {
+        force: [start::FX_EXT, start::FY_EXT, start::MZ_EXT],
+        wind_speed: start::WIND_VELOCITY_EXT,
+    }
 }
 
-/// Position of an input in [`Instance::inputs`].
-fn input_index(vr: u32) -> usize {
+/// The slot of an input in [`Instance::inputs`].
+fn input_slot(inputs: &mut Held, vr: u32) -> &mut f64 {
     match vr {
-        vr::FX_EXT => 0,
-        vr::FY_EXT => 1,
-        vr::MZ_EXT => 2,
+        vr::FX_EXT => &mut inputs.force[0],
+        vr::FY_EXT => &mut inputs.force[1],
+        vr::MZ_EXT => &mut inputs.force[2],
+        vr::WIND_VELOCITY_EXT => &mut inputs.wind_speed,
         other => unreachable!("value reference {other} is not an input"),
     }
 }
@@ -708,7 +725,9 @@ mod tests {
                 Causality::Output => {
                     output_value(&o, v.value_reference);
                 }
-                Causality::Input => assert!(input_index(v.value_reference) < 3),
+                Causality::Input => {
+                    input_slot(&mut start_inputs(), v.value_reference);
+                }
                 _ => {}
             }
         }

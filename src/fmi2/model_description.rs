@@ -221,8 +221,9 @@ mod tests {
     #[test]
     fn causalities_and_value_references() {
         use Causality::*;
-        let inputs = [vr::FX_EXT, vr::FY_EXT, vr::MZ_EXT];
-        for (v, expected) in inputs.iter().zip(["Fx_ext", "Fy_ext", "Mz_ext"]) {
+        let inputs = [vr::FX_EXT, vr::FY_EXT, vr::MZ_EXT, vr::WIND_VELOCITY_EXT];
+        let names = ["Fx_ext", "Fy_ext", "Mz_ext", "windVelocity_ext"];
+        for (v, expected) in inputs.iter().zip(names) {
             let info = find(VariableType::Real, *v).expect("input");
             assert_eq!((info.name, info.causality), (expected, Input));
         }
@@ -280,8 +281,13 @@ mod tests {
         }
         assert_eq!(start::HYDRO_DATABASE, "");
         assert_eq!(
-            [start::FX_EXT, start::FY_EXT, start::MZ_EXT],
-            [0.0; 3],
+            [
+                start::FX_EXT,
+                start::FY_EXT,
+                start::MZ_EXT,
+                start::WIND_VELOCITY_EXT
+            ],
+            [0.0; 4],
             "inputs start at zero"
         );
     }

@@ -16,13 +16,13 @@
 //! | 1 | instance state ([`MachineState::code`]; never Error) |
 //! | 1 | 1 when a simulation snapshot follows the parameters, else 0 |
 //! | 8 | last successful time (f64, finite; from the start time to the instance's time: the snapshot's, else the start time) |
-//! | 24 | inputs Fx_ext, Fy_ext, Mz_ext (3 f64, finite) |
+//! | 32 | inputs Fx_ext, Fy_ext, Mz_ext, windVelocity_ext (4 f64, finite; the last at least 0) |
 //! | 8 | experiment start time (f64, finite) |
 //! | 1 | 1 when the experiment has a stop time, else 0 |
 //! | 8 | stop time (f64, finite and after the start time; all bits 0 without a stop time) |
 //! | 4 | number of parameters (u32): modelDescription.xml's, which the reader requires |
 //! | ... | each parameter in the XML's order: its value reference (u32), its type (one byte: `R` Real, `I` Integer, `S` String), whether the master set it (one byte, 0 or 1: an unset parameter takes the configuration's value), its value: Real 8 bytes (f64, finite), Integer 4 bytes (i32), String a length (u32, at most [`MAX_STRING_BYTES`]) and that many bytes of UTF-8 without NUL |
-//! | 96 | the snapshot ([`Snapshot::to_bytes`]), present exactly when the instance state is StepComplete, StepFailed or Terminated: every value finite ([`Snapshot::check`]), its step positive and the `stepSize` the master set (if it did), its time from the start time to the stop time (if any), where a double resolves the step |
+//! | 104 | the snapshot ([`Snapshot::to_bytes`]), present exactly when the instance state is StepComplete, StepFailed or Terminated: every value finite ([`Snapshot::check`]), its step positive and the `stepSize` the master set (if it did), its time from the start time to the stop time (if any), where a double resolves the step |
 //! | 8 | checksum: FNV-1a (u64) of every byte before it |
 //!
 //! The records are not saved: they are a pure function of the parameters, the experiment
@@ -46,16 +46,16 @@ use super::parameters::{Base, Experiment, FmuValue, Parameters, MAX_STRING_BYTES
 use crate::error::{Error, Result};
 use crate::fmi2::model_description::VariableType;
 use crate::problem::{largest_resolved_time, time_resolved, Problem};
-use crate::simulation::Snapshot;
+use crate::simulation::{Held, Snapshot};
 
 /// First bytes of a serialized state.
 pub const MAGIC: [u8; 4] = *b"SDFS";
 /// Version of the byte format of the module documentation; a state of any other version is
 /// refused (its bytes would be read as other fields). Raised whenever a field is added,
 /// removed or reinterpreted.
-pub const FORMAT_VERSION: u32 = 4;
+pub const FORMAT_VERSION: u32 = 5;
 /// Bytes of the fixed fields before the parameters (magic to the parameter count).
-const FIXED_BYTES: usize = 4 + 4 + 8 + 2 + 8 + 24 + 8 + 1 + 8 + 4;
+const FIXED_BYTES: usize = 4 + 4 + 8 + 2 + 8 + 32 + 8 + 1 + 8 + 4;
 /// Bytes of the checksum at the end.
 const CHECKSUM_BYTES: usize = 8;
 /// Offset of the last successful time.
@@ -77,7 +77,7 @@ pub struct FmuState {
     pub experiment: Experiment,
     pub machine: MachineState,
     pub last_successful_time: f64,
-    pub inputs: [f64; 3],
+    pub inputs: Held,
     /// `None` before initialisation (no simulation yet).
     pub snapshot: Option<Snapshot>,
 }
@@ -114,7 +114,7 @@ impl FmuState {
         out.push(self.machine.code());
         out.push(u8::from(self.snapshot.is_some()));
         out.extend_from_slice(&self.last_successful_time.to_le_bytes());
-        for v in self.inputs {
+        for v in self.inputs.force.iter().chain([&self.inputs.wind_speed]) {
             out.extend_from_slice(&v.to_le_bytes());
         }
         out.extend_from_slice(&self.experiment.start_time.to_le_bytes());
@@ -214,11 +214,20 @@ impl FmuState {
             .ok_or_else(|| refuse(format!("instance state code {code}"), "is unknown"))?;
         let has_snapshot = r.flag("snapshot flag")?;
         let last_successful_time = r.finite("last successful time")?;
-        let inputs = [
+        let force = [
             r.finite("input Fx_ext")?,
             r.finite("input Fy_ext")?,
             r.finite("input Mz_ext")?,
         ];
+        let wind_at = r.at;
+        let wind_speed = r.finite("input windVelocity_ext")?;
+        if wind_speed < 0.0 {
+            return Err(refuse(
+                format!("input windVelocity_ext = {wind_speed} at byte {wind_at}"),
+                "must be at least 0 m/s",
+            ));
+        }
+        let inputs = Held { force, wind_speed };
         let start_time = r.finite("startTime")?;
         let has_stop = r.flag("stop time flag")?;
         let stop_at = r.at;
@@ -584,7 +593,10 @@ mod tests {
                 MachineState::InitializationMode
             },
             last_successful_time: if snapshot { 12.5 } else { -3.0 },
-            inputs: [1.0, -2.0, 3e9],
+            inputs: Held {
+                force: [1.0, -2.0, 3e9],
+                wind_speed: 7.5,
+            },
             snapshot: snapshot
                 .then(|| Snapshot::from_bytes(&snapshot_bytes(-3.0, 31, 0.5)).unwrap()),
         }
@@ -643,13 +655,14 @@ mod tests {
         assert_eq!(u64_at(8), s.fingerprint);
         assert_eq!((b[16], b[17]), (MachineState::StepComplete.code(), 1));
         assert_eq!(f64_at(18), 12.5);
-        assert_eq!([f64_at(26), f64_at(34), f64_at(42)], s.inputs);
-        assert_eq!((f64_at(50), b[58], f64_at(59)), (-3.0, 1, 1e4));
-        let count = u32::from_le_bytes(b[67..71].try_into().unwrap()) as usize;
+        assert_eq!([f64_at(26), f64_at(34), f64_at(42)], s.inputs.force);
+        assert_eq!(f64_at(50), s.inputs.wind_speed);
+        assert_eq!((f64_at(58), b[66], f64_at(67)), (-3.0, 1, 1e4));
+        let count = u32::from_le_bytes(b[75..79].try_into().unwrap()) as usize;
         assert_eq!(count, Parameters::variables().count());
         let first = Parameters::variables().next().unwrap();
         assert_eq!(
-            u32::from_le_bytes(b[71..75].try_into().unwrap()),
+            u32::from_le_bytes(b[79..83].try_into().unwrap()),
             first.value_reference
         );
         let hs = value_offset(&s, "Hs");
@@ -695,7 +708,7 @@ mod tests {
             cases.push((b, needle));
         };
         patch(0, b"X", "SDFS");
-        patch(4, &(FORMAT_VERSION + 1).to_le_bytes(), "format version 4");
+        patch(4, &(FORMAT_VERSION + 1).to_le_bytes(), "format version 5");
         patch(4, &2u32.to_le_bytes(), "format version 2");
         patch(16, &[99], "instance state code 99");
         patch(16, &[MachineState::Error.code()], "instance state code");
@@ -703,11 +716,16 @@ mod tests {
         patch(17, &[0], "between its last field");
         patch(18, &f64::NAN.to_le_bytes(), "last successful time");
         patch(34, &f64::INFINITY.to_le_bytes(), "input Fy_ext");
-        patch(50, &f64::NAN.to_le_bytes(), "startTime");
-        patch(58, &[0], "stopTime bits");
-        patch(59, &(-4.0f64).to_le_bytes(), "stopTime");
-        patch(67, &3u32.to_le_bytes(), "3 parameters");
-        patch(71, &99_999u32.to_le_bytes(), "value reference 99999");
+        patch(
+            50,
+            &(-1.0f64).to_le_bytes(),
+            "input windVelocity_ext = -1 at byte 50",
+        );
+        patch(58, &f64::NAN.to_le_bytes(), "startTime");
+        patch(66, &[0], "stopTime bits");
+        patch(67, &(-4.0f64).to_le_bytes(), "stopTime");
+        patch(75, &3u32.to_le_bytes(), "3 parameters");
+        patch(79, &99_999u32.to_le_bytes(), "value reference 99999");
         let hs = value_offset(&s, "Hs");
         patch(hs - 2, b"I", "type byte");
         patch(hs - 1, &[2], "set flag of Hs = 2");

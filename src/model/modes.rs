@@ -132,6 +132,16 @@ modes! {
         Constant = "constant": "no gust: the mean speed alone",
     }
 
+    /// Where the wind speed at the force's height comes from (`[wind] source`,
+    /// docs/theory.md#wind-force).
+    WindSource in "windSource" {
+        /// The default: the mean speed and its gusts from the spectrum, seeded as the waves.
+        Records = "records": "the mean speed with the gust spectrum's records",
+        /// The FMU's input `windVelocity_ext`, held over each communication step (0 m/s,
+        /// still air, outside an FMU); no gust records are made.
+        Input = "input": "the input windVelocity_ext, held over each communication step",
+    }
+
     /// The mean wind profile, the mean speed from its reference height to the height of the
     /// wind force (`[wind] profile`; `wind::WindProfile::kind`, docs/theory.md#wind).
     WindProfileKind {

@@ -123,7 +123,7 @@ impl Problem {
         let wind = &self.wind;
         ranges::DIRECTION.check_degrees("wind.direction_deg", wind.direction)?;
         wind.validate()?;
-        if wind.is_calm() {
+        if !wind.has_gusts() {
             return Ok(());
         }
         let converts = wind.profile.kind() == WindProfileKind::Npd;

@@ -168,7 +168,8 @@ impl Problem {
         })
     }
 
-    /// The wind (`[wind]`): none when calm; else the speed as given (its averaging period,
+    /// The wind (`[wind]`): none when calm; the input's when the speed is the FMU's input;
+    /// else the speed as given (its averaging period,
     /// height and direction), the profile and the spectrum, and at the height of the wind
     /// force (`[platform.wind]`, its form) the mean the gusts fluctuate about (over the
     /// spectrum's averaging period) with the standard deviation and turbulence intensity
@@ -178,7 +179,7 @@ impl Problem {
         let Some(run) = self.run_wind()? else {
             return Ok("wind: none".to_string());
         };
-        let (z, spectrum, mean) = (run.height, run.gust, run.mean);
+        let z = run.height;
         let form = match self.platform.wind.as_ref().map(|w| &w.coefficients) {
             Some(crate::wind::WindCoefficients::Areas(areas)) => {
                 let n = areas.len();
@@ -189,10 +190,19 @@ impl Problem {
             }
             _ => "coefficients against the relative angle".to_string(),
         };
-        let gusts = match wind.spectrum {
+        let Some(gusts) = run.gusts else {
+            return Ok(format!(
+                "wind: the FMU's input windVelocity_ext, the speed at the force's height {} m \
+                 (0 m/s outside an FMU: still air), towards {} deg; on {form} ([platform.wind])",
+                written(z),
+                readable(wind.direction.to_degrees()),
+            ));
+        };
+        let mean = gusts.mean;
+        let gust_words = match wind.spectrum {
             WindSpectrumKind::Constant => "no gusts".to_string(),
             _ => {
-                let sigma = spectrum.variance(WIND_BAND.0, WIND_BAND.1)?.sqrt();
+                let sigma = gusts.spectrum.variance(WIND_BAND.0, WIND_BAND.1)?.sqrt();
                 format!(
                     "turbulence intensity {:.3} (sigma {sigma:.2} m/s over {} to {} Hz)",
                     sigma / mean,
@@ -203,7 +213,7 @@ impl Problem {
         };
         Ok(format!(
             "wind: {} m/s, the {} s mean at {} m, towards {} deg; profile {}, spectrum {}; at \
-             the force's height {} m the {} s mean {mean:.2} m/s, {gusts}; on {form} \
+             the force's height {} m the {} s mean {mean:.2} m/s, {gust_words}; on {form} \
              ([platform.wind])",
             written(wind.speed),
             written(wind.averaging_period),

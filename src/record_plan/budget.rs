@@ -191,7 +191,7 @@ impl MemoryEstimate {
                 sets * (12.0 * F64 * l + 6.0 * tail) + 12.0 * C64 * g + C64 * l,
             ));
         }
-        if !problem.wind.is_calm() {
+        if problem.wind.has_gusts() {
             // `forces::gust`, in the plan and in the simulation's segment: the amplitudes'
             // scale (half the grid), the joined synthesizer's block and the series (one
             // grid each), the amplitudes (half a grid), the record and its tail.

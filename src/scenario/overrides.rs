@@ -29,7 +29,7 @@ use super::{Current, ModelOptions, Platform, Run, Scenario, Written, DEFAULT_N_D
 use crate::error::numbers::written;
 use crate::model::{
     DragKind, DragModel, DriftDamping, Interaction, Mode, SpectrumKind, Vocabulary,
-    WaveFrequencyMotion, WindSpectrumKind, YawFollowing,
+    WaveFrequencyMotion, WindSource, WindSpectrumKind, YawFollowing,
 };
 use crate::sea_state::SeaState;
 use crate::sea_state::{Spectrum, Spreading};
@@ -254,7 +254,7 @@ fn drag_is(kind: DragKind) -> String {
 }
 
 /// The table, in the order it is applied.
-pub static SETTINGS: [Setting; 28] = [
+pub static SETTINGS: [Setting; 29] = [
     Setting {
         key: "sea.spreading_exponent",
         fmu: Some("spreadingExponent"),
@@ -507,6 +507,22 @@ pub static SETTINGS: [Setting; 28] = [
             Ok(())
         },
         get: |s| Value::Number(s.wind.reference_height),
+    },
+    Setting {
+        key: "wind.source",
+        fmu: WindSource::VOCABULARY.parameter(),
+        column: None,
+        mode: Some(&WindSource::VOCABULARY),
+        meaning: "where the wind speed at the force's height comes from: records (the mean \
+                  speed with its gusts) or input (the FMU's input windVelocity_ext; the speed \
+                  then 0)",
+        apply: |s, v| {
+            if let Some(source) = chosen(v)? {
+                s.wind.source = source;
+            }
+            Ok(())
+        },
+        get: |s| Value::Word(s.wind.source.word()),
     },
     Setting {
         key: "model.drag",

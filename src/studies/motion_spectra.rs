@@ -283,32 +283,34 @@ fn add_force_spectrum(
 /// The wind linearised about its mean on the body at rest at the mean position: the
 /// damping -dF_i/dv_i (N s/m, N m s/rad) and the gust force's spectrum (dF_i/dU)^2 S_u on the
 /// grid m d_mu (central differences of the force, steps 1e-4 of the mean speed and 1e-4 m/s,
-/// 1e-6 rad/s); zeros when calm.
+/// 1e-6 rad/s); zeros when calm, and when the speed is the FMU's input (0 m/s outside an
+/// FMU: still air, whose quadratic force has no linear part).
 fn wind_linearised(problem: &Problem, d_mu: f64) -> Result<([f64; 3], [Vec<f64>; 3])> {
     let zero = || std::array::from_fn(|_| vec![0.0; SLOW_GRID]);
-    let Some(wind) = problem.run_wind()? else {
+    let Some((wind, gusts)) = problem
+        .run_wind()?
+        .and_then(|w| w.gusts.clone().map(|g| (w, g)))
+    else {
         return Ok(([0.0; 3], zero()));
     };
     let force = |speed: f64, v: [f64; 3]| wind.force.force(speed, 0.0, v);
-    let du = 1e-4 * wind.mean;
-    let (up, down) = (
-        force(wind.mean + du, [0.0; 3]),
-        force(wind.mean - du, [0.0; 3]),
-    );
+    let mean = gusts.mean;
+    let du = 1e-4 * mean;
+    let (up, down) = (force(mean + du, [0.0; 3]), force(mean - du, [0.0; 3]));
     let gain: [f64; 3] = std::array::from_fn(|i| (up[i] - down[i]) / (2.0 * du));
     let damping = std::array::from_fn(|i| {
         let step = if i == 2 { 1e-6 } else { 1e-4 };
         let mut v = [0.0; 3];
         v[i] = step;
-        let plus = force(wind.mean, v)[i];
+        let plus = force(mean, v)[i];
         v[i] = -step;
-        let minus = force(wind.mean, v)[i];
+        let minus = force(mean, v)[i];
         -(plus - minus) / (2.0 * step)
     });
     let mut spectra = zero();
     for (i, spectrum) in spectra.iter_mut().enumerate() {
         for (m, s) in spectrum.iter_mut().enumerate() {
-            *s = gain[i] * gain[i] * wind.gust.density_per_rad(m as f64 * d_mu);
+            *s = gain[i] * gain[i] * gusts.spectrum.density_per_rad(m as f64 * d_mu);
         }
     }
     Ok((damping, spectra))

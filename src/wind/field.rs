@@ -18,7 +18,7 @@ use super::spectrum::{
     GustSpectrum,
 };
 use crate::error::{require_finite, require_positive, Error, Result};
-use crate::model::{Mode, WindSpectrumKind};
+use crate::model::{Mode, WindSource, WindSpectrumKind};
 use serde::Serialize;
 
 /// Averaging period of the 10-min means (Harris, Davenport, Kaimal), s.
@@ -55,6 +55,10 @@ pub struct WindField {
     pub length_scale: Option<f64>,
     /// kg/m^3.
     pub air_density: f64,
+    /// Where the speed at the force's height comes from: the mean and its gust records, or
+    /// the FMU's input `windVelocity_ext` (the speed, the spectrum and the profile then
+    /// unused: `speed` must be 0).
+    pub source: WindSource,
 }
 
 impl Default for WindField {
@@ -72,14 +76,20 @@ impl Default for WindField {
             turbulence_intensity: None,
             length_scale: None,
             air_density: DEFAULT_AIR_DENSITY,
+            source: WindSource::Records,
         }
     }
 }
 
 impl WindField {
-    /// No wind (speed 0): nothing of the wind is made or serialised.
+    /// No wind (speed 0 and no input): nothing of the wind is made or serialised.
     pub fn is_calm(&self) -> bool {
-        self.speed == 0.0
+        self.speed == 0.0 && self.source == WindSource::Records
+    }
+
+    /// Whether the run makes gust records: a wind of the records' source.
+    pub fn has_gusts(&self) -> bool {
+        !self.is_calm() && self.source == WindSource::Records
     }
 
     /// Checks what does not depend on the force's height (the spectrum's parameters too,
@@ -91,6 +101,14 @@ impl WindField {
                 "wind.speed",
                 self.speed,
                 "must be at least 0 m/s (0: no wind)",
+            ));
+        }
+        if self.source == WindSource::Input && self.speed != 0.0 {
+            return Err(Error::invalid(
+                "wind.speed",
+                self.speed,
+                "is not used when wind.source = \"input\" (the speed comes from the FMU's \
+                 input windVelocity_ext): set it to 0, or the source to \"records\"",
             ));
         }
         require_finite("wind.direction", self.direction)?;

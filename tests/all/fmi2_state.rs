@@ -111,7 +111,7 @@ fn saved_run(database: &str) -> (Vec<u8>, Vec<u64>, Vec<Vec<u64>>) {
 
 /// fmusim's `--initial-fmu-state-file` order: deserialize, set, free; `Err` with the last
 /// log line when deserialize or set answers otherwise than fmi2OK.
-fn restore(fmu: &Fmu, bytes: &[u8]) -> Result<(), String> {
+pub(crate) fn restore(fmu: &Fmu, bytes: &[u8]) -> Result<(), String> {
     let (s, state) = deserialize(fmu, bytes);
     if s != fmi2Status::fmi2OK {
         return Err(fmu.last_message().message);
@@ -370,9 +370,10 @@ fn deserialisation_checks_every_field() {
     let state = get_state(&a);
     let good = serialize(&a, state);
     free_state(&a, state);
-    // The snapshot is the 96 bytes before the checksum: 8-byte words origin, count, step,
-    // X, Y, theta, X', Y', theta', Fx, Fy, Mz; the last successful time is at byte 18.
-    let snapshot = good.len() - 8 - 96;
+    // The snapshot is the 104 bytes before the checksum: 8-byte words origin, count, step,
+    // X, Y, theta, X', Y', theta', Fx, Fy, Mz, the wind input; the last successful time is
+    // at byte 18.
+    let snapshot = good.len() - 8 - 104;
     let word = |k: usize| snapshot + 8 * k;
     let cases = [
         (word(9), f64::INFINITY, "snapshot external_force[0] = inf"),

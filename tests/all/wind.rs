@@ -150,7 +150,7 @@ fn the_gust_force_of_a_held_platform_is_the_linearised_spectrum() {
         32768.0,
         4,
     );
-    let wind = problem.run_wind().unwrap().unwrap();
+    let wind = problem.run_wind().unwrap().unwrap().gusts.unwrap();
     assert!((wind.mean - speed).abs() < 1e-9, "NPD at 10 m: U0 itself");
     let mut sim = slowdrift::Simulation::new(problem).unwrap();
     let mut force = Vec::new();
@@ -170,13 +170,13 @@ fn the_gust_force_of_a_held_platform_is_the_linearised_spectrum() {
     let expected = 0.5 * AIR * AREA * (speed * speed + variance_u);
     let linear = AIR * AREA * speed;
     // sd of the mean: sqrt(S_F(0) / (2 T)) with S_F(0) per Hz = linear^2 S_u(f = 0).
-    let sd = (linear * linear * wind.gust.density(0.0) / (2.0 * n * 0.5)).sqrt();
+    let sd = (linear * linear * wind.spectrum.density(0.0) / (2.0 * n * 0.5)).sqrt();
     assert!(
         (mean - expected).abs() < 4.0 * sd,
         "{mean} vs {expected} (sd {sd})"
     );
     let (checked, worst) = welch_bands_match(&force, 0.5, 2048, 8, (0.02, 1.5), 0.03, |a, b| {
-        linear * linear * simpson(|w| wind.gust.density_per_rad(w), a, b, 64)
+        linear * linear * simpson(|w| wind.spectrum.density_per_rad(w), a, b, 64)
     });
     assert!(checked >= 20, "{checked}");
     println!("held platform: {checked} bands, worst {worst:.2} sd");
@@ -216,7 +216,7 @@ fn surge_under_gusts_matches_the_frequency_domain() {
         100.0,
         1,
     );
-    let wind = problem.run_wind().unwrap().unwrap();
+    let wind = problem.run_wind().unwrap().unwrap().gusts.unwrap();
     let k = problem.platform.stiffness[0][0];
     let damping = problem.platform.linear_damping[0][0] + AIR * AREA * speed;
     let linear = AIR * AREA * speed;
@@ -224,7 +224,7 @@ fn surge_under_gusts_matches_the_frequency_domain() {
     // The records' band: d_omega / 2 of the 16384-s block to the Nyquist frequency of 0.25 s.
     let (lo, hi) = (std::f64::consts::PI / 16384.0, 4.0 * std::f64::consts::PI);
     let expected = simpson(
-        |w| linear * linear * wind.gust.density_per_rad(w) * transfer(w),
+        |w| linear * linear * wind.spectrum.density_per_rad(w) * transfer(w),
         lo,
         hi,
         200_000,
@@ -294,13 +294,13 @@ fn the_motion_prediction_takes_the_wind() {
         (wind_damping / (AIR * AREA * speed) - 1.0).abs() < 1e-6,
         "{wind_damping}"
     );
-    let wind = problem.run_wind().unwrap().unwrap();
+    let wind = problem.run_wind().unwrap().unwrap().gusts.unwrap();
     let k = problem.platform.stiffness[0][0];
     let damping = problem.platform.linear_damping[0][0] + AIR * AREA * speed;
     let linear = AIR * AREA * speed;
     let hand = simpson(
         |w| {
-            linear * linear * wind.gust.density_per_rad(w)
+            linear * linear * wind.spectrum.density_per_rad(w)
                 / ((k - mass * w * w).powi(2) + (damping * w).powi(2))
         },
         std::f64::consts::PI / 16384.0,
@@ -391,4 +391,121 @@ fn the_fmu_wind_outputs_are_the_librarys() {
     assert!(speeds.iter().all(|u| *u > 5.0), "{speeds:?}");
     assert!(spread > 0.1, "the gusts move the wind speed: {spread} m/s");
     assert!(pushed > 1.0e4, "the wind pushes: {pushed} N");
+}
+
+/// The input wind (`wind.source = "input"`) against the records' constant wind: on the
+/// default platform's six API areas under a power-law profile (whose shape is the same at
+/// every speed), a run whose input holds U(25 m) = 15 (25/10)^0.12 m/s gives the wind force
+/// and the motion of a run with a constant wind of 15 m/s at 10 m, to 1e-9 relative over
+/// 600 s: two routes to the speed at each area's height. With the input at 0 (still air),
+/// the wind force only damps: Fx_wind Xdot <= 0 at every step, and not all zero.
+#[test]
+fn an_input_wind_is_the_records_wind_of_the_same_speed() {
+    use slowdrift::model::{WindSource, WindSpectrumKind};
+    use slowdrift::wind::WindProfile;
+    let (stop, speed, exponent) = (600.0, 15.0, 0.12);
+    let problem = |source: WindSource| {
+        let mut p = crate::fmu::default_platform().clone();
+        p.run.duration = stop;
+        p.wind.direction = 0.5;
+        p.wind.profile = WindProfile::PowerLaw { exponent };
+        p.wind.spectrum = WindSpectrumKind::Constant;
+        p.wind.source = source;
+        p.wind.speed = if source == WindSource::Records {
+            speed
+        } else {
+            0.0
+        };
+        slowdrift::Simulation::new(p).unwrap()
+    };
+    let at_force = speed * (25.0f64 / 10.0).powf(exponent);
+    let (mut records, mut input, mut still) = (
+        problem(WindSource::Records),
+        problem(WindSource::Input),
+        problem(WindSource::Input),
+    );
+    input.hold_wind_input(at_force).unwrap();
+    let (mut worst, mut damped) = (0.0f64, 0.0f64);
+    for _ in 0..(stop as usize) {
+        for sim in [&mut records, &mut input, &mut still] {
+            sim.advance(1.0, [0.0; 3]).unwrap();
+        }
+        let (a, b) = (records.outputs().unwrap(), input.outputs().unwrap());
+        assert!((b.wind_speed / at_force - 1.0).abs() < 1e-12);
+        for i in 0..3 {
+            let scale = a.forces.wind[0].abs();
+            worst = worst.max((a.forces.wind[i] - b.forces.wind[i]).abs() / scale);
+        }
+        worst = worst.max((a.position[0] - b.position[0]).abs() / a.position[0].abs());
+        let s = still.outputs().unwrap();
+        assert_eq!(s.wind_speed, 0.0);
+        let power = s.forces.wind[0] * s.velocity[0];
+        assert!(power <= 0.0, "still air pushes: {power}");
+        damped = damped.max(-power);
+    }
+    assert!(worst < 1e-9, "input vs records: {worst:e}");
+    assert!(damped > 0.0, "still air damps");
+}
+
+/// The FMU's input `windVelocity_ext` with `windSource` = 1: every output equals the
+/// library's run of the same source holding the same speeds, bit for bit, over 100 steps of
+/// 1 s with a speed that changes each step; `windVelocity` is the speed the last step held;
+/// a negative speed is refused (fmi2Error) naming windVelocity_ext; a state saved and
+/// restored in a fresh instance brings the held speed back (the outputs equal).
+#[test]
+fn the_fmu_wind_input_is_the_librarys() {
+    use crate::fmu::{bits, default_platform, native_outputs, Fmu};
+    use slowdrift::fmi2::model_description::vr;
+    use slowdrift::fmi2::types::fmi2Status;
+    use slowdrift::model::WindSource;
+    let stop = 100.0;
+    let fmu = Fmu::new("wind-input");
+    assert_eq!(fmu.setup(0.0, Some(stop)), fmi2Status::fmi2OK);
+    assert_eq!(fmu.set_int(vr::WIND_SOURCE, 1), fmi2Status::fmi2OK);
+    assert_eq!(fmu.set_real(vr::WIND_DIRECTION, -0.3), fmi2Status::fmi2OK);
+    assert_eq!(
+        fmu.set_real(vr::WIND_VELOCITY_EXT, 12.0),
+        fmi2Status::fmi2OK
+    );
+    assert_eq!(fmu.init(), fmi2Status::fmi2OK, "{}", fmu.messages());
+    let mut problem = default_platform().clone();
+    problem.wind.source = WindSource::Input;
+    problem.wind.direction = -0.3;
+    problem.run.duration = stop;
+    let mut native = slowdrift::Simulation::new(problem).unwrap();
+    native.hold_wind_input(12.0).unwrap();
+    let speed = |n: usize| 12.0 + 4.0 * (n as f64 / 7.0).sin();
+    let mut saved = None;
+    for n in 0..stop as usize {
+        let expected = native_outputs(&native.outputs().unwrap());
+        assert_eq!(bits(&fmu.outputs()), bits(&expected), "t = {n} s");
+        let held = if n == 0 { 12.0 } else { speed(n - 1) };
+        assert_eq!(fmu.get_reals(&[vr::WIND_VELOCITY]).1, [held]);
+        if n == 50 {
+            use crate::fmu::{free_state, get_state, serialize};
+            let state = get_state(&fmu);
+            saved = Some((serialize(&fmu, state), expected));
+            free_state(&fmu, state);
+        }
+        assert_eq!(
+            fmu.set_real(vr::WIND_VELOCITY_EXT, speed(n)),
+            fmi2Status::fmi2OK
+        );
+        assert_eq!(fmu.step(n as f64, 1.0), fmi2Status::fmi2OK);
+        native.hold_wind_input(speed(n)).unwrap();
+        native.advance(1.0, [0.0; 3]).unwrap();
+    }
+    assert_eq!(
+        fmu.set_real(vr::WIND_VELOCITY_EXT, -1.0),
+        fmi2Status::fmi2Error
+    );
+    assert!(
+        fmu.last_message().message.contains("windVelocity_ext = -1"),
+        "{}",
+        fmu.messages()
+    );
+    let (bytes, expected) = saved.unwrap();
+    let fresh = Fmu::new("restored");
+    crate::fmi2_state::restore(&fresh, &bytes).unwrap();
+    assert_eq!(bits(&fresh.outputs()), bits(&expected));
 }

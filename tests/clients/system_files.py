@@ -214,9 +214,10 @@ def initial_value_problems(initial, variables_of):
     return problems
 
 
-# Inputs that no output drives (none: the system connects SlowDrift's whole motion to all
-# twelve of the mooring's motion inputs).
-UNDRIVEN = set()
+# Inputs that no output drives: SlowDrift's windVelocity_ext (a master's own wind field, used
+# only when windSource = 1; the system's wind, if any, is SlowDrift's own records). The system
+# connects SlowDrift's whole motion to all twelve of the mooring's motion inputs.
+UNDRIVEN = {("slowdrift", "windVelocity_ext")}
 
 
 def input_coverage_problems(pairs, variables_of):

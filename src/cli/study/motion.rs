@@ -179,26 +179,30 @@ pub(super) fn motion(base: &Problem, args: &MotionArgs) -> Result<(), String> {
     } else {
         println!("no wave-frequency motion (no RAOs, or [model] wave_frequency_motion = \"off\"): slow drift only");
     }
-    if let Some(wind) = base.run_wind().map_err(explain)? {
+    if let Some((height, gusts)) = base
+        .run_wind()
+        .map_err(explain)?
+        .and_then(|wind| Some((wind.height, wind.gusts?)))
+    {
         // The wind speed at the force's height: its Welch spectrum against the gust spectrum.
         let top = 1.0;
         let simulated = welch(&record.wind_speed, record.dt, SLOW_SEGMENT, top)?;
         let predicted: Vec<(f64, f64)> = (1..=400)
             .map(|n| {
                 let w = n as f64 * top / 400.0;
-                (w, wind.gust.density_per_rad(w))
+                (w, gusts.spectrum.density_per_rad(w))
             })
             .collect();
         rows(&mut csv, "wind", "speed", "simulated", &simulated);
         rows(&mut csv, "wind", "speed", "predicted", &predicted);
-        let sigma2 = wind
-            .gust
+        let sigma2 = gusts
+            .spectrum
             .variance(0.5 / args.duration, 0.5 / record.dt)
             .map_err(explain)?;
         let variances = (variance(&record.wind_speed), sigma2);
         writeln!(summary, "wind,speed,{},{},,,,,", variances.0, variances.1).ok();
         panels.extend(panel(
-            format!("wind speed at {} m", wind.height),
+            format!("wind speed at {} m", height),
             SPEED,
             top,
             variances,

@@ -5,7 +5,7 @@
 //! gust spectrum at the reference height).
 
 use crate::error::{Error, Result};
-use crate::model::{Mode, WindProfileKind, WindSpectrumKind};
+use crate::model::{Mode, WindProfileKind, WindSource, WindSpectrumKind};
 use crate::scenario::Origins;
 use crate::wind::{
     WindField, WindProfile, DEFAULT_AIR_DENSITY, DEFAULT_DRAG_COEFFICIENT,
@@ -40,6 +40,8 @@ pub(super) struct WindFile {
     length_scale: Option<f64>,
     /// kg/m^3.
     air_density: Option<f64>,
+    /// The gust records (the default) or the FMU's input.
+    source: Option<WindSource>,
 }
 
 /// The spectra that use each of the spectrum's own keys.
@@ -93,6 +95,7 @@ impl WindFile {
             turbulence_intensity: self.turbulence_intensity,
             length_scale: self.length_scale,
             air_density: self.air_density.unwrap_or(DEFAULT_AIR_DENSITY),
+            source: self.source.unwrap_or(calm.source),
         })
     }
 
@@ -222,6 +225,7 @@ mod tests {
                 turbulence_intensity: Some(0.1),
                 length_scale: Some(340.0),
                 air_density: 1.2,
+                source: WindSource::Records,
             }
         );
         let text = with_wind("speed = 20\nspectrum = \"harris\"\ndrag_coefficient = 0.0025");
@@ -264,6 +268,36 @@ mod tests {
             .unwrap()
             .wind;
         assert_eq!(log.profile, WindProfile::Logarithmic { roughness: 0.001 });
+    }
+
+    /// `source = "input"` is read; a speed beside it (unused: the input is the speed) is
+    /// refused on its line, and so is an input on a platform without wind coefficients.
+    #[test]
+    fn an_input_wind_takes_no_speed_and_needs_coefficients() {
+        let text = with_wind("source = \"input\"\ndirection_deg = 90");
+        let wind = read(&text).unwrap().wind;
+        assert_eq!(wind.source, WindSource::Input);
+        assert!(!wind.is_calm() && !wind.has_gusts());
+        let problem = resolve(&read(&text).unwrap()).unwrap();
+        problem
+            .check()
+            .expect("an input wind on the platform's coefficients");
+        let text = with_wind("speed = 20\nsource = \"input\"");
+        let line = key_line(&text, "speed");
+        assert_eq!(
+            check_error(&text),
+            format!(
+                "test.toml:{line}: invalid [wind] speed = 20: is not used when wind.source = \
+                 \"input\" (the speed comes from the FMU's input windVelocity_ext): set it to \
+                 0, or the source to \"records\""
+            )
+        );
+        let text = minimal_with("[wind]\nsource = \"input\"");
+        let message = check_error(&text);
+        assert!(
+            message.contains("[wind] source = \"input\": needs the platform's wind coefficients"),
+            "{message}"
+        );
     }
 
     /// A key that the chosen spectrum or profile does not use is refused with its value and
