@@ -18,6 +18,7 @@ use super::synthesis::{InverseFft, Synthesizer};
 use crate::sea_state::{gust_amplitudes, FrequencyGrid};
 use crate::wind::GustSpectrum;
 use rustfft::num_complex::Complex64;
+use std::sync::Arc;
 
 /// The gusts of one wind on one stream: what a segment's gust record is made from, and its
 /// buffers.
@@ -25,8 +26,9 @@ use rustfft::num_complex::Complex64;
 pub struct GustStream {
     /// The components' grid: the records' grid from n = 1 to below the Nyquist index.
     grid: FrequencyGrid,
-    /// sqrt(S_u(omega_n) d_omega), m/s, per component.
-    scale: Vec<f64>,
+    /// sqrt(S_u(omega_n) d_omega), m/s, per component; shared by the plan's stream and each
+    /// segment's clone.
+    scale: Arc<[f64]>,
     synth: Synthesizer,
     amplitudes: Vec<Complex64>,
     series: Vec<Complex64>,
@@ -47,8 +49,10 @@ impl GustStream {
             count,
             ..grid.clone()
         };
-        let scale = (0..count)
-            .map(|j| (spectrum.density_per_rad(grid.omega(j)) * grid.d_omega).sqrt())
+        let scale = spectrum
+            .densities_per_rad((0..count).map(|j| grid.omega(j)))
+            .into_iter()
+            .map(|s| (s * grid.d_omega).sqrt())
             .collect();
         let synth = Synthesizer::with_fft(&grid, fft).with_join(Join::new(segments));
         GustStream {

@@ -45,10 +45,9 @@ impl Synthesizer {
     /// Uses a transform already planned for the grid's record length.
     pub fn with_fft(grid: &FrequencyGrid, fft: InverseFft) -> Self {
         debug_assert_eq!(fft.len(), grid.len);
-        let scratch = vec![Complex64::default(); fft.get_inplace_scratch_len()];
         Synthesizer {
             fft,
-            scratch,
+            scratch: Vec::new(),
             first: grid.first,
             count: grid.count,
             join: None,
@@ -59,8 +58,18 @@ impl Synthesizer {
     /// The same transform writing the joined series of a stream's segments (`join`
     /// chooses the segment: [`Synthesizer::join_mut`]).
     pub fn with_join(mut self, join: Join) -> Self {
-        self.join = Some((join, vec![Complex64::default(); self.fft.len()]));
+        self.join = Some((join, Vec::new()));
         self
+    }
+
+    /// Sizes the transform's scratch on first use, so that a plan's synthesizer (cloned
+    /// into each simulation) carries no buffers (nor does its joined block, sized by its
+    /// first transform).
+    fn size_scratch(&mut self) {
+        let scratch = self.fft.get_inplace_scratch_len();
+        if self.scratch.len() < scratch {
+            self.scratch.resize(scratch, Complex64::default());
+        }
     }
 
     /// The join of the segments, when this synthesizer writes a stream.
@@ -85,11 +94,14 @@ impl Synthesizer {
     /// `out` ([`Synthesizer::output_len`] samples) for every sample m.
     pub fn complex_series(&mut self, coefficients: &[Complex64], out: &mut [Complex64]) {
         debug_assert_eq!(coefficients.len(), self.count);
+        self.size_scratch();
         match &mut self.join {
             None => {
                 transform(&self.fft, &mut self.scratch, self.first, coefficients, out);
             }
             Some((join, block)) => {
+                // Every sample is written by the transform: the zeros are only its size.
+                block.resize(self.fft.len(), Complex64::default());
                 transform(
                     &self.fft,
                     &mut self.scratch,
@@ -116,6 +128,7 @@ impl Synthesizer {
         cy: &[Complex64],
         out: &mut impl Extend<Complex64>,
     ) {
+        self.size_scratch();
         let (join, block) = match &mut self.join {
             Some((join, block)) => (Some(join), block),
             None => (None, &mut self.pair_block),

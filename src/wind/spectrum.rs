@@ -298,6 +298,29 @@ impl GustSpectrum {
         self.density(omega / (2.0 * PI)) / (2.0 * PI)
     }
 
+    /// [`GustSpectrum::density_per_rad`] at every frequency of `omegas`, the constants of
+    /// the spectrum taken once (NPD's four powers of the speed and the height; the others
+    /// have none worth hoisting): the same values within rounding.
+    pub fn densities_per_rad(&self, omegas: impl Iterator<Item = f64>) -> Vec<f64> {
+        match *self {
+            GustSpectrum::Npd { speed, height } => {
+                let (u, z) = (speed / NPD_REFERENCE_HEIGHT, height / NPD_REFERENCE_HEIGHT);
+                let per_omega = 172.0 * z.powf(2.0 / 3.0) * u.powf(-0.75) / (2.0 * PI);
+                let level = 320.0 * u * u * z.powf(0.45) / (2.0 * PI);
+                let n = NPD_EXPONENT;
+                omegas
+                    .map(|omega| {
+                        if omega < 0.0 {
+                            return 0.0;
+                        }
+                        level / (1.0 + (per_omega * omega).powf(n)).powf(5.0 / (3.0 * n))
+                    })
+                    .collect()
+            }
+            _ => omegas.map(|omega| self.density_per_rad(omega)).collect(),
+        }
+    }
+
     /// The variance of the gust within the band [f_low, f_high] (Hz), m^2/s^2: the integral
     /// of S(f) by Simpson's rule in ln f (500 steps per unit of ln f, from 1e-9 Hz up) and
     /// the trapezoidal rule below, where every form is flat.
@@ -664,6 +687,31 @@ mod tests {
     /// the first two integrate in closed form: 583 0.003 = 1.749 for the first, and with w =
     /// f*^0.35 the second is 1200 integral of w (1 + w)^-11.5 dw = 1200 [-(1 + w)^-9.5 / 9.5
     /// + (1 + w)^-10.5 / 10.5] from 0.003^0.35 to 0.1^0.35; times u*^2.
+    #[test]
+    fn densities_on_a_grid_are_the_density_of_each_frequency() {
+        let spectra = [
+            GustSpectrum::Npd {
+                speed: 23.0,
+                height: 37.0,
+            },
+            GustSpectrum::Harris {
+                speed: 20.0,
+                drag_coefficient: 0.002,
+            },
+        ];
+        for spectrum in spectra {
+            let omegas = (0..2000).map(|j| j as f64 * 3e-3);
+            let grid = spectrum.densities_per_rad(omegas.clone());
+            for (omega, s) in omegas.zip(grid) {
+                let one = spectrum.density_per_rad(omega);
+                assert!(
+                    (s - one).abs() <= 1e-13 * one,
+                    "{spectrum:?} at {omega}: {s} vs {one}"
+                );
+            }
+        }
+    }
+
     #[test]
     fn ochi_shin_pieces_meet_and_integrate() {
         let per_f_star = 30.0 / OCHI_SHIN.mean_speed(); // Hz per unit of f*
