@@ -13,21 +13,25 @@
 //! FMI 2.0 ([`fmi2`]): its C types, its call-state machine, the typed handles that turn the
 //! host's pointers into references (the crate's only pointer casts), its logger, the
 //! [`fmi2::Model`] trait a model implements and the functions the cdylibs' `fmi2*` shims call.
-//! An FMI 3.0 layer would be a `fmi3` module beside it, on the same error, firewall, call
-//! check and log policy.
 //!
-//! The crate exports no symbol: it has no `#[no_mangle]` item, and each FMU's cdylib
-//! exports only its own `fmi2*` functions (the linker version script `src/fmi2/exports.map`,
-//! which the cdylibs' build scripts pass).
+//! FMI 3.0 ([`fmi3`]): a thin adapter beside it on the same instance (model, state machine,
+//! logger, error, firewall and log policy): its C types, its call table, its functions and
+//! the macro [`fmi3_exports`] that makes a cdylib's 75 `fmi3*` shims.
+//!
+//! The crate exports no symbol: it has no `#[no_mangle]` item (the macro's shims are
+//! expanded in the cdylib), and each FMU's cdylib exports only its own `fmi2*` and `fmi3*`
+//! functions (the linker version script `src/fmi2/exports.map`, which the cdylibs' build
+//! scripts pass).
 
 // Unsafe code: only the handles (`fmi2::handle`), the host's logger callback
-// (`fmi2::logger`) and the functions that take the host's pointers (`fmi2::functions`)
-// allow it (checked by the workspace's tests/all/architecture.rs).
+// (`fmi2::logger`) and the functions that take the host's pointers (`fmi2::functions`,
+// `fmi3::functions`) allow it (checked by the workspace's tests/all/architecture.rs).
 #![deny(unsafe_code)]
 
 pub mod error;
 pub mod firewall;
 pub mod fmi2;
+pub mod fmi3;
 pub mod log;
 pub mod machine;
 pub mod resource_location;

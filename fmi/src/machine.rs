@@ -13,6 +13,11 @@ pub trait CallTable: Copy {
     fn c_name(self) -> String;
     /// Whether the table allows the call in `state`.
     fn allowed_in(self, state: Self::State) -> bool;
+    /// The state's name in the version's words (the Rust name unless the version renames
+    /// it).
+    fn state_name(state: Self::State) -> String {
+        format!("{state:?}")
+    }
 }
 
 /// Refuses a call that the table does not allow in `state`.
@@ -22,7 +27,7 @@ pub fn check<C: CallTable>(call: C, state: C::State) -> Result<(), Error> {
     } else {
         Err(Error::IllegalCall {
             call: call.c_name(),
-            state: format!("{state:?}"),
+            state: C::state_name(state),
         })
     }
 }

@@ -1,6 +1,7 @@
 //! Each FMU's shared library, SlowDrift's (`libslowdrift.so`) and the mooring's
 //! (`libslowdrift_mooring.so`), exports exactly the FMI 2.0 common and co-simulation
-//! functions (nothing of the FMI layer they share, `slowdrift-fmi`, or of the model) and
+//! functions and the FMI 3.0 functions (nothing of the FMI layer they share,
+//! `slowdrift-fmi`, or of the model) and
 //! depends on nothing beyond the C runtime (FMI 2.0.4 section 2.1.1; fmpy checks both).
 //! Uses `nm` and `readelf` from GNU binutils.
 #![cfg(target_os = "linux")]
@@ -45,6 +46,87 @@ const FMI2_CO_SIMULATION: [&str; 34] = [
     "fmi2GetIntegerStatus",
     "fmi2GetBooleanStatus",
     "fmi2GetStringStatus",
+];
+
+/// The FMI 3.0 functions, as `fmi3FunctionTypes.h` of the standard (v3.0.2) declares them, in
+/// its order: an FMU exports all 75, whatever interface types it provides (FMI 3.0 section
+/// 2.5).
+const FMI3: [&str; 75] = [
+    "fmi3GetVersion",
+    "fmi3SetDebugLogging",
+    "fmi3InstantiateModelExchange",
+    "fmi3InstantiateCoSimulation",
+    "fmi3InstantiateScheduledExecution",
+    "fmi3FreeInstance",
+    "fmi3EnterInitializationMode",
+    "fmi3ExitInitializationMode",
+    "fmi3EnterEventMode",
+    "fmi3Terminate",
+    "fmi3Reset",
+    "fmi3GetFloat32",
+    "fmi3GetFloat64",
+    "fmi3GetInt8",
+    "fmi3GetUInt8",
+    "fmi3GetInt16",
+    "fmi3GetUInt16",
+    "fmi3GetInt32",
+    "fmi3GetUInt32",
+    "fmi3GetInt64",
+    "fmi3GetUInt64",
+    "fmi3GetBoolean",
+    "fmi3GetString",
+    "fmi3GetBinary",
+    "fmi3GetClock",
+    "fmi3SetFloat32",
+    "fmi3SetFloat64",
+    "fmi3SetInt8",
+    "fmi3SetUInt8",
+    "fmi3SetInt16",
+    "fmi3SetUInt16",
+    "fmi3SetInt32",
+    "fmi3SetUInt32",
+    "fmi3SetInt64",
+    "fmi3SetUInt64",
+    "fmi3SetBoolean",
+    "fmi3SetString",
+    "fmi3SetBinary",
+    "fmi3SetClock",
+    "fmi3GetNumberOfVariableDependencies",
+    "fmi3GetVariableDependencies",
+    "fmi3GetFMUState",
+    "fmi3SetFMUState",
+    "fmi3FreeFMUState",
+    "fmi3SerializedFMUStateSize",
+    "fmi3SerializeFMUState",
+    "fmi3DeserializeFMUState",
+    "fmi3GetDirectionalDerivative",
+    "fmi3GetAdjointDerivative",
+    "fmi3EnterConfigurationMode",
+    "fmi3ExitConfigurationMode",
+    "fmi3GetIntervalDecimal",
+    "fmi3GetIntervalFraction",
+    "fmi3GetShiftDecimal",
+    "fmi3GetShiftFraction",
+    "fmi3SetIntervalDecimal",
+    "fmi3SetIntervalFraction",
+    "fmi3SetShiftDecimal",
+    "fmi3SetShiftFraction",
+    "fmi3EvaluateDiscreteStates",
+    "fmi3UpdateDiscreteStates",
+    "fmi3EnterContinuousTimeMode",
+    "fmi3CompletedIntegratorStep",
+    "fmi3SetTime",
+    "fmi3SetContinuousStates",
+    "fmi3GetContinuousStateDerivatives",
+    "fmi3GetEventIndicators",
+    "fmi3GetContinuousStates",
+    "fmi3GetNominalsOfContinuousStates",
+    "fmi3GetNumberOfEventIndicators",
+    "fmi3GetNumberOfContinuousStates",
+    "fmi3EnterStepMode",
+    "fmi3GetOutputDerivatives",
+    "fmi3DoStep",
+    "fmi3ActivateModelPartition",
 ];
 
 /// Libraries of the C runtime a Rust cdylib may need.
@@ -108,8 +190,8 @@ fn binutils(tool: &str, args: &[&str], library: &Path) -> String {
 }
 
 #[test]
-fn each_fmu_exports_exactly_the_fmi2_functions() {
-    let expected: BTreeSet<&str> = FMI2_CO_SIMULATION.into_iter().collect();
+fn each_fmu_exports_exactly_the_fmi2_and_fmi3_functions() {
+    let expected: BTreeSet<&str> = FMI2_CO_SIMULATION.into_iter().chain(FMI3).collect();
     for (package, file) in CDYLIBS {
         let library = cdylib(package, file);
         let text = binutils("nm", &["-D", "--defined-only"], &library);

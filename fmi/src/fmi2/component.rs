@@ -7,12 +7,12 @@
 //! into [`MachineState::StepFailed`]; a status the FMU cannot answer leaves it as it was.
 
 use super::logger::Logger;
-use super::machine::{Call, MachineState};
+use super::machine::MachineState;
 use super::model::Context;
 use super::types::fmi2Status;
 use crate::error::Outcome;
 use crate::log::Category;
-use crate::machine::check;
+use crate::machine::{check, CallTable};
 use crate::Error;
 
 /// One instance: its logger, its state and its model.
@@ -41,17 +41,23 @@ impl<M> Component<M> {
         f(&mut self.model, &cx)
     }
 
-    /// Refuses a call that the table does not allow in the current state.
-    pub(crate) fn check(&self, call: Call) -> Result<(), Error> {
+    /// Refuses a call that the table (FMI 2.0's or 3.0's) does not allow in the current
+    /// state.
+    pub(crate) fn check<C: CallTable<State = MachineState>>(&self, call: C) -> Result<(), Error> {
         check(call, self.state)
     }
 
-    /// The one place where a result becomes an `fmi2Status`, a state change and a log line.
-    pub(crate) fn report(&mut self, call: Call, result: Result<(), Error>) -> fmi2Status {
+    /// The one place where a result becomes a status (FMI 3.0's has the same numbers), a
+    /// state change and a log line.
+    pub(crate) fn report<C: CallTable<State = MachineState>>(
+        &mut self,
+        call: C,
+        result: Result<(), Error>,
+    ) -> fmi2Status {
         match result {
             Ok(()) => {
                 if self.logger.enabled(Category::All) {
-                    let message = format!("{}: ok", call.name());
+                    let message = format!("{}: ok", call.c_name());
                     self.logger.log(fmi2Status::fmi2OK, Category::All, &message);
                 }
                 fmi2Status::fmi2OK
@@ -62,7 +68,7 @@ impl<M> Component<M> {
                     Outcome::Discarded => self.state = MachineState::StepFailed,
                     Outcome::Failed => self.state = MachineState::Error,
                 }
-                refuse(&self.logger, &call.name(), &e)
+                refuse(&self.logger, &call.c_name(), &e)
             }
         }
     }

@@ -15,10 +15,10 @@
 //! `exports.map` beside this file is the linker version script of every FMU's cdylib: the
 //! `fmi2*` symbols global, everything else local.
 
-mod component;
+pub(crate) mod component;
 pub mod functions;
-mod handle;
-mod logger;
+pub(crate) mod handle;
+pub(crate) mod logger;
 pub mod machine;
 pub mod model;
 pub mod types;
