@@ -52,6 +52,7 @@ pub mod error;
 pub mod files;
 mod fingerprint;
 pub mod fmi2;
+pub mod fmi3_description;
 pub mod forces;
 pub mod hydro;
 pub mod model;
