@@ -280,7 +280,7 @@ fn exactly_one_independent_variable_time_first() {
         ("variability", "continuous"),
         ("description", "Simulation time"),
     ]);
-    assert_eq!(independent, [time.clone()]);
+    assert_eq!(independent, std::slice::from_ref(&time));
     assert_eq!(tags(&out, "Float64")[0], time);
     assert_eq!(TIME_VALUE_REFERENCE, 999_999);
     // With a unit "s" declared, time has it.
