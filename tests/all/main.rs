@@ -23,6 +23,7 @@ mod fmi2_misuse;
 mod fmi2_state;
 mod fmi2_step_bounds;
 mod fmi2_symbols;
+mod fmi3_description;
 mod fmu_configuration;
 mod full_qtf;
 mod full_qtf_directions;
