@@ -14,6 +14,11 @@
 //! inherit a unit from a declaredType). Each mode's FMU parameter (`src/model/modes.rs`, the
 //! one definition of the modes, `include!`d here) must be an Integer whose min, max and
 //! description list exactly the mode's codes, words and descriptions.
+//!
+//! From the same XML it generates the FMI 3.0 model description,
+//! `$OUT_DIR/fmi3/modelDescription.xml` (`slowdrift-fmi-xml`: every value reference kept),
+//! and its constants, `$OUT_DIR/fmi3/numbering.rs` (`crate::fmi2::fmi3_description`); a
+//! description the generator cannot convert fails the build with its error.
 
 use quick_xml::events::{BytesStart, Event};
 use quick_xml::{Reader, XmlVersion};
@@ -125,10 +130,21 @@ fn main() {
         fail(&errors.join("\n  "));
     }
     let code = generate(&model);
-    let out = PathBuf::from(std::env::var("OUT_DIR").expect("cargo sets OUT_DIR"))
-        .join("model_description.rs");
-    std::fs::write(&out, code)
-        .unwrap_or_else(|e| fail(&format!("cannot write {}: {e}", out.display())));
+    let out_dir = PathBuf::from(std::env::var("OUT_DIR").expect("cargo sets OUT_DIR"));
+    write(&out_dir.join("model_description.rs"), &code);
+    let fmi3 = slowdrift_fmi_xml::fmi3_model_description(&xml)
+        .unwrap_or_else(|e| fail(&format!("no FMI 3.0 description: {e}")));
+    let fmi3_dir = out_dir.join("fmi3");
+    std::fs::create_dir_all(&fmi3_dir)
+        .unwrap_or_else(|e| fail(&format!("cannot create {}: {e}", fmi3_dir.display())));
+    write(&fmi3_dir.join("modelDescription.xml"), &fmi3);
+    let numbering = slowdrift_fmi_xml::rust_constants(&slowdrift_fmi_xml::Numbering::SAME);
+    write(&fmi3_dir.join("numbering.rs"), &numbering);
+}
+
+fn write(path: &std::path::Path, text: &str) {
+    std::fs::write(path, text)
+        .unwrap_or_else(|e| fail(&format!("cannot write {}: {e}", path.display())));
 }
 
 /// The cdylib exports only `fmi2*` symbols (FMI 2.0: nothing else may clash with the

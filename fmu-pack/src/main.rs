@@ -6,7 +6,10 @@
 //! sea state for three hours and prints a short summary. Then the same for the mooring FMU,
 //! `target/fmu/Mooring.fmu` ([`mooring`]), and last the coupled system for a co-simulation
 //! master, `target/fmu/system/` ([`system`]: both FMUs, their OSP model descriptions, the OSP
-//! system structure and the SSP package).
+//! system structure and the SSP package). Beside them, the FMUs' FMI 3.0 model descriptions
+//! as their build scripts generate them (`slowdrift-fmi-xml`):
+//! `target/fmu/fmi3/SlowDrift/modelDescription.xml` and
+//! `target/fmu/fmi3/Mooring/modelDescription.xml` (no FMI 3.0 archive yet).
 
 mod archive;
 mod configured;
@@ -95,8 +98,24 @@ fn run(args: &Args) -> Result<(), String> {
         &fmu_dir.join("unpacked"),
         (0.0, Some(THREE_HOURS)),
     )?;
+    write_fmi3_description(
+        &fmu_dir,
+        MODEL_IDENTIFIER,
+        slowdrift::fmi2::fmi3_description::MODEL_DESCRIPTION_FMI3,
+    )?;
     mooring::pack_and_check(&root, &target)?;
     system::write(&root, &library, &fmu_dir)
+}
+
+/// Writes an FMU's FMI 3.0 model description `xml` to
+/// `fmu_dir/fmi3/<model_identifier>/modelDescription.xml`.
+fn write_fmi3_description(fmu_dir: &Path, model_identifier: &str, xml: &str) -> Result<(), String> {
+    let dir = fmu_dir.join("fmi3").join(model_identifier);
+    std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let path = dir.join("modelDescription.xml");
+    std::fs::write(&path, xml).map_err(|e| format!("{}: {e}", path.display()))?;
+    println!("wrote {}", path.display());
+    Ok(())
 }
 
 /// The FMU of the configuration file `config`, named `model_name`, at `out`, checked by
@@ -143,10 +162,20 @@ fn check(fmu_path: &Path, unpack_dir: &Path, experiment: (f64, Option<f64>)) -> 
 }
 
 /// `cargo build --release` with `args` (the package and its targets), and the path of the
-/// shared library (`cdylib`) it built of the library target `name`, as cargo reports it
-/// (`--message-format=json`: one JSON message a line on stdout; diagnostics still go to
-/// stderr as text).
+/// shared library (`cdylib`) it built of the library target `name`, as cargo reports it.
 fn cdylib(root: &Path, args: &[&str], name: &str) -> Result<PathBuf, String> {
+    let messages = cargo_build(root, args)?;
+    cdylib_in_messages(&messages, name).ok_or_else(|| {
+        format!(
+            "cargo build ({}) reported no shared library of {name}",
+            args.join(" ")
+        )
+    })
+}
+
+/// `cargo build --release` with `args`, and cargo's report (`--message-format=json`: one
+/// JSON message a line on stdout; diagnostics still go to stderr as text).
+fn cargo_build(root: &Path, args: &[&str]) -> Result<String, String> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let output = Command::new(cargo)
         .args([
@@ -162,13 +191,18 @@ fn cdylib(root: &Path, args: &[&str], name: &str) -> Result<PathBuf, String> {
     if !output.status.success() {
         return Err(format!("cargo build failed ({})", args.join(" ")));
     }
-    let stdout = String::from_utf8_lossy(&output.stdout);
-    cdylib_in_messages(&stdout, name).ok_or_else(|| {
-        format!(
-            "cargo build ({}) reported no shared library of {name}",
-            args.join(" ")
-        )
-    })
+    Ok(String::from_utf8_lossy(&output.stdout).into_owned())
+}
+
+/// The `OUT_DIR` of package `package`'s build script among cargo's JSON messages.
+fn out_dir_in_messages(messages: &str, package: &str) -> Option<PathBuf> {
+    let id = format!("#{package}@");
+    messages
+        .lines()
+        .filter_map(|line| serde_json::from_str::<serde_json::Value>(line).ok())
+        .filter(|m| m["reason"] == "build-script-executed")
+        .filter(|m| m["package_id"].as_str().is_some_and(|p| p.contains(&id)))
+        .find_map(|m| m["out_dir"].as_str().map(PathBuf::from))
 }
 
 /// The `cdylib` file of library target `name` among cargo's JSON messages.

@@ -13,11 +13,17 @@
 //! - `documentation/index.html` (docs/coupling.md) and `documentation/licenses/MoorDyn.txt`
 //!   (MoorDyn's BSD-3-Clause licence, which its binary's redistribution must carry).
 //!
+//! Beside it, `target/fmu/fmi3/Mooring/modelDescription.xml`: the FMU's FMI 3.0 model
+//! description, as its build script generated it.
+//!
 //! The check: the packed FMU, loaded from the unpacked archive through its C ABI, holds the
 //! platform 10 m off in surge for 60 s and must pull it back (Fx < 0, Fy and Mz nil by
 //! symmetry), with a fairlead tension above zero.
 
-use crate::{archive, cdylib, file_uri, master, read, write_fmu};
+use crate::{
+    archive, cargo_build, cdylib_in_messages, file_uri, master, out_dir_in_messages, read,
+    write_fmi3_description, write_fmu,
+};
 use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -34,11 +40,16 @@ const CHECK_OFFSET: f64 = 10.0;
 const CHECK_SECONDS: f64 = 60.0;
 
 pub fn pack_and_check(root: &Path, target: &Path) -> Result<(), String> {
-    let library = cdylib(
-        root,
-        &["--lib", "-p", "slowdrift-mooring"],
-        "slowdrift_mooring",
-    )?;
+    // The library, and the FMI 3.0 description its build script generated (its crate
+    // cannot be linked into fmu-pack beside SlowDrift's: both export the fmi2* symbols).
+    let messages = cargo_build(root, &["--lib", "-p", "slowdrift-mooring"])?;
+    let library = cdylib_in_messages(&messages, "slowdrift_mooring")
+        .ok_or("cargo build -p slowdrift-mooring reported no shared library")?;
+    let out_dir = out_dir_in_messages(&messages, "slowdrift-mooring")
+        .ok_or("cargo build -p slowdrift-mooring reported no build-script output")?;
+    let fmi3 = read(&out_dir.join("fmi3/modelDescription.xml"))?;
+    let fmi3 = String::from_utf8(fmi3).map_err(|e| format!("{}: {e}", out_dir.display()))?;
+    write_fmi3_description(&target.join("fmu"), MODEL_IDENTIFIER, &fmi3)?;
     let (moordyn, licence) = moordyn_library(&target.join("moordyn-wheel"))?;
     let fmu_path = target.join("fmu").join(format!("{MODEL_IDENTIFIER}.fmu"));
     let coupling = String::from_utf8_lossy(&read(&root.join("docs/coupling.md"))?).into_owned();

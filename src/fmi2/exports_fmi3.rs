@@ -14,4 +14,4 @@
 
 use super::instance::Instance;
 
-slowdrift_fmi::fmi3_exports!(Instance);
+slowdrift_fmi::fmi3_exports!(Instance, super::fmi3_description::NUMBERING);

@@ -24,6 +24,7 @@ mod fmi2_state;
 mod fmi2_step_bounds;
 mod fmi2_symbols;
 mod fmi3_abi;
+mod fmi3_description;
 mod fmu_configuration;
 mod full_qtf;
 mod full_qtf_directions;

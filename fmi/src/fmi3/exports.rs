@@ -4,23 +4,24 @@
 //! result). One macro call makes all 75, so a new FMU of the layer cannot miss one (fmpy
 //! refuses a library that lacks any).
 
-/// The 75 `#[no_mangle] extern "C" fn fmi3*` of FMI 3.0 for the model `$model`: a
-/// [`crate::fmi2::Model`] with [`crate::fmi2::SavedStates`], or, written
-/// `fmi3_exports!(Model, without_saved_states)`, one without (the six state functions then
-/// answer `fmi3Error`: `canGetAndSetFMUState="false"`). Call it in a module of its own in
+/// The 75 `#[no_mangle] extern "C" fn fmi3*` of FMI 3.0 for the model `$model`, whose FMI
+/// 3.0 value references are its FMI 2.0 ones numbered by `$numbering` (a
+/// [`crate::fmi3::Numbering`]): a [`crate::fmi2::Model`] with [`crate::fmi2::SavedStates`],
+/// or, written `fmi3_exports!(Model, NUMBERING, without_saved_states)`, one without (the six
+/// state functions then answer `fmi3Error`: `canGetAndSetFMUState="false"`). Call it in a module of its own in
 /// the cdylib crate: the expansion imports the FMI 3.0 types there. The cdylib's linker
 /// version script exports `fmi3*` beside `fmi2*`.
 #[macro_export]
 macro_rules! fmi3_exports {
-    ($model:ty) => {
-        $crate::fmi3_exports!(@common $model);
+    ($model:ty, $numbering:expr) => {
+        $crate::fmi3_exports!(@common $model, $numbering);
         $crate::fmi3_exports!(@states $model);
     };
-    ($model:ty, without_saved_states) => {
-        $crate::fmi3_exports!(@common $model);
+    ($model:ty, $numbering:expr, without_saved_states) => {
+        $crate::fmi3_exports!(@common $model, $numbering);
         $crate::fmi3_exports!(@no_states $model);
     };
-    (@common $model:ty) => {
+    (@common $model:ty, $numbering:expr) => {
         use $crate::fmi3::functions as fmi3;
         use $crate::fmi3::functions::why;
         use $crate::fmi3::types::*;
@@ -180,7 +181,7 @@ macro_rules! fmi3_exports {
             values: *mut fmi3Float64,
             nValues: usize,
         ) -> fmi3Status {
-            unsafe { fmi3::get_float64::<$model>(instance, valueReferences, nValueReferences, values, nValues) }
+            unsafe { fmi3::get_float64::<$model>(instance, $numbering, valueReferences, nValueReferences, values, nValues) }
         }
 
         #[no_mangle]
@@ -235,7 +236,7 @@ macro_rules! fmi3_exports {
             values: *mut fmi3Int32,
             nValues: usize,
         ) -> fmi3Status {
-            unsafe { fmi3::get_int32::<$model>(instance, valueReferences, nValueReferences, values, nValues) }
+            unsafe { fmi3::get_int32::<$model>(instance, $numbering, valueReferences, nValueReferences, values, nValues) }
         }
 
         #[no_mangle]
@@ -279,7 +280,7 @@ macro_rules! fmi3_exports {
             values: *mut fmi3Boolean,
             nValues: usize,
         ) -> fmi3Status {
-            unsafe { fmi3::get_boolean::<$model>(instance, valueReferences, nValueReferences, values, nValues) }
+            unsafe { fmi3::get_boolean::<$model>(instance, $numbering, valueReferences, nValueReferences, values, nValues) }
         }
 
         #[no_mangle]
@@ -290,7 +291,7 @@ macro_rules! fmi3_exports {
             values: *mut fmi3String,
             nValues: usize,
         ) -> fmi3Status {
-            unsafe { fmi3::get_string::<$model>(instance, valueReferences, nValueReferences, values, nValues) }
+            unsafe { fmi3::get_string::<$model>(instance, $numbering, valueReferences, nValueReferences, values, nValues) }
         }
 
         #[no_mangle]
@@ -334,7 +335,7 @@ macro_rules! fmi3_exports {
             values: *const fmi3Float64,
             nValues: usize,
         ) -> fmi3Status {
-            unsafe { fmi3::set_float64::<$model>(instance, valueReferences, nValueReferences, values, nValues) }
+            unsafe { fmi3::set_float64::<$model>(instance, $numbering, valueReferences, nValueReferences, values, nValues) }
         }
 
         #[no_mangle]
@@ -389,7 +390,7 @@ macro_rules! fmi3_exports {
             values: *const fmi3Int32,
             nValues: usize,
         ) -> fmi3Status {
-            unsafe { fmi3::set_int32::<$model>(instance, valueReferences, nValueReferences, values, nValues) }
+            unsafe { fmi3::set_int32::<$model>(instance, $numbering, valueReferences, nValueReferences, values, nValues) }
         }
 
         #[no_mangle]
@@ -433,7 +434,7 @@ macro_rules! fmi3_exports {
             values: *const fmi3Boolean,
             nValues: usize,
         ) -> fmi3Status {
-            unsafe { fmi3::set_boolean::<$model>(instance, valueReferences, nValueReferences, values, nValues) }
+            unsafe { fmi3::set_boolean::<$model>(instance, $numbering, valueReferences, nValueReferences, values, nValues) }
         }
 
         #[no_mangle]
@@ -444,7 +445,7 @@ macro_rules! fmi3_exports {
             values: *const fmi3String,
             nValues: usize,
         ) -> fmi3Status {
-            unsafe { fmi3::set_string::<$model>(instance, valueReferences, nValueReferences, values, nValues) }
+            unsafe { fmi3::set_string::<$model>(instance, $numbering, valueReferences, nValueReferences, values, nValues) }
         }
 
         #[no_mangle]

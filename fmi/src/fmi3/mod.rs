@@ -23,3 +23,30 @@ mod exports;
 /// The value reference of the independent variable `time` in every FMI 3.0 model
 /// description of the layer (no FMI 2.0 variable may take it).
 pub const TIME_VALUE_REFERENCE: u32 = 999_999;
+
+/// How a model's FMI 2.0 value references, unique per base type, become FMI 3.0's, unique
+/// across all variables: FMI 3.0 value reference = FMI 2.0 value reference + the offset of
+/// its FMI 2.0 base type. The model descriptions are generated with it
+/// (`slowdrift-fmi-xml`), and the functions subtract it before they ask the model.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Numbering {
+    /// Added to a Real's value reference (its Float64's).
+    pub real: u32,
+    /// Added to an Integer's (its Int32's).
+    pub integer: u32,
+    /// Added to a Boolean's.
+    pub boolean: u32,
+    /// Added to a String's.
+    pub string: u32,
+}
+
+impl Numbering {
+    /// Every value reference as in FMI 2.0 (for a description whose value references are
+    /// unique across types already).
+    pub const SAME: Numbering = Numbering {
+        real: 0,
+        integer: 0,
+        boolean: 0,
+        string: 0,
+    };
+}

@@ -13,4 +13,8 @@
 
 use super::instance::Instance;
 
-slowdrift_fmi::fmi3_exports!(Instance, without_saved_states);
+slowdrift_fmi::fmi3_exports!(
+    Instance,
+    crate::fmi3_description::NUMBERING,
+    without_saved_states
+);
