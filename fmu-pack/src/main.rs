@@ -9,11 +9,15 @@
 //! system structure and the SSP package). Beside them, the FMUs' FMI 3.0 model descriptions
 //! as their build scripts generate them (`slowdrift-fmi-xml`):
 //! `target/fmu/fmi3/SlowDrift/modelDescription.xml` and
-//! `target/fmu/fmi3/Mooring/modelDescription.xml` (no FMI 3.0 archive yet).
+//! `target/fmu/fmi3/Mooring/modelDescription.xml`, and SlowDrift's FMI 3.0 archive,
+//! `target/fmu/fmi3/SlowDrift.fmu` (the same library and resources, the binaries in
+//! `binaries/x86_64-linux/`), checked by running it through its `fmi3*` C ABI beside the
+//! FMI 2.0 archive: the same outputs bit for bit.
 
 mod archive;
 mod configured;
 mod master;
+mod master3;
 mod mooring;
 mod system;
 
@@ -24,6 +28,10 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
 
 const MODEL_IDENTIFIER: &str = "SlowDrift";
+/// The binaries' folder of the platform in an FMI 2.0 archive (FMI 2.0 section 2.3).
+const FMI2_BINARIES: &str = "linux64";
+/// The same in an FMI 3.0 archive (FMI 3.0 section 2.5.1: `<architecture>-<system>`).
+const FMI3_BINARIES: &str = "x86_64-linux";
 const THREE_HOURS: f64 = 3.0 * 3600.0;
 const COMMUNICATION_STEP: f64 = 1.0;
 /// Start-up transient dropped before the statistics, s: ten 200 s surge periods of the
@@ -92,17 +100,29 @@ fn run(args: &Args) -> Result<(), String> {
     write_resources(&resources).map_err(|e| e.to_string())?;
     let xml = read(&root.join("modelDescription/modelDescription.xml"))?;
     let files = [RESOURCE_CONFIG, RESOURCE_DRIFT].map(String::from);
-    pack(&root, &library, xml, (&resources, &files), &fmu_path)?;
+    pack(
+        &root,
+        &library,
+        (xml, FMI2_BINARIES),
+        (&resources, &files),
+        &fmu_path,
+    )?;
     check(
         &fmu_path,
         &fmu_dir.join("unpacked"),
         (0.0, Some(THREE_HOURS)),
     )?;
-    write_fmi3_description(
-        &fmu_dir,
-        MODEL_IDENTIFIER,
-        slowdrift::fmi2::fmi3_description::MODEL_DESCRIPTION_FMI3,
+    let fmi3 = slowdrift::fmi2::fmi3_description::MODEL_DESCRIPTION_FMI3;
+    write_fmi3_description(&fmu_dir, MODEL_IDENTIFIER, fmi3)?;
+    let fmi3_path = fmu_dir.join("fmi3").join(format!("{MODEL_IDENTIFIER}.fmu"));
+    pack(
+        &root,
+        &library,
+        (fmi3.as_bytes().to_vec(), FMI3_BINARIES),
+        (&resources, &files),
+        &fmi3_path,
     )?;
+    check_fmi3(&fmi3_path, &fmu_path, &fmu_dir)?;
     mooring::pack_and_check(&root, &target)?;
     system::write(&root, &library, &fmu_dir)
 }
@@ -135,7 +155,7 @@ fn pack_configuration(
     pack(
         root,
         library,
-        configured.model_description.into_bytes(),
+        (configured.model_description.into_bytes(), FMI2_BINARIES),
         (&resources, &configured.resources),
         out,
     )?;
@@ -159,6 +179,75 @@ fn check(fmu_path: &Path, unpack_dir: &Path, experiment: (f64, Option<f64>)) -> 
     check_by_running(fmu_path, unpack_dir, experiment).inspect_err(|_| {
         let _ = std::fs::remove_file(fmu_path);
     })
+}
+
+/// Unpacks the FMI 3.0 archive `fmi3_path` and runs it through the `fmi3*` C ABI for three
+/// hours at 1 s with its start values beside the FMI 2.0 archive `fmi2_path` (both
+/// unpacked under `fmu_dir`): X, Y and theta at every communication point equal bit for bit.
+fn check_fmi3(fmi3_path: &Path, fmi2_path: &Path, fmu_dir: &Path) -> Result<(), String> {
+    println!("wrote {}", fmi3_path.display());
+    let compare = || -> Result<usize, String> {
+        let dir3 = fmu_dir.join("unpacked-fmi3");
+        archive::unpack(fmi3_path, &dir3)?;
+        let dir2 = fmu_dir.join("unpacked");
+        archive::unpack(fmi2_path, &dir2)?;
+        let description = |dir: &Path| -> Result<String, String> {
+            String::from_utf8(read(&dir.join("modelDescription.xml"))?).map_err(|e| e.to_string())
+        };
+        let experiment = (0.0, THREE_HOURS, COMMUNICATION_STEP);
+        let resources3 = dir3
+            .join("resources")
+            .canonicalize()
+            .map_err(|e| e.to_string())?;
+        let path3 = format!(
+            "{}/",
+            resources3.to_str().ok_or("resources path not UTF-8")?
+        );
+        let fmu3 = master3::Fmu::load(
+            &dir3.join(format!("binaries/{FMI3_BINARIES}/{MODEL_IDENTIFIER}.so")),
+        )?;
+        let three = master3::run(
+            &fmu3,
+            &master::ModelDescription::parse_fmi3(description(&dir3)?)?,
+            &path3,
+            (&[], &OUTPUTS),
+            experiment,
+        )?;
+        let resources2 = dir2
+            .join("resources")
+            .canonicalize()
+            .map_err(|e| e.to_string())?;
+        let fmu2 = master::Fmu::load(
+            &dir2.join(format!("binaries/{FMI2_BINARIES}/{MODEL_IDENTIFIER}.so")),
+        )?;
+        let two = master::run(
+            &fmu2,
+            &master::ModelDescription::parse(description(&dir2)?)?,
+            &file_uri(&resources2)?,
+            (&[], &OUTPUTS),
+            experiment,
+        )?;
+        for ((name, a), b) in OUTPUTS.iter().zip(&three).zip(&two) {
+            if let Some(m) = (0..a.len()).find(|&m| a[m].to_bits() != b[m].to_bits()) {
+                return Err(format!(
+                    "{name} at {} s: FMI 3.0 {} differs from FMI 2.0 {}",
+                    m as f64 * COMMUNICATION_STEP,
+                    a[m],
+                    b[m]
+                ));
+            }
+        }
+        Ok(three[0].len())
+    };
+    let samples = compare().inspect_err(|_| {
+        let _ = std::fs::remove_file(fmi3_path);
+    })?;
+    println!(
+        "ran the packed FMI 3.0 FMU through its fmi3 C ABI beside the FMI 2.0 one: {} at \
+         every {COMMUNICATION_STEP} s of 3 h ({samples} samples each) equal bit for bit",
+        OUTPUTS.join(", ")
+    );
+    Ok(())
 }
 
 /// `cargo build --release` with `args` (the package and its targets), and the path of the
@@ -225,12 +314,13 @@ fn read(path: &Path) -> Result<Vec<u8>, String> {
     std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))
 }
 
-/// Writes the SlowDrift FMU at `fmu_path`: the model description `xml`, the library, the
-/// named files of the resources folder and the documentation.
+/// Writes the SlowDrift FMU at `fmu_path`: the model description `xml` (FMI 2.0's or 3.0's),
+/// the library in `binaries/<binaries>/`, the named files of the resources folder and the
+/// documentation.
 fn pack(
     root: &Path,
     library: &Path,
-    xml: Vec<u8>,
+    (xml, binaries): (Vec<u8>, &str),
     (resources, files): (&Path, &[String]),
     fmu_path: &Path,
 ) -> Result<(), String> {
@@ -241,7 +331,7 @@ fn pack(
             data: xml,
         },
         archive::Entry {
-            path: format!("binaries/linux64/{MODEL_IDENTIFIER}.so"),
+            path: format!("binaries/{binaries}/{MODEL_IDENTIFIER}.so"),
             data: read(library)?,
         },
     ];
@@ -310,7 +400,7 @@ fn check_by_running(
 ) -> Result<(), String> {
     archive::unpack(fmu_path, unpack_dir)?;
     let resources = unpack_dir.join("resources");
-    let library = unpack_dir.join(format!("binaries/linux64/{MODEL_IDENTIFIER}.so"));
+    let library = unpack_dir.join(format!("binaries/{FMI2_BINARIES}/{MODEL_IDENTIFIER}.so"));
     let xml_path = unpack_dir.join("modelDescription.xml");
     let xml =
         String::from_utf8(read(&xml_path)?).map_err(|e| format!("{}: {e}", xml_path.display()))?;

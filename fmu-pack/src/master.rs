@@ -52,7 +52,8 @@ unsafe extern "C" fn print_log(
     );
 }
 
-/// The GUID and the value reference of each named variable, read from the XML text.
+/// The GUID (FMI 3.0: the instantiation token) and the value reference of each named
+/// variable, read from the XML text.
 pub struct ModelDescription {
     pub guid: String,
     xml: String,
@@ -61,6 +62,13 @@ pub struct ModelDescription {
 impl ModelDescription {
     pub fn parse(xml: String) -> Result<Self, String> {
         let guid = attribute(&xml, "guid").ok_or("modelDescription.xml has no guid")?;
+        Ok(ModelDescription { guid, xml })
+    }
+
+    /// An FMI 3.0 description: its `instantiationToken` in place of the GUID.
+    pub fn parse_fmi3(xml: String) -> Result<Self, String> {
+        let guid = attribute(&xml, "instantiationToken")
+            .ok_or("modelDescription.xml has no instantiationToken")?;
         Ok(ModelDescription { guid, xml })
     }
 
