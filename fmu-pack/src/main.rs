@@ -32,6 +32,8 @@ const MODEL_IDENTIFIER: &str = "SlowDrift";
 const FMI2_BINARIES: &str = "linux64";
 /// The same in an FMI 3.0 archive (FMI 3.0 section 2.5.1: `<architecture>-<system>`).
 const FMI3_BINARIES: &str = "x86_64-linux";
+/// The terminals of an FMI 3.0 archive (FMI 3.0 section 2.4.9).
+const TERMINALS: &str = "terminalsAndIcons/terminalsAndIcons.xml";
 const THREE_HOURS: f64 = 3.0 * 3600.0;
 const COMMUNICATION_STEP: f64 = 1.0;
 /// Start-up transient dropped before the statistics, s: ten 200 s surge periods of the
@@ -316,7 +318,8 @@ fn read(path: &Path) -> Result<Vec<u8>, String> {
 
 /// Writes the SlowDrift FMU at `fmu_path`: the model description `xml` (FMI 2.0's or 3.0's),
 /// the library in `binaries/<binaries>/`, the named files of the resources folder and the
-/// documentation.
+/// documentation; an FMI 3.0 FMU (`binaries` [`FMI3_BINARIES`]) also its terminal,
+/// `terminalsAndIcons/terminalsAndIcons.xml` (modelDescription/terminalsAndIcons.xml).
 fn pack(
     root: &Path,
     library: &Path,
@@ -345,6 +348,12 @@ fn pack(
         path: "documentation/index.html".into(),
         data: documentation("SlowDrift", &fmu_reference).into_bytes(),
     });
+    if binaries == FMI3_BINARIES {
+        entries.push(archive::Entry {
+            path: TERMINALS.into(),
+            data: read(&root.join("modelDescription/terminalsAndIcons.xml"))?,
+        });
+    }
     write_fmu(fmu_path, &entries)
 }
 

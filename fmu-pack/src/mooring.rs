@@ -14,15 +14,19 @@
 //!   (MoorDyn's BSD-3-Clause licence, which its binary's redistribution must carry).
 //!
 //! Beside it, `target/fmu/fmi3/Mooring/modelDescription.xml`: the FMU's FMI 3.0 model
-//! description, as its build script generated it.
+//! description, as its build script generated it, and `target/fmu/fmi3/Mooring.fmu`: the
+//! same archive as FMI 3.0 (that description, the libraries in `binaries/x86_64-linux/`, and
+//! the terminal of the mechanical connection, mooring/terminalsAndIcons.xml, in
+//! `terminalsAndIcons/`).
 //!
 //! The check: the packed FMU, loaded from the unpacked archive through its C ABI, holds the
 //! platform 10 m off in surge for 60 s and must pull it back (Fx < 0, Fy and Mz nil by
-//! symmetry), with a fairlead tension above zero.
+//! symmetry), with a fairlead tension above zero; the FMI 3.0 archive, through its `fmi3*`
+//! C ABI, gives the same four outputs at every second bit for bit.
 
 use crate::{
-    archive, cargo_build, cdylib_in_messages, file_uri, master, out_dir_in_messages, read,
-    write_fmi3_description, write_fmu,
+    archive, cargo_build, cdylib_in_messages, file_uri, master, master3, out_dir_in_messages, read,
+    write_fmi3_description, write_fmu, FMI2_BINARIES, FMI3_BINARIES, TERMINALS,
 };
 use std::io::Read;
 use std::path::{Path, PathBuf};
@@ -53,37 +57,103 @@ pub fn pack_and_check(root: &Path, target: &Path) -> Result<(), String> {
     let (moordyn, licence) = moordyn_library(&target.join("moordyn-wheel"))?;
     let fmu_path = target.join("fmu").join(format!("{MODEL_IDENTIFIER}.fmu"));
     let coupling = String::from_utf8_lossy(&read(&root.join("docs/coupling.md"))?).into_owned();
-    let entries = vec![
-        archive::Entry {
-            path: "modelDescription.xml".into(),
-            data: read(&root.join("mooring/modelDescription.xml"))?,
-        },
-        archive::Entry {
-            path: format!("binaries/linux64/{MODEL_IDENTIFIER}.so"),
-            data: read(&library)?,
-        },
-        archive::Entry {
-            path: format!("binaries/linux64/{LIBRARY_FILE}"),
-            data: moordyn,
-        },
-        archive::Entry {
-            path: format!("resources/{DEFAULT_MOORING}"),
-            data: read(&root.join("mooring").join(DEFAULT_MOORING))?,
-        },
-        archive::Entry {
-            path: "documentation/index.html".into(),
-            data: crate::documentation("Mooring", &coupling).into_bytes(),
-        },
-        archive::Entry {
-            path: "documentation/licenses/MoorDyn.txt".into(),
-            data: licence,
-        },
-    ];
-    write_fmu(&fmu_path, &entries)?;
+    let entries = |xml: Vec<u8>, binaries: &str| -> Result<Vec<archive::Entry>, String> {
+        let mut entries = vec![
+            archive::Entry {
+                path: "modelDescription.xml".into(),
+                data: xml,
+            },
+            archive::Entry {
+                path: format!("binaries/{binaries}/{MODEL_IDENTIFIER}.so"),
+                data: read(&library)?,
+            },
+            archive::Entry {
+                path: format!("binaries/{binaries}/{LIBRARY_FILE}"),
+                data: moordyn.clone(),
+            },
+            archive::Entry {
+                path: format!("resources/{DEFAULT_MOORING}"),
+                data: read(&root.join("mooring").join(DEFAULT_MOORING))?,
+            },
+            archive::Entry {
+                path: "documentation/index.html".into(),
+                data: crate::documentation("Mooring", &coupling).into_bytes(),
+            },
+            archive::Entry {
+                path: "documentation/licenses/MoorDyn.txt".into(),
+                data: licence.clone(),
+            },
+        ];
+        if binaries == FMI3_BINARIES {
+            entries.push(archive::Entry {
+                path: TERMINALS.into(),
+                data: read(&root.join("mooring/terminalsAndIcons.xml"))?,
+            });
+        }
+        Ok(entries)
+    };
+    let xml = read(&root.join("mooring/modelDescription.xml"))?;
+    write_fmu(&fmu_path, &entries(xml, FMI2_BINARIES)?)?;
     println!("wrote {}", fmu_path.display());
-    check_by_running(&fmu_path, &target.join("fmu").join("unpacked-mooring")).inspect_err(|_| {
+    let unpacked = target.join("fmu").join("unpacked-mooring");
+    let two = check_by_running(&fmu_path, &unpacked).inspect_err(|_| {
         let _ = std::fs::remove_file(&fmu_path);
+    })?;
+    let fmi3_path = target
+        .join("fmu")
+        .join("fmi3")
+        .join(format!("{MODEL_IDENTIFIER}.fmu"));
+    write_fmu(&fmi3_path, &entries(fmi3.into_bytes(), FMI3_BINARIES)?)?;
+    println!("wrote {}", fmi3_path.display());
+    check_fmi3(
+        &fmi3_path,
+        &target.join("fmu").join("unpacked-mooring-fmi3"),
+        &two,
+    )
+    .inspect_err(|_| {
+        let _ = std::fs::remove_file(&fmi3_path);
     })
+}
+
+/// The outputs of the check.
+const CHECKED: [&str; 4] = ["Fx", "Fy", "Mz", "fairleadTensionMax"];
+
+/// The FMI 3.0 archive through its `fmi3*` C ABI: the check's run, whose outputs must equal
+/// `fmi2_samples` (the FMI 2.0 archive's) bit for bit.
+fn check_fmi3(fmu_path: &Path, unpack_dir: &Path, fmi2_samples: &[Vec<f64>]) -> Result<(), String> {
+    archive::unpack(fmu_path, unpack_dir)?;
+    let library = unpack_dir.join(format!("binaries/{FMI3_BINARIES}/{MODEL_IDENTIFIER}.so"));
+    let xml_path = unpack_dir.join("modelDescription.xml");
+    let xml =
+        String::from_utf8(read(&xml_path)?).map_err(|e| format!("{}: {e}", xml_path.display()))?;
+    let description = master::ModelDescription::parse_fmi3(xml)?;
+    let fmu = master3::Fmu::load(&library)?;
+    let resources = unpack_dir
+        .join("resources")
+        .canonicalize()
+        .map_err(|e| e.to_string())?;
+    let path = format!("{}/", resources.to_str().ok_or("resources path not UTF-8")?);
+    let samples = master3::run(
+        &fmu,
+        &description,
+        &path,
+        (&[("X", CHECK_OFFSET)], &CHECKED),
+        (0.0, CHECK_SECONDS, 1.0),
+    )?;
+    for ((name, a), b) in CHECKED.iter().zip(&samples).zip(fmi2_samples) {
+        if let Some(m) = (0..a.len()).find(|&m| a[m].to_bits() != b[m].to_bits()) {
+            return Err(format!(
+                "the FMI 3.0 mooring FMU's {name} at {m} s, {}, differs from the FMI 2.0 one's, {}",
+                a[m], b[m]
+            ));
+        }
+    }
+    println!(
+        "ran the packed FMI 3.0 mooring FMU through its fmi3 C ABI: {} at every second of the \
+         check equal to the FMI 2.0 FMU's bit for bit",
+        CHECKED.join(", ")
+    );
+    Ok(())
 }
 
 /// MoorDyn's library and licence from the wheel in `dir`, downloaded first if absent.
@@ -178,9 +248,10 @@ fn download_wheel(dir: &Path) -> Result<(), String> {
     })
 }
 
-fn check_by_running(fmu_path: &Path, unpack_dir: &Path) -> Result<(), String> {
+/// The check of the FMI 2.0 archive; its outputs' samples.
+fn check_by_running(fmu_path: &Path, unpack_dir: &Path) -> Result<Vec<Vec<f64>>, String> {
     archive::unpack(fmu_path, unpack_dir)?;
-    let library = unpack_dir.join(format!("binaries/linux64/{MODEL_IDENTIFIER}.so"));
+    let library = unpack_dir.join(format!("binaries/{FMI2_BINARIES}/{MODEL_IDENTIFIER}.so"));
     let xml_path = unpack_dir.join("modelDescription.xml");
     let xml =
         String::from_utf8(read(&xml_path)?).map_err(|e| format!("{}: {e}", xml_path.display()))?;
@@ -188,7 +259,7 @@ fn check_by_running(fmu_path: &Path, unpack_dir: &Path) -> Result<(), String> {
     let fmu = master::Fmu::load(&library)?;
     let resources = unpack_dir.join("resources");
     let uri = file_uri(&resources.canonicalize().map_err(|e| e.to_string())?)?;
-    let names = ["Fx", "Fy", "Mz", "fairleadTensionMax"];
+    let names = CHECKED;
     let started = std::time::Instant::now();
     let samples = master::run(
         &fmu,
@@ -216,5 +287,5 @@ fn check_by_running(fmu_path: &Path, unpack_dir: &Path) -> Result<(), String> {
              (Fx {fx}, Fy {fy}, Mz {mz}, tension {tension})"
         ));
     }
-    Ok(())
+    Ok(samples)
 }
