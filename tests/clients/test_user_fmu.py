@@ -10,6 +10,9 @@ libcosim: the FMU packed from tests/data/example.toml (a platform, sea and drift
    both equal, bit for bit, the native CLI run of the same file (`slowdrift simulate
    --config example.toml`, the independent route).
 3. libcosim runs it with no initial value: the same run.
+4. Its FMI 3.0 twin (fmi3/example.fmu beside it): fmpy validates it; its instantiation token
+   is the FMI 2.0 FMU's GUID and its start values the same; fmpy runs it with no start value
+   set: the same native run, bit for bit.
 """
 
 import csv
@@ -137,3 +140,22 @@ print("ROWS\\n" + "\\n".join(",".join(r) for r in rows), flush=True)
     got = np.array([[float.fromhex(v) for v in line.split(",")] for line in lines]).T
     _t, y_native = native
     assert np.array_equal(got, y_native[1:, :3])
+
+
+def test_the_fmi3_twin_runs_the_file(user_fmu, native):
+    from fmpy import read_model_description, simulate_fmu
+    from fmpy.validation import validate_fmu
+
+    twin = os.path.join(os.path.dirname(user_fmu), "fmi3", os.path.basename(user_fmu))
+    assert validate_fmu(twin) == []
+    md2, md3 = read_model_description(user_fmu), read_model_description(twin)
+    assert md3.fmiVersion == "3.0" and md3.guid == md2.guid
+    start2 = {v.name: v.start for v in md2.modelVariables if v.causality == "parameter"}
+    start3 = {v.name: v.start for v in md3.modelVariables if v.causality == "parameter"}
+    assert start3 == start2
+    res = simulate_fmu(twin, start_time=0.0, stop_time=float(STOP), output_interval=1.0,
+                       output=list(OUTPUTS))
+    t_native, y_native = native
+    assert np.array_equal(res["time"], t_native)
+    for j, name in enumerate(OUTPUTS):
+        assert np.array_equal(res[name], y_native[:, j]), name
