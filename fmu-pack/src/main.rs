@@ -241,7 +241,7 @@ fn check_fmi3(
         )?;
         let three = master3::run(
             &fmu3,
-            &master::ModelDescription::parse_fmi3(description(&dir3)?)?,
+            &master::ModelDescription::parse_fmi3(description(dir3)?)?,
             &path3,
             (&[], &OUTPUTS),
             experiment,
@@ -255,7 +255,7 @@ fn check_fmi3(
         )?;
         let two = master::run(
             &fmu2,
-            &master::ModelDescription::parse(description(&dir2)?)?,
+            &master::ModelDescription::parse(description(dir2)?)?,
             &file_uri(&resources2)?,
             (&[], &OUTPUTS),
             experiment,
