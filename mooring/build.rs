@@ -6,16 +6,25 @@
 //! (`crate::fmi3_description`). A description the generator cannot convert fails the build
 //! with its error.
 
-use slowdrift_fmi_xml::Numbering;
+use slowdrift_fmi_xml::{ArrayVariable, Numbering};
 use std::path::{Path, PathBuf};
 
 /// The FMI 2.0 description's value references are unique per type only (String 0,
 /// Integer 0 and Real 0..25, 101..108): FMI 3.0's, unique across all variables, move the
 /// Integers by 1000 and the Strings by 2000 (mooringModel 1000, mooringFile 2000); the
-/// Reals keep theirs.
+/// Reals keep theirs. The per-line fairlead tensions, FMI 2.0's fairleadTension1 ..
+/// fairleadTension8 (value references 101 .. 108), are one FMI 3.0 array, fairleadTension
+/// (value reference 101).
 const NUMBERING: Numbering = Numbering {
     integer: 1000,
     string: 2000,
+    arrays: &[ArrayVariable {
+        name: "fairleadTension",
+        first: 101,
+        count: 8,
+        description: "Fairlead tension of each mooring line (element k: line ID k of the \
+                      mooring file) at the end of the last step",
+    }],
     ..Numbering::SAME
 };
 

@@ -52,7 +52,7 @@ pub use slowdrift_fmi::fmi3::TIME_VALUE_REFERENCE;
 
 /// How FMI 2.0 value references become FMI 3.0's: the FMI layer's numbering (its functions
 /// undo it), one type for the descriptions and the functions.
-pub use slowdrift_fmi::fmi3::Numbering;
+pub use slowdrift_fmi::fmi3::{ArrayVariable, Numbering};
 
 /// The offset `numbering` adds to a value reference of the FMI 2.0 base type `ty`.
 fn offset(numbering: &Numbering, ty: BaseType) -> u32 {
@@ -66,14 +66,25 @@ fn offset(numbering: &Numbering, ty: BaseType) -> u32 {
 
 /// Rust constants of `numbering`, for a build script to write beside the XML (an FMU's
 /// FMI 3.0 code reads them): the four offsets and `NUMBERING`, the layer's
-/// [`Numbering`] that the FMU's `fmi3*` functions take.
+/// [`Numbering`] that the FMU's `fmi3*` functions take (with its arrays).
 pub fn rust_constants(numbering: &Numbering) -> String {
     let Numbering {
         real,
         integer,
         boolean,
         string,
+        arrays,
     } = *numbering;
+    let arrays: String = arrays
+        .iter()
+        .map(|a| {
+            format!(
+                "\x20       ::slowdrift_fmi::fmi3::ArrayVariable {{ name: {:?}, first: {}, count: {}, \
+                 description: {:?} }},\n",
+                a.name, a.first, a.count, a.description
+            )
+        })
+        .collect();
     format!(
         "/// FMI 3.0 value reference = FMI 2.0 value reference + the offset of its FMI 2.0 \
          type.\n\
@@ -90,6 +101,7 @@ pub fn rust_constants(numbering: &Numbering) -> String {
          \x20   integer: INT32_OFFSET,\n\
          \x20   boolean: BOOLEAN_OFFSET,\n\
          \x20   string: STRING_OFFSET,\n\
+         \x20   arrays: &[\n{arrays}\x20   ],\n\
          }};\n"
     )
 }

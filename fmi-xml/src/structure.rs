@@ -3,7 +3,9 @@
 //! `ContinuousStateDerivative`, `InitialUnknowns` -> `InitialUnknown` (the same variables:
 //! FMI 3.0 asks the same set of initial unknowns as FMI 2.0), in FMI 3.0's order.
 //! `dependencies` keep their meaning (absent: every known; empty: none) and
-//! `dependenciesKind` is carried over, its words being the same.
+//! `dependenciesKind` is carried over, its words being the same. An array's elements are one
+//! FMI 3.0 variable: its first element's `Unknown` stands for the array (the others are
+//! left out), and a dependency on any of its elements is one on the array.
 
 use crate::attributes::describe;
 use crate::tree::Element;
@@ -32,19 +34,22 @@ pub(crate) fn write(e: &Element, variables: &[Variable], w: &mut Writer) -> Resu
     w.start("ModelStructure", &[]);
     for (list, element) in LISTS {
         for unknown in e.children_named(list).flat_map(|l| &l.children) {
-            w.empty(element, &unknown_attributes(list, unknown, variables)?);
+            if let Some(attributes) = unknown_attributes(list, unknown, variables)? {
+                w.empty(element, &attributes);
+            }
         }
     }
     w.end("ModelStructure");
     Ok(())
 }
 
-/// The FMI 3.0 attributes of one `Unknown` of `list`.
+/// The FMI 3.0 attributes of one `Unknown` of `list`; `None` for an array's element after
+/// the first (the first stands for the array).
 fn unknown_attributes(
     list: &str,
     unknown: &Element,
     variables: &[Variable],
-) -> Result<Vec<(String, String)>, Error> {
+) -> Result<Option<Vec<(String, String)>>, Error> {
     if unknown.name != "Unknown" {
         return Err(Error::UnsupportedElement {
             parent: list.into(),
@@ -61,19 +66,37 @@ fn unknown_attributes(
         attribute: "index",
     })?;
     let of = variable_at(&at, "index", index, variables)?;
+    if of.folded() {
+        return Ok(None);
+    }
     out.push(("valueReference".to_string(), of.value_reference.to_string()));
     let mut count = None;
     for (key, value) in &unknown.attributes {
         match key.as_str() {
             "index" => {}
             "dependencies" => {
-                let references = value
-                    .split_whitespace()
-                    .map(|i| {
-                        variable_at(&at, "dependencies", i, variables)
-                            .map(|v| v.value_reference.to_string())
-                    })
-                    .collect::<Result<Vec<_>, _>>()?;
+                let mut references: Vec<String> = Vec::new();
+                for i in value.split_whitespace() {
+                    let v = variable_at(&at, "dependencies", i, variables)?;
+                    // An array's elements: the array's first element's value reference.
+                    let vr = match v.array {
+                        Some((_, k)) => v.value_reference - (k - 1),
+                        None => v.value_reference,
+                    }
+                    .to_string();
+                    if v.array.is_some() && references.contains(&vr) {
+                        if unknown.attribute("dependenciesKind").is_some() {
+                            return Err(Error::InvalidValue {
+                                element: at.clone(),
+                                attribute: "dependencies".into(),
+                                value: value.clone(),
+                                expected: "one dependency per array with dependenciesKind",
+                            });
+                        }
+                        continue;
+                    }
+                    references.push(vr);
+                }
                 count = Some(references.len());
                 out.push((key.clone(), references.join(" ")));
             }
@@ -96,5 +119,5 @@ fn unknown_attributes(
             });
         }
     }
-    Ok(out)
+    Ok(Some(out))
 }

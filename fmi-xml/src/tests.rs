@@ -462,3 +462,61 @@ fn what_is_not_converted_is_named() {
         Err(Error::Xml { .. })
     ));
 }
+
+/// The toy's outputs x (Real 20) and y (Real 21) named as the elements of an array `p`:
+/// p1, p2 at 20, 21 become one Float64 `p` of dimension 2 at 20 (no p1 or p2 left), its
+/// Output and InitialUnknown once, and a dependency on an element one on the array; an
+/// element missing, one beyond the count, or a value reference out of order is refused.
+#[test]
+fn an_array_is_one_variable_of_its_elements() {
+    const P: ArrayVariable = ArrayVariable {
+        name: "p",
+        first: 20,
+        count: 2,
+        description: "the two outputs",
+    };
+    let toy = TOY
+        .replace(
+            r#"name="x" valueReference="20""#,
+            r#"name="p1" valueReference="20""#,
+        )
+        .replace(
+            r#"name="y" valueReference="21""#,
+            r#"name="p2" valueReference="21""#,
+        )
+        .replace(
+            r#"<Unknown index="7"/>"#,
+            r#"<Unknown index="7" dependencies="6 7"/>"#,
+        );
+    let numbering = Numbering {
+        arrays: &[P],
+        ..Numbering::SAME
+    };
+    let out = fmi3_model_description_numbered(&toy, &numbering).unwrap();
+    let p = named(&out, "Float64", "p");
+    assert_eq!(
+        (p["valueReference"].as_str(), p["description"].as_str()),
+        ("20", "the two outputs")
+    );
+    assert_eq!(tags(&out, "Dimension"), vec![map(&[("start", "2")])]);
+    assert!(!out.contains("\"p1\"") && !out.contains("\"p2\"") && !out.contains("\"21\""));
+    let outputs: Vec<String> = tags(&out, "Output")
+        .iter()
+        .map(|o| o["valueReference"].clone())
+        .collect();
+    assert_eq!(outputs, ["20"]);
+    assert_eq!(tags(&out, "InitialUnknown").len(), 1);
+    // Elements missing, beyond the count, out of order.
+    for (from, to) in [
+        (r#"name="p2""#, r#"name="q2""#),
+        (r#"name="u""#, r#"name="p3""#),
+        (
+            r#"name="p2" valueReference="21""#,
+            r#"name="p2" valueReference="22""#,
+        ),
+    ] {
+        let wrong = toy.replace(from, to);
+        let err = fmi3_model_description_numbered(&wrong, &numbering).unwrap_err();
+        assert!(err.to_string().contains('p'), "{err}");
+    }
+}

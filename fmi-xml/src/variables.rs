@@ -5,7 +5,7 @@
 use crate::attributes::{carried, describe, fmi3_wording};
 use crate::tree::Element;
 use crate::writer::{Attributes, Writer};
-use crate::{Error, Numbering, TIME_VALUE_REFERENCE};
+use crate::{ArrayVariable, Error, Numbering, TIME_VALUE_REFERENCE};
 use std::collections::BTreeMap;
 
 /// The name of the independent variable the FMI 3.0 description adds.
@@ -72,6 +72,16 @@ pub(crate) struct Variable<'a> {
     pub name: &'a str,
     /// Its FMI 3.0 value reference.
     pub value_reference: u32,
+    /// The FMI 3.0 array it is element `k` (1-based) of, if any.
+    pub array: Option<(&'static ArrayVariable, u32)>,
+}
+
+impl Variable<'_> {
+    /// Whether FMI 3.0 has no variable of its own for it: an array's element after the
+    /// first (the first stands for the array).
+    pub fn folded(&self) -> bool {
+        matches!(self.array, Some((_, k)) if k > 1)
+    }
 }
 
 /// The variables of `model_variables`, in order (the FMI 2.0 index `i` is element `i - 1`).
@@ -99,7 +109,75 @@ pub(crate) fn read<'a>(
         }
         variables.push(variable);
     }
+    for array in numbering.arrays {
+        fold(array, numbering.real, &mut variables)?;
+    }
     Ok(variables)
+}
+
+/// Marks the FMI 2.0 Reals `{name}1` .. `{name}{count}` as the elements of `array`: each
+/// must exist with the value reference `first + k - 1` (before the Reals' offset `real`),
+/// the first's causality and variability and no start; `{name}{count + 1}` must not exist.
+fn fold(array: &'static ArrayVariable, real: u32, variables: &mut [Variable]) -> Result<(), Error> {
+    let invalid = |element: String, attribute: &str, value: String, expected| Error::InvalidValue {
+        element,
+        attribute: attribute.into(),
+        value,
+        expected,
+    };
+    let of = format!("the array {}[{}]", array.name, array.count);
+    let beyond = format!("{}{}", array.name, array.count + 1);
+    if let Some(v) = variables.iter().find(|v| v.name == beyond) {
+        return Err(invalid(
+            describe(v.element),
+            "name",
+            beyond,
+            "no element beyond the array's count",
+        ));
+    }
+    let mut first_kind = None;
+    for k in 1..=array.count {
+        let name = format!("{}{k}", array.name);
+        let v = variables
+            .iter_mut()
+            .find(|v| v.name == name)
+            .ok_or_else(|| invalid(of.clone(), "element", name.clone(), "a Real of that name"))?;
+        let expected = array.first + k - 1 + real;
+        if v.ty != BaseType::Real || v.value_reference != expected {
+            return Err(invalid(
+                describe(v.element),
+                "valueReference",
+                v.value_reference.to_string(),
+                "a Real at the array's first value reference plus its index minus one",
+            ));
+        }
+        if v.base.attribute("start").is_some() {
+            return Err(invalid(
+                describe(v.element),
+                "start",
+                v.base.attribute("start").unwrap_or_default().into(),
+                "no start value in an element of an array",
+            ));
+        }
+        let kind = (
+            causality(v.element).to_string(),
+            variability(v.element).to_string(),
+        );
+        match &first_kind {
+            None => first_kind = Some(kind),
+            Some(first) if *first != kind => {
+                return Err(invalid(
+                    describe(v.element),
+                    "causality",
+                    format!("{} {}", kind.0, kind.1),
+                    "the causality and variability of the array's first element",
+                ))
+            }
+            Some(_) => {}
+        }
+        v.array = Some((array, k));
+    }
+    Ok(())
 }
 
 fn variable<'a>(e: &'a Element, numbering: &Numbering) -> Result<Variable<'a>, Error> {
@@ -174,6 +252,7 @@ fn variable<'a>(e: &'a Element, numbering: &Numbering) -> Result<Variable<'a>, E
         ty,
         name,
         value_reference,
+        array: None,
     })
 }
 
@@ -209,9 +288,28 @@ pub(crate) fn write(
         time.push(("unit".to_string(), unit.to_string()));
     }
     w.empty("Float64", &time);
-    for v in variables {
-        let (attributes, string_start) = fmi3_attributes(v, variables)?;
+    for v in variables.iter().filter(|v| !v.folded()) {
+        let (mut attributes, string_start) = fmi3_attributes(v, variables)?;
         let element = v.ty.fmi3_element();
+        if let Some((array, _)) = v.array {
+            for (key, value) in attributes.iter_mut() {
+                match key.as_str() {
+                    "name" => *value = array.name.to_string(),
+                    "description" => *value = array.description.to_string(),
+                    _ => {}
+                }
+            }
+            if !attributes.iter().any(|(key, _)| key == "description") {
+                attributes.push(("description".to_string(), array.description.to_string()));
+            }
+            w.start(element, &attributes);
+            w.empty(
+                "Dimension",
+                &[("start".to_string(), array.count.to_string())],
+            );
+            w.end(element);
+            continue;
+        }
         match string_start {
             None => w.empty(element, &attributes),
             Some(start) => {

@@ -96,7 +96,7 @@ fn run(args: &Args) -> Result<(), String> {
             .out
             .clone()
             .unwrap_or_else(|| fmu_dir.join(format!("{stem}.fmu")));
-        return pack_configuration(&root, &library, config, &stem, &out, &fmu_dir);
+        return pack_configuration(&root, &library, config, &stem, (&out, true), &fmu_dir);
     }
     let fmu_path = fmu_dir.join(format!("{MODEL_IDENTIFIER}.fmu"));
     let resources = fmu_dir.join("resources");
@@ -146,13 +146,14 @@ fn write_fmi3_description(fmu_dir: &Path, model_identifier: &str, xml: &str) -> 
 }
 
 /// The FMU of the configuration file `config`, named `model_name`, at `out`, checked by
-/// running it (its folders for the resources and the check under `work`).
+/// running it (its folders for the resources and the check under `work`); with `fmi3`, its
+/// FMI 3.0 twin in the `fmi3` folder beside it, checked against it.
 fn pack_configuration(
     root: &Path,
     library: &Path,
     config: &Path,
     model_name: &str,
-    out: &Path,
+    (out, fmi3_twin): (&Path, bool),
     work: &Path,
 ) -> Result<(), String> {
     let resources = work.join(format!("{model_name}-resources"));
@@ -178,6 +179,9 @@ fn pack_configuration(
         &work.join(format!("{model_name}-unpacked")),
         (configured.experiment.0, Some(stop)),
     )?;
+    if !fmi3_twin {
+        return Ok(());
+    }
     // The same FMU as FMI 3.0, in the `fmi3` folder beside it under the same file name.
     let fmi3_path = out
         .parent()

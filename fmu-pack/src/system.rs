@@ -57,7 +57,8 @@ pub fn write(root: &Path, library: &Path, fmu_dir: &Path) -> Result<(), String> 
         library,
         &config,
         MODEL_IDENTIFIER,
-        &dir.join(fmus[0]),
+        // FMI 2.0 only: libcosim and ecos read no other.
+        (&dir.join(fmus[0]), false),
         fmu_dir,
     )?;
     let copies = [

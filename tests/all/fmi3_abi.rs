@@ -383,3 +383,36 @@ fn fmi3_misuse_is_refused() {
     assert_eq!(fmu.step(0.0, 1.0).0, fmi3Status::fmi3OK);
     assert_eq!(unsafe { fmi3Terminate(fmu.instance) }, fmi3Status::fmi3OK);
 }
+
+/// Logging by category through `fmi3SetDebugLogging`: with logging off no event line reaches
+/// the host; with `logEvents` on, initialisation's event does (category and status OK); an
+/// unknown category is refused with `fmi3Error`.
+#[test]
+fn fmi3_logging_by_category() {
+    let quiet = Fmu3::new("quiet");
+    assert_eq!(quiet.init(Some(10.0)), fmi3Status::fmi3OK);
+    assert!(quiet.log.lock().unwrap().iter().all(|e| e.1 != "logEvents"));
+    let loud = Fmu3::new("loud");
+    let events = [c"logEvents".as_ptr()];
+    assert_eq!(
+        unsafe { fmi3SetDebugLogging(loud.instance, true, 1, events.as_ptr()) },
+        fmi3Status::fmi3OK
+    );
+    assert_eq!(loud.init(Some(10.0)), fmi3Status::fmi3OK);
+    assert!(
+        loud.log
+            .lock()
+            .unwrap()
+            .iter()
+            .any(|e| e.0 == fmi3Status::fmi3OK
+                && e.1 == "logEvents"
+                && e.2.contains("initialized")),
+        "{:?}",
+        loud.log.lock().unwrap()
+    );
+    let unknown = [c"logNothingSuch".as_ptr()];
+    assert_eq!(
+        unsafe { fmi3SetDebugLogging(loud.instance, true, 1, unknown.as_ptr()) },
+        fmi3Status::fmi3Error
+    );
+}

@@ -167,7 +167,50 @@ fn fmi3(xml: &str) -> Description {
 }
 
 /// `fmi3_xml` is `fmi2_xml` with value references moved by (Integer, String) offsets.
-fn check(fmi2_xml: &str, fmi3_xml: &str, (integer, string): (u32, u32)) {
+/// The array and the index k of an FMI 2.0 name `{array}k` (k = 1 .. its count).
+fn element_of(name: &str, arrays: &[(&str, u32)]) -> Option<(String, u32)> {
+    arrays.iter().find_map(|(array, count)| {
+        name.strip_prefix(array)
+            .and_then(|k| k.parse::<u32>().ok())
+            .filter(|k| (1..=*count).contains(k))
+            .map(|k| (array.to_string(), k))
+    })
+}
+
+/// The FMI 2.0 name `name` as FMI 3.0 has it: an array's element k is the array for k = 1
+/// and no variable of its own for k > 1 (`None`).
+fn fmi3_name(name: &str, arrays: &[(&str, u32)]) -> Option<String> {
+    match element_of(name, arrays) {
+        Some((array, 1)) => Some(array),
+        Some(_) => None,
+        None => Some(name.to_string()),
+    }
+}
+
+/// The FMI 2.0 unknowns as FMI 3.0 has them: an array's elements one unknown, a dependency
+/// on any of them one on the array.
+fn fmi3_unknowns(unknowns: &[Unknown], arrays: &[(&str, u32)]) -> Vec<Unknown> {
+    unknowns
+        .iter()
+        .filter_map(|(name, dependencies)| {
+            let name = fmi3_name(name, arrays)?;
+            let dependencies = dependencies.as_ref().map(|d| {
+                let mut out: Vec<String> = Vec::new();
+                for n in d {
+                    let n = element_of(n, arrays).map_or_else(|| n.clone(), |(array, _)| array);
+                    if !out.contains(&n) {
+                        out.push(n);
+                    }
+                }
+                out
+            });
+            Some((name, dependencies))
+        })
+        .collect()
+}
+
+/// `arrays`: (name, count) of the FMI 3.0 arrays made of FMI 2.0 Reals `{name}1` ..
+fn check(fmi2_xml: &str, fmi3_xml: &str, (integer, string): (u32, u32), arrays: &[(&str, u32)]) {
     let before = fmi2(fmi2_xml);
     let after = fmi3(fmi3_xml);
     assert!(fmi3_xml.contains("fmiVersion=\"3.0\""));
@@ -183,6 +226,9 @@ fn check(fmi2_xml: &str, fmi3_xml: &str, (integer, string): (u32, u32)) {
     assert!(matches!(time.unit.as_deref(), None | Some("s")));
     let mut expected = vec![time];
     for v in &before.variables {
+        let Some(name) = fmi3_name(&v.name, arrays) else {
+            continue;
+        };
         let (ty, offset) = match v.ty.as_str() {
             "Real" => ("Float64", 0),
             "Integer" => ("Int32", integer),
@@ -191,6 +237,7 @@ fn check(fmi2_xml: &str, fmi3_xml: &str, (integer, string): (u32, u32)) {
             other => panic!("{}: {other}", v.name),
         };
         expected.push(Variable {
+            name,
             ty: ty.into(),
             value_reference: v.value_reference + offset,
             ..v.clone()
@@ -206,8 +253,11 @@ fn check(fmi2_xml: &str, fmi3_xml: &str, (integer, string): (u32, u32)) {
         .filter(|v| v.causality == "independent");
     assert_eq!(independent.count(), 1);
     assert!(!before.outputs.is_empty());
-    assert_eq!(after.outputs, before.outputs);
-    assert_eq!(after.initial_unknowns, before.initial_unknowns);
+    assert_eq!(after.outputs, fmi3_unknowns(&before.outputs, arrays));
+    assert_eq!(
+        after.initial_unknowns,
+        fmi3_unknowns(&before.initial_unknowns, arrays)
+    );
 }
 
 #[test]
@@ -217,6 +267,7 @@ fn slowdrift_fmi3_is_its_fmi2_description() {
         fmi2_xml,
         slowdrift::fmi2::fmi3_description::MODEL_DESCRIPTION_FMI3,
         (0, 0),
+        &[],
     );
     use slowdrift::fmi2::fmi3_description as d;
     assert_eq!(d::TIME_VALUE_REFERENCE, TIME_VALUE_REFERENCE);
@@ -244,11 +295,18 @@ fn mooring_fmi3_is_its_fmi2_description() {
     let numbering = Numbering {
         integer: 1000,
         string: 2000,
+        arrays: &[slowdrift_fmi_xml::ArrayVariable {
+            name: "fairleadTension",
+            first: 101,
+            count: 8,
+            description: "each line's",
+        }],
         ..Numbering::SAME
     };
     let fmi3_xml =
         slowdrift_fmi_xml::fmi3_model_description_numbered(fmi2_xml, &numbering).unwrap();
-    check(fmi2_xml, &fmi3_xml, (1000, 2000));
+    check(fmi2_xml, &fmi3_xml, (1000, 2000), &[("fairleadTension", 8)]);
+    assert!(fmi3_xml.contains("<Dimension start=\"8\"/>"));
     // Without the offsets, String 0, Integer 0 and Real 0 collide.
     let error = slowdrift_fmi_xml::fmi3_model_description(fmi2_xml).unwrap_err();
     assert!(error.to_string().contains("value reference 0"), "{error}");

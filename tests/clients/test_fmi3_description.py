@@ -26,6 +26,17 @@ TYPES = {
     "SlowDrift": {"Real": ("Float64", 0), "Integer": ("Int32", 0), "String": ("String", 0)},
     "Mooring": {"Real": ("Float64", 0), "Integer": ("Int32", 1000), "String": ("String", 2000)},
 }
+# FMI 3.0 arrays made of FMI 2.0 Reals name1 .. nameN (docs/fmu.md): (name, N) per FMU.
+ARRAYS = {"SlowDrift": [], "Mooring": [("fairleadTension", 8)]}
+
+
+def element_of(name, arrays):
+    """(array, k) of an FMI 2.0 name `{array}k`, k = 1 .. N; None otherwise."""
+    for array, count in arrays:
+        k = name[len(array):]
+        if name.startswith(array) and k.isdigit() and 1 <= int(k) <= count:
+            return array, int(k)
+    return None
 
 
 @pytest.fixture(scope="module", params=["SlowDrift", "Mooring"])
@@ -80,13 +91,22 @@ def test_fmi3_description_is_the_fmi2_one(fmi3):
     assert [v for v in variables if v.get("causality") == "independent"] == [time]
 
     rest = variables[1:]
-    scalars = list(fmi2.find("ModelVariables"))
+    # An array stands for its elements: the first's place, the others' none.
+    scalars = [v for v in fmi2.find("ModelVariables")
+               if (element_of(v.get("name"), ARRAYS[model]) or (None, 1))[1] == 1]
     assert len(rest) == len(scalars)
     for v3, v2 in zip(rest, scalars):
         base = v2[0]
         element, offset = TYPES[model][base.tag]
         assert v3.tag == element, v2.get("name")
-        assert v3.get("name") == v2.get("name")
+        array = element_of(v2.get("name"), ARRAYS[model])
+        if array is None:
+            assert v3.get("name") == v2.get("name")
+            assert v3.find("Dimension") is None
+        else:
+            count = dict(ARRAYS[model])[array[0]]
+            assert v3.get("name") == array[0]
+            assert v3.find("Dimension").get("start") == str(count)
         assert int(v3.get("valueReference")) == int(v2.get("valueReference")) + offset
         assert v3.get("causality") == v2.get("causality", "local")
         assert v3.get("variability") == v2.get("variability", "continuous")

@@ -2,14 +2,16 @@
 (terminalsAndIcons/terminalsAndIcons.xml of target/fmu/fmi3/SlowDrift.fmu and Mooring.fmu),
 against the FMI 2.0 system connected by the SSD's connections (fmu-pack/system/):
 
-1. both terminal files are valid against the FMI 3.0 schema kept in the repository
+1. fmpy validates both FMI 3.0 archives; both terminal files are valid against the FMI 3.0 schema kept in the repository
    (fmi-xml/schema/fmi3/fmi3TerminalsAndIcons.xsd) and name variables of their FMU;
 2. matched by member name (the terminals' "bus" rule), the two terminals give each output
    of one FMU to an input of the other with the same unit: exactly the connections of the
    SSD, by variable name, from the other side of the standard;
 3. the same Jacobi co-simulation loop (fmpy's FMU2Slave and FMU3Slave, 1 s steps, 30 min,
    the platform without an internal spring as in the system) runs both systems: every
-   connected value and every SlowDrift output equal at every step, bit for bit.
+   connected value, every SlowDrift output and the eight fairlead tensions (FMI 3.0: the one
+   array fairleadTension, read with nValues 8; FMI 2.0: fairleadTension1 .. 8) equal at
+   every step, bit for bit.
 """
 
 import os
@@ -29,6 +31,7 @@ SSD = os.path.join(HERE, "..", "..", "fmu-pack", "system", "SystemStructure.ssd"
 # The system's platform: no internal spring (the lines alone moor it).
 LINES_ONLY = {"stiffnessSurge": 0.0, "stiffnessSway": 0.0, "stiffnessYaw": 0.0}
 DURATION, DT = 1800.0, 1.0
+LINES = 8  # the default mooring's lines
 
 
 @pytest.fixture(scope="module")
@@ -48,6 +51,13 @@ def terminal(path):
     (t,) = root.findall("Terminals/Terminal")
     return t.get("matchingRule"), [(m.get("memberName"), m.get("variableName"))
                                    for m in t.findall("TerminalMemberVariable")]
+
+
+def test_fmpy_validates_both_fmi3_archives(fmi3_fmus):
+    from fmpy.validation import validate_fmu
+
+    for path in fmi3_fmus.values():
+        assert validate_fmu(path) == [], path
 
 
 def test_terminals_are_schema_valid(fmi3_fmus):
@@ -128,6 +138,12 @@ class Slave:
             vals = [float(v) for v in values.values()]
             (self.fmu.setFloat64 if self.fmi3 else self.fmu.setReal)(refs, vals)
 
+    def tensions(self):
+        """The mooring's eight fairlead tensions: FMI 3.0's array, FMI 2.0's scalars."""
+        if self.fmi3:
+            return self.fmu.getFloat64([self.vr["fairleadTension"]], nValues=LINES)
+        return self.fmu.getReal([self.vr[f"fairleadTension{k}"] for k in range(1, LINES + 1)])
+
     def step(self, t):
         self.fmu.doStep(currentCommunicationPoint=t, communicationStepSize=DT)
 
@@ -152,8 +168,9 @@ def jacobi(paths, connections, fmi3):
                 values[(a, out)] = slaves[a].get([out])[0]
             for (a, out), (b, inp) in connections:
                 slaves[b].set({inp: values[(a, out)]})
-            record.append([values[c[0]] for c in connections] + list(
-                slaves["slowdrift"].get(list(OUTPUTS))))
+            record.append([values[c[0]] for c in connections]
+                          + list(slaves["slowdrift"].get(list(OUTPUTS)))
+                          + list(slaves["mooring"].tensions()))
             if n * DT < DURATION:
                 for s in slaves.values():
                     s.step(n * DT)
@@ -169,8 +186,10 @@ def test_the_fmi3_system_by_terminals_is_the_fmi2_system(fmu, mooring_fmu, fmi3_
     three = jacobi(fmi3_fmus, connections_by_terminals(fmi3_fmus), fmi3=True)
     from routes import OUTPUTS
 
-    assert two.shape == three.shape == (int(DURATION / DT) + 1, len(ssd) + len(OUTPUTS))
+    assert two.shape == three.shape == (int(DURATION / DT) + 1,
+                                        len(ssd) + len(OUTPUTS) + LINES)
     assert np.array_equal(three.view(np.uint64), two.view(np.uint64))
     # The lines moor the platform: the surge force is not nil after the start.
     forces = [i for i, (c, _) in enumerate(sorted(ssd)) if c == ("mooring", "Fx")]
     assert np.max(np.abs(three[10:, forces[0]])) > 1.0e4
+    assert np.all(three[:, -LINES:] > 0.0), "every line is taut"

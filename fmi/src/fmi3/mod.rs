@@ -38,6 +38,24 @@ pub struct Numbering {
     pub boolean: u32,
     /// Added to a String's.
     pub string: u32,
+    /// FMI 2.0 Real scalars that FMI 3.0 gives as one array variable each.
+    pub arrays: &'static [ArrayVariable],
+}
+
+/// One FMI 3.0 array variable (`<Dimension start="count"/>`) made of the FMI 2.0 Real
+/// scalars `{name}1` .. `{name}{count}`, whose value references are `first` .. `first +
+/// count - 1`; the array's FMI 3.0 value reference is `first` plus the Reals' offset, and
+/// its values are the scalars' in that order.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ArrayVariable {
+    /// The array's name, and the scalars' without their number.
+    pub name: &'static str,
+    /// The FMI 2.0 value reference of `{name}1`.
+    pub first: u32,
+    /// Its length, the number of scalars.
+    pub count: u32,
+    /// Its description in the FMI 3.0 description.
+    pub description: &'static str,
 }
 
 impl Numbering {
@@ -48,5 +66,55 @@ impl Numbering {
         integer: 0,
         boolean: 0,
         string: 0,
+        arrays: &[],
     };
+
+    /// The FMI 2.0 value references of the Float64 value reference `vr` (an FMI 3.0 one):
+    /// an array's scalars, or the one Real; `None` when it names no Real of the FMI 3.0
+    /// description (below the offset, or an array's scalar after its first).
+    pub fn reals(&self, vr: u32) -> Option<std::ops::Range<u32>> {
+        let fmi2 = vr.checked_sub(self.real)?;
+        match self
+            .arrays
+            .iter()
+            .find(|a| (a.first..a.first + a.count).contains(&fmi2))
+        {
+            Some(array) if array.first == fmi2 => Some(array.first..array.first + array.count),
+            Some(_) => None,
+            None => Some(fmi2..fmi2 + 1),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The mooring's numbering by hand: Reals unmoved, the tensions 101..108 one array.
+    #[test]
+    fn reals_expand_an_array_and_refuse_its_other_elements() {
+        const N: Numbering = Numbering {
+            integer: 1000,
+            string: 2000,
+            arrays: &[ArrayVariable {
+                name: "t",
+                first: 101,
+                count: 8,
+                description: "",
+            }],
+            ..Numbering::SAME
+        };
+        assert_eq!(N.reals(0), Some(0..1));
+        assert_eq!(N.reals(100), Some(100..101));
+        assert_eq!(N.reals(101), Some(101..109));
+        assert_eq!(
+            N.reals(102),
+            None,
+            "an element after the first is not a Float64"
+        );
+        assert_eq!(N.reals(109), Some(109..110));
+        let moved = Numbering { real: 5, ..N };
+        assert_eq!(moved.reals(4), None, "below the Reals' offset");
+        assert_eq!(moved.reals(106), Some(101..109));
+    }
 }

@@ -1,6 +1,7 @@
 //! Getting and setting variables: FMI 3.0's (value references, values, nValues) as slices,
-//! then the model's getter or setter. Every variable of the layer's FMUs is a scalar, so
-//! nValues must equal nValueReferences. The independent variable `time`
+//! then the model's getter or setter. A Float64 array ([`crate::fmi3::ArrayVariable`]) is its
+//! FMI 2.0 scalars, in order; every other variable is a scalar; nValues must equal the
+//! values of the value references. The independent variable `time`
 //! ([`TIME_VALUE_REFERENCE`]) is answered here: the instance's time (the last successful
 //! time), and it cannot be set. The model's types map one to one: Float64 to Real, Int32 to
 //! Integer, Boolean (C `bool`) to Boolean, String to String; each value reference becomes
@@ -15,14 +16,14 @@ use crate::fmi3::{Numbering, TIME_VALUE_REFERENCE};
 use crate::Error;
 use std::borrow::Cow;
 
-/// Refuses `n_values` other than the value references' count.
-fn scalars(nvr: usize, n_values: usize) -> Result<(), Error> {
-    if n_values == nvr {
+/// Refuses `n_values` other than `count`, the values of the value references (one each:
+/// the Int32, Boolean and String variables are scalars).
+fn scalars(count: usize, n_values: usize) -> Result<(), Error> {
+    if n_values == count {
         Ok(())
     } else {
         Err(Error::Argument(format!(
-            "nValues = {n_values} differs from nValueReferences = {nvr}: every variable of \
-             this FMU is a scalar"
+            "nValues = {n_values} differs from the {count} values of the value references"
         )))
     }
 }
@@ -43,6 +44,27 @@ fn fmi2_references<'a>(vrs: &'a [u32], offset: u32, ty: &str) -> Result<Cow<'a, 
         .map(Cow::Owned)
 }
 
+/// The model's (FMI 2.0) Real value references of the Float64 value references `vrs`, an
+/// array's expanded into its scalars ([`Numbering::reals`]); refuses `n_values` other than
+/// their count and a value reference that names no Float64.
+fn fmi2_reals(vrs: &[u32], numbering: &Numbering, n_values: usize) -> Result<Vec<u32>, Error> {
+    let mut out = Vec::with_capacity(vrs.len());
+    for &vr in vrs {
+        let reals = numbering.reals(vr).ok_or_else(|| {
+            Error::Argument(format!("no Float64 variable has value reference {vr}"))
+        })?;
+        out.extend(reals);
+    }
+    if out.len() != n_values {
+        return Err(Error::Argument(format!(
+            "nValues = {n_values} differs from the {} values of the {} value references",
+            out.len(),
+            vrs.len()
+        )));
+    }
+    Ok(out)
+}
+
 /// `fmi3GetFloat64`.
 pub unsafe fn get_float64<M: Model>(
     instance: fmi3Instance,
@@ -54,21 +76,33 @@ pub unsafe fn get_float64<M: Model>(
 ) -> fmi3Status {
     unsafe {
         with_instance::<M>(instance, Call::GetFloat64, |component| {
-            scalars(nvr, n_values)?;
             let vrs = handle::slice(vr, nvr, "valueReferences")?;
-            let values = handle::slice_mut(values, nvr, "values")?;
-            // The model's variables in one call; `time` from the instance.
             if !vrs.contains(&TIME_VALUE_REFERENCE) {
-                let vrs = &*fmi2_references(vrs, numbering.real, "Float64")?;
-                return component.run(|model, cx| model.get_real(cx, vrs, values));
+                let reals = fmi2_reals(vrs, &numbering, n_values)?;
+                let values = handle::slice_mut(values, n_values, "values")?;
+                return component.run(|model, cx| model.get_real(cx, &reals, values));
             }
-            for (r, value) in vrs.iter().zip(values) {
-                if *r == TIME_VALUE_REFERENCE {
-                    *value = component.model.last_successful_time();
+            // With `time` (a scalar, from the instance): one variable at a time.
+            let counts = vrs
+                .iter()
+                .map(|&r| match r {
+                    TIME_VALUE_REFERENCE => Ok(1),
+                    _ => numbering.reals(r).map(|reals| reals.len()).ok_or_else(|| {
+                        Error::Argument(format!("no Float64 variable has value reference {r}"))
+                    }),
+                })
+                .collect::<Result<Vec<usize>, Error>>()?;
+            scalars(counts.iter().sum(), n_values)?;
+            let values = handle::slice_mut(values, n_values, "values")?;
+            let mut at = 0;
+            for (&r, count) in vrs.iter().zip(counts) {
+                let out = &mut values[at..at + count];
+                at += count;
+                if r == TIME_VALUE_REFERENCE {
+                    out[0] = component.model.last_successful_time();
                 } else {
-                    let one = std::slice::from_mut(value);
-                    let r = &*fmi2_references(std::slice::from_ref(r), numbering.real, "Float64")?;
-                    component.run(|model, cx| model.get_real(cx, r, one))?;
+                    let reals = fmi2_reals(&[r], &numbering, count)?;
+                    component.run(|model, cx| model.get_real(cx, &reals, out))?;
                 }
             }
             Ok(())
@@ -167,12 +201,11 @@ pub unsafe fn set_float64<M: Model>(
 ) -> fmi3Status {
     unsafe {
         with_instance::<M>(instance, Call::SetFloat64, |component| {
-            scalars(nvr, n_values)?;
             let vrs = handle::slice(vr, nvr, "valueReferences")?;
             not_time(vrs)?;
-            let vrs = &*fmi2_references(vrs, numbering.real, "Float64")?;
-            let values = handle::slice(values, nvr, "values")?;
-            component.run(|model, cx| model.set_real(cx, vrs, values))
+            let reals = fmi2_reals(vrs, &numbering, n_values)?;
+            let values = handle::slice(values, n_values, "values")?;
+            component.run(|model, cx| model.set_real(cx, &reals, values))
         })
     }
 }
