@@ -15,7 +15,7 @@ pub unsafe fn do_step<M: Model>(
     communication_step_size: fmi2Real,
 ) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::DoStep, |component| {
+        with_component::<M, _>(c, Call::DoStep, |component| {
             component
                 .model
                 .do_step(current_communication_point, communication_step_size)
@@ -28,7 +28,7 @@ const NO_PENDING: &str = "steps are never asynchronous, so there is no pending s
 /// `fmi2GetStatus`: `fmi2Discard`, there is no pending status.
 pub unsafe fn get_status<M: Model>(c: fmi2Component) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::GetStatus, |_| {
+        with_component::<M, _>(c, Call::GetStatus, |_| {
             Err(Error::StatusUnavailable(NO_PENDING.into()))
         })
     }
@@ -41,7 +41,7 @@ pub unsafe fn get_real_status<M: Model>(
     value: *mut fmi2Real,
 ) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::GetRealStatus, |component| {
+        with_component::<M, _>(c, Call::GetRealStatus, |component| {
             if kind != fmi2StatusKind::fmi2LastSuccessfulTime {
                 return Err(Error::StatusUnavailable(
                     "fmi2GetRealStatus answers fmi2LastSuccessfulTime only".into(),
@@ -57,7 +57,7 @@ pub unsafe fn get_real_status<M: Model>(
 /// `fmi2GetIntegerStatus`: `fmi2Discard`, FMI 2.0 defines none.
 pub unsafe fn get_integer_status<M: Model>(c: fmi2Component) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::GetIntegerStatus, |_| {
+        with_component::<M, _>(c, Call::GetIntegerStatus, |_| {
             Err(Error::StatusUnavailable(
                 "FMI 2.0 defines no Integer status".into(),
             ))
@@ -73,7 +73,7 @@ pub unsafe fn get_boolean_status<M: Model>(
     value: *mut fmi2Boolean,
 ) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::GetBooleanStatus, |_| {
+        with_component::<M, _>(c, Call::GetBooleanStatus, |_| {
             if kind != fmi2StatusKind::fmi2Terminated {
                 return Err(Error::StatusUnavailable(
                     "fmi2GetBooleanStatus answers fmi2Terminated only".into(),
@@ -88,7 +88,7 @@ pub unsafe fn get_boolean_status<M: Model>(
 /// `fmi2GetStringStatus`: `fmi2Discard`, there is no pending status.
 pub unsafe fn get_string_status<M: Model>(c: fmi2Component) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::GetStringStatus, |_| {
+        with_component::<M, _>(c, Call::GetStringStatus, |_| {
             Err(Error::StatusUnavailable(NO_PENDING.into()))
         })
     }

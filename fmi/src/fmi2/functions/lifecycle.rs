@@ -33,7 +33,7 @@ pub unsafe fn set_debug_logging<M: Model>(
     categories: *const fmi2String,
 ) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::SetDebugLogging, |component| {
+        with_component::<M, _>(c, Call::SetDebugLogging, |component| {
             let pointers = handle::slice(categories, n_categories, "categories")?;
             let mut names = Vec::with_capacity(pointers.len());
             for &p in pointers {
@@ -137,7 +137,7 @@ pub unsafe fn setup_experiment<M: Model>(
     stop_time: fmi2Real,
 ) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::SetupExperiment, |component| {
+        with_component::<M, _>(c, Call::SetupExperiment, |component| {
             let stop = (stop_time_defined != fmi2False).then_some(stop_time);
             component.model.setup_experiment(start_time, stop)
         })
@@ -147,7 +147,7 @@ pub unsafe fn setup_experiment<M: Model>(
 /// `fmi2EnterInitializationMode`.
 pub unsafe fn enter_initialization_mode<M: Model>(c: fmi2Component) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::EnterInitializationMode, |component| {
+        with_component::<M, _>(c, Call::EnterInitializationMode, |component| {
             component.state = MachineState::InitializationMode;
             component.logger.event("entered initialization mode");
             Ok(())
@@ -158,7 +158,7 @@ pub unsafe fn enter_initialization_mode<M: Model>(c: fmi2Component) -> fmi2Statu
 /// `fmi2ExitInitializationMode`: [`Model::exit_initialization_mode`], then StepComplete.
 pub unsafe fn exit_initialization_mode<M: Model>(c: fmi2Component) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::ExitInitializationMode, |component| {
+        with_component::<M, _>(c, Call::ExitInitializationMode, |component| {
             component.run(|model, cx| model.exit_initialization_mode(cx))?;
             component.state = MachineState::StepComplete;
             Ok(())
@@ -169,7 +169,7 @@ pub unsafe fn exit_initialization_mode<M: Model>(c: fmi2Component) -> fmi2Status
 /// `fmi2Terminate`.
 pub unsafe fn terminate<M: Model>(c: fmi2Component) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::Terminate, |component| {
+        with_component::<M, _>(c, Call::Terminate, |component| {
             component.state = MachineState::Terminated;
             component.logger.event("terminated");
             Ok(())
@@ -181,7 +181,7 @@ pub unsafe fn terminate<M: Model>(c: fmi2Component) -> fmi2Status {
 /// the model's resources stay.
 pub unsafe fn reset<M: Model>(c: fmi2Component) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::Reset, |component| {
+        with_component::<M, _>(c, Call::Reset, |component| {
             component.model.reset();
             component.state = MachineState::Instantiated;
             component.logger.event("reset");

@@ -35,17 +35,19 @@ pub use variables::*;
 
 use super::component::Component;
 use super::handle;
-use super::machine::Call;
+use super::machine::MachineState;
 use super::model::Model;
 use super::types::{fmi2Component, fmi2Status};
 use crate::firewall::{catch, firewall};
+use crate::machine::CallTable;
 use crate::Error;
 
-/// The body of every function that takes an instance: NULL check, state check, the work,
-/// then the report; a panic anywhere is reported as an error.
-unsafe fn with_component<M: Model>(
+/// The body of every function that takes an instance, of either standard (`call` from its
+/// table: FMI 2.0's `Call`, or FMI 3.0's, whose functions turn the status into theirs): NULL
+/// check, state check, the work, then the report; a panic anywhere is reported as an error.
+pub(crate) unsafe fn with_component<M: Model, C: CallTable<State = MachineState>>(
     c: fmi2Component,
-    call: Call,
+    call: C,
     body: impl FnOnce(&mut Component<M>) -> Result<(), Error>,
 ) -> fmi2Status {
     let Some(component) = (unsafe { handle::component::<M>(c) }) else {

@@ -15,7 +15,7 @@ pub unsafe fn get_fmu_state<M: SavedStates>(
     fmu_state: *mut fmi2FMUstate,
 ) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::GetFMUstate, |component| {
+        with_component::<M, _>(c, Call::GetFMUstate, |component| {
             let target = handle::out(fmu_state, "FMUstate")?;
             *target = handle::into_state(component.run(|model, cx| model.get_fmu_state(cx))?);
             Ok(())
@@ -29,7 +29,7 @@ pub unsafe fn set_fmu_state<M: SavedStates>(
     fmu_state: fmi2FMUstate,
 ) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::SetFMUstate, |component| {
+        with_component::<M, _>(c, Call::SetFMUstate, |component| {
             let state = handle::state::<M::State>(fmu_state)?;
             component.state = component.run(|model, cx| model.set_fmu_state(cx, state))?;
             Ok(())
@@ -43,7 +43,7 @@ pub unsafe fn free_fmu_state<M: SavedStates>(
     fmu_state: *mut fmi2FMUstate,
 ) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::FreeFMUstate, |_| {
+        with_component::<M, _>(c, Call::FreeFMUstate, |_| {
             handle::free_state::<M::State>(handle::out(fmu_state, "FMUstate")?);
             Ok(())
         })
@@ -57,7 +57,7 @@ pub unsafe fn serialized_fmu_state_size<M: SavedStates>(
     size: *mut usize,
 ) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::SerializedFMUstateSize, |_| {
+        with_component::<M, _>(c, Call::SerializedFMUstateSize, |_| {
             let bytes = M::serialized_size(handle::state::<M::State>(fmu_state)?);
             *handle::out(size, "size")? = bytes;
             Ok(())
@@ -73,7 +73,7 @@ pub unsafe fn serialize_fmu_state<M: SavedStates>(
     size: usize,
 ) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::SerializeFMUstate, |_| {
+        with_component::<M, _>(c, Call::SerializeFMUstate, |_| {
             let bytes = M::serialize(handle::state::<M::State>(fmu_state)?)?;
             if size < bytes.len() {
                 return Err(Error::Argument(format!(
@@ -97,7 +97,7 @@ pub unsafe fn deserialize_fmu_state<M: SavedStates>(
     fmu_state: *mut fmi2FMUstate,
 ) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::DeSerializeFMUstate, |_| {
+        with_component::<M, _>(c, Call::DeSerializeFMUstate, |_| {
             let bytes = handle::bytes(serialized_state, size, "serializedState")?;
             let target = handle::out(fmu_state, "FMUstate")?;
             *target = handle::into_state(M::deserialize(bytes)?);

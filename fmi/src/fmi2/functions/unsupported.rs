@@ -10,7 +10,7 @@ use crate::Error;
 
 /// A function the FMU does not provide: `fmi2Error` and `why`.
 unsafe fn unsupported<M: Model>(c: fmi2Component, call: Call, why: &'static str) -> fmi2Status {
-    unsafe { with_component::<M>(c, call, |_| Err(Error::Unsupported(why))) }
+    unsafe { with_component::<M, _>(c, call, |_| Err(Error::Unsupported(why))) }
 }
 
 /// `fmi2GetDirectionalDerivative`.

@@ -15,7 +15,7 @@ pub unsafe fn get_real<M: Model>(
     value: *mut fmi2Real,
 ) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::GetReal, |component| {
+        with_component::<M, _>(c, Call::GetReal, |component| {
             let vrs = handle::slice(vr, nvr, "vr")?;
             let values = handle::slice_mut(value, nvr, "value")?;
             component.run(|model, cx| model.get_real(cx, vrs, values))
@@ -31,7 +31,7 @@ pub unsafe fn get_integer<M: Model>(
     value: *mut fmi2Integer,
 ) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::GetInteger, |component| {
+        with_component::<M, _>(c, Call::GetInteger, |component| {
             let vrs = handle::slice(vr, nvr, "vr")?;
             let values = handle::slice_mut(value, nvr, "value")?;
             component.run(|model, cx| model.get_integer(cx, vrs, values))
@@ -47,7 +47,7 @@ pub unsafe fn get_boolean<M: Model>(
     value: *mut fmi2Boolean,
 ) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::GetBoolean, |component| {
+        with_component::<M, _>(c, Call::GetBoolean, |component| {
             let vrs = handle::slice(vr, nvr, "vr")?;
             let values = handle::slice_mut(value, nvr, "value")?;
             component.run(|model, cx| model.get_boolean(cx, vrs, values))
@@ -63,7 +63,7 @@ pub unsafe fn get_string<M: Model>(
     value: *mut fmi2String,
 ) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::GetString, |component| {
+        with_component::<M, _>(c, Call::GetString, |component| {
             let vrs = handle::slice(vr, nvr, "vr")?;
             let values = handle::slice_mut(value, nvr, "value")?;
             let strings = component.run(|model, cx| model.get_string(cx, vrs))?;
@@ -83,7 +83,7 @@ pub unsafe fn set_real<M: Model>(
     value: *const fmi2Real,
 ) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::SetReal, |component| {
+        with_component::<M, _>(c, Call::SetReal, |component| {
             let vrs = handle::slice(vr, nvr, "vr")?;
             let values = handle::slice(value, nvr, "value")?;
             component.run(|model, cx| model.set_real(cx, vrs, values))
@@ -99,7 +99,7 @@ pub unsafe fn set_integer<M: Model>(
     value: *const fmi2Integer,
 ) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::SetInteger, |component| {
+        with_component::<M, _>(c, Call::SetInteger, |component| {
             let vrs = handle::slice(vr, nvr, "vr")?;
             let values = handle::slice(value, nvr, "value")?;
             component.run(|model, cx| model.set_integer(cx, vrs, values))
@@ -115,7 +115,7 @@ pub unsafe fn set_boolean<M: Model>(
     value: *const fmi2Boolean,
 ) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::SetBoolean, |component| {
+        with_component::<M, _>(c, Call::SetBoolean, |component| {
             let vrs = handle::slice(vr, nvr, "vr")?;
             let values = handle::slice(value, nvr, "value")?;
             component.run(|model, cx| model.set_boolean(cx, vrs, values))
@@ -131,7 +131,7 @@ pub unsafe fn set_string<M: Model>(
     value: *const fmi2String,
 ) -> fmi2Status {
     unsafe {
-        with_component::<M>(c, Call::SetString, |component| {
+        with_component::<M, _>(c, Call::SetString, |component| {
             let vrs = handle::slice(vr, nvr, "vr")?;
             let mut texts = Vec::with_capacity(nvr);
             for &s in handle::slice(value, nvr, "value")? {

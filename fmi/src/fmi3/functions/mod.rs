@@ -35,27 +35,18 @@ pub use variables::*;
 
 use super::machine::Call;
 use super::types::{fmi3Instance, fmi3Status};
-use crate::firewall::{catch, firewall};
 use crate::fmi2::component::Component;
-use crate::fmi2::handle;
+use crate::fmi2::functions::with_component;
 use crate::fmi2::model::Model;
 use crate::Error;
 
-/// The body of every function that takes an instance: NULL check, state check, the work,
-/// then the report; a panic anywhere is reported as an error.
+/// The body of every function that takes an instance: the FMI 2.0 layer's (NULL check,
+/// the call against FMI 3.0's table, the work, the report, a panic an error), its status as
+/// FMI 3.0's.
 unsafe fn with_instance<M: Model>(
     instance: fmi3Instance,
     call: Call,
     body: impl FnOnce(&mut Component<M>) -> Result<(), Error>,
 ) -> fmi3Status {
-    let Some(component) = (unsafe { handle::component::<M>(instance) }) else {
-        return fmi3Status::fmi3Error;
-    };
-    firewall(fmi3Status::fmi3Error, || {
-        let result = catch(|| {
-            component.check(call)?;
-            body(component)
-        });
-        component.report(call, result).into()
-    })
+    unsafe { with_component::<M, Call>(instance, call, body) }.into()
 }
