@@ -167,7 +167,9 @@ impl RunsFile {
 }
 
 /// Reads the runs of a per-run file's text (RFC 4180 quoting, the `csv` crate); `source`
-/// names it in errors.
+/// names it in errors. A later line for the same (case, seed) replaces the earlier one: the
+/// runs come in the order of their last lines (found in one pass and an index, so a long
+/// file costs its length, not its square).
 pub fn parse(text: &str, source: &str) -> Result<Vec<RunRow>> {
     let error = |line: u64, message: String| Error::Parse {
         path: source.to_string(),
@@ -241,9 +243,20 @@ pub fn parse(text: &str, source: &str) -> Result<Vec<RunRow>> {
             fingerprint: fields[2].to_string(),
             result,
         };
-        runs.retain(|r| !(r.case == row.case && r.seed == row.seed));
         runs.push(row);
     }
+    let last: std::collections::HashMap<(&str, u64), usize> = runs
+        .iter()
+        .enumerate()
+        .map(|(i, r)| ((r.case.as_str(), r.seed), i))
+        .collect();
+    let kept: Vec<bool> = runs
+        .iter()
+        .enumerate()
+        .map(|(i, r)| last[&(r.case.as_str(), r.seed)] == i)
+        .collect();
+    let mut kept = kept.into_iter();
+    runs.retain(|_| kept.next().unwrap_or(false));
     Ok(runs)
 }
 
@@ -296,7 +309,17 @@ mod tests {
             ..failed
         };
         let again = format!("{text}{}", format_row(&rerun));
-        assert_eq!(parse(&again, "runs.csv").unwrap(), vec![ok.clone(), rerun]);
+        assert_eq!(
+            parse(&again, "runs.csv").unwrap(),
+            vec![ok.clone(), rerun.clone()]
+        );
+        // The first run again, last: the runs in the order of their last lines.
+        let ok_again = RunRow {
+            fingerprint: "0100".into(),
+            ..ok.clone()
+        };
+        let last = format!("{again}{}", format_row(&ok_again));
+        assert_eq!(parse(&last, "runs.csv").unwrap(), vec![rerun, ok_again]);
         let bad = format!("{text}{}", format_row(&ok).replace(",7,", ",u,"));
         assert!(parse(&bad, "runs.csv")
             .unwrap_err()
