@@ -46,8 +46,17 @@ fn fmi2_references<'a>(vrs: &'a [u32], offset: u32, ty: &str) -> Result<Cow<'a, 
 
 /// The model's (FMI 2.0) Real value references of the Float64 value references `vrs`, an
 /// array's expanded into its scalars ([`Numbering::reals`]); refuses `n_values` other than
-/// their count and a value reference that names no Float64.
-fn fmi2_reals(vrs: &[u32], numbering: &Numbering, n_values: usize) -> Result<Vec<u32>, Error> {
+/// their count and a value reference that names no Float64. Without arrays or offset they
+/// are `vrs` themselves (no allocation in a master's per-step getter).
+fn fmi2_reals<'a>(
+    vrs: &'a [u32],
+    numbering: &Numbering,
+    n_values: usize,
+) -> Result<Cow<'a, [u32]>, Error> {
+    if numbering.real == 0 && numbering.arrays.is_empty() {
+        scalars(vrs.len(), n_values)?;
+        return Ok(Cow::Borrowed(vrs));
+    }
     let mut out = Vec::with_capacity(vrs.len());
     for &vr in vrs {
         let reals = numbering.reals(vr).ok_or_else(|| {
@@ -62,7 +71,7 @@ fn fmi2_reals(vrs: &[u32], numbering: &Numbering, n_values: usize) -> Result<Vec
             vrs.len()
         )));
     }
-    Ok(out)
+    Ok(Cow::Owned(out))
 }
 
 /// `fmi3GetFloat64`.
@@ -95,13 +104,13 @@ pub unsafe fn get_float64<M: Model>(
             scalars(counts.iter().sum(), n_values)?;
             let values = handle::slice_mut(values, n_values, "values")?;
             let mut at = 0;
-            for (&r, count) in vrs.iter().zip(counts) {
+            for (r, count) in vrs.iter().zip(counts) {
                 let out = &mut values[at..at + count];
                 at += count;
-                if r == TIME_VALUE_REFERENCE {
+                if *r == TIME_VALUE_REFERENCE {
                     out[0] = component.model.last_successful_time();
                 } else {
-                    let reals = fmi2_reals(&[r], &numbering, count)?;
+                    let reals = fmi2_reals(std::slice::from_ref(r), &numbering, count)?;
                     component.run(|model, cx| model.get_real(cx, &reals, out))?;
                 }
             }
