@@ -110,7 +110,7 @@ fn run(args: &Args) -> Result<(), String> {
         (&resources, &files),
         &fmu_path,
     )?;
-    check(
+    let samples = check(
         &fmu_path,
         &fmu_dir.join("unpacked"),
         (0.0, Some(THREE_HOURS)),
@@ -126,9 +126,10 @@ fn run(args: &Args) -> Result<(), String> {
         &fmi3_path,
     )?;
     check_fmi3(
-        (&fmi3_path, &fmu_path),
-        (&fmu_dir.join("unpacked-fmi3"), &fmu_dir.join("unpacked")),
+        &fmi3_path,
+        &fmu_dir.join("unpacked-fmi3"),
         (0.0, THREE_HOURS),
+        &samples,
     )?;
     mooring::pack_and_check(&root, &target)?;
     system::write(&root, &library, &fmu_dir)
@@ -174,7 +175,7 @@ fn pack_configuration(
         .1
         .unwrap_or(configured.experiment.0 + THREE_HOURS)
         .min(configured.experiment.0 + THREE_HOURS);
-    check(
+    let samples = check(
         out,
         &work.join(format!("{model_name}-unpacked")),
         (configured.experiment.0, Some(stop)),
@@ -196,75 +197,58 @@ fn pack_configuration(
         &fmi3_path,
     )?;
     check_fmi3(
-        (&fmi3_path, out),
-        (
-            &work.join(format!("{model_name}-unpacked-fmi3")),
-            &work.join(format!("{model_name}-unpacked")),
-        ),
+        &fmi3_path,
+        &work.join(format!("{model_name}-unpacked-fmi3")),
         (configured.experiment.0, stop),
+        &samples,
     )
 }
 
 /// Checks the FMU at `fmu_path` by running it ([`check_by_running`]) over `experiment`
 /// (start, stop); a packed FMU that fails its own check is removed, so that no master finds
-/// it.
-fn check(fmu_path: &Path, unpack_dir: &Path, experiment: (f64, Option<f64>)) -> Result<(), String> {
+/// it. The samples of [`OUTPUTS`] of the run.
+fn check(
+    fmu_path: &Path,
+    unpack_dir: &Path,
+    experiment: (f64, Option<f64>),
+) -> Result<Vec<Vec<f64>>, String> {
     println!("wrote {}", fmu_path.display());
     check_by_running(fmu_path, unpack_dir, experiment).inspect_err(|_| {
         let _ = std::fs::remove_file(fmu_path);
     })
 }
 
-/// Unpacks the FMI 3.0 archive `fmi3_path` and runs it through the `fmi3*` C ABI over
-/// `(start, stop)` at 1 s with its start values beside the FMI 2.0 archive `fmi2_path`
-/// (unpacked into `dir3` and `dir2`): X, Y and theta at every communication point equal bit
-/// for bit. A failing FMI 3.0 archive is removed.
+/// Unpacks the FMI 3.0 archive `fmi3_path` into `dir3` and runs it through the `fmi3*` C
+/// ABI over `(start, stop)` at 1 s with its start values: X, Y and theta at every
+/// communication point must equal `two`, the FMI 2.0 archive's samples of the same run
+/// ([`check`]), bit for bit. A failing FMI 3.0 archive is removed.
 fn check_fmi3(
-    (fmi3_path, fmi2_path): (&Path, &Path),
-    (dir3, dir2): (&Path, &Path),
+    fmi3_path: &Path,
+    dir3: &Path,
     (start, stop): (f64, f64),
+    two: &[Vec<f64>],
 ) -> Result<(), String> {
     println!("wrote {}", fmi3_path.display());
     let compare = || -> Result<usize, String> {
         archive::unpack(fmi3_path, dir3)?;
-        archive::unpack(fmi2_path, dir2)?;
-        let description = |dir: &Path| -> Result<String, String> {
-            String::from_utf8(read(&dir.join("modelDescription.xml"))?).map_err(|e| e.to_string())
-        };
-        let experiment = (start, stop, COMMUNICATION_STEP);
-        let resources3 = dir3
+        let xml = String::from_utf8(read(&dir3.join("modelDescription.xml"))?)
+            .map_err(|e| e.to_string())?;
+        let resources = dir3
             .join("resources")
             .canonicalize()
             .map_err(|e| e.to_string())?;
-        let path3 = format!(
-            "{}/",
-            resources3.to_str().ok_or("resources path not UTF-8")?
-        );
-        let fmu3 = master3::Fmu::load(
+        let path = format!("{}/", resources.to_str().ok_or("resources path not UTF-8")?);
+        let fmu = master3::Fmu::load(
             &dir3.join(format!("binaries/{FMI3_BINARIES}/{MODEL_IDENTIFIER}.so")),
         )?;
         let three = master3::run(
-            &fmu3,
-            &master::ModelDescription::parse_fmi3(description(dir3)?)?,
-            &path3,
+            &fmu,
+            &master::ModelDescription::parse_fmi3(xml)?,
+            &path,
             (&[], &OUTPUTS),
-            experiment,
+            (start, stop, COMMUNICATION_STEP),
         )?;
-        let resources2 = dir2
-            .join("resources")
-            .canonicalize()
-            .map_err(|e| e.to_string())?;
-        let fmu2 = master::Fmu::load(
-            &dir2.join(format!("binaries/{FMI2_BINARIES}/{MODEL_IDENTIFIER}.so")),
-        )?;
-        let two = master::run(
-            &fmu2,
-            &master::ModelDescription::parse(description(dir2)?)?,
-            &file_uri(&resources2)?,
-            (&[], &OUTPUTS),
-            experiment,
-        )?;
-        for ((name, a), b) in OUTPUTS.iter().zip(&three).zip(&two) {
+        for ((name, a), b) in OUTPUTS.iter().zip(&three).zip(two) {
             if let Some(m) = (0..a.len()).find(|&m| a[m].to_bits() != b[m].to_bits()) {
                 return Err(format!(
                     "{name} at {} s: FMI 3.0 {} differs from FMI 2.0 {}",
@@ -442,7 +426,7 @@ fn check_by_running(
     fmu_path: &Path,
     unpack_dir: &Path,
     (start, stop): (f64, Option<f64>),
-) -> Result<(), String> {
+) -> Result<Vec<Vec<f64>>, String> {
     archive::unpack(fmu_path, unpack_dir)?;
     let resources = unpack_dir.join("resources");
     let library = unpack_dir.join(format!("binaries/{FMI2_BINARIES}/{MODEL_IDENTIFIER}.so"));
@@ -455,7 +439,7 @@ fn check_by_running(
     let stop = stop.unwrap_or(start + THREE_HOURS);
     let transient = TRANSIENT.min(0.5 * (stop - start));
     let started = std::time::Instant::now();
-    let statistics = run_statistics(&fmu, &description, &uri, (start, stop), transient)?;
+    let (samples, statistics) = run_statistics(&fmu, &description, &uri, (start, stop), transient)?;
     let elapsed = started.elapsed().as_secs_f64();
     println!(
         "ran the packed FMU through its C ABI: {} s at a {COMMUNICATION_STEP} s communication \
@@ -476,21 +460,22 @@ fn check_by_running(
             s.mean, s.rms, s.max
         );
     }
-    Ok(())
+    Ok(samples)
 }
 
 /// The outputs the self-check summarises.
 const OUTPUTS: [&str; 3] = ["X", "Y", "theta"];
 
-/// The self-check's run of the FMU from `start` to `stop` with its start values, and the
-/// statistics of [`OUTPUTS`] after `transient` (the record from the start, as the CLI's).
+/// The self-check's run of the FMU from `start` to `stop` with its start values: the
+/// samples of [`OUTPUTS`] and their statistics after `transient` (the record from the start,
+/// as the CLI's).
 fn run_statistics(
     fmu: &master::Fmu,
     description: &master::ModelDescription,
     uri: &str,
     (start, stop): (f64, f64),
     transient: f64,
-) -> Result<Vec<Summary>, String> {
+) -> Result<(Vec<Vec<f64>>, Vec<Summary>), String> {
     let samples = master::run(
         fmu,
         description,
@@ -498,10 +483,11 @@ fn run_statistics(
         (&[], &OUTPUTS),
         (start, stop, COMMUNICATION_STEP),
     )?;
-    samples
+    let statistics = samples
         .iter()
         .map(|values| summarize(values, COMMUNICATION_STEP, transient).map_err(|e| e.to_string()))
-        .collect()
+        .collect::<Result<_, _>>()?;
+    Ok((samples, statistics))
 }
 
 #[cfg(test)]
@@ -549,7 +535,7 @@ mod tests {
         .unwrap();
         let description = master::ModelDescription::parse(xml).unwrap();
         let fmu = master::Fmu::load(&library).unwrap();
-        let statistics = run_statistics(
+        let (_, statistics) = run_statistics(
             &fmu,
             &description,
             &file_uri(&resources).unwrap(),
