@@ -13,10 +13,10 @@ pub use crate::dynamics::Held;
 use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};
 use crate::error::numbers::written;
 use crate::error::{Error, Result};
-use crate::forces::{ForceRecords, Segments, WholeMotion};
+use crate::forces::{refine, ForceRecords, Segments, WholeMotion};
 use crate::problem::Problem;
 use crate::record_plan::{QtfRank, RecordPlan, Segment};
-use crate::sea_state::FrequencyGrid;
+use crate::sea_state::{FrequencyGrid, WaveComponents};
 use std::sync::Arc;
 
 /// Relative tolerance for deciding that an interval is a whole number of steps.
@@ -344,6 +344,18 @@ impl Simulation {
     /// The index of the current segment of the records.
     pub fn segment(&self) -> u64 {
         self.segment.index
+    }
+
+    /// How the wave force and damping records are sampled (`forces::refine`): `Some(e)`
+    /// when they are made at every second record sample (the step h) and refined, e the
+    /// estimated rms error at the midpoints relative to their standard deviation for this
+    /// sea; `None` when they are made at every record sample.
+    pub fn refined_force_records(&self) -> Option<f64> {
+        self.plan.refines().then(|| {
+            let grid = self.plan.grid();
+            let power = WaveComponents::expected_power_of(&self.problem.sea, grid);
+            refine::midpoint_error(&power, grid.d_omega, self.problem.run.time_step)
+        })
     }
 
     /// The rank kept for every full-QTF block (empty under Newman's approximation).

@@ -46,6 +46,7 @@
 //! uni-directional drift table (`hydro::bidirectional::mean_direction_pairs`). The
 //! wave-drift damping records keep no cross terms (no bi-directional damping data exists).
 
+use super::refine;
 use super::synthesis::{InverseFft, Synthesizer};
 use super::{ForceRecords, Record};
 use crate::error::{Error, Result};
@@ -102,15 +103,20 @@ pub fn cross_direction_force(
 }
 
 /// Adds the cross-direction force to the records' wave force (`synth` writes the records'
-/// series: a grid's period or a stream's segment).
+/// series: a grid's period or a stream's segment; with `refined` = Some(len), at every
+/// second sample, refined to the records' len samples: `forces::refine`).
 pub fn add_cross_terms(
     records: &mut ForceRecords,
     components: &WaveComponents,
     pairs: &DirectionPairs,
     synth: &mut Synthesizer,
+    refined: Option<usize>,
     work: &mut CrossWork,
 ) {
     work.force(components, pairs, synth);
+    if let Some(len) = refined {
+        work.cross.iter_mut().for_each(|v| refine::refine(v, len));
+    }
     for (record, extra) in records.wave_force.iter_mut().zip(&mut work.cross) {
         if extra.is_empty() {
             continue;

@@ -12,6 +12,7 @@ mod motion;
 mod newman;
 mod qtf;
 mod record;
+pub mod refine;
 mod stream;
 mod synthesis;
 mod transfer;
@@ -26,7 +27,7 @@ pub use motion::{motion_transfers, MotionRecords, MotionTransfer, RaoAlong, Whol
 pub use newman::NewmanBuilder;
 pub use qtf::{GridQtf, QtfFactorisation, QtfGroup};
 pub use record::{Record, RecordClock, SamplePoint};
-pub use stream::{Join, Segments};
+pub use stream::{Join, Sampling, Segments};
 pub use synthesis::{plan_inverse_fft, InverseFft, Synthesizer};
 pub use transfer::{transfers_on_grid, DirectionTransfer};
 pub use viscous::drag_force;
@@ -97,6 +98,9 @@ pub struct RecordWork {
     yaw: YawWork,
     /// Scratch of the wave-frequency motion records.
     motion: motion::MotionWork,
+    /// The synthesizer of every second sample, when the quadratic records are made at
+    /// their bandwidth (`forces::refine`).
+    coarse: Option<Synthesizer>,
 }
 
 impl RecordWork {
@@ -124,6 +128,26 @@ impl RecordWork {
             cross: CrossWork::default(),
             yaw: YawWork::default(),
             motion: motion::MotionWork::default(),
+            coarse: None,
+        }
+    }
+
+    /// These buffers making the quadratic records (the wave force and damping, Newman's or
+    /// the full QTF's, the cross-direction terms, the yaw-following records) at every
+    /// second sample through `synth` ([`Synthesizer::every_second_sample`], joined on
+    /// `refine::SAMPLING`) and refining them to the records' clock (`forces::refine`).
+    pub fn at_their_bandwidth(mut self, synth: Synthesizer) -> Self {
+        self.coarse = Some(synth);
+        self
+    }
+
+    /// Starts segment `k` on every joined synthesizer (`Join::begin`).
+    pub fn begin(&mut self, k: u64, after_previous: bool) {
+        for synth in std::iter::once(&mut self.synth).chain(&mut self.coarse) {
+            synth
+                .join_mut()
+                .expect("a segment's synthesizer is joined")
+                .begin(k, after_previous);
         }
     }
 
@@ -147,15 +171,26 @@ impl RecordWork {
             grid: *grid,
             sets: Vec::new(),
         });
+        let (synth, refining) = quadratic(&mut self.synth, &mut self.coarse);
         records.rebuild(
             components,
             transfers,
             full_qtf,
             form,
-            &mut self.synth,
+            synth,
             &mut self.newman,
             &mut self.yaw,
         );
+        if refining {
+            let len = self.synth.output_len();
+            for set in &mut records.sets {
+                let damping = set.damping.iter_mut().flatten().flatten();
+                set.wave_force
+                    .iter_mut()
+                    .chain(damping)
+                    .for_each(|r| refine_record(r, len));
+            }
+        }
     }
 
     /// The wave-frequency motion records of `components` into `records` (their buffers
@@ -181,7 +216,10 @@ impl RecordWork {
         components: &WaveComponents,
         pairs: &crate::hydro::bidirectional::DirectionPairs,
     ) {
-        add_cross_terms(records, components, pairs, &mut self.synth, &mut self.cross);
+        let len = self.synth.output_len();
+        let (synth, refining) = quadratic(&mut self.synth, &mut self.coarse);
+        let refined = refining.then_some(len);
+        add_cross_terms(records, components, pairs, synth, refined, &mut self.cross);
     }
 }
 
@@ -239,8 +277,7 @@ impl ForceRecords {
         work: &mut RecordWork,
     ) {
         let grid = &components.grid;
-        let synth = &mut work.synth;
-        self.clock = match synth.join() {
+        self.clock = match work.synth.join() {
             Some(join) => join.segments().clock(grid, join.segment()),
             None => RecordClock {
                 start_time: grid.start_time,
@@ -248,23 +285,10 @@ impl ForceRecords {
                 len: grid.len,
             },
         };
-        let n = synth.output_len();
-        let eta_c = &mut work.eta_c;
-        eta_c.resize(
-            match options.newman {
-                NewmanForm::Arithmetic => n,
-                NewmanForm::Geometric => 0,
-            },
-            Complex64::default(),
-        );
+        let n = work.synth.output_len();
         let coefficients = &mut work.elevation_coefficients;
         coefficients.clear();
         coefficients.resize(grid.count, Complex64::default());
-        if options.full_qtf.is_some() {
-            work.qtf_coefficients
-                .resize(grid.count, Complex64::default());
-            work.qtf_series.resize(n, Complex64::default());
-        }
         // The previous records' buffers, emptied: records are filled by the first direction
         // that adds to them.
         let mut force: [Vec<f64>; 3] =
@@ -273,48 +297,72 @@ impl ForceRecords {
             Some(d) => std::array::from_fn(|i| std::array::from_fn(|j| take_samples(&mut d[i][j]))),
             None => Default::default(),
         };
-        let builder = &mut work.newman;
-        for (k, transfer) in transfers.iter().enumerate() {
-            let amplitudes = components.of_direction(k);
-            for (sum, a) in coefficients.iter_mut().zip(amplitudes) {
-                *sum += a;
+        {
+            // The quadratic records, on the records' clock or at every second sample.
+            let (synth, refining) = quadratic(&mut work.synth, &mut work.coarse);
+            let len = synth.output_len();
+            let eta_c = &mut work.eta_c;
+            eta_c.resize(
+                match options.newman {
+                    NewmanForm::Arithmetic => len,
+                    NewmanForm::Geometric => 0,
+                },
+                Complex64::default(),
+            );
+            if options.full_qtf.is_some() {
+                work.qtf_coefficients
+                    .resize(grid.count, Complex64::default());
+                work.qtf_series.resize(len, Complex64::default());
             }
-            if options.newman == NewmanForm::Arithmetic {
-                synth.complex_series(amplitudes, eta_c);
-            }
-            if options.full_qtf.is_none() {
-                builder.accumulate_force(
+            let builder = &mut work.newman;
+            for (k, transfer) in transfers.iter().enumerate() {
+                let amplitudes = components.of_direction(k);
+                for (sum, a) in coefficients.iter_mut().zip(amplitudes) {
+                    *sum += a;
+                }
+                if options.newman == NewmanForm::Arithmetic {
+                    synth.complex_series(amplitudes, eta_c);
+                }
+                if options.full_qtf.is_none() {
+                    builder.accumulate_force(
+                        synth,
+                        options.newman,
+                        amplitudes,
+                        eta_c,
+                        transfer,
+                        &mut force,
+                    );
+                }
+                builder.accumulate_damping(
                     synth,
                     options.newman,
                     amplitudes,
                     eta_c,
                     transfer,
-                    &mut force,
+                    &mut damping,
                 );
             }
-            builder.accumulate_damping(
-                synth,
-                options.newman,
-                amplitudes,
-                eta_c,
-                transfer,
-                &mut damping,
-            );
-        }
-        for group in options.full_qtf.unwrap_or_default() {
-            let amplitudes = components.of_directions(
-                group.first_direction..group.first_direction + group.dofs[0].directions(),
-            );
-            for (out, t) in force.iter_mut().zip(&group.dofs) {
-                t.accumulate(
-                    synth,
-                    amplitudes,
-                    &mut work.qtf_coefficients,
-                    &mut work.qtf_series,
-                    out,
+            for group in options.full_qtf.unwrap_or_default() {
+                let amplitudes = components.of_directions(
+                    group.first_direction..group.first_direction + group.dofs[0].directions(),
                 );
+                for (out, t) in force.iter_mut().zip(&group.dofs) {
+                    t.accumulate(
+                        synth,
+                        amplitudes,
+                        &mut work.qtf_coefficients,
+                        &mut work.qtf_series,
+                        out,
+                    );
+                }
+            }
+            if refining {
+                let records = force.iter_mut().chain(damping.iter_mut().flatten());
+                records.for_each(|samples| refine::refine(samples, n));
             }
         }
+        let builder = &mut work.newman;
+        let synth = &mut work.synth;
         let mut elevation = take_samples(&mut self.elevation);
         builder.real_series(synth, coefficients, &mut elevation);
         self.elevation = Record::new(elevation);
@@ -330,6 +378,26 @@ impl ForceRecords {
         self.wave_force = force.map(record_or_zero);
         self.damping = with_damping.then(|| damping.map(|row| row.map(record_or_zero)));
     }
+}
+
+/// The synthesizer the quadratic records are made with, and whether it makes them at every
+/// second sample (to be refined): `coarse` when there is one, else the records' own.
+fn quadratic<'a>(
+    synth: &'a mut Synthesizer,
+    coarse: &'a mut Option<Synthesizer>,
+) -> (&'a mut Synthesizer, bool) {
+    match coarse {
+        Some(coarse) => (coarse, true),
+        None => (synth, false),
+    }
+}
+
+/// A record made at every second sample, refined in place to `len` samples
+/// (`forces::refine`; a zero record stays zero).
+fn refine_record(record: &mut Record, len: usize) {
+    let mut samples = std::mem::take(record).into_samples();
+    refine::refine(&mut samples, len);
+    *record = Record::new(samples);
 }
 
 /// The samples' buffer of `record`, emptied (its capacity kept), the record left zero.

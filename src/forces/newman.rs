@@ -28,12 +28,18 @@ pub struct NewmanBuilder {
 }
 
 impl NewmanBuilder {
-    /// Buffers for a grid of `count` components and records of `len` samples.
+    /// Buffers for a grid of `count` components and records of `len` samples (a
+    /// synthesizer of another output length resizes them).
     pub fn new(count: usize, len: usize) -> Self {
         NewmanBuilder {
             coefficients: vec![Complex64::default(); count],
             series: vec![Complex64::default(); len],
         }
+    }
+
+    /// Sizes the series buffer to `synth`'s output length.
+    fn size_series(&mut self, synth: &Synthesizer) {
+        self.series.resize(synth.output_len(), Complex64::default());
     }
 
     /// Adds one direction's slowly varying record for the diagonal `transfer` (T_i at every
@@ -53,6 +59,7 @@ impl NewmanBuilder {
             NewmanForm::Geometric => {
                 for sign in [1.0, -1.0] {
                     if self.fill_signed(amplitudes, transfer, sign) {
+                        self.size_series(synth);
                         synth.complex_series(&self.coefficients, &mut self.series);
                         add_to(out, self.series.iter().map(|p| sign * p.norm_sqr()));
                     }
@@ -65,6 +72,7 @@ impl NewmanBuilder {
                 for ((c, a), t) in self.coefficients.iter_mut().zip(amplitudes).zip(transfer) {
                     *c = a * t;
                 }
+                self.size_series(synth);
                 synth.complex_series(&self.coefficients, &mut self.series);
                 let products = self
                     .series
@@ -120,6 +128,7 @@ impl NewmanBuilder {
         coefficients: &[Complex64],
         out: &mut Vec<f64>,
     ) {
+        self.size_series(synth);
         synth.complex_series(coefficients, &mut self.series);
         out.clear();
         out.extend(self.series.iter().map(|c| c.re));

@@ -85,11 +85,39 @@ impl Segments {
     }
 }
 
+/// Which global samples a joined series holds: every `step`-th (a multiple of the block
+/// B), from `before` of its own samples before the segment's start to `after` past its end.
+/// The records' own clock is [`Sampling::RECORDS`]; a quadratic record made at its
+/// bandwidth uses a coarser one (`forces::refine`), whose transform of N / step points
+/// gives block k's signal at global samples kB + step i (the same components, so the same
+/// sea: e^{i omega_n t} at those times only sees n mod N / step).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Sampling {
+    pub step: usize,
+    pub before: usize,
+    pub after: usize,
+}
+
+impl Sampling {
+    /// The records' clock: every sample, with the stencil's halos.
+    pub const RECORDS: Sampling = Sampling {
+        step: 1,
+        before: HALO_BEFORE,
+        after: HALO_AFTER,
+    };
+}
+
 /// The state that joins consecutive segments: which segment is being built, the tails of the
 /// previous block's linear series (in the builders' order) and the cross-fade weights.
+///
+/// With a [`Sampling`] of step L, output sample l of segment k is global sample
+/// kB + L (l - before), and the cross-fade above is the same function of the global sample
+/// m (its weight c_j, s_j at j = m - kB - H): the joined series is the records' joined
+/// series at every L-th sample.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Join {
     segments: Segments,
+    sampling: Sampling,
     /// The segment being built.
     segment: u64,
     /// Whether the tails hold block `segment - 1`'s (false for segment 0, and when a
@@ -104,8 +132,15 @@ pub struct Join {
 }
 
 impl Join {
-    /// A join for `segments`, before any segment is built.
+    /// A join for `segments` on the records' clock, before any segment is built.
     pub fn new(segments: Segments) -> Self {
+        Self::with_sampling(segments, Sampling::RECORDS)
+    }
+
+    /// A join for `segments` whose series hold the samples of `sampling` (its step divides
+    /// the block).
+    pub fn with_sampling(segments: Segments, sampling: Sampling) -> Self {
+        debug_assert!(sampling.step > 0 && segments.block.is_multiple_of(sampling.step));
         let r = segments.ramp;
         let weights = (0..r)
             .map(|j| {
@@ -115,6 +150,7 @@ impl Join {
             .collect();
         Join {
             segments,
+            sampling,
             segment: 0,
             joined: false,
             tails: Vec::new(),
@@ -142,9 +178,30 @@ impl Join {
         self.segment
     }
 
-    /// Samples of a joined series (the segment's record length).
+    /// The samples the joined series hold.
+    pub fn sampling(&self) -> Sampling {
+        self.sampling
+    }
+
+    /// Samples of a joined series (on the records' clock, the segment's record length).
     pub fn len(&self) -> usize {
-        self.segments.record_len()
+        let Sampling {
+            step,
+            before,
+            after,
+        } = self.sampling;
+        before + self.segments.block / step + after
+    }
+
+    /// Output samples before the cross-fade (block k - 1 alone) and before the end of the
+    /// cross-fade: l < before + ceil(H / L) and l < before + ceil((H + R) / L).
+    fn regions(&self) -> (usize, usize) {
+        let Sampling { step, before, .. } = self.sampling;
+        let ramp_end = HALO_AFTER + self.segments.ramp;
+        (
+            before + HALO_AFTER.div_ceil(step),
+            before + ramp_end.div_ceil(step),
+        )
     }
 
     /// Never empty (a segment has at least one sample); for clippy's `len_without_is_empty`.
@@ -152,41 +209,44 @@ impl Join {
         false
     }
 
-    /// The next linear series of this segment, from block k's FFT output `block` (N
-    /// samples, index = global sample - kB): appends the joined series (record length) to
-    /// `out` and keeps block k's tail for segment k + 1.
+    /// The next linear series of this segment, from block k's transform `block` (index i =
+    /// global sample kB + L i, periodic): appends the joined series ([`Join::len`] samples)
+    /// to `out` and keeps block k's tail for segment k + 1.
     pub fn series(&mut self, block: &[Complex64], out: &mut impl Extend<Complex64>) {
-        let Segments { block: b, ramp: r } = self.segments;
+        let Sampling { step, before, .. } = self.sampling;
         let n = block.len();
-        debug_assert!(n >= self.segments.span());
+        let (alone, ramp_end) = self.regions();
+        let len = self.len();
+        debug_assert!(n >= len - before && n >= self.segments.block / step - before + ramp_end);
         let index = self.calls;
         self.calls += 1;
         if self.tails.len() <= index {
-            self.tails
-                .push(vec![Complex64::default(); self.segments.tail_len()]);
+            // The tail of block k - 1: its samples at segment k's outputs l < ramp_end.
+            self.tails.push(vec![Complex64::default(); ramp_end]);
         }
         let tail = &mut self.tails[index];
-        // Sample l of the series is global sample kB - 1 + l: the block's index l - 1
-        // (HALO_BEFORE = 1), and for l = 0 index N - 1 (the transform is periodic). No
-        // index arithmetic per sample: slices shifted by one.
-        let len = self.segments.record_len();
-        let h = HALO_BEFORE;
+        // Output l is block k's index l - before (for l < before, the transform's periodic
+        // samples n - before + l). No index arithmetic per sample: shifted slices.
+        let h = before;
         if self.joined {
-            // [kB - 1, kB + H): the previous block alone; its tail starts at kB - 1.
-            let alone = HALO_BEFORE + HALO_AFTER;
+            // [kB - L before, kB + H): the previous block alone, from its tail.
             out.extend(tail[..alone].iter().copied());
-            let pairs = self.weights.iter().zip(&tail[alone..]);
+            // The ramp's weights at the global samples of outputs alone .. ramp_end:
+            // j = L (l - before) - H.
+            let first = step * (alone - before) - HALO_AFTER;
+            let weights = self.weights[first..].iter().step_by(step);
+            let pairs = weights.zip(&tail[alone..]);
             let ramp = pairs.zip(&block[alone - h..]);
             out.extend(ramp.map(|((&(c, s), &previous), &next)| previous * c + next * s));
-            out.extend(block[alone + r - h..len - h].iter().copied());
+            out.extend(block[ramp_end - h..len - h].iter().copied());
         } else {
             out.extend(block[n - h..].iter().copied());
             out.extend(block[..len - h].iter().copied());
         }
-        // The tail of block k: global samples [(k+1)B - 1, (k+1)B + H + R), block index
-        // B - 1 onwards.
-        let tail_len = tail.len();
-        tail.copy_from_slice(&block[b - h..b - h + tail_len]);
+        // The tail of block k: segment k + 1's outputs l < ramp_end, global samples
+        // (k+1)B + L (l - before): block index B / L - before + l.
+        let start = self.segments.block / step - h;
+        tail.copy_from_slice(&block[start..start + ramp_end]);
     }
 }
 
@@ -194,71 +254,66 @@ impl Join {
 mod tests {
     use super::*;
 
-    /// A block's signal: x(m) = sum_j a_j e^{i w_j (m - kB)}, written out by hand.
-    fn block_signal(amplitudes: &[(f64, Complex64)], n: usize) -> Vec<Complex64> {
-        (0..n)
-            .map(|m| {
-                amplitudes
-                    .iter()
-                    .map(|(w, a)| a * Complex64::from_polar(1.0, w * m as f64))
-                    .sum()
-            })
-            .collect()
-    }
-
-    /// Two segments joined against the formula of the module doc, sample by sample, and
-    /// the weights power-complementary.
+    /// Two segments joined against the formula of the module doc, sample by sample, on the
+    /// records' clock and at every second sample (the cross-fade the same function of the
+    /// global sample), and the weights power-complementary.
     #[test]
     fn segments_follow_the_cross_fade_formula() {
         let segments = Segments { block: 40, ramp: 8 };
-        let n = 60;
-        assert!(n >= segments.span());
-        let blocks: Vec<Vec<Complex64>> = (0..3)
-            .map(|k| {
-                let a: Vec<(f64, Complex64)> = (1..5)
-                    .map(|j| {
-                        let w = 2.0 * std::f64::consts::PI * j as f64 / n as f64;
-                        (w, Complex64::new((j + k) as f64, (j * k) as f64 - 1.5))
-                    })
-                    .collect();
-                block_signal(&a, n)
-            })
-            .collect();
-        let mut join = Join::new(segments);
-        let mut out = Vec::new();
-        let (b, h, r) = (40usize, HALO_AFTER, 8usize);
-        for k in 0..3u64 {
-            join.begin(k, true);
-            out.clear();
-            join.series(&blocks[k as usize], &mut out);
-            assert_eq!(out.len(), segments.record_len());
-            for (l, got) in out.iter().enumerate() {
-                let m = (k as usize * b + l) as i64 - 1;
-                let own = |block: usize| {
-                    let i = m - (block * b) as i64;
-                    blocks[block][i.rem_euclid(n as i64) as usize]
-                };
-                let start = (k as usize * b) as i64;
-                let k = k as usize;
-                let expected = if k == 0 {
-                    own(0)
-                } else if m < start + h as i64 {
-                    own(k - 1)
-                } else if m < start + (h + r) as i64 {
-                    let j = (m - start - h as i64) as usize;
-                    let phi = FRAC_PI_2 * (j + 1) as f64 / (r + 1) as f64;
-                    own(k - 1) * phi.cos() + own(k) * phi.sin()
-                } else {
-                    own(k)
-                };
-                assert!(
-                    (got - expected).norm() < 1e-12,
-                    "k {k}, m {m}: {got} vs {expected}"
-                );
+        let n = 72;
+        assert!(n >= segments.span() + 12);
+        // Block k's signal at its index i (global sample kB + i), written out by hand.
+        let x = |k: usize, i: i64| -> Complex64 {
+            (1..5)
+                .map(|j| {
+                    let w = 2.0 * std::f64::consts::PI * j as f64 / n as f64;
+                    let a = Complex64::new((j + k) as f64, (j * k) as f64 - 1.5);
+                    a * Complex64::from_polar(1.0, w * i.rem_euclid(n as i64) as f64)
+                })
+                .sum()
+        };
+        let coarse = Sampling {
+            step: 2,
+            before: 4,
+            after: 6,
+        };
+        for sampling in [Sampling::RECORDS, coarse] {
+            let step = sampling.step;
+            let mut join = Join::with_sampling(segments, sampling);
+            let mut out = Vec::new();
+            let (b, h, r) = (40i64, HALO_AFTER as i64, 8i64);
+            for k in 0..3usize {
+                // The transform of n / L points: block k at global kB + L i.
+                let block: Vec<Complex64> =
+                    (0..n / step).map(|i| x(k, (step * i) as i64)).collect();
+                join.begin(k as u64, true);
+                out.clear();
+                join.series(&block, &mut out);
+                assert_eq!(out.len(), sampling.before + 40 / step + sampling.after);
+                for (l, got) in out.iter().enumerate() {
+                    let start = k as i64 * b;
+                    let m = start + (step * l) as i64 - (step * sampling.before) as i64;
+                    let own = |block: usize| x(block, m - block as i64 * b);
+                    let expected = if k == 0 {
+                        own(0)
+                    } else if m < start + h {
+                        own(k - 1)
+                    } else if m < start + h + r {
+                        let j = m - start - h;
+                        let phi = FRAC_PI_2 * (j + 1) as f64 / (r + 1) as f64;
+                        own(k - 1) * phi.cos() + own(k) * phi.sin()
+                    } else {
+                        own(k)
+                    };
+                    assert!(
+                        (got - expected).norm() < 1e-12,
+                        "step {step}, k {k}, m {m}: {got} vs {expected}"
+                    );
+                }
             }
-        }
-        for (c, s) in &join.weights {
-            assert!((c * c + s * s - 1.0).abs() < 1e-15);
+            for (c, s) in &join.weights {
+                assert!((c * c + s * s - 1.0).abs() < 1e-15);
+            }
         }
     }
 

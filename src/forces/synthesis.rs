@@ -45,10 +45,23 @@ impl Synthesizer {
     /// Uses a transform already planned for the grid's record length.
     pub fn with_fft(grid: &FrequencyGrid, fft: InverseFft) -> Self {
         debug_assert_eq!(fft.len(), grid.len);
+        Self::subsampled(grid, fft)
+    }
+
+    /// The series at every second sample by a transform of M = N/2 points: sum_j c_j
+    /// e^{i omega_j t} at t = 2 m dt is sum_j c_j e^{2 pi i (first + j) m / M}, and the band
+    /// lies below the grid's Nyquist index N/2 = M ([`FrequencyGrid::new`]), so the
+    /// coefficients keep their indices (`forces::refine`). Complex series only.
+    pub fn every_second_sample(grid: &FrequencyGrid, fft: InverseFft) -> Self {
+        debug_assert!(fft.len() * 2 == grid.len && grid.first + grid.count <= fft.len());
+        Self::subsampled(grid, fft)
+    }
+
+    fn subsampled(grid: &FrequencyGrid, fft: InverseFft) -> Self {
         Synthesizer {
+            first: grid.first,
             fft,
             scratch: Vec::new(),
-            first: grid.first,
             count: grid.count,
             join: None,
             pair_block: Vec::new(),
@@ -128,6 +141,10 @@ impl Synthesizer {
         cy: &[Complex64],
         out: &mut impl Extend<Complex64>,
     ) {
+        debug_assert!(
+            self.first + self.count <= self.fft.len() / 2,
+            "below the Nyquist index"
+        );
         self.size_scratch();
         let (join, block) = match &mut self.join {
             Some((join, block)) => (Some(join), block),
@@ -200,4 +217,39 @@ fn pair_transform(
     out.extend(zeros(first - 1));
     debug_assert_eq!(out.len(), start + n);
     fft.process_with_scratch(&mut out[start..], scratch);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The series at every second sample equals the direct sum over the components there,
+    /// and the full transform's samples, up to a band that reaches the Nyquist index.
+    #[test]
+    fn every_second_sample_is_the_direct_sum() {
+        let dt = 0.5;
+        for band in [(0.4, 1.9), (0.0, 6.0)] {
+            let grid = FrequencyGrid::new(0.0, 40.0, dt, band).unwrap();
+            let n = grid.len;
+            assert!(n.is_multiple_of(2), "{n}");
+            let c: Vec<Complex64> = (0..grid.count)
+                .map(|j| Complex64::new((j as f64 * 0.7).sin(), 1.0 / (1.0 + j as f64)))
+                .collect();
+            let half = FftPlanner::new().plan_fft_inverse(n / 2);
+            let mut coarse = vec![Complex64::default(); n / 2];
+            Synthesizer::every_second_sample(&grid, half).complex_series(&c, &mut coarse);
+            let mut fine = vec![Complex64::default(); n];
+            Synthesizer::new(&grid).complex_series(&c, &mut fine);
+            for (i, got) in coarse.iter().enumerate() {
+                let t = (2 * i) as f64 * dt;
+                let direct: Complex64 = c
+                    .iter()
+                    .enumerate()
+                    .map(|(j, c)| c * Complex64::from_polar(1.0, grid.omega(j) * t))
+                    .sum();
+                assert!((got - direct).norm() < 1e-12 * c.len() as f64, "{i}");
+                assert!((got - fine[2 * i]).norm() < 1e-12 * c.len() as f64, "{i}");
+            }
+        }
+    }
 }

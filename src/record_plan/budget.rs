@@ -19,7 +19,7 @@
 
 use crate::error::numbers::written;
 use crate::error::{bytes_text, Error, Result};
-use crate::forces::distinct_kinematics;
+use crate::forces::{distinct_kinematics, refine};
 use crate::hydro::bidirectional::BidirectionalSource;
 use crate::model::{DragModel, Interaction, Mode, NewmanForm, SecondOrder, WaveFrequencyMotion};
 use crate::problem::Problem;
@@ -112,6 +112,23 @@ impl MemoryEstimate {
             "the records of one block",
             series + tail,
         ));
+        if refine::admits(&grid, segments) {
+            // `forces::refine`: the quadratic records made at every second sample (in their
+            // own buffers, refined in place), by a transform of L/2 points: its twiddles and
+            // scratch in the plan, its joined block and scratch per run.
+            plan.push(term(
+                block_key,
+                block(),
+                "the planned FFT of half length",
+                C64 * l,
+            ));
+            run.push(term(
+                block_key,
+                block(),
+                "the transform of the quadratic records",
+                C64 * l,
+            ));
+        }
         run.push(term(
             "sea.n_directions",
             problem.sea.n_directions.to_string(),

@@ -5,8 +5,8 @@
 use crate::common::*;
 use rustfft::num_complex::Complex64;
 use slowdrift::forces::{
-    cross_direction_force, direction_pairs, plan_inverse_fft, transfers_on_grid, ForceRecords,
-    RecordOptions,
+    cross_direction_force, direction_pairs, plan_inverse_fft, refine, transfers_on_grid,
+    ForceRecords, RecordOptions,
 };
 use slowdrift::hydro::bidirectional::{BidirectionalSource, BidirectionalTable, DirectionPairs};
 use slowdrift::hydro::columns::ColumnArray;
@@ -124,7 +124,9 @@ fn heading_independent_mean_direction_is_the_long_crested_force_of_summed_amplit
         .collect();
     for (dof, record) in spread.iter().enumerate() {
         let scale = record.samples().iter().fold(0.0f64, |m, v| m.max(v.abs()));
-        for m in (0..clock.len).step_by(53) {
+        // Step ends (odd record samples: the records made there directly; between them they
+        // are refined, `forces::refine`, checked in the library's tests).
+        for m in (1..clock.len).step_by(54) {
             let t = clock.start_time + m as f64 * clock.dt;
             let (mut q_t, mut eta_t) = (Complex64::default(), Complex64::default());
             for (i, a) in summed.iter().enumerate() {
@@ -237,10 +239,22 @@ fn none_and_one_direction_leave_the_records_unchanged() {
     let comps = WaveComponents::generate(&problem.sea, sim.grid().clone());
     let transfers =
         transfers_on_grid(&problem.hydro.drift, &comps.grid, &comps.directions, false).unwrap();
-    // The first segment of the stream, as the simulation makes it.
-    let mut join = slowdrift::forces::Join::new(sim.segments());
-    join.begin(0, true);
-    let synth = slowdrift::forces::Synthesizer::new(&comps.grid).with_join(join);
+    // The first segment of the stream, as the simulation makes it (the quadratic records
+    // at every second sample and refined, where the band allows: `forces::refine`).
+    let segments = sim.segments();
+    let joined = |sampling| {
+        let mut join = slowdrift::forces::Join::with_sampling(segments, sampling);
+        join.begin(0, true);
+        join
+    };
+    let synth = slowdrift::forces::Synthesizer::new(&comps.grid)
+        .with_join(joined(slowdrift::forces::Sampling::RECORDS));
+    let mut work = slowdrift::forces::RecordWork::new(synth, &comps.grid);
+    assert!(refine::admits(&comps.grid, segments));
+    let half = rustfft::FftPlanner::new().plan_fft_inverse(comps.grid.len / 2);
+    let coarse = slowdrift::forces::Synthesizer::every_second_sample(&comps.grid, half)
+        .with_join(joined(refine::SAMPLING));
+    work = work.at_their_bandwidth(coarse);
     let mut plain = ForceRecords::empty();
     plain.rebuild(
         &comps,
@@ -253,7 +267,7 @@ fn none_and_one_direction_leave_the_records_unchanged() {
             gravity: GRAVITY,
             fft: None,
         },
-        &mut slowdrift::forces::RecordWork::new(synth, &comps.grid),
+        &mut work,
     );
     assert_eq!(sim.records(), &plain);
     assert!(direction_pairs(&problem, &comps.grid, &comps.directions)

@@ -337,7 +337,7 @@ fn record_means_are_the_drift_at_the_relative_heading() {
     let c = yaw_problem(10800.0, 0.0, false, range(3, -5.0, 5.0));
     let sim = Simulation::new(c.clone()).unwrap();
     // Block 0's records over their whole period N; the simulation's first segment holds
-    // them from global sample -1 (forces::stream), bit for bit.
+    // them from global sample -1 (forces::stream).
     let grid = sim.grid().clone();
     let components = WaveComponents::generate(&c.sea, grid.clone());
     let periodic = YawFollowingRecords::build(
@@ -351,13 +351,16 @@ fn record_means_are_the_drift_at_the_relative_heading() {
     .unwrap();
     let segment = &sim.records().yaw_following.as_ref().unwrap().sets;
     let n = grid.len;
+    // At the step ends (odd samples l: the records made there directly, by a transform of
+    // half the length, so to its rounding; between them refined, `forces::refine`).
     for (set, whole) in segment.iter().zip(&periodic.sets) {
         for (record, full) in set.wave_force.iter().zip(&whole.wave_force) {
-            for (l, v) in record.samples().iter().enumerate() {
-                assert_eq!(
-                    v.to_bits(),
-                    full.samples()[(l + n - 1) % n].to_bits(),
-                    "sample {l}"
+            let scale = full.samples().iter().fold(0.0f64, |m, v| m.max(v.abs()));
+            for (l, v) in record.samples().iter().enumerate().skip(1).step_by(2) {
+                let expected = full.samples()[(l + n - 1) % n];
+                assert!(
+                    (v - expected).abs() <= 1e-12 * scale,
+                    "sample {l}: {v} vs {expected}"
                 );
             }
         }
