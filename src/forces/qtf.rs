@@ -167,43 +167,28 @@ impl QtfFactorisation {
     }
 
     /// The factors interpolated linearly onto the components of `grid`; an error naming the
-    /// gap when the QTF's frequencies do not cover the grid's band.
+    /// gap when the QTF's frequencies do not cover the grid's band. The factors stay on the
+    /// QTF's own frequencies with each component's bracket (a few kB, where the factors
+    /// on the grid would take R x N_omega x 16 B per DOF); they are interpolated as the
+    /// records are made.
     pub fn on_grid(&self, grid: &FrequencyGrid) -> Result<GridQtf> {
         let band = (grid.omega(0), grid.omega(grid.count - 1));
         check_covers(&self.omegas, band)?;
-        let stencils: Vec<(usize, f64)> = (0..grid.count)
-            .map(|j| bracket(&self.omegas, grid.omega(j)))
-            .collect();
-        let n = self.omegas.len();
-        let factors = self
-            .vectors
-            .iter()
-            .map(|u| {
-                (0..self.directions)
-                    .flat_map(|g| {
-                        let u = &u[g * n..(g + 1) * n];
-                        stencils.iter().map(move |&(k, s)| {
-                            if s == 0.0 {
-                                u[k]
-                            } else {
-                                (1.0 - s) * u[k] + s * u[k + 1]
-                            }
-                        })
-                    })
-                    .collect()
-            })
-            .collect();
         Ok(GridQtf {
             eigenvalues: self.eigenvalues.clone(),
             count: grid.count,
             directions: self.directions,
-            factors,
+            brackets: (0..grid.count)
+                .map(|j| bracket(&self.omegas, grid.omega(j)))
+                .collect(),
+            vectors: self.vectors.clone(),
         })
     }
 }
 
 /// A factorised QTF on a simulation grid: T(w_i, w_j; b_k, b_l) = sum_r s_r f_r(k, w_i)
-/// f_r(l, w_j)* over the directions it spans (one, or a spread sea's jointly).
+/// f_r(l, w_j)* over the directions it spans (one, or a spread sea's jointly), f_r the
+/// factor u_r interpolated linearly from the QTF's frequencies to the grid's components.
 #[derive(Debug, Clone, PartialEq)]
 pub struct GridQtf {
     eigenvalues: Vec<f64>,
@@ -211,9 +196,12 @@ pub struct GridQtf {
     count: usize,
     /// The number of wave directions the factors span.
     directions: usize,
-    /// f_r at the directions' components, direction-major (`[k * count + j]`), one vector
-    /// per retained term.
-    factors: Vec<Vec<Complex64>>,
+    /// Per grid component: the QTF frequency k below it and the weight s of k + 1
+    /// ([`bracket`]).
+    brackets: Vec<(usize, f64)>,
+    /// u_r at the QTF's frequencies, direction-major (`[k * n + i]`), one vector per
+    /// retained term.
+    vectors: Vec<Vec<Complex64>>,
 }
 
 /// The full QTF's records of a group of consecutive wave directions: one direction, or
@@ -237,6 +225,17 @@ impl GridQtf {
         self.directions
     }
 
+    /// u_r over the QTF's frequencies for direction k (within the group).
+    fn vector(&self, r: usize, k: usize) -> &[Complex64] {
+        let n = self.vectors[r].len() / self.directions;
+        &self.vectors[r][k * n..(k + 1) * n]
+    }
+
+    /// Term r's factor f_r(k, w_j) at component j of direction k (within the group).
+    fn factor(&self, r: usize, k: usize, j: usize) -> Complex64 {
+        interpolate(self.vector(r, k), self.brackets[j])
+    }
+
     /// The represented QTF between components i and j of the first direction (for checks;
     /// O(R)).
     pub fn value(&self, i: usize, j: usize) -> Complex64 {
@@ -246,19 +245,18 @@ impl GridQtf {
     /// The represented QTF between component i of direction k and component j of
     /// direction l (`(i, k)`, `(j, l)`; directions counted within the group).
     pub fn value_between(&self, (i, k): (usize, usize), (j, l): (usize, usize)) -> Complex64 {
-        let (a, b) = (k * self.count + i, l * self.count + j);
         self.eigenvalues
             .iter()
-            .zip(&self.factors)
-            .map(|(s, f)| *s * f[a] * f[b].conj())
+            .enumerate()
+            .map(|(r, s)| *s * self.factor(r, k, i) * self.factor(r, l, j).conj())
             .sum()
     }
 
     /// Adds sum_r s_r |U_r(t_m)|^2, U_r = sum_{i,k} a_ik f_r(k, w_i) e^{i w_i t_m}, to `out`
-    /// (allocated to the record length when first needed; left alone at rank 0).
-    /// `amplitudes` are those of the directions the factors span, direction-major
-    /// (`WaveComponents::of_directions`); `coefficients` (grid count) and `series` (record
-    /// length) are scratch.
+    /// (allocated to the synthesizer's output length when first needed; left alone at rank
+    /// 0). `amplitudes` are those of the directions the factors span, direction-major
+    /// (`WaveComponents::of_directions`); `coefficients` (grid count) and `series` (the
+    /// synthesizer's output length) are scratch.
     pub fn accumulate(
         &self,
         synth: &mut Synthesizer,
@@ -267,17 +265,15 @@ impl GridQtf {
         series: &mut [Complex64],
         out: &mut Vec<f64>,
     ) {
-        for (s, f) in self.eigenvalues.iter().zip(&self.factors) {
-            for ((c, a), u) in coefficients.iter_mut().zip(amplitudes).zip(f) {
-                *c = a * u;
-            }
-            for (a, u) in amplitudes
-                .chunks(self.count)
-                .zip(f.chunks(self.count))
-                .skip(1)
-            {
-                for ((c, a), u) in coefficients.iter_mut().zip(a).zip(u) {
-                    *c += a * u;
+        for (r, s) in self.eigenvalues.iter().enumerate() {
+            for (k, a) in amplitudes.chunks(self.count).enumerate() {
+                let u = self.vector(r, k);
+                let terms = a
+                    .iter()
+                    .zip(&self.brackets)
+                    .map(|(a, &b)| a * interpolate(u, b));
+                for (c, term) in coefficients.iter_mut().zip(terms) {
+                    *c = if k == 0 { term } else { *c + term };
                 }
             }
             synth.complex_series(coefficients, series);
@@ -286,6 +282,17 @@ impl GridQtf {
                 *o += s * p.norm_sqr();
             }
         }
+    }
+}
+
+/// The linear interpolation (1 - s) u_i + s u_{i+1} of `u` at the bracket (i, s) (u_i itself
+/// at a node).
+#[inline]
+fn interpolate(u: &[Complex64], (i, s): (usize, f64)) -> Complex64 {
+    if s == 0.0 {
+        u[i]
+    } else {
+        (1.0 - s) * u[i] + s * u[i + 1]
     }
 }
 

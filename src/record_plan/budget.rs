@@ -238,15 +238,18 @@ impl MemoryEstimate {
         if model.second_order == SecondOrder::FullQtf {
             if let Some(qtf) = &problem.hydro.qtf {
                 let n = qtf.omegas.len() as f64;
-                // Per direction and DOF: at most n factors on the grid, and the
+                // Per direction and DOF: at most n factors of n values (on the QTF's own
+                // frequencies) with the grid's brackets (16 B per component), and the
                 // factorisation's matrices; jointly over the directions (the cross terms from
-                // the bi-directional QTF): at most n d factors of d g values per DOF, and
+                // the bi-directional QTF): at most n d factors of n d values per DOF, and
                 // matrices of (n d)^2.
                 // The join's tails: one per factor series.
+                let brackets = 16.0 * g;
                 let bytes = if problem.cross_terms_from_qtf() {
-                    3.0 * ((n * d) * C64 * d * g + 4.0 * (n * d) * (n * d) * C64 + n * d * tail)
+                    let m = n * d;
+                    3.0 * (5.0 * m * m * C64 + brackets + m * tail)
                 } else {
-                    d * 3.0 * (n * C64 * g + 4.0 * n * n * C64 + n * tail)
+                    d * 3.0 * (5.0 * n * n * C64 + brackets + n * tail)
                 };
                 // With yaw following: the factors again at every yaw's relative headings.
                 let copies = model
