@@ -162,19 +162,7 @@ fn simulate(args: SimulateArgs) -> Result<(), String> {
             r.discarded
         );
     }
-    let interval = written(sim.problem().run.time_step);
-    match sim.refined_force_records() {
-        Some(error) => println!(
-            "slowly varying records (wave force, damping): made every {interval} s (the step) \
-             and refined to its midpoints by 8-point interpolation, their band allowing it \
-             (estimated error {error:.1e} of their standard deviation)"
-        ),
-        None => println!(
-            "slowly varying records (wave force, damping): made every {} s (half the step \
-             {interval} s): their band is too wide to make them every step",
-            written(0.5 * sim.problem().run.time_step)
-        ),
-    }
+    println!("{}", sim.records_line());
     let outputs = run_to_end(&mut sim)?;
     let elapsed = started.elapsed();
     print_summary(&sim, &outputs, transient)?;

@@ -358,6 +358,26 @@ impl Simulation {
         })
     }
 
+    /// The summary line of [`Simulation::refined_force_records`] (`Problem::summary`'s
+    /// companion: printed by `slowdrift simulate`, logged by the FMU).
+    pub fn records_line(&self) -> String {
+        let h = self.problem.run.time_step;
+        match self.refined_force_records() {
+            Some(error) => format!(
+                "slowly varying records (wave force, damping): made every {} s (the step) and \
+                 refined to its midpoints by 8-point interpolation, their band allowing it \
+                 (estimated error {error:.1e} of their standard deviation)",
+                written(h)
+            ),
+            None => format!(
+                "slowly varying records (wave force, damping): made every {} s (half the step \
+                 {} s): their band is too wide to make them every step",
+                written(0.5 * h),
+                written(h)
+            ),
+        }
+    }
+
     /// The rank kept for every full-QTF block (empty under Newman's approximation).
     pub fn qtf_ranks(&self) -> &[QtfRank] {
         self.plan.ranks()

@@ -241,7 +241,13 @@ impl Model for Instance {
 
     /// Builds the simulation (precomputes the records) and its first outputs.
     fn exit_initialization_mode(&mut self, cx: &Context) -> Result<(), FmuError> {
-        self.simulation()?;
+        // What the run uses, as `slowdrift simulate` prints it (`Problem::summary`).
+        let simulation = self.simulation()?;
+        let mut lines = simulation.problem().summary()?;
+        lines.push(simulation.records_line());
+        for line in &lines {
+            cx.event(line);
+        }
         self.refresh_outputs()?;
         self.last_successful_time = self.experiment.start_time;
         cx.event("initialized: records precomputed");

@@ -336,6 +336,31 @@ fn assert_refusal_names(vr: u32, value: f64, named: &str) {
 /// With `loggingOn` (as libcosim and FMI Library instantiate) a run logs its events, not a
 /// line per call; the trace of every call comes when `fmi2SetDebugLogging` names `logAll`.
 /// Errors are reported with logging off.
+/// The FMU logs at initialisation what the run uses, the lines `slowdrift simulate` prints
+/// for the same configuration (its data, masses, stiffness, damping, drag, wind, motions and
+/// how its slowly varying records are sampled), in that order, then that it is initialised.
+#[test]
+fn initialisation_logs_what_the_run_uses() {
+    let fmu = Fmu::running("summary", 3, 0.2, 0.0, Some(STOP));
+    let native = native(3, 0.2, 0.0, STOP);
+    let mut expected = native.problem().summary().unwrap();
+    expected.push(native.records_line());
+    assert!(expected.iter().any(|l| l.starts_with("mass ")));
+    assert!(expected
+        .last()
+        .unwrap()
+        .contains("refined to its midpoints"));
+    expected.push("initialized: records precomputed".to_string());
+    let events: Vec<String> = fmu
+        .entries()
+        .into_iter()
+        .filter(|e| e.category == "logEvents")
+        .map(|e| e.message)
+        .skip_while(|m| !m.starts_with("data: "))
+        .collect();
+    assert_eq!(events, expected, "{}", fmu.messages());
+}
+
 #[test]
 fn logging_on_alone_logs_events_not_every_step() {
     let fmu = Fmu::running("quiet-steps", 1, 0.0, 0.0, Some(STOP));
