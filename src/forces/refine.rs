@@ -94,18 +94,22 @@ pub fn refine(samples: &mut Vec<f64>, record_len: usize) {
     let pairs = record_len.div_ceil(2);
     let head: [f64; 2 * TAPS] = std::array::from_fn(|l| samples.get(l).copied().unwrap_or(0.0));
     samples.resize(2 * pairs, 0.0);
-    for i in (0..pairs).rev() {
-        let window = if i < TAPS {
-            &head[i..i + TAPS]
-        } else {
-            &samples[i..i + TAPS]
-        };
-        let [a, b, c, d, e, f, g, h] = window.try_into().expect("8 taps");
-        let [w1, w2, w3, w4] = WEIGHTS;
-        samples[2 * i] = w1 * (d + e) + w2 * (c + f) + w3 * (b + g) + w4 * (a + h);
-        samples[2 * i + 1] = e;
+    for i in (TAPS..pairs).rev() {
+        let window: [f64; TAPS] = samples[i..i + TAPS].try_into().expect("8 taps");
+        [samples[2 * i], samples[2 * i + 1]] = midpoint_and_node(window);
+    }
+    for i in (0..TAPS.min(pairs)).rev() {
+        let window: [f64; TAPS] = head[i..i + TAPS].try_into().expect("8 taps");
+        [samples[2 * i], samples[2 * i + 1]] = midpoint_and_node(window);
     }
     samples.truncate(record_len);
+}
+
+/// The interpolated midpoint between the window's nodes 3 and 4, and node 4 itself.
+#[inline(always)]
+fn midpoint_and_node([a, b, c, d, e, f, g, h]: [f64; TAPS]) -> [f64; 2] {
+    let [w1, w2, w3, w4] = WEIGHTS;
+    [w1 * (d + e) + w2 * (c + f) + w3 * (b + g) + w4 * (a + h), e]
 }
 
 /// The relative error of the midpoint interpolation for a tone of phase theta = mu h per
