@@ -542,10 +542,10 @@ fn record_bytes(records: &ForceRecords) -> usize {
         samples += b.iter().flatten().map(|r| r.samples().len()).sum::<usize>();
     }
     let mut bytes = samples * std::mem::size_of::<f64>();
-    // Drag kinematics: rows of 1 + strips single-precision complex samples (8 bytes), each
-    // shared copy counted once per column (an upper bound).
+    // Drag kinematics: rows of single-precision floats (4 bytes), each shared copy counted
+    // once per column (an upper bound).
     for k in &records.kinematics {
-        bytes += k.len() * (1 + k.strips()) * 8;
+        bytes += k.len() * k.floats_per_sample() * std::mem::size_of::<f32>();
     }
     bytes
 }

@@ -24,26 +24,38 @@ use rustfft::num_complex::{Complex32, Complex64};
 use std::sync::Arc;
 
 /// Records of one column, sample-major: row m holds sample m of every series, so that the
-/// drag reads one contiguous row per column and stage. Series 0 is the free-surface
-/// elevation at the column centre (m, the real part), series 1 + j the horizontal velocity
-/// at strip j's stretched level as u_x + i u_y (body frame, m/s).
+/// drag reads one contiguous row per column and stage. A row is a run of floats: the
+/// free-surface elevation at the column centre (m), then the horizontal velocity at every
+/// strip's stretched level in strip order (body frame, m/s), as (u_x, u_y) pairs
+/// ([`RowLayout::Interleaved`]: 1 + 2 strips floats), or u_x alone in waves along x, where
+/// u_y = 0 on every strip ([`RowLayout::AlongX`]: 1 + strips floats, less than half the
+/// memory written at initialisation and read at every stage).
 ///
 /// The rows are stored in single precision: the transforms run in double precision, their
 /// outputs are rounded to 24 significant bits (relative 6e-8, a few 1e-7 m/s for these
 /// velocities) and the strips' velocities are recombined from the depth terms in single
 /// precision ([`DepthBasis`], truncated at a relative rms error of 1e-6), which halves the
-/// memory written at initialisation and read at every stage. The drag formulas work
-/// in double precision on the stored values. The tests bound the difference from the
-/// double-precision sums.
+/// memory again. The drag formulas work in double precision on the stored values. The
+/// tests bound the difference from the double-precision sums.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ColumnKinematics {
     pub column: Cylinder,
-    /// Series per row: 1 + strips.
-    width: usize,
+    strips: usize,
+    /// How a row holds the strips' velocities.
+    layout: RowLayout,
     /// Samples per series.
     len: usize,
     /// Shared by the columns whose records are the same ([`KinematicsKey`]).
-    rows: Arc<Vec<Complex32>>,
+    rows: Arc<Vec<f32>>,
+}
+
+/// The strips' velocities of one row as stored, in strip order, m/s.
+#[derive(Debug, Clone, Copy)]
+pub enum StripVelocities<'a> {
+    /// (u_x, u_y) of every strip.
+    Interleaved(&'a [[f32; 2]]),
+    /// u_x of every strip (waves along x: u_y = 0).
+    AlongX(&'a [f32]),
 }
 
 /// A column's kinematics at one located time.
@@ -56,7 +68,12 @@ pub struct ColumnState<'a> {
 impl ColumnKinematics {
     /// Number of strips.
     pub fn strips(&self) -> usize {
-        self.width - 1
+        self.strips
+    }
+
+    /// Floats of one row: the elevation and the strips' velocities.
+    pub fn floats_per_sample(&self) -> usize {
+        1 + self.layout.per_strip() * self.strips
     }
 
     /// The records at a located time.
@@ -78,10 +95,22 @@ impl ColumnKinematics {
         self.len == 0
     }
 
-    /// Series s at a located time.
+    /// The strips' velocities of row m.
     #[inline]
-    fn value(&self, s: usize, at: &SamplePoint) -> Complex64 {
-        at.interpolate_with(self.len, |m| widen(self.rows[m * self.width + s]))
+    fn velocities_of_row(&self, m: usize) -> StripVelocities<'_> {
+        let width = self.floats_per_sample();
+        let velocities = &self.rows[m * width + 1..(m + 1) * width];
+        match self.layout {
+            RowLayout::Interleaved => StripVelocities::Interleaved(velocities.as_chunks().0),
+            RowLayout::AlongX => StripVelocities::AlongX(velocities),
+        }
+    }
+
+    /// Float i of the rows at a located time.
+    #[inline]
+    fn value(&self, i: usize, at: &SamplePoint) -> f64 {
+        let width = self.floats_per_sample();
+        at.interpolate_with(self.len, |m| f64::from(self.rows[m * width + i]))
     }
 }
 
@@ -89,25 +118,27 @@ impl ColumnState<'_> {
     /// Free-surface elevation at the column centre, m.
     #[inline]
     pub fn eta(&self) -> f64 {
-        self.kinematics.value(0, &self.at).re
+        self.kinematics.value(0, &self.at)
     }
 
     /// Horizontal velocity (body x, y) at strip j, m/s.
     #[inline]
     pub fn velocity(&self, j: usize) -> [f64; 2] {
-        let u = self.kinematics.value(1 + j, &self.at);
-        [u.re, u.im]
+        let (k, at) = (self.kinematics, &self.at);
+        match k.layout {
+            RowLayout::Interleaved => [k.value(1 + 2 * j, at), k.value(2 + 2 * j, at)],
+            RowLayout::AlongX => [k.value(1 + j, at), 0.0],
+        }
     }
 
-    /// The strips' velocities u_x + i u_y in strip order when the time falls on a sample
-    /// (one contiguous slice of the row, single precision), m/s.
+    /// The strips' velocities when the time falls on a sample (one contiguous slice of the
+    /// row, single precision).
     #[inline]
-    pub fn velocities_on_sample(&self) -> Option<&[Complex32]> {
+    pub fn velocities_on_sample(&self) -> Option<StripVelocities<'_>> {
         let k = self.kinematics;
-        let start = self.at.index() * k.width;
         self.at
             .on_sample()
-            .then(|| &k.rows[start + 1..start + k.width])
+            .then(|| k.velocities_of_row(self.at.index()))
     }
 }
 
@@ -156,7 +187,7 @@ pub struct KinematicsWork {
     /// The key of every column, and the rows of the previous build to write again.
     keys: Vec<KinematicsKey>,
     /// (Each held once; written in place when no other records hold it.)
-    spare_rows: Vec<Arc<Vec<Complex32>>>,
+    spare_rows: Vec<Arc<Vec<f32>>>,
 }
 
 impl KinematicsWork {
@@ -237,8 +268,8 @@ impl KinematicsWork {
         }
         for (c, column) in columns.iter().enumerate() {
             let shared = (0..c).find(|&d| self.keys[d] == self.keys[c]);
-            let rows = match shared {
-                Some(d) => Arc::clone(&out[d].rows),
+            let (layout, rows) = match shared {
+                Some(d) => (out[d].layout, Arc::clone(&out[d].rows)),
                 None => {
                     let group = self.groups.iter().position(|&first| first == c);
                     let group = group.expect("a column that shares no records leads a group");
@@ -247,7 +278,8 @@ impl KinematicsWork {
             };
             out.push(ColumnKinematics {
                 column: column.clone(),
-                width: 1 + strips,
+                strips,
+                layout,
                 len: n,
                 rows,
             });
@@ -256,7 +288,7 @@ impl KinematicsWork {
         self.spare_rows.reserve(columns.len());
     }
 
-    /// The rows of one column, which leads group `group`.
+    /// The rows of one column, which leads group `group`, and their layout.
     fn rows(
         &mut self,
         components: &WaveComponents,
@@ -265,7 +297,7 @@ impl KinematicsWork {
         strips: usize,
         gravity: f64,
         synth: &mut Synthesizer,
-    ) -> Arc<Vec<Complex32>> {
+    ) -> (RowLayout, Arc<Vec<f32>>) {
         let (n, count) = (synth.output_len(), components.grid.count);
         let basis = match self
             .bases
@@ -328,8 +360,9 @@ impl KinematicsWork {
             rows = Arc::default();
         }
         let buffer = Arc::get_mut(&mut rows).expect("rows held only here");
+        let velocities = layout.per_strip() * strips;
         buffer.clear();
-        buffer.reserve((1 + strips) * n);
+        buffer.reserve((1 + velocities) * n);
         refill(&mut self.row, std::iter::repeat_n(0.0, width));
         refill(
             &mut self.samples,
@@ -338,12 +371,13 @@ impl KinematicsWork {
         // Row m: the elevation, then u_j(m) = sum_q V_jq g_q(m) for every strip j, in
         // single precision (the terms' rounding and the sum's, a few 1e-8 relative, are
         // below the storage's own and the truncation's 1e-6), summed over q in order.
-        // The row is interleaved (u_x, u_y) floats (u_x alone in waves along x, u_y = 0),
-        // recombined by the register-blocked kernel (kinematics/recombination.rs).
+        // The strips' floats are interleaved (u_x, u_y) (u_x alone in waves along x,
+        // u_y = 0), recombined by the register-blocked kernel (kinematics/recombination.rs)
+        // and copied without its padding.
         let eta = self.eta[group / 2 * n..][..n].iter();
         let real = group.is_multiple_of(2);
         for (m, eta) in eta.enumerate() {
-            buffer.push(Complex32::new(if real { eta.re } else { eta.im }, 0.0));
+            buffer.push(if real { eta.re } else { eta.im });
             for (q, g) in self.samples.iter_mut().enumerate() {
                 *g = if along_x {
                     let pair = self.terms[q / 2 * n + m];
@@ -353,15 +387,9 @@ impl KinematicsWork {
                 };
             }
             recombine_row(layout, &self.mix, &self.samples, &mut self.row);
-            if along_x {
-                let u = self.row[..strips].iter();
-                buffer.extend(u.map(|&u| Complex32::new(u, 0.0)));
-            } else {
-                let u = self.row[..2 * strips].chunks_exact(2);
-                buffer.extend(u.map(|u| Complex32::new(u[0], u[1])));
-            }
+            buffer.extend_from_slice(&self.row[..velocities]);
         }
-        rows
+        (layout, rows)
     }
 }
 
@@ -384,12 +412,6 @@ impl Extend<Complex64> for Narrowing<'_> {
 #[inline]
 fn narrow(v: Complex64) -> Complex32 {
     Complex32::new(v.re as f32, v.im as f32)
-}
-
-/// A stored sample in double precision (exact).
-#[inline]
-fn widen(v: Complex32) -> Complex64 {
-    Complex64::new(v.re.into(), v.im.into())
 }
 
 /// What a column's kinematics depend on besides the sea: its draft and, for every wave
@@ -424,6 +446,18 @@ pub fn distinct_kinematics(columns: &[Cylinder], directions: &[Direction]) -> us
     (0..keys.len())
         .filter(|&c| !keys[..c].contains(&keys[c]))
         .count()
+}
+
+/// Floats per sample of the rows of a column of `strips` strips in a sea of `directions`,
+/// at most ([`ColumnKinematics::floats_per_sample`]): 1 + strips when every direction is
+/// along x (sin b = 0, so A_y = 0 and the rows hold u_x alone), else 1 + 2 strips.
+pub fn kinematics_row_floats(strips: usize, directions: &[Direction]) -> usize {
+    let layout = if directions.iter().all(|d| d.heading.sin() == 0.0) {
+        RowLayout::AlongX
+    } else {
+        RowLayout::Interleaved
+    };
+    1 + layout.per_strip() * strips
 }
 
 /// Distance of the column centre along a wave heading, m.
@@ -538,6 +572,14 @@ mod tests {
         out
     }
 
+    /// Strip j's stored velocity (u_x, u_y), in double precision.
+    fn stored(velocities: StripVelocities, j: usize) -> [f64; 2] {
+        match velocities {
+            StripVelocities::Interleaved(u) => u[j].map(f64::from),
+            StripVelocities::AlongX(u) => [u[j].into(), 0.0],
+        }
+    }
+
     /// What single-precision storage may change, m or m/s: 2^-24 relative of values of a few
     /// units (Hs = 6 m) is 3e-7; the transforms' own error is some 1e-14.
     const STORED: f64 = 1e-6;
@@ -573,7 +615,7 @@ mod tests {
                         let [_, x, y] = expected(&c, column, z, t);
                         let [ux, uy] = state.velocity(j);
                         if let Some(row) = on_sample {
-                            assert_eq!([f64::from(row[j].re), f64::from(row[j].im)], [ux, uy]);
+                            assert_eq!(stored(row, j), [ux, uy]);
                         }
                         assert!(
                             (ux - x).abs() < STORED && (uy - y).abs() < STORED,
@@ -581,6 +623,55 @@ mod tests {
                             column.x,
                             column.y,
                         );
+                    }
+                }
+            }
+        }
+    }
+
+    /// In waves along x the rows hold the elevation and u_x alone, 1 + strips floats per
+    /// sample (against 1 + 2 strips in a spread sea; the budget's count,
+    /// [`kinematics_row_floats`], is the same), and at every sample the clock locates every
+    /// strip's velocity read from them, on the sample's slice and through `velocity` alike, is the direct
+    /// double-precision sums' to within single-precision storage, with u_y exactly 0.
+    #[test]
+    fn rows_in_waves_along_x_hold_u_x_alone() {
+        let strips = 6;
+        let columns = square(30.0);
+        for (c, floats) in [
+            (components(0.0, Spreading::LongCrested), 1 + strips),
+            (
+                components(PI / 6.0, Spreading::CosN { n: 2.0 }),
+                1 + 2 * strips,
+            ),
+        ] {
+            let along_x = floats == 1 + strips;
+            assert_eq!(kinematics_row_floats(strips, &c.directions), floats);
+            let mut synth = Synthesizer::new(&c.grid);
+            let records = column_kinematics(&c, &columns, strips, GRAVITY, &mut synth);
+            let clock = crate::forces::RecordClock {
+                start_time: c.grid.start_time,
+                dt: c.grid.dt,
+                len: c.grid.len,
+            };
+            for (record, column) in records.iter().zip(&columns) {
+                assert_eq!(record.floats_per_sample(), floats);
+                assert_eq!(record.rows.len(), floats * record.len());
+                // Every sample the clock locates (all but the last).
+                for m in 0..record.len() - 1 {
+                    let t = c.grid.start_time + m as f64 * c.grid.dt;
+                    let state = record.at(&clock.locate(t).unwrap());
+                    let row = state.velocities_on_sample().expect("on a sample");
+                    assert_eq!(matches!(row, StripVelocities::AlongX(_)), along_x);
+                    for j in 0..strips {
+                        let [ux, uy] = state.velocity(j);
+                        assert_eq!(stored(row, j), [ux, uy]);
+                        if along_x {
+                            let z = -30.0 + (j as f64 + 0.5) * 30.0 / strips as f64;
+                            let [_, x, y] = direct(&c, column, z, t);
+                            assert_eq!((uy, y), (0.0, 0.0));
+                            assert!((ux - x).abs() < STORED, "t {t} strip {j}: {ux} vs {x}");
+                        }
                     }
                 }
             }
@@ -639,8 +730,8 @@ mod tests {
                 let mut direct = Vec::new();
                 synth.append_two_real_series(&cx, &cy, &mut direct);
                 for (m, u) in direct.iter().enumerate() {
-                    let stored = widen(records[0].rows[m * (1 + strips) + 1 + j]);
-                    error += (stored - u).norm_sqr();
+                    let [x, y] = stored(records[0].velocities_of_row(m), j);
+                    error += (Complex64::new(x, y) - u).norm_sqr();
                     power += u.norm_sqr();
                 }
             }

@@ -22,7 +22,9 @@ mod yaw_following;
 pub use depth_basis::{DepthBasis, KINEMATICS_TOLERANCE};
 pub use directional::{add_cross_terms, cross_direction_force, direction_pairs, CrossWork};
 pub use gust::GustStream;
-pub use kinematics::{distinct_kinematics, ColumnKinematics, KinematicsWork};
+pub use kinematics::{
+    distinct_kinematics, kinematics_row_floats, ColumnKinematics, KinematicsWork,
+};
 pub use motion::{motion_transfers, MotionRecords, MotionTransfer, RaoAlong, WholeMotion};
 pub use newman::NewmanBuilder;
 pub use qtf::{GridQtf, QtfFactorisation, QtfGroup};

@@ -9,10 +9,10 @@
 //!
 //! with |.| the horizontal vector norm. Everything is in the body frame.
 
-use super::kinematics::{ColumnKinematics, ColumnState};
+use super::kinematics::{ColumnKinematics, ColumnState, StripVelocities};
 use super::record::SamplePoint;
 use crate::model::DragModel;
-use rustfft::num_complex::{Complex32, Complex64};
+use rustfft::num_complex::Complex64;
 
 /// Drag on the body, body frame: (Fx, Fy, Mz).
 ///
@@ -74,7 +74,12 @@ const CHUNK: usize = 32;
 fn strip_sum(state: &ColumnState, strips: usize, offset: [f64; 2]) -> [f64; 2] {
     let mut sum = [0.0; 2];
     match state.velocities_on_sample() {
-        Some(velocities) => {
+        Some(StripVelocities::Interleaved(velocities)) => {
+            for chunk in velocities.chunks(CHUNK) {
+                add_w_abs_w(chunk, offset, &mut sum);
+            }
+        }
+        Some(StripVelocities::AlongX(velocities)) => {
             for chunk in velocities.chunks(CHUNK) {
                 add_w_abs_w(chunk, offset, &mut sum);
             }
@@ -94,7 +99,7 @@ fn strip_sum(state: &ColumnState, strips: usize, offset: [f64; 2]) -> [f64; 2] {
     sum
 }
 
-/// Adds sum_j w_j |w_j| (w_j = (Re u_j, Im u_j) - offset) over at most [`CHUNK`] strips to
+/// Adds sum_j w_j |w_j| (w_j = u_j - offset) over at most [`CHUNK`] strips to
 /// `sum`, in order. The norms are taken first, in a loop of their own that the compiler
 /// packs (sqrtpd: the square roots are much of the drag's time). The norm is
 /// sqrt(x^2 + y^2), not `hypot`: velocities cannot overflow the squares, and libm's hypot
@@ -115,16 +120,24 @@ fn add_w_abs_w<T: Velocity>(velocities: &[T], offset: [f64; 2], sum: &mut [f64; 
     }
 }
 
-/// A horizontal velocity u_x + i u_y as stored (single precision, on a sample) or
-/// interpolated (double precision), read in double precision.
+/// A horizontal velocity (u_x, u_y) as stored (single precision, on a sample: the pair, or
+/// u_x alone in waves along x) or interpolated (double precision, u_x + i u_y), read in
+/// double precision.
 trait Velocity: Copy {
     fn xy(&self) -> [f64; 2];
 }
 
-impl Velocity for Complex32 {
+impl Velocity for [f32; 2] {
     #[inline]
     fn xy(&self) -> [f64; 2] {
-        [self.re.into(), self.im.into()]
+        [self[0].into(), self[1].into()]
+    }
+}
+
+impl Velocity for f32 {
+    #[inline]
+    fn xy(&self) -> [f64; 2] {
+        [(*self).into(), 0.0]
     }
 }
 

@@ -5,12 +5,13 @@
 //! sizes they are made with: L samples per record (the stream segment's span at h/2), G
 //! wave components (the band on the grid), D directions, Y yaw-following headings, C drag
 //! columns of S strips, the full QTF's n data frequencies. Each term is an upper bound of
-//! what the code allocates for it (f64 = 8 bytes, complex f64 = 16, the kinematics rows in
-//! single precision, 8 per complex sample); `tests/all/budget.rs` checks that the estimate
-//! bounds the peak the counting allocator measures while a simulation is made, and is
-//! within a small factor of it, over configurations that stress each term. The data the
-//! problem already holds (its drift table, QTF, bi-directional table) are not counted: they
-//! were bounded by the file-size limit when read.
+//! what the code allocates for it (f64 = 8 bytes, complex f64 = 16, the kinematics in
+//! single precision: 4 per float of a row, 8 per complex sample of a depth term's series);
+//! `tests/all/budget.rs` checks that the estimate bounds the peak the counting allocator
+//! measures while a simulation is made, and is within a small factor of it, over
+//! configurations that stress each term. The data the problem already holds (its drift
+//! table, QTF, bi-directional table) are not counted: they were bounded by the file-size
+//! limit when read.
 //!
 //! Once the estimate is within the limit, the memory is reserved and released again
 //! ([`MemoryEstimate::check`]): a process whose own limit (`setrlimit`, a container) leaves
@@ -19,7 +20,7 @@
 
 use crate::error::numbers::written;
 use crate::error::{bytes_text, Error, Result};
-use crate::forces::{distinct_kinematics, refine};
+use crate::forces::{distinct_kinematics, kinematics_row_floats, refine};
 use crate::hydro::bidirectional::BidirectionalSource;
 use crate::model::{DragModel, Interaction, Mode, NewmanForm, SecondOrder, WaveFrequencyMotion};
 use crate::problem::Problem;
@@ -28,7 +29,9 @@ use crate::sea_state::FrequencyGrid;
 
 const F64: f64 = 8.0;
 const C64: f64 = 16.0;
-/// Bytes of one sample of a kinematics row (single-precision complex).
+/// Bytes of one float of a kinematics row.
+const F32: f64 = 4.0;
+/// Bytes of one sample of a depth term's series (single-precision complex).
 const C32: f64 = 8.0;
 /// Records of the force (3) and the damping (3 x 3) per set, and the elevation.
 const FORCE_AND_DAMPING: f64 = 12.0;
@@ -222,14 +225,16 @@ impl MemoryEstimate {
         if model.drag != DragModel::Off {
             let c = distinct_kinematics(&problem.platform.columns, &directions) as f64;
             let s = model.strips_per_column as f64;
+            let row = kinematics_row_floats(model.strips_per_column, &directions) as f64;
             // Per distinct column (`forces::distinct_kinematics`): its rows (the elevation and
-            // every strip); the depth terms' series (at most one per strip) and the depth
-            // kernel's matrices while its basis is made.
+            // every strip's velocity, `forces::kinematics_row_floats`); the depth terms'
+            // series (at most one per strip) and the depth kernel's matrices while its basis
+            // is made.
             run.push(term(
                 "model.strips_per_column",
                 model.strips_per_column.to_string(),
                 format!("the kinematics of {c} distinct columns of {s} strips"),
-                c * (1.0 + s) * C32 * l
+                c * row * F32 * l
                     + (1.0 + s) * C32 * l
                     + c * ((s + 6.0) * C64 * g + 4.0 * s * s * F64)
                     + c * (1.0 + s) * tail,

@@ -5,7 +5,8 @@
 //! the kinematics module, which says what they are.
 //!
 //! Layout. A row is a run of floats, interleaved (u_x, u_y) per strip (or u_x alone in
-//! waves along x, where u_y = 0), padded with zeros to whole blocks of [`LANES`] floats.
+//! waves along x, where u_y = 0), padded with zeros to whole blocks of [`LANES`] floats
+//! (the records store it after the elevation, without the padding).
 //! The weights ([`lay_out_weights`]) are stored in chunks of [`BLOCKS_AT_ONCE`] blocks,
 //! each chunk term-major, then block, as [`recombine_row`] reads them; each weight twice in
 //! an interleaved row (for u_x and u_y), once along x.
@@ -29,7 +30,7 @@ pub(super) enum RowLayout {
 
 impl RowLayout {
     /// Floats per strip.
-    fn per_strip(self) -> usize {
+    pub(super) fn per_strip(self) -> usize {
         match self {
             RowLayout::Interleaved => 2,
             RowLayout::AlongX => 1,
