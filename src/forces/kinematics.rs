@@ -28,8 +28,8 @@ use std::sync::Arc;
 /// free-surface elevation at the column centre (m), then the horizontal velocity at every
 /// strip's stretched level in strip order (body frame, m/s), as (u_x, u_y) pairs
 /// ([`RowLayout::Interleaved`]: 1 + 2 strips floats), or u_x alone in waves along x, where
-/// u_y = 0 on every strip ([`RowLayout::AlongX`]: 1 + strips floats, less than half the
-/// memory written at initialisation and read at every stage).
+/// u_y = 0 on every strip ([`RowLayout::AlongX`]: 1 + strips floats, half the memory of a
+/// row of complex samples, written at initialisation and read at every stage).
 ///
 /// The rows are stored in single precision: the transforms run in double precision, their
 /// outputs are rounded to 24 significant bits (relative 6e-8, a few 1e-7 m/s for these
