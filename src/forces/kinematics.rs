@@ -497,6 +497,15 @@ mod tests {
     use crate::sea_state::{FrequencyGrid, SeaState, Spectrum, Spreading};
     use std::f64::consts::PI;
 
+    /// The clock of records over the grid's whole period (no stream).
+    fn whole_period(grid: &FrequencyGrid) -> crate::forces::RecordClock {
+        crate::forces::RecordClock {
+            start_time: grid.start_time,
+            dt: grid.dt,
+            len: grid.len,
+        }
+    }
+
     const GRAVITY: f64 = 9.80665;
 
     fn square(draft: f64) -> Vec<Cylinder> {
@@ -597,11 +606,7 @@ mod tests {
             let columns = square(30.0);
             let mut synth = Synthesizer::new(&c.grid);
             let records = column_kinematics(&c, &columns, strips, GRAVITY, &mut synth);
-            let clock = crate::forces::RecordClock {
-                start_time: c.grid.start_time,
-                dt: c.grid.dt,
-                len: c.grid.len,
-            };
+            let clock = whole_period(&c.grid);
             for (record, column) in records.iter().zip(&columns) {
                 assert_eq!(record.strips(), strips);
                 for t in [0.0, 137.5, 401.0, 250.3, 0.2] {
@@ -649,11 +654,7 @@ mod tests {
             assert_eq!(kinematics_row_floats(strips, &c.directions), floats);
             let mut synth = Synthesizer::new(&c.grid);
             let records = column_kinematics(&c, &columns, strips, GRAVITY, &mut synth);
-            let clock = crate::forces::RecordClock {
-                start_time: c.grid.start_time,
-                dt: c.grid.dt,
-                len: c.grid.len,
-            };
+            let clock = whole_period(&c.grid);
             for (record, column) in records.iter().zip(&columns) {
                 assert_eq!(record.floats_per_sample(), floats);
                 assert_eq!(record.rows.len(), floats * record.len());

@@ -345,18 +345,13 @@ impl ForceRecords {
                 );
             }
             for group in options.full_qtf.unwrap_or_default() {
-                let amplitudes = components.of_directions(
-                    group.first_direction..group.first_direction + group.dofs[0].directions(),
+                group.accumulate(
+                    synth,
+                    components,
+                    &mut work.qtf_coefficients,
+                    &mut work.qtf_series,
+                    &mut force,
                 );
-                for (out, t) in force.iter_mut().zip(&group.dofs) {
-                    t.accumulate(
-                        synth,
-                        amplitudes,
-                        &mut work.qtf_coefficients,
-                        &mut work.qtf_series,
-                        out,
-                    );
-                }
             }
             if refining {
                 let records = force.iter_mut().chain(damping.iter_mut().flatten());

@@ -33,7 +33,7 @@
 use super::synthesis::Synthesizer;
 use crate::error::{Error, Result};
 use crate::hydro::qtf::{check_covers, check_tolerance};
-use crate::sea_state::FrequencyGrid;
+use crate::sea_state::{FrequencyGrid, WaveComponents};
 use nalgebra::{DMatrix, SymmetricEigen};
 use rustfft::num_complex::Complex64;
 
@@ -212,6 +212,27 @@ pub struct QtfGroup {
     pub first_direction: usize,
     /// Surge, sway, yaw, each spanning the same directions.
     pub dofs: [GridQtf; 3],
+}
+
+impl QtfGroup {
+    /// Adds the group's force records (surge, sway, yaw) to `force`
+    /// ([`GridQtf::accumulate`] per DOF, on the amplitudes of the group's directions);
+    /// `coefficients` (grid count) and `series` (the synthesizer's output length) are
+    /// scratch.
+    pub fn accumulate(
+        &self,
+        synth: &mut Synthesizer,
+        components: &WaveComponents,
+        coefficients: &mut [Complex64],
+        series: &mut [Complex64],
+        force: &mut [Vec<f64>; 3],
+    ) {
+        let first = self.first_direction;
+        let amplitudes = components.of_directions(first..first + self.dofs[0].directions());
+        for (out, t) in force.iter_mut().zip(&self.dofs) {
+            t.accumulate(synth, amplitudes, coefficients, series, out);
+        }
+    }
 }
 
 impl GridQtf {

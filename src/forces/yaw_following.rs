@@ -261,21 +261,16 @@ impl YawFollowingRecords {
                 builder.accumulate_damping(synth, form, amplitudes, e, transfer, &mut damping);
             }
             for group in full_qtf.map_or(&[][..], |q| &q[j][..]) {
-                let amplitudes = components.of_directions(
-                    group.first_direction..group.first_direction + group.dofs[0].directions(),
-                );
                 work.qtf_coefficients
                     .resize(components.grid.count, Complex64::default());
                 work.qtf_series.resize(len, Complex64::default());
-                for (out, t) in force.iter_mut().zip(&group.dofs) {
-                    t.accumulate(
-                        synth,
-                        amplitudes,
-                        &mut work.qtf_coefficients,
-                        &mut work.qtf_series,
-                        out,
-                    );
-                }
+                group.accumulate(
+                    synth,
+                    components,
+                    &mut work.qtf_coefficients,
+                    &mut work.qtf_series,
+                    &mut force,
+                );
             }
             set.wave_force = force.map(record_or_zero);
             set.damping = with_damping.then(|| damping.map(|row| row.map(record_or_zero)));
