@@ -229,7 +229,9 @@ impl ForceRecords {
     /// Builds every record from the wave components and the per-direction coefficients
     /// (from [`transfers_on_grid`]), over the grid's period (N samples). Cost: one FFT per
     /// direction for the elevation, one or two per non-zero coefficient record and direction
-    /// (with the full QTF: one per retained term, DOF and direction instead, for the force),
+    /// (with the full QTF: one per retained term, DOF and direction instead, for the force;
+    /// `build` makes them all at every sample: the route the stream's records at their
+    /// bandwidth are checked against),
     /// per group of columns that share their kinematics (same phases) one per retained depth
     /// term and half a transform for the elevation (`forces::kinematics`).
     /// `options.full_qtf`, when given, covers every direction of `components`.
@@ -269,8 +271,10 @@ impl ForceRecords {
 
     /// [`ForceRecords::build`] into these records, reusing their buffers and `work`'s:
     /// through a joined synthesizer, the records of the stream segment its join is building
-    /// (`forces::stream`: the segment's record length, on the segment's clock). The
-    /// yaw-following, wave-frequency motion and gust records are left as they are.
+    /// (`forces::stream`: the segment's record length, on the segment's clock); with
+    /// [`RecordWork::at_their_bandwidth`], the force and damping at every second sample,
+    /// refined (`forces::refine`). The yaw-following, wave-frequency motion and gust records
+    /// are left as they are.
     pub fn rebuild(
         &mut self,
         components: &WaveComponents,
