@@ -114,9 +114,9 @@ const HOSTILE: [Case; 6] = [
         name: "memoryLimit = 0.01 (10 MB) with the default's 32 MB",
         set: |f, _| assert_eq!(f.set_real(vr::MEMORY_LIMIT, 0.01), fmi2Status::fmi2OK),
         expected: &[
-            "invalid FMU parameter memoryLimit = 0.01 (10.000 MB): the records need 31",
+            "invalid FMU parameter memoryLimit = 0.01 (10.000 MB): the records need ",
             "from [model] strips_per_column = 20 in the FMU's embedded configuration",
-            "raise memoryLimit to at least 0.032 (GB)",
+            "raise memoryLimit to at least ",
         ],
     },
     Case {
@@ -191,6 +191,37 @@ fn hostile_sizes_are_refused_with_fmi2_error_and_the_process_lives_on() {
     let fmu = Fmu::running("after", 1, 0.0, 0.0, Some(100.0));
     fmu.step_with(0.0, 1.0, [0.0; 3]);
     std::fs::remove_dir_all(dir).ok();
+}
+
+/// The memory the FMU's refusal states is the estimate of the configuration it runs
+/// (`MemoryEstimate` of the embedded default, computed here), and the limit it advises is
+/// the next 0.001 GB above it.
+#[test]
+fn a_memory_refusal_states_the_estimate_of_what_runs() {
+    let fmu = Fmu::new("estimate");
+    assert_eq!(fmu.setup(0.0, Some(3600.0)), fmi2Status::fmi2OK);
+    assert_eq!(fmu.set_real(vr::MEMORY_LIMIT, 0.01), fmi2Status::fmi2OK);
+    assert_eq!(fmu.init(), fmi2Status::fmi2Error, "{}", fmu.messages());
+    let message = fmu.last_message().message;
+    let number_after = |prefix: &str| -> f64 {
+        let rest = &message[message.find(prefix).expect(prefix) + prefix.len()..];
+        let end = rest.find(' ').unwrap_or(rest.len());
+        rest[..end]
+            .parse()
+            .unwrap_or_else(|e| panic!("{prefix}: {e} in {message}"))
+    };
+    let estimate = slowdrift::MemoryEstimate::of(&native_problem(1, 0.0, 0.0, 3600.0)).unwrap();
+    let bytes = estimate.plan + estimate.per_run;
+    let stated = number_after("the records need ") * 1e6;
+    assert!(
+        (stated - bytes).abs() <= 1e3,
+        "{stated} B vs {bytes} B: {message}"
+    );
+    let advised = number_after("raise memoryLimit to at least ");
+    assert!(
+        advised >= bytes / 1e9 && advised <= bytes / 1e9 + 0.001,
+        "{advised}: {message}"
+    );
 }
 
 /// The environment variable that makes the test below its own child.
