@@ -348,33 +348,56 @@ fn pack(
     fmu_path: &Path,
 ) -> Result<(), String> {
     let fmu_reference = String::from_utf8_lossy(&read(&root.join("docs/fmu.md"))?).into_owned();
+    let mut extra = Vec::with_capacity(files.len() + 1);
+    for name in files {
+        extra.push(archive::Entry {
+            path: format!("resources/{name}"),
+            data: read(&resources.join(name))?,
+        });
+    }
+    extra.push(archive::Entry {
+        path: "documentation/index.html".into(),
+        data: documentation("SlowDrift", &fmu_reference).into_bytes(),
+    });
+    let terminals = root.join("modelDescription/terminalsAndIcons.xml");
+    let entries = fmu_entries(
+        MODEL_IDENTIFIER,
+        (xml, binaries),
+        library,
+        extra,
+        &terminals,
+    )?;
+    write_fmu(fmu_path, &entries)
+}
+
+/// The entries of an FMU of this project: its model description `xml` and its library
+/// (`binaries/<binaries>/<model>.so`) first, then `extra`, and for FMI 3.0 (`binaries`
+/// [`FMI3_BINARIES`]) the terminal file `terminals` as [`TERMINALS`] last.
+fn fmu_entries(
+    model: &str,
+    (xml, binaries): (Vec<u8>, &str),
+    library: &Path,
+    extra: Vec<archive::Entry>,
+    terminals: &Path,
+) -> Result<Vec<archive::Entry>, String> {
     let mut entries = vec![
         archive::Entry {
             path: "modelDescription.xml".into(),
             data: xml,
         },
         archive::Entry {
-            path: format!("binaries/{binaries}/{MODEL_IDENTIFIER}.so"),
+            path: format!("binaries/{binaries}/{model}.so"),
             data: read(library)?,
         },
     ];
-    for name in files {
-        entries.push(archive::Entry {
-            path: format!("resources/{name}"),
-            data: read(&resources.join(name))?,
-        });
-    }
-    entries.push(archive::Entry {
-        path: "documentation/index.html".into(),
-        data: documentation("SlowDrift", &fmu_reference).into_bytes(),
-    });
+    entries.extend(extra);
     if binaries == FMI3_BINARIES {
         entries.push(archive::Entry {
             path: TERMINALS.into(),
-            data: read(&root.join("modelDescription/terminalsAndIcons.xml"))?,
+            data: read(terminals)?,
         });
     }
-    write_fmu(fmu_path, &entries)
+    Ok(entries)
 }
 
 /// Writes the archive of `entries` at `fmu_path` (an FMU or an SSP package: both are ZIP

@@ -25,8 +25,8 @@
 //! C ABI, gives the same four outputs at every second bit for bit.
 
 use crate::{
-    archive, cargo_build, cdylib_in_messages, file_uri, master, master3, out_dir_in_messages, read,
-    write_fmi3_description, write_fmu, FMI2_BINARIES, FMI3_BINARIES, TERMINALS,
+    archive, cargo_build, cdylib_in_messages, file_uri, fmu_entries, master, master3,
+    out_dir_in_messages, read, write_fmi3_description, write_fmu, FMI2_BINARIES, FMI3_BINARIES,
 };
 use std::io::Read;
 use std::path::{Path, PathBuf};
@@ -57,16 +57,9 @@ pub fn pack_and_check(root: &Path, target: &Path) -> Result<(), String> {
     let (moordyn, licence) = moordyn_library(&target.join("moordyn-wheel"))?;
     let fmu_path = target.join("fmu").join(format!("{MODEL_IDENTIFIER}.fmu"));
     let coupling = String::from_utf8_lossy(&read(&root.join("docs/coupling.md"))?).into_owned();
+    let terminals = root.join("mooring/terminalsAndIcons.xml");
     let entries = |xml: Vec<u8>, binaries: &str| -> Result<Vec<archive::Entry>, String> {
-        let mut entries = vec![
-            archive::Entry {
-                path: "modelDescription.xml".into(),
-                data: xml,
-            },
-            archive::Entry {
-                path: format!("binaries/{binaries}/{MODEL_IDENTIFIER}.so"),
-                data: read(&library)?,
-            },
+        let extra = vec![
             archive::Entry {
                 path: format!("binaries/{binaries}/{LIBRARY_FILE}"),
                 data: moordyn.clone(),
@@ -84,13 +77,13 @@ pub fn pack_and_check(root: &Path, target: &Path) -> Result<(), String> {
                 data: licence.clone(),
             },
         ];
-        if binaries == FMI3_BINARIES {
-            entries.push(archive::Entry {
-                path: TERMINALS.into(),
-                data: read(&root.join("mooring/terminalsAndIcons.xml"))?,
-            });
-        }
-        Ok(entries)
+        fmu_entries(
+            MODEL_IDENTIFIER,
+            (xml, binaries),
+            &library,
+            extra,
+            &terminals,
+        )
     };
     let xml = read(&root.join("mooring/modelDescription.xml"))?;
     write_fmu(&fmu_path, &entries(xml, FMI2_BINARIES)?)?;
