@@ -19,6 +19,12 @@
 //! `$OUT_DIR/fmi3/modelDescription.xml` (`slowdrift-fmi-xml`: every value reference kept),
 //! and its constants, `$OUT_DIR/fmi3/numbering.rs` (`crate::fmi2::fmi3_description`); a
 //! description the generator cannot convert fails the build with its error.
+//!
+//! It also writes the embedded default platform's database (`src/hydro/default_platform.json`)
+//! as MessagePack, `$OUT_DIR/default_platform.msgpack`: the same values (each number read
+//! correctly rounded, then stored as its 8 bytes; the drift table's 5 364 nodes as arrays,
+//! without their field names), which the library reads without parsing a decimal number
+//! (`hydro::default_platform`; a test compares the two readings bit for bit).
 
 use quick_xml::events::{BytesStart, Event};
 use quick_xml::{Reader, XmlVersion};
@@ -33,6 +39,8 @@ const XML_PATH: &str = "modelDescription/modelDescription.xml";
 const VERSION_SCRIPT: &str = "fmi/src/fmi2/exports.map";
 /// The modes' one definition, read here through the `modes!` below.
 const MODES_PATH: &str = "src/model/modes.rs";
+/// The embedded default platform's database (`hydro::default_platform`).
+const DEFAULT_PLATFORM: &str = "src/hydro/default_platform.json";
 /// What a mode parameter's description says before its codes.
 const CODES_FOLLOW: &str = ", a code: ";
 
@@ -120,6 +128,7 @@ fn main() {
     println!("cargo:rerun-if-changed={XML_PATH}");
     println!("cargo:rerun-if-changed=build.rs");
     println!("cargo:rerun-if-changed={MODES_PATH}");
+    println!("cargo:rerun-if-changed={DEFAULT_PLATFORM}");
     export_only_fmi2_symbols();
 
     let xml = std::fs::read_to_string(XML_PATH)
@@ -140,6 +149,46 @@ fn main() {
     write(&fmi3_dir.join("modelDescription.xml"), &fmi3);
     let numbering = slowdrift_fmi_xml::rust_constants(&slowdrift_fmi_xml::Numbering::SAME);
     write(&fmi3_dir.join("numbering.rs"), &numbering);
+    default_platform_as_messagepack(&out_dir.join("default_platform.msgpack"));
+}
+
+/// The fields of a drift-table node (`hydro::io::database::DriftPoint`), in its order: serde
+/// reads a struct from an array of its fields in order.
+const DRIFT_POINT_FIELDS: [&str; 6] = ["omega", "heading", "surge", "sway", "yaw", "damping"];
+
+/// The embedded default platform's database as MessagePack: maps with their field names, as
+/// the JSON has them, but for the drift table's nodes, arrays of [`DRIFT_POINT_FIELDS`]
+/// (a third less to read).
+fn default_platform_as_messagepack(path: &std::path::Path) {
+    let text = std::fs::read_to_string(DEFAULT_PLATFORM)
+        .unwrap_or_else(|e| unreadable(&format!("cannot read {DEFAULT_PLATFORM}: {e}")));
+    let mut value: serde_json::Value = serde_json::from_str(&text)
+        .unwrap_or_else(|e| unreadable(&format!("{DEFAULT_PLATFORM}: {e}")));
+    let Some(drift) = value.get_mut("drift").and_then(|d| d.as_array_mut()) else {
+        unreadable(&format!("{DEFAULT_PLATFORM} has no drift table"));
+    };
+    for node in drift {
+        let fields = node
+            .as_object()
+            .filter(|o| o.len() == DRIFT_POINT_FIELDS.len());
+        let array = fields.and_then(|o| {
+            DRIFT_POINT_FIELDS
+                .iter()
+                .map(|f| o.get(*f).cloned())
+                .collect::<Option<Vec<_>>>()
+        });
+        let Some(array) = array else {
+            unreadable(&format!(
+                "{DEFAULT_PLATFORM}: a drift node without exactly the fields \
+                 {DRIFT_POINT_FIELDS:?}: {node}"
+            ));
+        };
+        *node = serde_json::Value::Array(array);
+    }
+    let bytes = rmp_serde::to_vec_named(&value)
+        .unwrap_or_else(|e| unreadable(&format!("{DEFAULT_PLATFORM} as MessagePack: {e}")));
+    std::fs::write(path, bytes)
+        .unwrap_or_else(|e| unreadable(&format!("cannot write {}: {e}", path.display())));
 }
 
 fn write(path: &std::path::Path, text: &str) {
@@ -159,6 +208,11 @@ fn export_only_fmi2_symbols() {
             script.display()
         );
     }
+}
+
+/// Fails the build on the embedded default platform's database.
+fn unreadable(message: &str) -> ! {
+    panic!("the embedded default platform's database: {message}");
 }
 
 fn fail(message: &str) -> ! {

@@ -77,7 +77,7 @@ pub fn resolve_hydro(
         DriftSource::DefaultPlatform => {
             let (text, name) = (default_platform::DATABASE, default_platform::DATABASE_NAME);
             let hydro = from_database(
-                HydroDatabase::parse(text, name)?,
+                default_platform::without_bidirectional()?,
                 (text, name),
                 false,
                 platform,

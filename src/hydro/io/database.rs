@@ -177,7 +177,8 @@ pub struct MassProperties {
     pub yaw_inertia: f64,
 }
 
-/// One node of the drift table.
+/// One node of the drift table. (The embedded default's MessagePack twin holds each node as
+/// an array of these fields in this order: `DRIFT_POINT_FIELDS` in build.rs.)
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct DriftPoint {
