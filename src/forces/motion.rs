@@ -126,6 +126,32 @@ impl<'a> RaoAlong<'a> {
     }
 }
 
+/// Which of the six DOFs move in the sea of `power` (expected power per component, summed
+/// over the directions) through `transfers` (one yaw's, per direction): those whose
+/// sum_j p_j sum_k |X_ki(omega_j)|^2 (a bound on the expected variance, p_j holding every
+/// direction's power) exceeds [`STILL`]^2 times the largest DOF's. A DOF below it (sway, roll and yaw of a symmetric platform in head seas, whose
+/// radiation-diffraction RAOs are 1e-15 of surge's) moves less than the rounding a transform
+/// shared with a moving DOF already gives it, so its records are zero and its transforms
+/// are not made. The choice depends on the spectrum and the RAOs only, not on the seed: every
+/// segment of a simulation asks the stream for the same series in the same order.
+fn moving_dofs(transfers: &[MotionTransfer], power: &[f64]) -> [bool; 6] {
+    let mut variance = [0.0f64; 6];
+    for transfer in transfers {
+        for (xi, p) in transfer.rao.iter().zip(power) {
+            for (v, x) in variance.iter_mut().zip(xi) {
+                *v += p * x.norm_sqr();
+            }
+        }
+    }
+    let largest = variance.iter().copied().fold(0.0, f64::max);
+    variance.map(|v| v > STILL * STILL * largest)
+}
+
+/// The rms of a DOF's motion, relative to the largest DOF's (in their SI units, m and rad),
+/// below which its records are zero ([`moving_dofs`]): far below a transform's rounding
+/// (about 1e-16 of the series sharing it) times its size, and any motion of consequence.
+const STILL: f64 = 1e-12;
+
 /// The wave-frequency motion of one body yaw: position and velocity of the six DOFs, body
 /// frame (m, rad; m/s, rad/s).
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -200,8 +226,17 @@ impl MotionRecords {
                     *v = i_omega(j) * c;
                 }
             }
-            for pair in 0..6 {
-                let (x, y) = (2 * pair, 2 * pair + 1);
+            // The series of the DOFs that move, two to a transform (positions, then
+            // velocities, in DOF order); the others' records are zero.
+            let moving = moving_dofs(directions, components.expected_power());
+            let (mut series, mut count) = ([0; 12], 0);
+            for x in (0..12).filter(|&x| moving[x % 6]) {
+                series[count] = x;
+                count += 1;
+            }
+            // (An even count: a DOF's position and velocity move together.)
+            for pair in series[..count].chunks_exact(2) {
+                let (x, y) = (pair[0], pair[1]);
                 work.series.clear();
                 synth.append_two_real_series(
                     &work.coefficients[x],
@@ -210,6 +245,12 @@ impl MotionRecords {
                 );
                 refill(set.record_mut(x), work.series.iter().map(|c| c.re));
                 refill(set.record_mut(y), work.series.iter().map(|c| c.im));
+            }
+            for x in (0..12).filter(|&x| !moving[x % 6]) {
+                refill(
+                    set.record_mut(x),
+                    std::iter::repeat_n(0.0, synth.output_len()),
+                );
             }
         }
     }
@@ -357,6 +398,102 @@ mod tests {
             weight: 1.0,
         }];
         assert!(motion_transfers(&rao, &grid, &outside, 0.0).is_err());
+    }
+
+    /// DOFs whose RAOs are below [`STILL`] of the largest have zero records and no
+    /// transform; the others (one just above it among them) are the direct sums
+    /// Re sum_j c_j e^{i omega_j t} (positions) and Re sum_j i omega_j c_j e^{i omega_j t}
+    /// (velocities), c_j = a_j X(omega_j), at every sample.
+    #[test]
+    fn still_dofs_have_zero_records_and_the_others_their_direct_sums() {
+        use crate::sea_state::{SeaState, Spectrum, Spreading};
+        let grid = FrequencyGrid::new(0.0, 300.0, 0.5, (0.3, 1.4)).unwrap();
+        let sea = SeaState {
+            spectrum: Spectrum::Jonswap {
+                hs: 6.0,
+                tp: 10.0,
+                gamma: None,
+            },
+            spreading: Spreading::LongCrested,
+            mean_direction: 0.0,
+            n_directions: 1,
+            seed: 11,
+            band: None,
+        };
+        let components = WaveComponents::generate(&sea, grid);
+        let grid = &components.grid;
+        // Relative sizes: surge 1, sway 1e-15 (still), heave 0.7, roll 1e-11 (moves),
+        // pitch 0.02, yaw 1e-14 (still).
+        let sizes = [1.0, 1e-15, 0.7, 1e-11, 0.02, 1e-14];
+        let omegas: Vec<f64> = (0..12).map(|n| 0.2 + 0.12 * n as f64).collect();
+        let rao = Rao {
+            values: omegas
+                .iter()
+                .map(|&w| {
+                    vec![std::array::from_fn(|i| {
+                        Complex64::from_polar(sizes[i] / (1.0 + w), w * (i + 1) as f64)
+                    })]
+                })
+                .collect(),
+            omegas,
+            headings: vec![0.0],
+        };
+        let direction = [Direction {
+            heading: 0.0,
+            weight: 1.0,
+        }];
+        let transfers = vec![motion_transfers(&rao, grid, &direction, 0.0).unwrap()];
+        assert_eq!(
+            moving_dofs(&transfers[0], components.expected_power()),
+            [true, false, true, true, true, false]
+        );
+        let mut records = MotionRecords::default();
+        let mut synth = Synthesizer::new(grid);
+        records.rebuild(
+            &components,
+            &transfers,
+            &mut synth,
+            &mut MotionWork::default(),
+        );
+        let set = &records.sets[0];
+        let amplitudes = components.of_direction(0);
+        // A transform shared with a larger DOF rounds a small one by about 1e-16 of the
+        // larger: each DOF within 1e-9 of its own size plus 1e-13 of the largest record.
+        let largest_of_all = set.position[0]
+            .samples()
+            .iter()
+            .chain(set.velocity[0].samples())
+            .fold(0.0f64, |m, x| m.max(x.abs()));
+        for i in 0..6 {
+            let (position, velocity) = (set.position[i].samples(), set.velocity[i].samples());
+            if sizes[i] < STILL {
+                assert!(
+                    position.iter().chain(velocity).all(|&x| x == 0.0),
+                    "dof {i}"
+                );
+                continue;
+            }
+            let mut worst: f64 = 0.0;
+            let mut largest: f64 = 0.0;
+            for m in (0..position.len()).step_by(37) {
+                let t = grid.start_time + m as f64 * grid.dt;
+                let (mut x, mut v) = (0.0, 0.0);
+                for (j, (a, xi)) in amplitudes.iter().zip(&transfers[0][0].rao).enumerate() {
+                    let w = grid.omega(j);
+                    let c = a * xi[i] * Complex64::from_polar(1.0, w * t);
+                    x += c.re;
+                    v += (Complex64::new(0.0, w) * c).re;
+                }
+                worst = worst
+                    .max((position[m] - x).abs())
+                    .max((velocity[m] - v).abs());
+                largest = largest.max(x.abs()).max(v.abs());
+            }
+            assert!(
+                largest > 0.0 && worst < 1e-9 * largest + 1e-13 * largest_of_all,
+                "dof {i}: {worst:e} of {largest:e}"
+            );
+        }
     }
 
     /// The rates are the time derivatives of the totals: central differences of a motion
