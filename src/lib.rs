@@ -71,4 +71,4 @@ pub use error::{Error, Result};
 pub use problem::Problem;
 pub use record_plan::{MemoryEstimate, PlanKey, QtfRank, RecordPlan, Term};
 pub use scenario::Scenario;
-pub use simulation::{bounds, reserve_recorded, Outputs, Simulation, Snapshot};
+pub use simulation::{bounds, reserve_recorded, run_steps, Outputs, Simulation, Snapshot};

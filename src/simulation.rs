@@ -7,7 +7,7 @@
 
 pub mod bounds;
 mod recording;
-pub use recording::reserve_recorded;
+pub use recording::{reserve_recorded, run_steps};
 
 pub use crate::dynamics::Held;
 use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};

@@ -1,10 +1,11 @@
-//! Subcommands of the `slowdrift` tool other than `simulate`.
+//! The subcommands of the `slowdrift` tool.
 
 pub mod args;
 pub mod hydro;
 pub mod interrupt;
 pub mod montecarlo;
 pub mod out;
+pub mod simulate;
 pub mod study;
 
 /// Why a command failed: the message `main` prints and the exit status.
