@@ -51,7 +51,7 @@ pub fn summarize(record: &[f64], dt: f64, transient: f64) -> Result<Summary> {
     require_positive("stats.dt", dt)?;
     require_non_negative("stats.transient", transient)?;
     if record.is_empty() {
-        return Err(Error::invalid("stats.record", "[]", "is empty"));
+        return Err(empty_record());
     }
     require_finite_record(record)?;
 
@@ -81,6 +81,11 @@ pub fn summarize(record: &[f64], dt: f64, transient: f64) -> Result<Summary> {
 /// Whether sample m (at t = m dt) is past the transient: t >= transient.
 fn kept_at(m: usize, dt: f64, transient: f64) -> bool {
     m as f64 * dt >= transient
+}
+
+/// The refusal of an empty record.
+fn empty_record() -> Error {
+    Error::invalid("stats.record", "[]", "is empty")
 }
 
 /// The refusal of a transient that leaves none of a record's `len` samples (len > 0).
@@ -158,10 +163,24 @@ impl RunningSummary {
         self.min = self.min.min(x);
     }
 
+    /// Refuses, before any sample is taken, a record of `samples` samples that
+    /// [`RunningSummary::finish`] would refuse for its length: none (empty), or none kept by
+    /// the transient (the last, at t = (samples - 1) dt, before it); in finish's words. A run
+    /// of a known number of samples checks so before it is made.
+    pub fn require_kept(&self, samples: usize) -> Result<()> {
+        match samples.checked_sub(1) {
+            None => Err(empty_record()),
+            Some(last) if !kept_at(last, self.dt, self.transient) => {
+                Err(no_sample_left(samples, self.dt, self.transient))
+            }
+            Some(_) => Ok(()),
+        }
+    }
+
     /// The summary of the samples taken.
     pub fn finish(&self) -> Result<Summary> {
         if self.taken == 0 {
-            return Err(Error::invalid("stats.record", "[]", "is empty"));
+            return Err(empty_record());
         }
         if let Some((m, x)) = self.not_finite {
             return Err(not_finite(m, x));
@@ -468,6 +487,34 @@ mod tests {
                 a.unwrap_err().to_string(),
                 b.unwrap_err().to_string(),
                 "{record:?} {dt} {transient}"
+            );
+        }
+    }
+
+    /// `require_kept` of a length refuses exactly the records of that length that `finish`
+    /// refuses for their length, in the same words: the transient on the last sample (t = 2 s
+    /// of 3 at 1 s; 3 x 0.1 s rounds above 0.3 s), just past it, one sample, none.
+    #[test]
+    fn the_running_summary_refuses_a_length_as_finish_does() {
+        let cases: [(usize, f64, f64, bool); 8] = [
+            (3, 1.0, 2.0, true),
+            (3, 1.0, 2.000_001, false),
+            (4, 0.1, 0.3, true),
+            (11, 0.1, 1.0, true),
+            (1001, 1.0, 1000.3, false),
+            (1, 1.0, 0.0, true),
+            (1, 1.0, 1e-9, false),
+            (0, 1.0, 0.0, false),
+        ];
+        for (len, dt, transient, kept) in cases {
+            let summary = RunningSummary::new(dt, transient).unwrap();
+            let checked = summary.require_kept(len);
+            let finished = running(&vec![0.5; len], dt, transient);
+            assert_eq!(checked.is_ok(), kept, "{len} {dt} {transient}");
+            assert_eq!(
+                checked.map_err(|e| e.to_string()),
+                finished.map(|_| ()).map_err(|e| e.to_string()),
+                "{len} {dt} {transient}"
             );
         }
     }
