@@ -79,6 +79,15 @@ pub fn run(args: SimulateArgs) -> Result<(), String> {
         );
     }
     let steps = slowdrift::run_steps(&config).map_err(|e| e.to_string())?;
+    // The summary's rule on the run's samples (t = m dt, m = 0 ..= steps), before the run: a
+    // transient past the last sample, within the duration's rounding to whole steps, leaves
+    // no sample, refused now rather than after the run (and its CSV). The steps fit a usize:
+    // the problem's check keeps the end within 4.5e9 steps.
+    let summary =
+        RunningSummary::new(config.run.time_step, transient).map_err(|e| e.to_string())?;
+    summary
+        .require_kept(steps as usize + 1)
+        .map_err(|e| e.to_string())?;
     let started = std::time::Instant::now();
     let mut sim = Simulation::new(config).map_err(|e| e.to_string())?;
     for r in sim.qtf_ranks() {
@@ -97,39 +106,47 @@ pub fn run(args: SimulateArgs) -> Result<(), String> {
         );
     }
     println!("{}", sim.records_line());
-    let mut rows = SummaryRows::of(&sim, transient)?;
-    let what = match &args.out {
-        None => {
-            run_to_end(&mut sim, steps, &mut |o| {
-                rows.take(o);
-                Ok(())
-            })
-            .map_err(|stop| stop.message(&sim))?;
-            "records and stepping"
-        }
+    let mut rows = SummaryRows::of(&sim, summary, transient);
+    let (summaries, what) = match &args.out {
+        None => run_to_end(&mut sim, steps, &mut |o| {
+            rows.take(o);
+            Ok(())
+        })
+        .and_then(|()| rows.finish())
+        .map(|summaries| (summaries, "records and stepping"))
+        .map_err(|stop| stop.message(&sim))?,
         Some(path) => {
-            let mut stopped = None;
+            // The summaries are finished before the file is renamed over `--out`: a run that
+            // cannot be summarised leaves no CSV either.
+            let (mut stopped, mut finished) = (None, None);
             let written = slowdrift::files::replace(path, |w| {
                 writeln!(w, "{CSV_HEADER}")?;
                 let run = run_to_end(&mut sim, steps, &mut |o| {
                     rows.take(o);
                     write_row(w, o)
-                });
-                run.map_err(|stop| {
-                    let error = std::io::Error::other("the run stopped");
-                    stopped = Some(stop);
-                    error
                 })
+                .and_then(|()| rows.finish());
+                match run {
+                    Ok(summaries) => {
+                        finished = Some(summaries);
+                        Ok(())
+                    }
+                    Err(stop) => {
+                        stopped = Some(stop);
+                        Err(std::io::Error::other("the run stopped"))
+                    }
+                }
             });
             if let Some(stop) = stopped {
                 return Err(stop.message(&sim));
             }
             written.map_err(|e| e.to_string())?;
-            "records, stepping and the CSV"
+            let summaries = finished.ok_or("the run wrote its CSV without its summary")?;
+            (summaries, "records, stepping and the CSV")
         }
     };
     let elapsed = started.elapsed();
-    rows.print()?;
+    rows.print(&summaries);
     println!("{steps} steps in {:.3} s ({what})", elapsed.as_secs_f64());
     if let Some(path) = &args.out {
         println!("time series written to {}", path.display());
@@ -143,6 +160,8 @@ enum Stop {
     Run(slowdrift::error::Error),
     /// Writing a sample failed.
     Write(std::io::Error),
+    /// The samples taken cannot be summarised.
+    Summary(slowdrift::error::Error),
 }
 
 impl Stop {
@@ -152,6 +171,7 @@ impl Stop {
         match self {
             Stop::Run(e) => sim.problem().explain(e),
             Stop::Write(e) => e.to_string(),
+            Stop::Summary(e) => e.to_string(),
         }
     }
 }
@@ -186,8 +206,9 @@ struct SummaryRows {
 
 impl SummaryRows {
     /// Surge, sway and yaw; with wave-frequency motion its six DOFs (inertial axes) and the
-    /// totals; with wind the wind speed at the force's height and the wind force in X.
-    fn of(sim: &Simulation, transient: f64) -> Result<Self, String> {
+    /// totals; with wind the wind speed at the force's height and the wind force in X; each
+    /// summarised as `summary` (none taken yet) summarises, after `transient` s.
+    fn of(sim: &Simulation, summary: RunningSummary, transient: f64) -> Self {
         let dt = sim.problem().run.time_step;
         let deg = 180.0 / std::f64::consts::PI;
         let mut rows: Vec<(String, f64, &str, Dofs, usize)> = ["surge", "sway", "yaw"]
@@ -220,16 +241,13 @@ impl SummaryRows {
             ));
             rows.push(("Fx_wind".into(), 1.0, "N", |o| &o.forces.wind, 0));
         }
-        let summaries = rows
-            .iter()
-            .map(|_| RunningSummary::new(dt, transient).map_err(|e| e.to_string()))
-            .collect::<Result<_, _>>()?;
-        Ok(SummaryRows {
+        let summaries = vec![summary; rows.len()];
+        SummaryRows {
             rows,
             summaries,
             transient,
             dt,
-        })
+        }
     }
 
     /// Takes one sample's outputs.
@@ -239,13 +257,16 @@ impl SummaryRows {
         }
     }
 
-    /// Prints the table.
-    fn print(&self) -> Result<(), String> {
-        let summaries = self
-            .summaries
+    /// The rows' summaries of the samples taken.
+    fn finish(&self) -> Result<Vec<Summary>, Stop> {
+        self.summaries
             .iter()
-            .map(|s| s.finish().map_err(|e| e.to_string()))
-            .collect::<Result<Vec<Summary>, String>>()?;
+            .map(|s| s.finish().map_err(Stop::Summary))
+            .collect()
+    }
+
+    /// Prints the table of the rows' `summaries`.
+    fn print(&self, summaries: &[Summary]) {
         println!(
             "statistics after a transient of {} s ({} samples at {} s):",
             readable(self.transient),
@@ -256,7 +277,7 @@ impl SummaryRows {
             "{:<18} {:>14} {:>14} {:>14} {:>14}",
             "DOF", "mean", "rms", "max", "min"
         );
-        for ((name, _, unit, _, _), s) in self.rows.iter().zip(&summaries) {
+        for ((name, _, unit, _, _), s) in self.rows.iter().zip(summaries) {
             println!(
                 "{:<18} {:>14.4} {:>14.4} {:>14.4} {:>14.4}",
                 format!("{name} [{unit}]"),
@@ -266,7 +287,6 @@ impl SummaryRows {
                 s.min
             );
         }
-        Ok(())
     }
 }
 

@@ -129,6 +129,61 @@ fn simulate_refuses_a_run_without_end() {
     }
 }
 
+/// A transient past the run's last sample but within its duration (1000.4 s at 1 s: 1000
+/// steps, the last sample at t = 1000 s) is refused before the run is made, in the words of
+/// the summary that would have no sample, and leaves no CSV (not even a temporary one); a
+/// transient on that last sample keeps just it.
+#[test]
+fn simulate_refuses_a_transient_past_the_last_sample_before_the_run() {
+    let (config, _) = example_with_duration("1000.4");
+    let dir = std::env::temp_dir().join(format!("slowdrift-cli-last-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("series.csv");
+    let run = |transient: &str| {
+        slowdrift(&[
+            "simulate",
+            "--config",
+            config.to_str().unwrap(),
+            "--transient",
+            transient,
+            "--out",
+            out.to_str().unwrap(),
+        ])
+    };
+    let refused = run("1000.3");
+    let (stdout, stderr) = (
+        String::from_utf8_lossy(&refused.stdout),
+        String::from_utf8_lossy(&refused.stderr),
+    );
+    assert_eq!(refused.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains(
+            "leaves no sample: the record has 1001 samples at dt = 1 s, the last at t = 1000 s"
+        ),
+        "{stderr}"
+    );
+    // Refused before the records are made.
+    assert!(!stdout.contains("slowly varying records"), "{stdout}");
+    let left: Vec<_> = std::fs::read_dir(&dir).unwrap().collect();
+    assert!(left.is_empty(), "{left:?}");
+
+    let kept = run("1000");
+    let stdout = String::from_utf8_lossy(&kept.stdout);
+    assert_eq!(
+        kept.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&kept.stderr)
+    );
+    assert!(stdout.contains("(1 samples at 1 s)"), "{stdout}");
+    assert_eq!(
+        std::fs::read_to_string(&out).unwrap().lines().count(),
+        1 + 1001
+    );
+    std::fs::remove_file(&config).ok();
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 /// `simulate` keeps none of its steps: a run of 300 000 steps, whose outputs alone (384 bytes
 /// a sample) would take 115 MB, runs in an address space of 100 MB (its records, about
 /// 30 MB, and the program), with and without `--out`, and summarises every kept sample.
