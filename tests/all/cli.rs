@@ -184,6 +184,68 @@ fn simulate_refuses_a_transient_past_the_last_sample_before_the_run() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// The printed summary is the two-pass `summarize` of the series `--out` writes: surge and
+/// sway in m, yaw in degrees, the samples at t >= 2000 s of 10 800 s at 1 s (8801), each
+/// printed value within half a unit of its 4th decimal of the CSV's.
+#[test]
+fn simulate_summarises_the_series_it_writes() {
+    let config = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/example.toml");
+    let out =
+        std::env::temp_dir().join(format!("slowdrift-cli-summary-{}.csv", std::process::id()));
+    let run = slowdrift(&[
+        "simulate",
+        "--config",
+        config.to_str().unwrap(),
+        "--transient",
+        "2000",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    assert!(
+        stdout.contains("statistics after a transient of 2000 s (8801 samples at 1 s):"),
+        "{stdout}"
+    );
+    let csv = std::fs::read_to_string(&out).unwrap();
+    std::fs::remove_file(&out).ok();
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    let column = |name: &str, scale: f64| -> Vec<f64> {
+        let at = header.iter().position(|h| *h == name).unwrap();
+        rows.iter().map(|r| r[at] * scale).collect()
+    };
+    for (row, name, scale) in [
+        ("surge [m]", "X_m", 1.0),
+        ("sway [m]", "Y_m", 1.0),
+        ("yaw [deg]", "theta_rad", 180.0 / std::f64::consts::PI),
+    ] {
+        let s = slowdrift::stats::summarize(&column(name, scale), 1.0, 2000.0).unwrap();
+        assert_eq!(s.samples, 8801);
+        let printed: Vec<f64> = stdout
+            .lines()
+            .find_map(|l| l.strip_prefix(row))
+            .unwrap_or_else(|| panic!("no {row} in {stdout}"))
+            .split_whitespace()
+            .map(|v| v.parse().unwrap())
+            .collect();
+        for (p, x) in printed.iter().zip([s.mean, s.rms, s.max, s.min]) {
+            assert!(
+                (p - x).abs() <= 0.5e-4 * (1.0 + 1e-9),
+                "{row}: {printed:?} {s:?}"
+            );
+        }
+        assert_eq!(printed.len(), 4);
+    }
+}
+
 /// `simulate` keeps none of its steps: a run of 300 000 steps, whose outputs alone (384 bytes
 /// a sample) would take 115 MB, runs in an address space of 100 MB (its records, about
 /// 30 MB, and the program), with and without `--out`, and summarises every kept sample.
