@@ -32,7 +32,7 @@ pub use record::{Record, RecordClock, SamplePoint};
 pub use stream::{Join, Sampling, Segments};
 pub use synthesis::{plan_inverse_fft, InverseFft, Synthesizer};
 pub use transfer::{transfers_on_grid, DirectionTransfer};
-pub use viscous::drag_force;
+pub use viscous::{drag_force, drag_forces, Isa, LaneDrag, LANES};
 pub use yaw_following::{
     yaw_transfers, SlowRecords, YawFollowingRecords, YawGrid, YawPoint, YawWork,
 };

@@ -9,6 +9,10 @@
 //!
 //! with |.| the horizontal vector norm. Everything is in the body frame.
 
+mod lanes;
+
+pub use lanes::{drag_forces, Isa, LaneDrag, LANES};
+
 use super::kinematics::{ColumnKinematics, ColumnState, StripVelocities};
 use super::record::SamplePoint;
 use crate::model::DragModel;
@@ -30,21 +34,64 @@ pub fn drag_force(
     if model == DragModel::Off {
         return total;
     }
-    let [u, v, r] = velocity;
     for col in columns {
-        let c = &col.column;
-        let slow = [u - r * c.y - current[0], v + r * c.x - current[1]];
         let state = col.at(at);
-        let strips = col.strips();
+        let strips = ColumnStrips::of(col, &state, model, water_density, velocity, current);
+        let fast = strip_sum(&state, col.strips(), strips.offset);
+        strips.add_force(&mut total, col, model, fast);
+    }
+    total
+}
+
+/// One column's terms of E&S 8, 9 that are the same on all its strips, at one instant.
+#[derive(Debug, Clone, Copy)]
+struct ColumnStrips {
+    /// The column's slow velocity relative to the current, U (body x, y), m/s.
+    slow: [f64; 2],
+    /// What the strips' sum takes from each u_j: U in the combined model (w = u - U), 0 in
+    /// the separate one (its fast term u|u|).
+    offset: [f64; 2],
+    /// 1/2 rho D dz, dz the wetted length (keel to the free surface) over the strips.
+    scale: f64,
+}
+
+impl ColumnStrips {
+    #[inline]
+    fn of(
+        col: &ColumnKinematics,
+        state: &ColumnState,
+        model: DragModel,
+        water_density: f64,
+        velocity: [f64; 3],
+        current: [f64; 2],
+    ) -> Self {
+        let c = &col.column;
+        let [u, v, r] = velocity;
+        let slow = [u - r * c.y - current[0], v + r * c.x - current[1]];
         let wetted = (c.draft + state.eta()).max(0.0);
-        let dz = wetted / strips as f64;
-        let scale = 0.5 * water_density * c.diameter * dz;
-        // The combined model's w = u - U; the separate model's fast term u|u|.
+        let dz = wetted / col.strips() as f64;
         let offset = match model {
             DragModel::Combined { .. } => slow,
             _ => [0.0; 2],
         };
-        let fast = strip_sum(&state, strips, offset);
+        ColumnStrips {
+            slow,
+            offset,
+            scale: 0.5 * water_density * c.diameter * dz,
+        }
+    }
+
+    /// Adds the column's force (Fx, Fy) and its moment about the origin to `total`, from the
+    /// strips' sum `fast` = sum_j w_j |w_j| (w_j = u_j - offset).
+    #[inline]
+    fn add_force(
+        &self,
+        total: &mut [f64; 3],
+        col: &ColumnKinematics,
+        model: DragModel,
+        fast: [f64; 2],
+    ) {
+        let (c, slow, strips) = (&col.column, self.slow, col.strips());
         let f = match model {
             DragModel::Off => [0.0; 2],
             DragModel::Combined { cd } => [cd * fast[0], cd * fast[1]],
@@ -57,11 +104,10 @@ pub fn drag_force(
                 [-s * slow[0] + cdl * fast[0], -s * slow[1] + cdl * fast[1]]
             }
         };
-        total[0] += scale * f[0];
-        total[1] += scale * f[1];
-        total[2] += scale * (c.x * f[1] - c.y * f[0]);
+        total[0] += self.scale * f[0];
+        total[1] += self.scale * f[1];
+        total[2] += self.scale * (c.x * f[1] - c.y * f[0]);
     }
-    total
 }
 
 /// Strips handled at a time by [`add_w_abs_w`]: their norms (and, between samples, their
