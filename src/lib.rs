@@ -42,8 +42,8 @@
 //! # Ok::<(), slowdrift::Error>(())
 //! ```
 
-// Unsafe code: only `fmi2::exports` (the C ABI), the logger callback in `fmi2::logger` and
-// the one `mallopt` call of `allocator` allow it (checked by tests/all/architecture.rs).
+// Unsafe code: only the files docs/architecture.md lists allow it (the C ABI, the one
+// `mallopt` call of `allocator`, the drag's AVX2 lanes; checked by tests/all/architecture.rs).
 #![deny(unsafe_code)]
 
 pub mod allocator;
@@ -71,4 +71,6 @@ pub use error::{Error, Result};
 pub use problem::Problem;
 pub use record_plan::{MemoryEstimate, PlanKey, QtfRank, RecordPlan, Term};
 pub use scenario::Scenario;
-pub use simulation::{bounds, reserve_recorded, run_steps, Outputs, Simulation, Snapshot};
+pub use simulation::{
+    bounds, reserve_recorded, run_steps, Lockstep, Outputs, Simulation, Snapshot,
+};

@@ -6,7 +6,9 @@
 //! Time is always origin + count * step from an integer count, never an accumulated sum.
 
 pub mod bounds;
+mod lanes;
 mod recording;
+pub use lanes::Lockstep;
 pub use recording::{reserve_recorded, run_steps};
 
 pub use crate::dynamics::Held;
@@ -479,35 +481,53 @@ impl Simulation {
     /// One RK4 step of the position and velocity from time t over h.
     fn rk4(&mut self, t: f64, h: f64, external: [f64; 3]) -> Result<()> {
         self.ensure_segment(t)?;
+        let y = self.state_vector();
+        let held = self.held(external);
+        let next = rk4_step(t, &y, h, |time, y| self.derivative(time, y, &held))?;
+        self.end_step(t, h, &external, &next)
+    }
+
+    /// The state (X, Y, theta, X', Y', theta') as RK4 takes it.
+    fn state_vector(&self) -> [f64; 6] {
         let s = &self.state;
-        let y = [
+        [
             s.position[0],
             s.position[1],
             s.position[2],
             s.velocity[0],
             s.velocity[1],
             s.velocity[2],
-        ];
-        let (model, records) = (&self.model, &self.segment.records);
-        let held = Held {
+        ]
+    }
+
+    /// What the outside holds over a step with the external force `external`.
+    fn held(&self, external: [f64; 3]) -> Held {
+        Held {
             force: external,
-            wind_speed: s.wind_input,
-        };
-        let next = rk4_step(t, &y, h, |time, y| {
-            let at = records.clock.locate(time)?;
-            let yaw = records.locate_yaw(time, y[2])?;
-            let q = [y[0], y[1], y[2]];
-            let qd = [y[3], y[4], y[5]];
-            let qdd = model.acceleration(records, &at, &yaw, &q, &qd, &held);
-            Ok::<_, Error>([qd[0], qd[1], qd[2], qdd[0], qdd[1], qdd[2]])
-        })?;
+            wind_speed: self.state.wind_input,
+        }
+    }
+
+    /// The state's derivative (q', q'') at `time` for the state `y` (RK4's right-hand side).
+    fn derivative(&self, time: f64, y: &[f64; 6], held: &Held) -> Result<[f64; 6]> {
+        let records = &self.segment.records;
+        let at = records.clock.locate(time)?;
+        let yaw = records.locate_yaw(time, y[2])?;
+        let (q, qd) = ([y[0], y[1], y[2]], [y[3], y[4], y[5]]);
+        let qdd = self.model.acceleration(records, &at, &yaw, &q, &qd, held);
+        Ok([qd[0], qd[1], qd[2], qdd[0], qdd[1], qdd[2]])
+    }
+
+    /// Ends a step from `t` over `h` on the state `next`: refused if it is unphysical or
+    /// leaves the yaw-following records (the state unchanged), else taken.
+    fn end_step(&mut self, t: f64, h: f64, external: &[f64; 3], next: &[f64; 6]) -> Result<()> {
         let (position, velocity) = ([next[0], next[1], next[2]], [next[3], next[4], next[5]]);
         if let Some(what) = bounds::violation(&position, &velocity) {
-            return Err(self.unphysical(t, h, &external, format!("the state became {what}")));
+            return Err(self.unphysical(t, h, external, format!("the state became {what}")));
         }
         // The state a step ends on stays inside the yaw-following records, so `outputs`
         // can always read them.
-        records.locate_yaw(t + h, next[2])?;
+        self.segment.records.locate_yaw(t + h, next[2])?;
         self.state.position = position;
         self.state.velocity = velocity;
         Ok(())

@@ -14,7 +14,9 @@
 
 use crate::error::numbers::written_matrix;
 use crate::error::{Error, Result};
-use crate::forces::{drag_force, ForceRecords, SamplePoint, YawPoint};
+use crate::forces::{
+    drag_force, drag_forces, ForceRecords, Isa, LaneDrag, SamplePoint, YawPoint, LANES,
+};
 use crate::model::DragModel;
 use crate::problem::Problem;
 use crate::wind::WindForce;
@@ -94,6 +96,22 @@ impl Rotation {
     }
 }
 
+/// The rotation S(theta) at an instant, and the body's velocity S^T q' (u, v, r) and the
+/// current S^T u_c (x, y, 0) in the body frame.
+#[derive(Debug, Clone, Copy)]
+pub struct BodyFrame {
+    rotation: Rotation,
+    velocity: Vector3<f64>,
+    current: Vector3<f64>,
+}
+
+impl BodyFrame {
+    /// The current's (x, y), as the drag takes it.
+    fn drag_current(&self) -> [f64; 2] {
+        [self.current[0], self.current[1]]
+    }
+}
+
 impl SlowDriftModel {
     /// Builds the model, with the mass and added mass of [`Problem::inertia`]; refuses a
     /// singular mass matrix M + A.
@@ -139,7 +157,9 @@ impl SlowDriftModel {
         qd: &[f64; 3],
         wind_input: f64,
     ) -> ForceBreakdown {
-        self.forces_rotated(&Rotation::new(q[2]), records, at, yaw, q, qd, wind_input)
+        let body = self.body_frame(q, qd);
+        let drag = self.drag(records, at, &body);
+        self.forces_with_drag(&body, drag, records, at, yaw, q, wind_input)
     }
 
     /// The acceleration q'' at a located instant and yaw for state (q, q') and what the
@@ -154,9 +174,73 @@ impl SlowDriftModel {
         qd: &[f64; 3],
         held: &Held,
     ) -> [f64; 3] {
+        let body = self.body_frame(q, qd);
+        let drag = self.drag(records, at, &body);
+        self.acceleration_with_drag(&body, drag, records, at, yaw, q, held)
+    }
+
+    /// The state's velocity and the current in the body frame, S^T q' and S^T u_c, with
+    /// S(theta): what the drag takes.
+    pub fn body_frame(&self, q: &[f64; 3], qd: &[f64; 3]) -> BodyFrame {
         let rotation = Rotation::new(q[2]);
+        BodyFrame {
+            rotation,
+            velocity: rotation.to_body(&Vector3::from(*qd)),
+            current: rotation.to_body(&Vector3::new(self.current[0], self.current[1], 0.0)),
+        }
+    }
+
+    /// The Morison drag f_drag (body frame) at a located instant for the body's velocity
+    /// `body`.
+    fn drag(&self, records: &ForceRecords, at: &SamplePoint, body: &BodyFrame) -> [f64; 3] {
+        drag_force(
+            &records.kinematics,
+            at,
+            self.drag,
+            self.water_density,
+            body.velocity.into(),
+            body.drag_current(),
+        )
+    }
+
+    /// What [`drag_forces`] takes of one lane: its records at a located instant, its
+    /// velocity `body`.
+    pub fn lane_drag<'a>(
+        &self,
+        records: &'a ForceRecords,
+        at: &SamplePoint,
+        body: &BodyFrame,
+    ) -> LaneDrag<'a> {
+        LaneDrag {
+            columns: &records.kinematics,
+            at: *at,
+            velocity: body.velocity.into(),
+            current: body.drag_current(),
+        }
+    }
+
+    /// The drag of up to [`LANES`] seeds of this model at one instant, each as
+    /// [`SlowDriftModel::acceleration`] takes it, bit for bit (`forces::drag_forces`).
+    pub fn lane_drags(&self, lanes: &[LaneDrag], isa: Isa) -> [[f64; 3]; LANES] {
+        drag_forces(lanes, self.drag, self.water_density, isa)
+    }
+
+    /// [`SlowDriftModel::acceleration`] with the body frame and the drag `drag` (body frame)
+    /// already taken.
+    #[allow(clippy::too_many_arguments)]
+    pub fn acceleration_with_drag(
+        &self,
+        body: &BodyFrame,
+        drag: [f64; 3],
+        records: &ForceRecords,
+        at: &SamplePoint,
+        yaw: &YawPoint,
+        q: &[f64; 3],
+        held: &Held,
+    ) -> [f64; 3] {
+        let rotation = body.rotation;
         let total = self
-            .forces_rotated(&rotation, records, at, yaw, q, qd, held.wind_speed)
+            .forces_with_drag(body, drag, records, at, yaw, q, held.wind_speed)
             .total(&held.force);
         let body = rotation.to_body(&Vector3::from(total));
         rotation.to_inertial(&(self.inverse_mass * body)).into()
@@ -171,20 +255,20 @@ impl SlowDriftModel {
         (rotation.to_inertial(&(self.inverse_mass * body)) * h).into()
     }
 
-    /// [`SlowDriftModel::forces`] with S(theta) already taken.
+    /// [`SlowDriftModel::forces`] with the body frame and the drag (body frame) already
+    /// taken.
     #[allow(clippy::too_many_arguments)]
-    fn forces_rotated(
+    fn forces_with_drag(
         &self,
-        rotation: &Rotation,
+        body: &BodyFrame,
+        drag: [f64; 3],
         records: &ForceRecords,
         at: &SamplePoint,
         yaw: &YawPoint,
         q: &[f64; 3],
-        qd: &[f64; 3],
         wind_input: f64,
     ) -> ForceBreakdown {
-        let velocity = rotation.to_body(&Vector3::from(*qd));
-        let current = rotation.to_body(&Vector3::new(self.current[0], self.current[1], 0.0));
+        let (rotation, velocity, current) = (body.rotation, body.velocity, body.current);
         let wave = Vector3::from(records.wave_force_at(at, yaw));
         let damping = match records.damping_at(at, yaw) {
             Some(b) => {
@@ -193,14 +277,7 @@ impl SlowDriftModel {
             }
             None => Vector3::zeros(),
         };
-        let drag = Vector3::from(drag_force(
-            &records.kinematics,
-            at,
-            self.drag,
-            self.water_density,
-            velocity.into(),
-            [current[0], current[1]],
-        ));
+        let drag = Vector3::from(drag);
         let quadratic = velocity.map(|v| v * v.abs());
         let extra = -(self.linear_damping * velocity) - self.quadratic_damping * quadratic;
         let stiffness = -(self.stiffness * Vector3::from(*q));
