@@ -2,7 +2,8 @@
 //!
 //! A [`Case`] is a complete [`Problem`] (its seed is replaced per run) with the start-up
 //! transient to drop. [`run_seed`] simulates one (case, seed) and summarises surge, sway and
-//! yaw after the transient ([`DofStats`]); [`run_jobs`] runs a list of (case, seed) jobs on
+//! yaw after the transient ([`DofStats`]); [`run_jobs`] runs a list of (case, seed) jobs, seeds of
+//! one case in lanes (`lanes`, docs/architecture.md#seeds-in-lanes), on
 //! scoped threads that take the next job from a shared counter and hand each result to the
 //! calling thread as it finishes, and stops early, abandoning the runs in flight, when its
 //! `stop` flag is set (the CLI sets it on SIGINT and SIGTERM; the library installs no signal
@@ -14,6 +15,7 @@
 //! [`runs_file`] writes and reads the per-run CSV that makes a campaign resumable.
 
 pub mod cases;
+mod lanes;
 pub mod runs_file;
 
 use crate::error::{Error, Result};
@@ -95,12 +97,23 @@ fn run_seed_unless(
     seed: u64,
     stop: &AtomicBool,
 ) -> Result<Option<[DofStats; 3]>> {
-    let mut problem = case.problem.clone();
-    problem.sea.seed = seed;
-    let dt = problem.run.time_step;
-    let Some(records) = positions(Simulation::with_plan(problem, plan)?, stop)? else {
+    let Some(records) = positions(seed_simulation(case, plan, seed)?, stop)? else {
         return Ok(None);
     };
+    summarize_positions(case, &records).map(Some)
+}
+
+/// The simulation of `case` with `seed`, its records from `plan`.
+fn seed_simulation(case: &Case, plan: &Arc<RecordPlan>, seed: u64) -> Result<Simulation> {
+    let mut problem = case.problem.clone();
+    problem.sea.seed = seed;
+    Simulation::with_plan(problem, plan)
+}
+
+/// Summarises a run's records of X, Y and theta after the case's transient (yaw in
+/// degrees).
+fn summarize_positions(case: &Case, records: &[Vec<f64>; 3]) -> Result<[DofStats; 3]> {
+    let dt = case.problem.run.time_step;
     let mut out = [DofStats {
         mean: 0.0,
         rms: 0.0,
@@ -121,7 +134,7 @@ fn run_seed_unless(
             min: s.min * scale,
         };
     }
-    Ok(Some(out))
+    Ok(out)
 }
 
 /// Simulates `problem` from its initial condition for its duration with no external force
@@ -136,21 +149,33 @@ pub fn simulate_positions(problem: Problem) -> Result<[Vec<f64>; 3]> {
 /// The positions of [`simulate_positions`] for a simulation at its start; `None` when a
 /// step finds `stop` set (checked before every step: one relaxed atomic load).
 fn positions(mut sim: Simulation, stop: &AtomicBool) -> Result<Option<[Vec<f64>; 3]>> {
-    let mut records: [Vec<f64>; 3] = Default::default();
-    let mut steps = 0;
-    for record in &mut records {
-        steps = crate::reserve_recorded(sim.problem(), record)?;
-    }
-    let mut push = |q: [f64; 3]| records.iter_mut().zip(q).for_each(|(r, v)| r.push(v));
-    push(sim.position());
+    let (mut records, steps) = positions_reserved(&sim)?;
     for _ in 0..steps {
         if stop.load(Ordering::Relaxed) {
             return Ok(None);
         }
         sim.step([0.0; 3])?;
-        push(sim.position());
+        records
+            .iter_mut()
+            .zip(sim.position())
+            .for_each(|(r, v)| r.push(v));
     }
     Ok(Some(records))
+}
+
+/// The records of X, Y and theta of `sim`'s run, reserved for its steps
+/// ([`crate::reserve_recorded`]) and holding its initial position, and the steps.
+fn positions_reserved(sim: &Simulation) -> Result<([Vec<f64>; 3], usize)> {
+    let mut records: [Vec<f64>; 3] = Default::default();
+    let mut steps = 0;
+    for record in &mut records {
+        steps = crate::reserve_recorded(sim.problem(), record)?;
+    }
+    records
+        .iter_mut()
+        .zip(sim.position())
+        .for_each(|(r, v)| r.push(v));
+    Ok((records, steps))
 }
 
 /// One run of a campaign: the index of its case and its seed.
@@ -171,12 +196,15 @@ pub struct Finished {
 /// How often [`run_jobs`] calls back while no run finishes (for a progress display).
 pub const TICK: Duration = Duration::from_millis(250);
 
-/// Runs `jobs` on `threads` scoped threads (at least 1) sharing one job counter. On the
-/// calling thread, `on_event` receives `Some(finished)` as each run finishes (in finishing
-/// order) and `None` every [`TICK`] while nothing finishes. Returns when every job is done,
-/// or, once `stop` is set, as soon as the runs in flight have seen it: no job starts after
-/// it, a run in flight is abandoned at its next time step (a plan being made is finished
-/// first), and the jobs not run or abandoned are not reported.
+/// Runs `jobs` on `threads` scoped threads (at least 1) sharing one counter of lane groups
+/// ([`lane_groups`]: consecutive jobs of one case, run in lanes by `lanes::run_lanes`,
+/// each result that of [`run_seed`] bit for bit). On the calling thread, `on_event`
+/// receives `Some(finished)` as each run finishes (in finishing order; the runs of a group
+/// finish together) and `None` every [`TICK`] while nothing finishes. Returns when every
+/// job is done, or, once `stop` is set, as soon as the runs in flight have seen it: no job
+/// starts after it, a run in flight is abandoned at its next time step (a plan being made
+/// is finished first), and the jobs not run or abandoned are not reported. A group that
+/// panics is run again seed by seed, so that the panic is the error of its own run only.
 pub fn run_jobs(
     cases: &[Case],
     jobs: &[Job],
@@ -185,29 +213,120 @@ pub fn run_jobs(
     mut on_event: impl FnMut(Option<Finished>),
 ) {
     let plans = CasePlans::new(cases, jobs);
-    let run_job = |index: usize| {
-        let job = jobs[index];
-        let run = || {
-            if stop.load(Ordering::Relaxed) {
-                return Ok(None);
-            }
-            let plan = plans.get(job.case)?.map_err(|e| e.to_string())?;
-            let case = &cases[job.case];
-            // A run's error names the settings it blames where the case wrote them.
-            run_seed_unless(case, &plan, job.seed, stop).map_err(|e| case.problem.explain(&e))
+    let groups = lane_groups(jobs, threads);
+    let run_group = |g: usize| {
+        let members = groups[g].clone();
+        let case_index = jobs[members.start].case;
+        let alone = |j: usize| {
+            guarded(|| run_job(cases, &plans, jobs[j], stop)).unwrap_or_else(|e| Some(Err(e)))
         };
-        let result = catch_unwind(AssertUnwindSafe(run)).unwrap_or_else(|panic| {
-            Err(Error::invalid("run", "panic", panic_text(&*panic)).to_string())
-        });
-        plans.done(job.case);
-        result.transpose()
+        let outcomes: Vec<Outcome> = match members.len() {
+            1 => vec![alone(members.start)],
+            _ => {
+                match guarded(|| run_group_in_lanes(cases, &plans, &jobs[members.clone()], stop)) {
+                    Ok(Some(results)) => results.into_iter().map(Some).collect(),
+                    Ok(None) => Vec::new(),
+                    // Which lane panicked is not known: each run again on its own.
+                    Err(_) => members.clone().map(alone).collect(),
+                }
+            }
+        };
+        for _ in members.clone() {
+            plans.done(case_index);
+        }
+        members.zip(outcomes).collect::<Vec<_>>()
     };
-    crate::parallel::run_indexed(jobs.len(), threads, run_job, TICK, |event| match event {
-        Some((job, Some(result))) => on_event(Some(Finished { job, result })),
-        // Abandoned: not reported.
-        Some((_, None)) => {}
-        None => on_event(None),
-    });
+    crate::parallel::run_indexed(
+        groups.len(),
+        threads,
+        run_group,
+        TICK,
+        |event| match event {
+            Some((_, finished)) => {
+                for (job, outcome) in finished {
+                    // Abandoned (`None`): not reported.
+                    if let Some(result) = outcome {
+                        on_event(Some(Finished { job, result }));
+                    }
+                }
+            }
+            None => on_event(None),
+        },
+    );
+}
+
+/// A run's outcome as [`Finished`] holds it; `None` when abandoned.
+type Outcome = Option<std::result::Result<[DofStats; 3], String>>;
+
+/// `run` with a panic turned into the run's error.
+fn guarded<T>(run: impl FnOnce() -> T) -> std::result::Result<T, String> {
+    catch_unwind(AssertUnwindSafe(run))
+        .map_err(|panic| Error::invalid("run", "panic", panic_text(&*panic)).to_string())
+}
+
+/// One job on its own (a group of one lane).
+fn run_job(cases: &[Case], plans: &CasePlans, job: Job, stop: &AtomicBool) -> Outcome {
+    if stop.load(Ordering::Relaxed) {
+        return None;
+    }
+    let case = &cases[job.case];
+    let plan = match plans
+        .get(job.case)
+        .and_then(|p| p.map_err(|e| e.to_string()))
+    {
+        Ok(plan) => plan,
+        Err(e) => return Some(Err(e)),
+    };
+    // A run's error names the settings it blames where the case wrote them.
+    run_seed_unless(case, &plan, job.seed, stop)
+        .map_err(|e| case.problem.explain(&e))
+        .transpose()
+}
+
+/// The jobs of one group (one case) in lanes; `None` when abandoned.
+fn run_group_in_lanes(
+    cases: &[Case],
+    plans: &CasePlans,
+    group: &[Job],
+    stop: &AtomicBool,
+) -> Option<Vec<std::result::Result<[DofStats; 3], String>>> {
+    if stop.load(Ordering::Relaxed) {
+        return None;
+    }
+    let case = &cases[group[0].case];
+    let plan = match plans
+        .get(group[0].case)
+        .and_then(|p| p.map_err(|e| e.to_string()))
+    {
+        Ok(plan) => plan,
+        Err(e) => return Some(vec![Err(e); group.len()]),
+    };
+    let seeds: Vec<u64> = group.iter().map(|job| job.seed).collect();
+    let results = lanes::run_lanes(case, &plan, &seeds, stop)?;
+    Some(
+        results
+            .into_iter()
+            .map(|r| r.map_err(|e| case.problem.explain(&e)))
+            .collect(),
+    )
+}
+
+/// The jobs in groups to run in lanes: runs of consecutive jobs of one case, each of at
+/// most [`crate::forces::LANES`] jobs and of at most the jobs per thread (rounded up), so
+/// that a short campaign still keeps every thread busy.
+fn lane_groups(jobs: &[Job], threads: usize) -> Vec<std::ops::Range<usize>> {
+    let width = jobs
+        .len()
+        .div_ceil(threads.max(1))
+        .clamp(1, crate::forces::LANES);
+    let mut groups: Vec<std::ops::Range<usize>> = Vec::new();
+    for (j, job) in jobs.iter().enumerate() {
+        match groups.last_mut() {
+            Some(g) if g.len() < width && jobs[g.start].case == job.case => g.end = j + 1,
+            _ => groups.push(j..j + 1),
+        }
+    }
+    groups
 }
 
 /// The [`RecordPlan`]s of a campaign, one per group of cases with the same

@@ -29,6 +29,7 @@ mod fmu_configuration;
 mod full_qtf;
 mod full_qtf_directions;
 mod fuzz;
+mod lanes;
 mod montecarlo;
 mod nemoh;
 mod nemoh_rao;
