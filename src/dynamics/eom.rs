@@ -193,13 +193,14 @@ impl SlowDriftModel {
     /// The Morison drag f_drag (body frame) at a located instant for the body's velocity
     /// `body`.
     fn drag(&self, records: &ForceRecords, at: &SamplePoint, body: &BodyFrame) -> [f64; 3] {
+        let lane = self.lane_drag(records, at, body);
         drag_force(
-            &records.kinematics,
-            at,
+            lane.columns,
+            &lane.at,
             self.drag,
             self.water_density,
-            body.velocity.into(),
-            body.drag_current(),
+            lane.velocity,
+            lane.current,
         )
     }
 

@@ -270,10 +270,7 @@ fn run_job(cases: &[Case], plans: &CasePlans, job: Job, stop: &AtomicBool) -> Ou
         return None;
     }
     let case = &cases[job.case];
-    let plan = match plans
-        .get(job.case)
-        .and_then(|p| p.map_err(|e| e.to_string()))
-    {
+    let plan = match plans.plan(job.case) {
         Ok(plan) => plan,
         Err(e) => return Some(Err(e)),
     };
@@ -294,10 +291,7 @@ fn run_group_in_lanes(
         return None;
     }
     let case = &cases[group[0].case];
-    let plan = match plans
-        .get(group[0].case)
-        .and_then(|p| p.map_err(|e| e.to_string()))
-    {
+    let plan = match plans.plan(group[0].case) {
         Ok(plan) => plan,
         Err(e) => return Some(vec![Err(e); group.len()]),
     };
@@ -392,6 +386,11 @@ impl<'a> CasePlans<'a> {
             *slot = Some(RecordPlan::of_checked(problem).map(Arc::new));
         }
         Ok(slot.as_ref().expect("made above").clone())
+    }
+
+    /// [`CasePlans::get`]'s plan, or its or the case's error as text.
+    fn plan(&self, case: usize) -> std::result::Result<Arc<RecordPlan>, String> {
+        self.get(case)?.map_err(|e| e.to_string())
     }
 
     /// One job of case `case` is done; the last one of its group drops the plan.
