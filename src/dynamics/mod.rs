@@ -3,5 +3,5 @@
 mod eom;
 mod rk4;
 
-pub use eom::{ForceBreakdown, Held, SlowDriftModel};
+pub use eom::{BodyFrame, ForceBreakdown, Held, SlowDriftModel};
 pub use rk4::rk4_step;

@@ -6,9 +6,9 @@
 //! gets the one-seed path's error and its state back, and the others go on.
 
 use super::Simulation;
-use crate::dynamics::rk4_step;
+use crate::dynamics::{rk4_step, BodyFrame, Held};
 use crate::error::{Error, Result};
-use crate::forces::{Isa, LaneDrag, LANES};
+use crate::forces::{Isa, LaneDrag, SamplePoint, YawPoint, LANES};
 
 /// The state of [`LANES`] lanes as one RK4 vector: lane l's (X, Y, theta, X', Y', theta')
 /// at 6 l.
@@ -75,7 +75,10 @@ impl Lockstep {
         for (l, sim) in self.lanes.iter().enumerate() {
             y[6 * l..6 * l + 6].copy_from_slice(&sim.state_vector());
         }
-        let held: Vec<_> = self.lanes.iter().map(|s| s.held(external)).collect();
+        let mut held = [Held::default(); LANES];
+        for (h, sim) in held.iter_mut().zip(&self.lanes) {
+            *h = sim.held(external);
+        }
         let (lanes, isa) = (&self.lanes, self.isa);
         let next = rk4_step(t, &y, h, |time, y| {
             Ok::<_, std::convert::Infallible>(derivatives(lanes, isa, time, y, &held, &mut outcome))
@@ -104,10 +107,13 @@ fn derivatives(
     isa: Isa,
     time: f64,
     y: &[f64; WIDTH],
-    held: &[crate::dynamics::Held],
+    held: &[Held; LANES],
     outcome: &mut [Result<()>],
 ) -> [f64; WIDTH] {
-    let mut located = Vec::with_capacity(LANES);
+    // The lanes located at `time` (their index, records' point, yaw, state, body frame),
+    // in lane order, in the first `count` entries.
+    let mut located: [Option<Located>; LANES] = [None; LANES];
+    let mut count = 0;
     for (l, sim) in lanes.iter().enumerate() {
         if outcome[l].is_err() {
             continue;
@@ -119,35 +125,58 @@ fn derivatives(
         );
         let at = records.clock.locate(time);
         match at.and_then(|at| Ok((at, records.locate_yaw(time, q[2])?))) {
-            Ok((at, yaw)) => located.push((l, at, yaw, q, qd, sim.model.body_frame(&q, &qd))),
+            Ok((at, yaw)) => {
+                let body = sim.model.body_frame(&q, &qd);
+                located[count] = Some(Located {
+                    lane: l,
+                    at,
+                    yaw,
+                    q,
+                    qd,
+                    body,
+                });
+                count += 1;
+            }
             Err(e) => outcome[l] = Err(e),
         }
     }
     let mut out = [0.0; WIDTH];
-    let Some(&(first, ..)) = located.first() else {
+    let Some(first) = located[0] else {
         return out;
     };
-    let drag_lanes: Vec<LaneDrag> = located
-        .iter()
-        .map(|(l, at, _, _, _, body)| {
-            lanes[*l]
-                .model
-                .lane_drag(&lanes[*l].segment.records, at, body)
-        })
-        .collect();
-    let drags = lanes[first].model.lane_drags(&drag_lanes, isa);
-    for ((l, at, yaw, q, qd, body), drag) in located.iter().zip(drags) {
-        let sim = &lanes[*l];
+    let drag_of = |found: &Option<Located>| {
+        let it = found.as_ref().unwrap_or(&first);
+        let records = &lanes[it.lane].segment.records;
+        lanes[it.lane].model.lane_drag(records, &it.at, &it.body)
+    };
+    let drag_lanes: [LaneDrag; LANES] = std::array::from_fn(|i| drag_of(&located[i]));
+    let drags = lanes[first.lane]
+        .model
+        .lane_drags(&drag_lanes[..count], isa);
+    for (it, drag) in located.iter().flatten().zip(drags) {
+        let (l, sim) = (it.lane, &lanes[it.lane]);
         let qdd = sim.model.acceleration_with_drag(
-            body,
+            &it.body,
             drag,
             &sim.segment.records,
-            at,
-            yaw,
-            q,
-            &held[*l],
+            &it.at,
+            &it.yaw,
+            &it.q,
+            &held[l],
         );
+        let qd = it.qd;
         out[6 * l..6 * l + 6].copy_from_slice(&[qd[0], qd[1], qd[2], qdd[0], qdd[1], qdd[2]]);
     }
     out
+}
+
+/// A lane located at an instant of a stage: what its drag and forces read.
+#[derive(Clone, Copy)]
+struct Located {
+    lane: usize,
+    at: SamplePoint,
+    yaw: YawPoint,
+    q: [f64; 3],
+    qd: [f64; 3],
+    body: BodyFrame,
 }

@@ -120,11 +120,7 @@ pub fn drag_forces(
 
 /// Each lane's sum_j w_j |w_j| over its row's strips (w_j = u_j - offset), compiled for
 /// `isa`; the rows are of one length.
-fn sums<V: Velocity>(
-    isa: Isa,
-    rows: [&[V]; LANES],
-    offsets: [[f64; 2]; LANES],
-) -> [[f64; 2]; LANES] {
+fn sums<V: Stored>(isa: Isa, rows: [&[V]; LANES], offsets: [[f64; 2]; LANES]) -> [[f64; 2]; LANES] {
     match isa {
         Isa::Baseline => lane_sums(rows, offsets),
         #[cfg(target_arch = "x86_64")]
@@ -134,13 +130,75 @@ fn sums<V: Velocity>(
     }
 }
 
+/// A strip's velocity as the records store it on a sample: (u_x, u_y) in single
+/// precision (u_y = 0 in waves along x, where only u_x is stored).
+trait Stored: Velocity {
+    fn xy32(&self) -> [f32; 2];
+}
+
+impl Stored for [f32; 2] {
+    #[inline(always)]
+    fn xy32(&self) -> [f32; 2] {
+        *self
+    }
+}
+
+impl Stored for f32 {
+    #[inline(always)]
+    fn xy32(&self) -> [f32; 2] {
+        [*self, 0.0]
+    }
+}
+
+/// [`lane_sums`] written in AVX2 instructions, one register per quantity with lane l in
+/// element l: strip j's velocities gathered across the lanes, then per lane the operations
+/// of `add_w_abs_w` in its order (w = u - offset, w_x^2 + w_y^2 as two products and a sum,
+/// rounded to single precision, its root there, widened back; sum += w * |w|), each a
+/// separate instruction, so no product is fused into an addition (`_mm256_mul_pd` and
+/// `_mm256_add_pd` are never contracted) and each lane's sum is the one-seed sum bit for
+/// bit.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-fn lane_sums_avx2<V: Velocity>(
-    rows: [&[V]; LANES],
-    offsets: [[f64; 2]; LANES],
-) -> [[f64; 2]; LANES] {
-    lane_sums(rows, offsets)
+fn lane_sums_avx2<V: Stored>(rows: [&[V]; LANES], offsets: [[f64; 2]; LANES]) -> [[f64; 2]; LANES] {
+    use std::arch::x86_64::{
+        _mm256_add_pd, _mm256_cvtpd_ps, _mm256_cvtps_pd, _mm256_mul_pd, _mm256_setr_pd,
+        _mm256_setzero_pd, _mm256_sub_pd, _mm_setr_ps, _mm_sqrt_ps,
+    };
+    let n = rows[0].len();
+    let [r0, r1, r2, r3] = rows.map(|r| &r[..n]);
+    let off_x = _mm256_setr_pd(offsets[0][0], offsets[1][0], offsets[2][0], offsets[3][0]);
+    let off_y = _mm256_setr_pd(offsets[0][1], offsets[1][1], offsets[2][1], offsets[3][1]);
+    let mut sum_x = _mm256_setzero_pd();
+    let mut sum_y = _mm256_setzero_pd();
+    for j in 0..n {
+        let [a, b, c, d] = [r0[j].xy32(), r1[j].xy32(), r2[j].xy32(), r3[j].xy32()];
+        let x = _mm256_cvtps_pd(_mm_setr_ps(a[0], b[0], c[0], d[0]));
+        let y = _mm256_cvtps_pd(_mm_setr_ps(a[1], b[1], c[1], d[1]));
+        let wx = _mm256_sub_pd(x, off_x);
+        let wy = _mm256_sub_pd(y, off_y);
+        let squared = _mm256_add_pd(_mm256_mul_pd(wx, wx), _mm256_mul_pd(wy, wy));
+        let norm = _mm256_cvtps_pd(_mm_sqrt_ps(_mm256_cvtpd_ps(squared)));
+        sum_x = _mm256_add_pd(sum_x, _mm256_mul_pd(wx, norm));
+        sum_y = _mm256_add_pd(sum_y, _mm256_mul_pd(wy, norm));
+    }
+    let (xs, ys) = (elements(sum_x), elements(sum_y));
+    std::array::from_fn(|l| [xs[l], ys[l]])
+}
+
+/// The 4 doubles of an AVX register, element 0 first.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn elements(v: std::arch::x86_64::__m256d) -> [f64; LANES] {
+    use std::arch::x86_64::{
+        _mm256_castpd256_pd128, _mm256_extractf128_pd, _mm_cvtsd_f64, _mm_unpackhi_pd,
+    };
+    let (low, high) = (_mm256_castpd256_pd128(v), _mm256_extractf128_pd::<1>(v));
+    [
+        _mm_cvtsd_f64(low),
+        _mm_cvtsd_f64(_mm_unpackhi_pd(low, low)),
+        _mm_cvtsd_f64(high),
+        _mm_cvtsd_f64(_mm_unpackhi_pd(high, high)),
+    ]
 }
 
 /// The lanes' strip sums side by side: strip j of every lane, then strip j + 1. Per lane,
