@@ -20,9 +20,12 @@ use super::Failure;
 use clap::Args;
 use slowdrift::error::numbers::{readable, written};
 use slowdrift::fmi2::campaign;
+use slowdrift::forces::{Isa, LANES};
 use slowdrift::montecarlo::cases::{open_case_table, CaseRow};
 use slowdrift::montecarlo::runs_file::{self, RunRow, RunsFile};
-use slowdrift::montecarlo::{run_jobs, seed_statistics, Case, Job, DOFS, STATISTICS};
+use slowdrift::montecarlo::{
+    campaign_lane_widths, lane_width, run_jobs, seed_statistics, Case, Job, DOFS, STATISTICS,
+};
 use slowdrift::Problem;
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
@@ -68,8 +71,8 @@ pub struct MontecarloArgs {
     #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = whole(1usize))]
     threads: Option<usize>,
     /// Memory one run's records may take, GB (1e9 bytes): larger estimates are refused; a
-    /// campaign holds up to one run per thread [default: the configuration's
-    /// run.memory_limit_gb, 4]
+    /// campaign's thread steps together (up to 4) only the runs whose records fit it
+    /// together [default: the configuration's run.memory_limit_gb, 4]
     #[arg(long, value_name = "GB", allow_hyphen_values = true, value_parser = gigabytes())]
     memory_limit_gb: Option<f64>,
     /// The summary, one line per case and DOF; the runs go to RESULTS.runs.csv beside it,
@@ -384,13 +387,23 @@ pub fn run_campaign(
         runs_path.display(),
         jobs.len(),
     );
-    for case in cases {
+    let widths = campaign_lane_widths(cases, jobs.len(), threads);
+    for (case, &width) in cases.iter().zip(&widths) {
+        let why = if width == LANES {
+            "at most"
+        } else if width == lane_width(case) {
+            "what the memory limit holds of its runs' records"
+        } else {
+            "the jobs per thread"
+        };
         println!(
-            "  {}: {} s at {} s, transient {} s",
+            "  {}: {} s at {} s, transient {} s; {width} seed(s) stepped together ({why}; \
+             drag in {} lanes)",
             case.name,
             written(case.problem.run.duration),
             written(case.problem.run.time_step),
-            readable(case.transient)
+            readable(case.transient),
+            Isa::detect().name()
         );
     }
 

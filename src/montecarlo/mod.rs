@@ -20,7 +20,7 @@ pub mod runs_file;
 
 use crate::error::{Error, Result};
 use crate::fingerprint::fingerprint;
-use crate::record_plan::PlanKey;
+use crate::record_plan::{MemoryEstimate, PlanKey};
 use crate::stats::summarize;
 use crate::{Problem, RecordPlan, Simulation};
 use std::collections::HashMap;
@@ -213,7 +213,7 @@ pub fn run_jobs(
     mut on_event: impl FnMut(Option<Finished>),
 ) {
     let plans = CasePlans::new(cases, jobs);
-    let groups = lane_groups(jobs, threads);
+    let groups = lane_groups(jobs, &campaign_lane_widths(cases, jobs.len(), threads));
     let run_group = |g: usize| {
         let members = groups[g].clone();
         let case_index = jobs[members.start].case;
@@ -305,18 +305,41 @@ fn run_group_in_lanes(
     )
 }
 
-/// The jobs in groups to run in lanes: runs of consecutive jobs of one case, each of at
-/// most [`crate::forces::LANES`] jobs and of at most the jobs per thread (rounded up), so
+/// The seeds of `case` a lane group holds at most: [`crate::forces::LANES`], or fewer
+/// when the records of that many runs (and their plan, once) would exceed the case's memory
+/// limit (`run.memory_limit_gb`, which bounds one thread's records: [`MemoryEstimate`]);
+/// 1 when the estimate cannot be made (the run then reports why).
+pub fn lane_width(case: &Case) -> usize {
+    let limit = case.problem.run.memory_limit;
+    match MemoryEstimate::of(&case.problem) {
+        Ok(estimate) if estimate.per_run > 0.0 => {
+            let fits = ((limit - estimate.plan) / estimate.per_run).floor();
+            (fits.max(1.0) as usize).min(crate::forces::LANES)
+        }
+        _ => 1,
+    }
+}
+
+/// The seeds of each case stepped together in a campaign of `jobs` jobs on `threads`
+/// threads: the case's [`lane_width`], and at most the jobs per thread (rounded up), so
 /// that a short campaign still keeps every thread busy.
-fn lane_groups(jobs: &[Job], threads: usize) -> Vec<std::ops::Range<usize>> {
-    let width = jobs
-        .len()
-        .div_ceil(threads.max(1))
-        .clamp(1, crate::forces::LANES);
+pub fn campaign_lane_widths(cases: &[Case], jobs: usize, threads: usize) -> Vec<usize> {
+    let per_thread = jobs.div_ceil(threads.max(1)).max(1);
+    cases
+        .iter()
+        .map(|case| lane_width(case).min(per_thread))
+        .collect()
+}
+
+/// The jobs in groups to run in lanes: runs of consecutive jobs of one case, each of at
+/// most the case's `widths` entry ([`campaign_lane_widths`]).
+fn lane_groups(jobs: &[Job], widths: &[usize]) -> Vec<std::ops::Range<usize>> {
     let mut groups: Vec<std::ops::Range<usize>> = Vec::new();
     for (j, job) in jobs.iter().enumerate() {
         match groups.last_mut() {
-            Some(g) if g.len() < width && jobs[g.start].case == job.case => g.end = j + 1,
+            Some(g) if g.len() < widths[job.case] && jobs[g.start].case == job.case => {
+                g.end = j + 1
+            }
             _ => groups.push(j..j + 1),
         }
     }

@@ -290,7 +290,8 @@ impl MemoryEstimate {
     /// Refuses the records of one simulation beyond the problem's memory limit, naming the
     /// setting of the largest term; then reserves the memory once and frees it, so that a
     /// process that cannot hold it gets an error here rather than an abort later. (The
-    /// limit is per simulation: a campaign on T threads may hold T of them.)
+    /// limit is per simulation; a campaign's thread steps together only the runs whose
+    /// records fit it together, `montecarlo::lane_width`.)
     pub fn check(&self, problem: &Problem) -> Result<()> {
         let total = self.total();
         let run = &problem.run;

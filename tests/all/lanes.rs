@@ -5,10 +5,11 @@
 
 use crate::common::*;
 use slowdrift::forces::Isa;
+use slowdrift::forces::LANES;
 use slowdrift::model::DragModel;
-use slowdrift::montecarlo::{run_jobs, run_seed, Case, Job};
+use slowdrift::montecarlo::{lane_width, run_jobs, run_seed, Case, Job};
 use slowdrift::sea_state::Spreading;
-use slowdrift::{Lockstep, Problem, Simulation};
+use slowdrift::{Lockstep, MemoryEstimate, Problem, Simulation};
 use std::sync::atomic::AtomicBool;
 
 /// Four columns with drag (E&S 8) and the wave drift, in a sea spread (`spread`) or along
@@ -175,5 +176,24 @@ fn a_campaign_in_lanes_gives_each_seeds_own_run() {
                 );
             }
         }
+    }
+}
+
+/// A lane group holds at most the runs whose records fit the case's memory limit together
+/// (the plan once, each run's records): 4 under the default limit, 2 when the limit leaves
+/// room for 2.5 runs, 1 when it leaves room for less than 2, from the estimate the limit is
+/// checked against.
+#[test]
+fn lanes_hold_no_more_runs_than_the_memory_limit_allows() {
+    let mut case = Case {
+        name: "drag".into(),
+        problem: drag_problem(0, true),
+        transient: 50.0,
+    };
+    assert_eq!(lane_width(&case), LANES);
+    let estimate = MemoryEstimate::of(&case.problem).unwrap();
+    for (runs, width) in [(2.5, 2), (3.0, 3), (1.9, 1), (0.5, 1), (40.0, LANES)] {
+        case.problem.run.memory_limit = estimate.plan + runs * estimate.per_run;
+        assert_eq!(lane_width(&case), width, "room for {runs} runs");
     }
 }

@@ -50,6 +50,15 @@ impl Isa {
         Isa::Baseline
     }
 
+    /// The instruction set's name, as a run's summary gives it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Isa::Baseline => "baseline",
+            #[cfg(target_arch = "x86_64")]
+            Isa::Avx2 => "AVX2",
+        }
+    }
+
     /// Every instruction set this CPU runs (for the tests).
     pub fn available() -> Vec<Isa> {
         let mut all = vec![Isa::Baseline];
