@@ -149,7 +149,7 @@ fn main() {
         1e3 * single,
         1.0 / single
     );
-    let plan = RecordPlan::new(&case.problem).expect("the plan");
+    let plan = RecordPlan::new(&case.simulated()).expect("the plan");
     println!(
         "records per run: one segment of {} samples, transforms of N = {} (block {} s at {} s)",
         plan.segments().record_len(),

@@ -387,6 +387,10 @@ pub fn run_campaign(
         runs_path.display(),
         jobs.len(),
     );
+    println!(
+        "statistics of the slow drift (X, Y, theta); the wave-frequency motion is not made \
+         (the slow-drift equations do not use it)"
+    );
     let widths = campaign_lane_widths(cases, jobs.len(), threads);
     for (case, &width) in cases.iter().zip(&widths) {
         let why = if width == LANES {

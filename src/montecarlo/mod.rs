@@ -20,6 +20,7 @@ pub mod runs_file;
 
 use crate::error::{Error, Result};
 use crate::fingerprint::fingerprint;
+use crate::model::WaveFrequencyMotion;
 use crate::record_plan::{MemoryEstimate, PlanKey};
 use crate::stats::summarize;
 use crate::{Problem, RecordPlan, Simulation};
@@ -44,6 +45,17 @@ pub struct Case {
 }
 
 impl Case {
+    /// The problem a campaign simulates for this case: the case's, without the
+    /// wave-frequency motion, which a campaign does not summarise (its statistics are of the
+    /// slow drift X, Y, theta) and which the slow-drift equations do not use
+    /// (docs/theory.md#wave-frequency-motion), so its records are not made. The sea, the
+    /// slow drift and every statistic are those of the case as given.
+    pub fn simulated(&self) -> Problem {
+        let mut problem = self.problem.clone();
+        problem.model.wave_frequency_motion = WaveFrequencyMotion::Off;
+        problem
+    }
+
     /// The fingerprint (`crate::fingerprint`) of everything that determines the results except the
     /// seed (the problem with seed 0, and the transient), as 16 hex digits: the per-run file
     /// stores it so that a resumed campaign refuses to mix configurations.
@@ -80,11 +92,11 @@ pub const STATISTICS: [&str; 4] = ["mean", "rms", "max", "min"];
 /// Simulates `case` with `seed` from its start for its duration (no external force) and
 /// summarises (X, Y, theta) after the transient; yaw is reported in degrees.
 pub fn run_seed(case: &Case, seed: u64) -> Result<[DofStats; 3]> {
-    run_seed_with(case, &Arc::new(RecordPlan::new(&case.problem)?), seed)
+    run_seed_with(case, &Arc::new(RecordPlan::new(&case.simulated())?), seed)
 }
 
-/// [`run_seed`] with the case's [`RecordPlan`] made beforehand (once for all its seeds).
-pub fn run_seed_with(case: &Case, plan: &Arc<RecordPlan>, seed: u64) -> Result<[DofStats; 3]> {
+/// [`run_seed`] with the plan of the case's [`Case::simulated`] problem made beforehand.
+fn run_seed_with(case: &Case, plan: &Arc<RecordPlan>, seed: u64) -> Result<[DofStats; 3]> {
     let never = AtomicBool::new(false);
     let stats = run_seed_unless(case, plan, seed, &never)?;
     Ok(stats.expect("a run that is never stopped ends"))
@@ -103,9 +115,9 @@ fn run_seed_unless(
     summarize_positions(case, &records).map(Some)
 }
 
-/// The simulation of `case` with `seed`, its records from `plan`.
+/// The simulation of `case` ([`Case::simulated`]) with `seed`, its records from `plan`.
 fn seed_simulation(case: &Case, plan: &Arc<RecordPlan>, seed: u64) -> Result<Simulation> {
-    let mut problem = case.problem.clone();
+    let mut problem = case.simulated();
     problem.sea.seed = seed;
     Simulation::with_plan(problem, plan)
 }
@@ -311,7 +323,7 @@ fn run_group_in_lanes(
 /// 1 when the estimate cannot be made (the run then reports why).
 pub fn lane_width(case: &Case) -> usize {
     let limit = case.problem.run.memory_limit;
-    match MemoryEstimate::of(&case.problem) {
+    match MemoryEstimate::of(&case.simulated()) {
         Ok(estimate) if estimate.per_run > 0.0 => {
             let fits = ((limit - estimate.plan) / estimate.per_run).floor();
             (fits.max(1.0) as usize).min(crate::forces::LANES)
@@ -364,6 +376,7 @@ type SharedPlan = Result<Arc<RecordPlan>>;
 
 impl<'a> CasePlans<'a> {
     fn new(cases: &'a [Case], jobs: &[Job]) -> Self {
+        // Keyed by the cases as given: cases alike there are alike as simulated.
         let keys: Vec<PlanKey> = cases.iter().map(|c| PlanKey::of(&c.problem)).collect();
         let mut by_fingerprint: HashMap<u64, Vec<usize>> = HashMap::new();
         let mut first_of_group: Vec<usize> = Vec::new();
@@ -404,9 +417,9 @@ impl<'a> CasePlans<'a> {
             .lock()
             .map_err(|_| "a run panicked while making this case's plan".to_string())?;
         if slot.is_none() {
-            let problem = &self.cases[case].problem;
+            let problem = self.cases[case].simulated();
             problem.check().map_err(|e| e.to_string())?;
-            *slot = Some(RecordPlan::of_checked(problem).map(Arc::new));
+            *slot = Some(RecordPlan::of_checked(&problem).map(Arc::new));
         }
         Ok(slot.as_ref().expect("made above").clone())
     }

@@ -816,3 +816,64 @@ fn printed_cases_stop_unfinished_at_a_bad_row() {
     assert_eq!(document["cases"][0]["name"], "b");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A campaign does not make the wave-frequency motion (`Case::simulated`), and its
+/// statistics are those of the case as given: on the default platform (RAOs, the motion on),
+/// `run_seed` equals the statistics of X, Y and theta of the case's own simulation with the
+/// motion on, stepped here and summarised by `stats::summarize`, bit for bit.
+#[test]
+fn a_campaign_without_the_wave_frequency_motion_gives_the_case_s_slow_drift() {
+    use slowdrift::model::WaveFrequencyMotion;
+    let mut problem = slowdrift::problem::default_problem().unwrap();
+    problem.run.duration = 1200.0;
+    assert_eq!(problem.model.wave_frequency_motion, WaveFrequencyMotion::On);
+    assert!(
+        problem.first_order_motions().unwrap().is_some(),
+        "the default has RAOs"
+    );
+    let case = Case {
+        name: "default".into(),
+        problem: problem.clone(),
+        transient: 300.0,
+    };
+    assert_eq!(
+        case.simulated().model.wave_frequency_motion,
+        WaveFrequencyMotion::Off
+    );
+    let seed = 5;
+    let got = slowdrift::montecarlo::run_seed(&case, seed).unwrap();
+    problem.sea.seed = seed;
+    let mut sim = slowdrift::Simulation::new(problem).unwrap();
+    let mut records: [Vec<f64>; 3] = Default::default();
+    let mut push = |sim: &slowdrift::Simulation| {
+        records
+            .iter_mut()
+            .zip(sim.position())
+            .for_each(|(r, v)| r.push(v));
+    };
+    push(&sim);
+    let h = sim.problem().run.time_step;
+    for _ in 0..(1200.0 / h).round() as usize {
+        sim.step([0.0; 3]).unwrap();
+        push(&sim);
+    }
+    assert!(
+        sim.outputs()
+            .unwrap()
+            .motion
+            .wave_frequency
+            .iter()
+            .any(|&v| v != 0.0),
+        "the case's own run moves at wave frequency"
+    );
+    for (dof, record) in records.iter().enumerate() {
+        let s = slowdrift::stats::summarize(record, h, 300.0).unwrap();
+        let scale = if dof == 2 {
+            180.0 / std::f64::consts::PI
+        } else {
+            1.0
+        };
+        let want = [s.mean, s.rms, s.max, s.min].map(|v| (v * scale).to_bits());
+        assert_eq!(got[dof].values().map(f64::to_bits), want, "dof {dof}");
+    }
+}
