@@ -174,7 +174,8 @@ fn lane_sums_avx2<V: Stored>(rows: [&[V]; LANES], offsets: [[f64; 2]; LANES]) ->
         _mm256_setzero_pd, _mm256_sub_pd, _mm_setr_ps, _mm_sqrt_ps,
     };
     let n = rows[0].len();
-    let [r0, r1, r2, r3] = rows.map(|r| &r[..n]);
+    // Sliced one by one: `array::map` is a call here, once per column and instant.
+    let (r0, r1, r2, r3) = (&rows[0][..n], &rows[1][..n], &rows[2][..n], &rows[3][..n]);
     let off_x = _mm256_setr_pd(offsets[0][0], offsets[1][0], offsets[2][0], offsets[3][0]);
     let off_y = _mm256_setr_pd(offsets[0][1], offsets[1][1], offsets[2][1], offsets[3][1]);
     let mut sum_x = _mm256_setzero_pd();
