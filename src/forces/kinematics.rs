@@ -95,15 +95,26 @@ impl ColumnKinematics {
         self.len == 0
     }
 
-    /// The strips' velocities of row m.
+    /// Row m as stored: the free-surface elevation at the column centre (m) and the
+    /// strips' velocities.
     #[inline]
-    fn velocities_of_row(&self, m: usize) -> StripVelocities<'_> {
+    fn row(&self, m: usize) -> (f64, StripVelocities<'_>) {
         let width = self.floats_per_sample();
-        let velocities = &self.rows[m * width + 1..(m + 1) * width];
-        match self.layout {
+        let row = &self.rows[m * width..(m + 1) * width];
+        let velocities = &row[1..];
+        let velocities = match self.layout {
             RowLayout::Interleaved => StripVelocities::Interleaved(velocities.as_chunks().0),
             RowLayout::AlongX => StripVelocities::AlongX(velocities),
-        }
+        };
+        (f64::from(row[0]), velocities)
+    }
+
+    /// The row at a located time when it falls on a sample: the elevation, as
+    /// [`ColumnState::eta`] gives it, and the strips' velocities, as
+    /// [`ColumnState::velocities_on_sample`] does.
+    #[inline]
+    pub fn row_on_sample(&self, at: &SamplePoint) -> Option<(f64, StripVelocities<'_>)> {
+        at.on_sample().then(|| self.row(at.index()))
     }
 
     /// Float i of the rows at a located time.
@@ -136,9 +147,7 @@ impl ColumnState<'_> {
     #[inline]
     pub fn velocities_on_sample(&self) -> Option<StripVelocities<'_>> {
         let k = self.kinematics;
-        self.at
-            .on_sample()
-            .then(|| k.velocities_of_row(self.at.index()))
+        self.at.on_sample().then(|| k.row(self.at.index()).1)
     }
 }
 
@@ -731,7 +740,7 @@ mod tests {
                 let mut direct = Vec::new();
                 synth.append_two_real_series(&cx, &cy, &mut direct);
                 for (m, u) in direct.iter().enumerate() {
-                    let [x, y] = stored(records[0].velocities_of_row(m), j);
+                    let [x, y] = stored(records[0].row(m).1, j);
                     error += (Complex64::new(x, y) - u).norm_sqr();
                     power += u.norm_sqr();
                 }

@@ -35,12 +35,26 @@ pub fn drag_force(
         return total;
     }
     for col in columns {
-        let state = col.at(at);
-        let strips = ColumnStrips::of(col, &state, model, water_density, velocity, current);
-        let fast = strip_sum(&state, col.strips(), strips.offset);
-        strips.add_force(&mut total, col, model, fast);
+        add_column_force(&mut total, col, at, model, water_density, velocity, current);
     }
     total
+}
+
+/// Adds one column's drag at a located instant to `total` (body frame (Fx, Fy, Mz)).
+#[inline]
+fn add_column_force(
+    total: &mut [f64; 3],
+    col: &ColumnKinematics,
+    at: &SamplePoint,
+    model: DragModel,
+    water_density: f64,
+    velocity: [f64; 3],
+    current: [f64; 2],
+) {
+    let state = col.at(at);
+    let strips = ColumnStrips::of(col, state.eta(), model, water_density, velocity, current);
+    let fast = strip_sum(&state, col.strips(), strips.offset);
+    strips.add_force(total, col, model, fast);
 }
 
 /// One column's terms of E&S 8, 9 that are the same on all its strips, at one instant.
@@ -59,7 +73,7 @@ impl ColumnStrips {
     #[inline]
     fn of(
         col: &ColumnKinematics,
-        state: &ColumnState,
+        eta: f64,
         model: DragModel,
         water_density: f64,
         velocity: [f64; 3],
@@ -68,7 +82,7 @@ impl ColumnStrips {
         let c = &col.column;
         let [u, v, r] = velocity;
         let slow = [u - r * c.y - current[0], v + r * c.x - current[1]];
-        let wetted = (c.draft + state.eta()).max(0.0);
+        let wetted = (c.draft + eta).max(0.0);
         let dz = wetted / col.strips() as f64;
         let offset = match model {
             DragModel::Combined { .. } => slow,

@@ -12,7 +12,7 @@
 // The one unsafe call: the AVX2 build of the lanes' sums, made only where the CPU has AVX2.
 #![allow(unsafe_code)]
 
-use super::{strip_sum, ColumnStrips, Velocity};
+use super::{add_column_force, strip_sum, ColumnStrips, Velocity};
 use crate::forces::kinematics::{ColumnKinematics, StripVelocities};
 use crate::forces::record::SamplePoint;
 use crate::model::DragModel;
@@ -90,38 +90,48 @@ pub fn drag_forces(
     if model == DragModel::Off {
         return totals;
     }
+    // Lanes past `lanes.len()` repeat the last one (their results are not kept).
+    let padded: [&LaneDrag; LANES] = [0, 1, 2, 3].map(|l| &lanes[l.min(lanes.len() - 1)]);
     for c in 0..lanes[0].columns.len() {
-        let lane_column = |l: usize| &lanes[l.min(lanes.len() - 1)].columns[c];
-        let states: [_; LANES] = std::array::from_fn(|l| {
-            let lane = &lanes[l.min(lanes.len() - 1)];
-            lane.columns[c].at(&lane.at)
-        });
-        let strips: [ColumnStrips; LANES] = std::array::from_fn(|l| {
-            let lane = &lanes[l.min(lanes.len() - 1)];
-            ColumnStrips::of(
-                lane_column(l),
-                &states[l],
-                model,
-                water_density,
-                lane.velocity,
-                lane.current,
-            )
-        });
-        let offsets = strips.map(|s| s.offset);
-        let rows: [_; LANES] = std::array::from_fn(|l| states[l].velocities_on_sample());
-        let fast = match rows {
+        let mut strips = [None; LANES];
+        let mut velocities = [None; LANES];
+        for (l, lane) in padded.iter().enumerate() {
+            let column = &lane.columns[c];
+            if let Some((eta, row)) = column.row_on_sample(&lane.at) {
+                let (v, u) = (lane.velocity, lane.current);
+                strips[l] = Some(ColumnStrips::of(column, eta, model, water_density, v, u));
+                velocities[l] = Some(row);
+            }
+        }
+        let [Some(s0), Some(s1), Some(s2), Some(s3)] = strips else {
+            // Some lane between samples: each lane alone.
+            for (total, lane) in totals.iter_mut().zip(lanes) {
+                let (column, v, u) = (&lane.columns[c], lane.velocity, lane.current);
+                add_column_force(total, column, &lane.at, model, water_density, v, u);
+            }
+            continue;
+        };
+        let strips = [s0, s1, s2, s3];
+        let offsets = [s0.offset, s1.offset, s2.offset, s3.offset];
+        let fast = match velocities {
             [Some(StripVelocities::AlongX(a)), Some(StripVelocities::AlongX(b)), Some(StripVelocities::AlongX(c)), Some(StripVelocities::AlongX(d))] => {
                 sums(isa, [a, b, c, d], offsets)
             }
             [Some(StripVelocities::Interleaved(a)), Some(StripVelocities::Interleaved(b)), Some(StripVelocities::Interleaved(c)), Some(StripVelocities::Interleaved(d))] => {
                 sums(isa, [a, b, c, d], offsets)
             }
+            // Lanes of one case share their layout; any others are summed lane by lane.
             _ => {
-                std::array::from_fn(|l| strip_sum(&states[l], lane_column(l).strips(), offsets[l]))
+                let mut fast = [[0.0; 2]; LANES];
+                for (l, lane) in padded.iter().enumerate() {
+                    let column = &lane.columns[c];
+                    fast[l] = strip_sum(&column.at(&lane.at), column.strips(), offsets[l]);
+                }
+                fast
             }
         };
-        for (l, total) in totals.iter_mut().enumerate().take(lanes.len()) {
-            strips[l].add_force(total, lane_column(l), model, fast[l]);
+        for (l, (total, lane)) in totals.iter_mut().zip(lanes).enumerate() {
+            strips[l].add_force(total, &lane.columns[c], model, fast[l]);
         }
     }
     totals
