@@ -3,7 +3,8 @@
 //! Default platform (its radiation-diffraction drift, read once), long-crested head seas,
 //! Newman geometric, Aranha drift damping, combined drag on 4 columns x 20 strips,
 //! 2^14 s at h = 1 s, transient 10 surge periods; one run = `Simulation::new` + 16384 RK4
-//! steps + the statistics ([`run_seed`]). A run of 2^14 s is one block of the record stream
+//! steps + the statistics ([`run_seed`]; a campaign's run makes no wave-frequency motion,
+//! `Case::simulated`). A run of 2^14 s is one block of the record stream
 //! (`run.block_duration` = 2^14 s): its records are one segment, made once, whose transforms
 //! span the block plus the halo and the join's ramp (printed as N); no join is crossed.
 //!
@@ -11,7 +12,10 @@
 //! 2. The workload itself, 1000 runs through [`run_jobs`] on all cores, is too long for
 //!    criterion's repetitions: it is timed once with `Instant` and printed with runs per
 //!    second per core (`SLOWDRIFT_BENCH_RUNS` overrides the count for a quick look).
-//! 3. The NumPy reference `tests/clients/bench_numpy.py` (same case, records vectorised,
+//! 3. Seeds in lanes: 16384 steps of a seed alone (`Simulation::step`) against the same
+//!    steps in lanes of 4 (`Lockstep`), once per instruction set the CPU runs, in turns in
+//!    one run (records made beforehand, not timed); medians per seed.
+//! 4. The NumPy reference `tests/clients/bench_numpy.py` (same case, records vectorised,
 //!    RK4 loop in Python) is run in the same process when `target/client-venv` exists
 //!    (created by `tests/clients/run_clients.sh`), and the ratio of the single-core times
 //!    per run is printed; otherwise the summary says it is absent.
@@ -24,7 +28,9 @@ use slowdrift::hydro::io::database::HydroDatabase;
 use slowdrift::montecarlo::{run_jobs, run_seed, Case, Job};
 use slowdrift::problem::default_problem;
 use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
-use slowdrift::RecordPlan;
+use slowdrift::forces::{Isa, LANES};
+use slowdrift::{Lockstep, RecordPlan, Simulation};
+use std::sync::Arc;
 use std::hint::black_box;
 use std::path::Path;
 use std::process::Command;
@@ -104,6 +110,66 @@ fn numpy_seconds(case: &Case) -> Result<(f64, String), String> {
     Ok((seconds, stdout))
 }
 
+/// Rounds of [`lanes_summary`], each of [`LANES`] seeds per side.
+const LANE_ROUNDS: u64 = 6;
+
+/// The steps alone against the steps in lanes, per instruction set, in one run: each round
+/// makes the records of [`LANES`] seeds (not timed), then steps copies of them 16 384 times
+/// seed by seed (`Simulation::step`) and in lanes (`Lockstep`, once per instruction set
+/// the CPU runs), in turn; prints the medians per seed.
+fn lanes_summary(case: &Case) {
+    let problem = case.simulated();
+    let plan = Arc::new(RecordPlan::new(&problem).expect("the plan"));
+    let steps = (problem.run.duration / problem.run.time_step).round() as usize;
+    let isas = Isa::available();
+    let mut alone = Vec::new();
+    let mut lanes: Vec<Vec<f64>> = vec![Vec::new(); isas.len()];
+    for round in 0..LANE_ROUNDS {
+        let sims: Vec<Simulation> = (0..LANES as u64)
+            .map(|l| {
+                let mut p = problem.clone();
+                p.sea.seed = 20_000 + LANES as u64 * round + l;
+                Simulation::with_plan(p, &plan).expect("a Fig. 10 simulation")
+            })
+            .collect();
+        let start = Instant::now();
+        for mut sim in sims.clone() {
+            for _ in 0..steps {
+                sim.step([0.0; 3]).expect("a step");
+            }
+            black_box(sim.position());
+        }
+        alone.push(start.elapsed().as_secs_f64() / LANES as f64);
+        for (i, &isa) in isas.iter().enumerate() {
+            let mut lockstep = Lockstep::with_isa(sims.clone(), isa).expect("lanes");
+            let start = Instant::now();
+            for _ in 0..steps {
+                black_box(lockstep.step());
+            }
+            lanes[i].push(start.elapsed().as_secs_f64() / LANES as f64);
+        }
+    }
+    let median = |v: &mut Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    let alone = median(&mut alone);
+    println!(
+        "seeds in lanes ({LANE_ROUNDS} rounds of {LANES} seeds, medians per seed of {steps} steps, \
+         records not timed): alone {:.1} ms",
+        1e3 * alone
+    );
+    for (isa, times) in isas.iter().zip(&mut lanes) {
+        let t = median(times);
+        println!(
+            "  in lanes of {LANES}, {} drag sums: {:.1} ms = {:.2} x alone",
+            isa.name(),
+            1e3 * t,
+            t / alone
+        );
+    }
+}
+
 fn main() {
     // As the CLI does: keep freed record memory for the next run (src/allocator.rs).
     let retained = slowdrift::allocator::retain_freed_memory();
@@ -140,7 +206,7 @@ fn main() {
     println!("\n=== Monte Carlo summary (Fig. 10 workload: default platform, 2^14 s at 1 s, drag on) ===");
     println!(
         "{runs} runs on {cores} threads: {wall:.1} s wall (timed once with Instant, not criterion; \
-         target 1000 runs < 20 s), {:.2} runs/s, {:.2} runs/s per core; {failed} failed",
+         target of issue #32: 1000 runs < 8 s), {:.2} runs/s, {:.2} runs/s per core; {failed} failed",
         runs as f64 / wall,
         runs as f64 / wall / cores as f64
     );
@@ -157,6 +223,7 @@ fn main() {
         case.problem.run.block_duration,
         plan.grid().dt
     );
+    lanes_summary(&case);
     match numpy_seconds(&case) {
         Ok((numpy, line)) => println!(
             "NumPy reference ({NUMPY_RUNS} runs, one core): {numpy:.2} s per run = {:.1} x the Rust \
