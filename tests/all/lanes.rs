@@ -191,7 +191,7 @@ fn lanes_hold_no_more_runs_than_the_memory_limit_allows() {
         transient: 50.0,
     };
     assert_eq!(lane_width(&case), LANES);
-    let estimate = MemoryEstimate::of(&case.simulated()).unwrap();
+    let estimate = MemoryEstimate::of(&case.problem).unwrap();
     for (runs, width) in [(2.5, 2), (3.0, 3), (1.9, 1), (0.5, 1), (40.0, LANES)] {
         case.problem.run.memory_limit = estimate.plan + runs * estimate.per_run;
         assert_eq!(lane_width(&case), width, "room for {runs} runs");
