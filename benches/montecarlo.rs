@@ -24,16 +24,16 @@
 //! ([`slowdrift::allocator::retain_freed_memory`]).
 
 use criterion::Criterion;
+use slowdrift::forces::{Isa, LANES};
 use slowdrift::hydro::io::database::HydroDatabase;
 use slowdrift::montecarlo::{run_jobs, run_seed, Case, Job};
 use slowdrift::problem::default_problem;
 use slowdrift::scenario::default::DEFAULT_DRIFT_LABEL;
-use slowdrift::forces::{Isa, LANES};
 use slowdrift::{Lockstep, RecordPlan, Simulation};
-use std::sync::Arc;
 use std::hint::black_box;
 use std::path::Path;
 use std::process::Command;
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 const DURATION: f64 = 16_384.0;

@@ -7,20 +7,22 @@
 //! and, on the OC4 semisubmersible's full QTF (`../shared/data`, or `$SLOWDRIFT_DATA`; the
 //! sweep says so and is left out when the data are absent), the QTF's retained rank through
 //! its truncation tolerance (drag off, Hs 6 m, Tp 10 s, head seas).
-//! For each: `Simulation::new` (plan and first segment, median of 5) and one RK4 step
-//! (median over 2000 steps, 5 rounds), and the exponent p of cost ~ x^p fitted by least
-//! squares on the logarithms. Printed; no criterion run (each point builds a new plan).
+//! For each: `Simulation::new` (plan and first segment, median of 5), one RK4 step
+//! (median over 2000 steps, 5 rounds), the step per seed of 4 seeds in lanes (`Lockstep`,
+//! once per instruction set the CPU runs, same rounds; its ratio to the step alone), and the
+//! exponent p of cost ~ x^p fitted by least squares on the logarithms. Printed; no criterion run (each point builds a new plan).
 
 #[path = "../tests/all/common.rs"]
 mod common;
 mod timing;
 
+use slowdrift::forces::{Isa, LANES};
 use slowdrift::hydro::io::wamit::{self, WamitOptions};
 use slowdrift::model::{Cylinder, DragModel, DriftDamping, Interaction, SecondOrder};
 use slowdrift::problem::default_problem;
 use slowdrift::sea_state::Spectrum;
 use slowdrift::sea_state::Spreading;
-use slowdrift::{Problem, Simulation};
+use slowdrift::{Lockstep, Problem, Simulation};
 use std::hint::black_box;
 use timing::median_time;
 
@@ -39,6 +41,31 @@ fn cost(problem: &Problem) -> (f64, f64) {
         }
     });
     (init.as_secs_f64(), step.as_secs_f64() / STEPS as f64)
+}
+
+/// Seconds per step per seed of [`LANES`] seeds of `problem` stepped in lanes
+/// (`Lockstep`), once per instruction set the CPU runs (median over 5 rounds of
+/// [`STEPS`] steps), with the set's name.
+fn lanes_cost(problem: &Problem) -> Vec<(&'static str, f64)> {
+    let sims: Vec<Simulation> = (0..LANES as u64)
+        .map(|l| {
+            let mut p = problem.clone();
+            p.sea.seed = p.sea.seed.wrapping_add(1 + l);
+            Simulation::new(p).unwrap()
+        })
+        .collect();
+    Isa::available()
+        .into_iter()
+        .map(|isa| {
+            let mut lockstep = Lockstep::with_isa(sims.clone(), isa).unwrap();
+            let step = median_time(5, || {
+                for _ in 0..STEPS {
+                    black_box(lockstep.step());
+                }
+            });
+            (isa.name(), step.as_secs_f64() / (STEPS * LANES) as f64)
+        })
+        .collect()
 }
 
 /// The exponent p of y ~ x^p, least squares on (ln x, ln y).
@@ -81,10 +108,16 @@ fn sweep_measured(
         let problem = make(value);
         let x = measure(value, &problem);
         let (i, s) = cost(&problem);
+        let lanes: Vec<String> = lanes_cost(&problem)
+            .into_iter()
+            .map(|(isa, t)| format!("{isa} {:.3} us ({:.2} x)", t * 1e6, t / s))
+            .collect();
         println!(
-            "  {x:>8}  Simulation::new {:>9.2} ms   step {:>7.3} us",
+            "  {x:>8}  Simulation::new {:>9.2} ms   step {:>7.3} us   per seed in lanes of \
+             {LANES}: {}",
             i * 1e3,
-            s * 1e6
+            s * 1e6,
+            lanes.join(", ")
         );
         init.push((x, i));
         step.push((x, s));
