@@ -24,7 +24,8 @@ use slowdrift::forces::{Isa, LANES};
 use slowdrift::montecarlo::cases::{open_case_table, CaseRow};
 use slowdrift::montecarlo::runs_file::{self, RunRow, RunsFile};
 use slowdrift::montecarlo::{
-    campaign_lane_widths, lane_width, run_jobs, seed_statistics, Case, Job, DOFS, STATISTICS,
+    campaign_lane_widths, has_drag, lane_width, run_jobs, seed_statistics, Case, Job, DOFS,
+    STATISTICS,
 };
 use slowdrift::Problem;
 use std::io::{IsTerminal, Write};
@@ -395,6 +396,8 @@ pub fn run_campaign(
     for (case, &width) in cases.iter().zip(&widths) {
         let why = if width == LANES {
             "at most"
+        } else if !has_drag(&case.problem) {
+            "no drag for lanes to share"
         } else if width == lane_width(case) {
             "what the memory limit holds of its runs' records"
         } else {

@@ -20,7 +20,7 @@ pub mod runs_file;
 
 use crate::error::{Error, Result};
 use crate::fingerprint::fingerprint;
-use crate::model::WaveFrequencyMotion;
+use crate::model::{DragModel, WaveFrequencyMotion};
 use crate::record_plan::{MemoryEstimate, PlanKey};
 use crate::stats::summarize;
 use crate::{Problem, RecordPlan, Simulation};
@@ -317,13 +317,18 @@ fn run_group_in_lanes(
     )
 }
 
-/// The seeds of `case` a lane group holds at most: [`crate::forces::LANES`], or fewer
-/// when the records of that many runs (and their plan, once) would exceed the case's memory
+/// The seeds of `case` a lane group holds at most: 1 when the case has no drag (the lanes
+/// share only the drag's strip sums: docs/benchmarks.md#how-cost-grows), else
+/// [`crate::forces::LANES`], or fewer when the records of that many runs (and their plan, once) would exceed the case's memory
 /// limit (`run.memory_limit_gb`, which bounds one thread's records: [`MemoryEstimate`], of
 /// the case as given, which bounds the records of its [`Case::simulated`] runs); 1 when the
 /// estimate cannot be made (the run then reports why).
 pub fn lane_width(case: &Case) -> usize {
-    let limit = case.problem.run.memory_limit;
+    let problem = &case.problem;
+    if !has_drag(problem) {
+        return 1;
+    }
+    let limit = problem.run.memory_limit;
     match MemoryEstimate::of(&case.problem) {
         Ok(estimate) if estimate.per_run > 0.0 => {
             let fits = ((limit - estimate.plan) / estimate.per_run).floor();
@@ -331,6 +336,11 @@ pub fn lane_width(case: &Case) -> usize {
         }
         _ => 1,
     }
+}
+
+/// Whether `problem` has a Morison drag on some column (what lanes share).
+pub fn has_drag(problem: &Problem) -> bool {
+    problem.model.drag != DragModel::Off && !problem.platform.columns.is_empty()
 }
 
 /// The seeds of each case stepped together in a campaign of `jobs` jobs on `threads`

@@ -182,7 +182,7 @@ fn a_campaign_in_lanes_gives_each_seeds_own_run() {
 /// A lane group holds at most the runs whose records fit the case's memory limit together
 /// (the plan once, each run's records): 4 under the default limit, 2 when the limit leaves
 /// room for 2.5 runs, 1 when it leaves room for less than 2, from the estimate the limit is
-/// checked against.
+/// checked against; a case without drag runs alone (the lanes share only the drag).
 #[test]
 fn lanes_hold_no_more_runs_than_the_memory_limit_allows() {
     let mut case = Case {
@@ -191,6 +191,9 @@ fn lanes_hold_no_more_runs_than_the_memory_limit_allows() {
         transient: 50.0,
     };
     assert_eq!(lane_width(&case), LANES);
+    let mut no_drag = case.clone();
+    no_drag.problem.model.drag = DragModel::Off;
+    assert_eq!(lane_width(&no_drag), 1, "no drag to share");
     let estimate = MemoryEstimate::of(&case.problem).unwrap();
     for (runs, width) in [(2.5, 2), (3.0, 3), (1.9, 1), (0.5, 1), (40.0, LANES)] {
         case.problem.run.memory_limit = estimate.plan + runs * estimate.per_run;
