@@ -25,5 +25,8 @@ if ! wait "$venvs"; then
 fi
 target_dir="${CARGO_TARGET_DIR:-$repo/target}"
 [[ "$target_dir" = /* ]] || target_dir="$repo/$target_dir"
-SLOWDRIFT_FMU="$target_dir/fmu/SlowDrift.fmu" bash tests/clients/run_clients.sh
+# The CLI `cargo test` built (its integration tests ran it), used as it is: a `cargo build`
+# of it here would recompile the crate with another feature set.
+SLOWDRIFT_FMU="$target_dir/fmu/SlowDrift.fmu" SLOWDRIFT_CLI="$target_dir/release/slowdrift" \
+    bash tests/clients/run_clients.sh
 bash tests/bem/run_bem.sh

@@ -13,6 +13,14 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 
 import mooring_stiffness  # noqa: E402
 import mooring_loop  # noqa: E402
+import routes  # noqa: E402
+
+
+@pytest.fixture(scope="session", autouse=True)
+def native_tool():
+    """The native CLI built (or found up to date) before any test runs, so that no test's
+    build of it follows fmu-pack's (routes.native_tool)."""
+    return routes.native_tool()
 
 
 @pytest.fixture(scope="session")

@@ -8,6 +8,8 @@ bit for bit, so the two routes can be compared exactly.
 """
 
 import csv
+import functools
+import json
 import math
 import os
 import shutil
@@ -73,15 +75,36 @@ def native_config(parameters, duration, step):
     return text
 
 
+@functools.lru_cache(maxsize=None)
+def native_tool():
+    """Path of the native CLI: $SLOWDRIFT_CLI when set (tests/run_all.sh sets it to the
+    executable `cargo test` built), else built by cargo once per session (its path from
+    cargo's own report); run directly from then on: a `cargo run` of it would rebuild the
+    crate after fmu-pack's build of the FMU's library (another feature set, the same output
+    file). conftest.py resolves it before any test runs."""
+    given = os.environ.get("SLOWDRIFT_CLI")
+    if given:
+        assert os.path.isfile(given), f"SLOWDRIFT_CLI={given} is not a file"
+        return given
+    cargo = shutil.which("cargo") or "cargo"
+    done = subprocess.run([cargo, "build", "--release", "--bin", "slowdrift",
+                           "--message-format=json"], cwd=REPO, check=True,
+                          capture_output=True, text=True)
+    for line in done.stdout.splitlines():
+        message = json.loads(line)
+        if message.get("reason") == "compiler-artifact" and message.get("executable") and \
+                message["target"]["name"] == "slowdrift":
+            return message["executable"]
+    raise AssertionError("cargo did not report the slowdrift executable")
+
+
 def run_native(workdir, parameters, duration, step):
     """Runs the native CLI; returns (time, outputs) with outputs[:, j] = OUTPUTS[j]."""
     config = os.path.join(workdir, f"native_h{step}.toml")
     out = os.path.join(workdir, f"native_h{step}.csv")
     with open(config, "w") as f:
         f.write(native_config(parameters, duration, step))
-    cargo = shutil.which("cargo") or "cargo"
-    subprocess.run([cargo, "run", "--release", "--quiet", "--bin", "slowdrift", "--",
-                    "simulate", "--config", config, "--out", out],
+    subprocess.run([native_tool(), "simulate", "--config", config, "--out", out],
                    cwd=REPO, check=True, stdout=subprocess.DEVNULL)
     with open(out, newline="") as f:
         rows = list(csv.reader(f))

@@ -28,7 +28,6 @@ separate drag, and a case the model refuses (Hs = -1).
 """
 
 import hashlib
-import json
 import os
 import signal
 import subprocess
@@ -41,6 +40,7 @@ from pathlib import Path
 import pytest
 
 from mooring_loop import REPO
+from routes import native_tool
 from slowdrift_dask import Settings, run_campaign
 from slowdrift_dask.worker import FMU_EVENTS, plugin_name
 
@@ -57,16 +57,8 @@ bad,-1,9,30,,,,
 
 @pytest.fixture(scope="module")
 def slowdrift():
-    """The native tool, built by cargo (its path from cargo's own report)."""
-    done = subprocess.run(["cargo", "build", "--release", "--bin", "slowdrift",
-                           "--message-format=json"], cwd=REPO, check=True,
-                          capture_output=True, text=True)
-    for line in done.stdout.splitlines():
-        message = json.loads(line)
-        if message.get("reason") == "compiler-artifact" and message.get("executable") and \
-                message["target"]["name"] == "slowdrift":
-            return message["executable"]
-    raise AssertionError("cargo did not report the slowdrift executable")
+    """The native tool, built by cargo (routes.native_tool)."""
+    return native_tool()
 
 
 @pytest.fixture(scope="module")

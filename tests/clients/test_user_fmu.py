@@ -27,7 +27,7 @@ import numpy as np
 import pytest
 
 from mooring_loop import REPO
-from routes import OUTPUTS
+from routes import OUTPUTS, native_tool
 
 EXAMPLE = os.path.join(REPO, "tests", "data", "example.toml")
 STOP = 600  # s of the runs compared
@@ -49,9 +49,7 @@ def user_fmu(tmp_path_factory, fmu):
 def native(tmp_path_factory):
     """The CLI's run of example.toml: (time, outputs in the order of routes.OUTPUTS)."""
     out = tmp_path_factory.mktemp("user-native") / "example.csv"
-    cargo = shutil.which("cargo") or "cargo"
-    subprocess.run([cargo, "run", "--release", "--quiet", "--bin", "slowdrift", "--",
-                    "simulate", "--config", EXAMPLE, "--out", str(out)],
+    subprocess.run([native_tool(), "simulate", "--config", EXAMPLE, "--out", str(out)],
                    cwd=REPO, check=True, stdout=subprocess.DEVNULL)
     with open(out, newline="") as f:
         rows = list(csv.reader(f))
