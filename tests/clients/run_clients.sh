@@ -7,8 +7,10 @@
 # tests/run_all.sh does after packing it once), runs pytest on tests/clients.
 #   tests/clients/run_clients.sh              # all client tests
 #   tests/clients/run_clients.sh -k mooring   # extra arguments go to pytest
-# Environment: SLOWDRIFT_FMU (another FMU file: no packing), PYTHON (interpreter for the venv,
-# python3), CARGO_TARGET_DIR (where fmu-pack writes the FMU).
+# Environment: SLOWDRIFT_FMU (another FMU file: no packing), SLOWDRIFT_CLI (the slowdrift
+# executable to run as the native tool, as tests/run_all.sh gives the one `cargo test` built;
+# unset: built once by cargo), PYTHON (interpreter for the venv, python3), CARGO_TARGET_DIR
+# (where fmu-pack writes the FMU).
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
