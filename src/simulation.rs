@@ -15,7 +15,7 @@ pub use crate::dynamics::Held;
 use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};
 use crate::error::numbers::written;
 use crate::error::{Error, Result};
-use crate::forces::{refine, ForceRecords, Segments, WholeMotion};
+use crate::forces::{refine, ForceRecords, SamplePoint, Segments, WholeMotion, YawPoint};
 use crate::problem::Problem;
 use crate::record_plan::{QtfRank, RecordPlan, Segment};
 use crate::sea_state::{FrequencyGrid, WaveComponents};
@@ -510,12 +510,21 @@ impl Simulation {
 
     /// The state's derivative (q', q'') at `time` for the state `y` (RK4's right-hand side).
     fn derivative(&self, time: f64, y: &[f64; 6], held: &Held) -> Result<[f64; 6]> {
-        let records = &self.segment.records;
-        let at = records.clock.locate(time)?;
-        let yaw = records.locate_yaw(time, y[2])?;
+        let (at, yaw) = self.located(time, y[2])?;
         let (q, qd) = ([y[0], y[1], y[2]], [y[3], y[4], y[5]]);
-        let qdd = self.model.acceleration(records, &at, &yaw, &q, &qd, held);
+        let qdd = self
+            .model
+            .acceleration(&self.segment.records, &at, &yaw, &q, &qd, held);
         Ok([qd[0], qd[1], qd[2], qdd[0], qdd[1], qdd[2]])
+    }
+
+    /// Where `time` falls in the records, and the yaw `theta` in the yaw-following ones.
+    fn located(&self, time: f64, theta: f64) -> Result<(SamplePoint, YawPoint)> {
+        let records = &self.segment.records;
+        Ok((
+            records.clock.locate(time)?,
+            records.locate_yaw(time, theta)?,
+        ))
     }
 
     /// Ends a step from `t` over `h` on the state `next`: refused if it is unphysical or

@@ -239,21 +239,24 @@ impl SlowDriftModel {
         q: &[f64; 3],
         held: &Held,
     ) -> [f64; 3] {
-        let rotation = body.rotation;
         let total = self
             .forces_with_drag(body, drag, records, at, yaw, q, held.wind_speed)
             .total(&held.force);
-        let body = rotation.to_body(&Vector3::from(total));
-        rotation.to_inertial(&(self.inverse_mass * body)).into()
+        self.solve(&body.rotation, &total).into()
     }
 
     /// The change of velocity (X', Y', theta') over a time `h` that the force `force`
     /// (inertial frame, N, N, N m) alone gives the body at yaw `theta`: S (M + A)^-1 S^T f h
     /// (E&S 1 without the other terms).
     pub fn velocity_change(&self, theta: f64, force: &[f64; 3], h: f64) -> [f64; 3] {
-        let rotation = Rotation::new(theta);
+        (self.solve(&Rotation::new(theta), force) * h).into()
+    }
+
+    /// S (M + A)^-1 S^T f: the acceleration the force `f` (inertial frame) gives the body
+    /// at the rotation S (E&S 1 solved for q'').
+    fn solve(&self, rotation: &Rotation, force: &[f64; 3]) -> Vector3<f64> {
         let body = rotation.to_body(&Vector3::from(*force));
-        (rotation.to_inertial(&(self.inverse_mass * body)) * h).into()
+        rotation.to_inertial(&(self.inverse_mass * body))
     }
 
     /// [`SlowDriftModel::forces`] with the body frame and the drag (body frame) already

@@ -146,8 +146,9 @@ impl ColumnState<'_> {
     /// row, single precision).
     #[inline]
     pub fn velocities_on_sample(&self) -> Option<StripVelocities<'_>> {
-        let k = self.kinematics;
-        self.at.on_sample().then(|| k.row(self.at.index()).1)
+        self.kinematics
+            .row_on_sample(&self.at)
+            .map(|(_, velocities)| velocities)
     }
 }
 

@@ -319,19 +319,19 @@ fn run_group_in_lanes(
 
 /// The seeds of `case` a lane group holds at most: 1 when the case has no drag (the lanes
 /// share only the drag's strip sums: docs/benchmarks.md#how-cost-grows), else
-/// [`crate::forces::LANES`], or fewer when the records of that many runs (and their plan, once) would exceed the case's memory
-/// limit (`run.memory_limit_gb`, which bounds one thread's records: [`MemoryEstimate`], of
-/// the case as given, which bounds the records of its [`Case::simulated`] runs); 1 when the
-/// estimate cannot be made (the run then reports why).
+/// [`crate::forces::LANES`], or fewer when the records of that many runs (and their plan,
+/// once) would exceed the case's memory limit (`run.memory_limit_gb`, which bounds one
+/// thread's records: [`MemoryEstimate`] of the case as given, which bounds the records of
+/// its [`Case::simulated`] runs); 1 when the estimate cannot be made (the run then reports
+/// why).
 pub fn lane_width(case: &Case) -> usize {
     let problem = &case.problem;
     if !has_drag(problem) {
         return 1;
     }
-    let limit = problem.run.memory_limit;
-    match MemoryEstimate::of(&case.problem) {
+    match MemoryEstimate::of(problem) {
         Ok(estimate) if estimate.per_run > 0.0 => {
-            let fits = ((limit - estimate.plan) / estimate.per_run).floor();
+            let fits = ((problem.run.memory_limit - estimate.plan) / estimate.per_run).floor();
             (fits.max(1.0) as usize).min(crate::forces::LANES)
         }
         _ => 1,

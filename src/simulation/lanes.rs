@@ -118,13 +118,11 @@ fn derivatives(
         if outcome[l].is_err() {
             continue;
         }
-        let records = &sim.segment.records;
         let (q, qd) = (
             [y[6 * l], y[6 * l + 1], y[6 * l + 2]],
             [y[6 * l + 3], y[6 * l + 4], y[6 * l + 5]],
         );
-        let at = records.clock.locate(time);
-        match at.and_then(|at| Ok((at, records.locate_yaw(time, q[2])?))) {
+        match sim.located(time, q[2]) {
             Ok((at, yaw)) => {
                 let body = sim.model.body_frame(&q, &qd);
                 located[count] = Some(Located {
