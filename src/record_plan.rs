@@ -139,6 +139,9 @@ pub struct RecordPlan {
     motion: Option<Vec<Vec<MotionTransfer>>>,
     /// The gusts of the wind (`forces::gust`), their spectrum on the grid; `None` when calm.
     gust: Option<GustStream>,
+    /// The wave components of the plan's own sea on the grid (their scales computed once): a
+    /// seed of the same sea redraws a copy instead of evaluating the spectrum again.
+    components: WaveComponents,
 }
 
 /// What the yaw-following records need besides the seed.
@@ -306,6 +309,7 @@ impl RecordPlan {
             .and_then(|w| w.gusts)
             .map(|g| GustStream::new(&g.spectrum, &grid, segments, fft.clone()));
         Ok(RecordPlan {
+            components: WaveComponents::generate(sea, grid.clone()),
             motion,
             gust,
             problem: problem.clone(),
@@ -363,7 +367,7 @@ impl RecordPlan {
             index: 0,
             records: ForceRecords::empty(),
             work,
-            components: WaveComponents::generate_block(&problem.sea, self.grid.clone(), 0),
+            components: self.components_of(&problem.sea),
             gust: self.gust.clone(),
         };
         self.build(problem, &mut segment, 0, true);
@@ -378,14 +382,33 @@ impl RecordPlan {
             return;
         }
         if k != segment.index + 1 && k > 0 {
+            segment.components.regenerate(problem.sea.seed, k - 1);
             self.build(problem, segment, k - 1, false);
         }
+        segment.components.regenerate(problem.sea.seed, k);
         self.build(problem, segment, k, true);
         segment.index = k;
     }
 
-    /// Builds segment `k` into `segment`, joined to block k - 1's tails when
-    /// `after_previous` (forces::stream).
+    /// Block 0's wave components of `sea` (a sea this plan serves): a redrawn copy of the
+    /// plan's own when `sea` differs from the plan's in its seed alone, else made anew.
+    fn components_of(&self, sea: &SeaState) -> WaveComponents {
+        let own = &self.problem.sea;
+        let same_sea = SeaState {
+            seed: own.seed,
+            ..sea.clone()
+        } == *own;
+        if same_sea {
+            let mut components = self.components.clone();
+            components.regenerate(sea.seed, 0);
+            components
+        } else {
+            WaveComponents::generate(sea, self.grid.clone())
+        }
+    }
+
+    /// Builds segment `k` into `segment` from its components (block k's), joined to block
+    /// k - 1's tails when `after_previous` (forces::stream).
     fn build(&self, problem: &Problem, segment: &mut Segment, k: u64, after_previous: bool) {
         let Segment {
             records,
@@ -395,7 +418,6 @@ impl RecordPlan {
             ..
         } = segment;
         work.begin(k, after_previous);
-        components.regenerate(&problem.sea, k);
         let drag_columns = match problem.model.drag {
             crate::model::DragModel::Off => &[][..],
             _ => &problem.platform.columns[..],

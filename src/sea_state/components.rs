@@ -181,6 +181,9 @@ pub struct WaveComponents {
     /// E sum_k |a_{first + j, k}|^2 = 2 S(omega_j) d_omega sum_k w_k, m^2: the same for
     /// every block.
     power: Vec<f64>,
+    /// Direction-major like `amplitudes`: sqrt(S(omega_j) w_k d_omega), m, the scale of
+    /// every draw: the same for every block and seed, so computed once.
+    scales: Vec<f64>,
 }
 
 impl WaveComponents {
@@ -198,37 +201,44 @@ impl WaveComponents {
     /// the same for any k, and are independent of every other block's. Block 0 is
     /// [`WaveComponents::generate`].
     pub fn generate_block(sea: &SeaState, grid: FrequencyGrid, k: u64) -> Self {
-        let mut components = WaveComponents {
-            directions: sea.directions(),
-            grid,
-            amplitudes: Vec::new(),
-            power: Vec::new(),
-        };
-        components.regenerate(sea, k);
+        let mut components = Self::undrawn(sea, grid);
+        components.regenerate(sea.seed, k);
         components
     }
 
-    /// These components redrawn as block `k`'s of `sea` (the sea these were made for: same
-    /// directions and grid), in place: [`WaveComponents::generate_block`] without
-    /// allocating.
-    pub fn regenerate(&mut self, sea: &SeaState, k: u64) {
-        let mut rng = block_generator(sea.seed, k);
-        let grid = &self.grid;
-        self.amplitudes.clear();
-        self.power.clear();
-        self.power.resize(grid.count, 0.0);
-        self.amplitudes
-            .reserve_exact(self.directions.len() * grid.count);
-        for dir in &self.directions {
-            for j in 0..grid.count {
+    /// The components of `sea` on `grid` before any draw: their scales and expected power
+    /// (every draw's variance S(omega_j) w_k d_omega, summed over the directions in order),
+    /// no amplitudes yet.
+    fn undrawn(sea: &SeaState, grid: FrequencyGrid) -> Self {
+        let directions = sea.directions();
+        let mut power = vec![0.0; grid.count];
+        let mut scales = Vec::with_capacity(directions.len() * grid.count);
+        for dir in &directions {
+            for (j, p) in power.iter_mut().enumerate() {
                 let variance = sea.spectrum.density(grid.omega(j)) * dir.weight * grid.d_omega;
-                let scale = variance.sqrt();
-                let (xi, xi_prime) = standard_normal_pair(&mut rng);
-                self.amplitudes
-                    .push(Complex64::new(scale * xi, scale * xi_prime));
-                self.power[j] += 2.0 * variance;
+                scales.push(variance.sqrt());
+                *p += 2.0 * variance;
             }
         }
+        WaveComponents {
+            directions,
+            grid,
+            amplitudes: Vec::new(),
+            power,
+            scales,
+        }
+    }
+
+    /// These components redrawn as block `k`'s of the sea they were made for with seed
+    /// `seed`, in place: [`WaveComponents::generate_block`] of that sea with that seed,
+    /// without allocating or evaluating the spectrum.
+    pub fn regenerate(&mut self, seed: u64, k: u64) {
+        let mut rng = block_generator(seed, k);
+        self.amplitudes.clear();
+        self.amplitudes.extend(self.scales.iter().map(|&scale| {
+            let (xi, xi_prime) = standard_normal_pair(&mut rng);
+            Complex64::new(scale * xi, scale * xi_prime)
+        }));
     }
 
     /// The expected power of component j summed over the directions, E sum_k |a_{j,k}|^2
@@ -240,14 +250,7 @@ impl WaveComponents {
     /// [`WaveComponents::expected_power`] of `sea` on `grid` without drawing the amplitudes
     /// (the same sums in the same order, so the same bits).
     pub fn expected_power_of(sea: &SeaState, grid: &FrequencyGrid) -> Vec<f64> {
-        let mut power = vec![0.0; grid.count];
-        for dir in &sea.directions() {
-            for (j, p) in power.iter_mut().enumerate() {
-                let variance = sea.spectrum.density(grid.omega(j)) * dir.weight * grid.d_omega;
-                *p += 2.0 * variance;
-            }
-        }
-        power
+        Self::undrawn(sea, grid.clone()).power
     }
 
     /// Amplitudes of direction k, indexed by component j.
