@@ -17,9 +17,10 @@ mod recombination;
 use super::depth_basis::DepthBasis;
 use super::record::SamplePoint;
 use super::synthesis::Synthesizer;
+use crate::forces::isa::Isa;
 use crate::model::Cylinder;
 use crate::sea_state::{Direction, WaveComponents};
-use recombination::{lay_out_weights, recombine_row, RowLayout};
+use recombination::{append_rows, lay_out_weights, RowLayout, Rows};
 use rustfft::num_complex::{Complex32, Complex64};
 use std::sync::Arc;
 
@@ -189,10 +190,7 @@ pub struct KinematicsWork {
     /// V_jq of the basis in single precision, laid out for the recombination kernel
     /// (`recombination::lay_out_weights`).
     mix: Vec<f32>,
-    /// One row's strip velocities, interleaved (u_x, u_y) (u_x alone in waves along x),
-    /// padded to whole blocks (`RowLayout::width`).
-    row: Vec<f32>,
-    /// One sample of every term.
+    /// One sample of every term (the recombination's scratch).
     samples: Vec<Complex32>,
     /// The key of every column, and the rows of the previous build to write again.
     keys: Vec<KinematicsKey>,
@@ -363,42 +361,32 @@ impl KinematicsWork {
             RowLayout::Interleaved
         };
         lay_out_weights(layout, strips, rank, |q| basis.mix(q), &mut self.mix);
-        let width = layout.width(strips);
         let mut rows = self.spare_rows.pop().unwrap_or_default();
         if Arc::get_mut(&mut rows).is_none() {
             // Still held by records cloned from these (a cloned simulation): new rows.
             rows = Arc::default();
         }
         let buffer = Arc::get_mut(&mut rows).expect("rows held only here");
-        let velocities = layout.per_strip() * strips;
         buffer.clear();
-        buffer.reserve((1 + velocities) * n);
-        refill(&mut self.row, std::iter::repeat_n(0.0, width));
-        refill(
-            &mut self.samples,
-            std::iter::repeat_n(Complex32::default(), rank),
-        );
         // Row m: the elevation, then u_j(m) = sum_q V_jq g_q(m) for every strip j, in
         // single precision (the terms' rounding and the sum's, a few 1e-8 relative, are
         // below the storage's own and the truncation's 1e-6), summed over q in order.
         // The strips' floats are interleaved (u_x, u_y) (u_x alone in waves along x,
         // u_y = 0), recombined by the register-blocked kernel (kinematics/recombination.rs)
-        // and copied without its padding.
-        let eta = self.eta[group / 2 * n..][..n].iter();
+        // on the widest instruction set the CPU has (the same bits on every one).
+        let recombined = Rows {
+            layout,
+            strips,
+            weights: &self.mix,
+            series: &self.terms,
+            len: n,
+            rank,
+            paired: along_x,
+        };
+        let eta = &self.eta[group / 2 * n..][..n];
         let real = group.is_multiple_of(2);
-        for (m, eta) in eta.enumerate() {
-            buffer.push(if real { eta.re } else { eta.im });
-            for (q, g) in self.samples.iter_mut().enumerate() {
-                *g = if along_x {
-                    let pair = self.terms[q / 2 * n + m];
-                    Complex32::new(if q % 2 == 0 { pair.re } else { pair.im }, 0.0)
-                } else {
-                    self.terms[q * n + m]
-                };
-            }
-            recombine_row(layout, &self.mix, &self.samples, &mut self.row);
-            buffer.extend_from_slice(&self.row[..velocities]);
-        }
+        let isa = Isa::detect();
+        append_rows(isa, &recombined, (eta, real), &mut self.samples, buffer);
         (layout, rows)
     }
 }

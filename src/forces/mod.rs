@@ -7,6 +7,7 @@
 mod depth_basis;
 mod directional;
 mod gust;
+mod isa;
 mod kinematics;
 mod motion;
 mod newman;
@@ -22,6 +23,7 @@ mod yaw_following;
 pub use depth_basis::{DepthBasis, KINEMATICS_TOLERANCE};
 pub use directional::{add_cross_terms, cross_direction_force, direction_pairs, CrossWork};
 pub use gust::GustStream;
+pub use isa::Isa;
 pub use kinematics::{
     distinct_kinematics, kinematics_row_floats, ColumnKinematics, KinematicsWork,
 };
@@ -32,7 +34,7 @@ pub use record::{Record, RecordClock, SamplePoint};
 pub use stream::{Join, Sampling, Segments};
 pub use synthesis::{plan_inverse_fft, InverseFft, Synthesizer};
 pub use transfer::{transfers_on_grid, DirectionTransfer};
-pub use viscous::{drag_force, drag_forces, Isa, LaneDrag, LANES};
+pub use viscous::{drag_force, drag_forces, LaneDrag, LANES};
 pub use yaw_following::{
     yaw_transfers, SlowRecords, YawFollowingRecords, YawGrid, YawPoint, YawWork,
 };

@@ -11,7 +11,7 @@
 
 mod lanes;
 
-pub use lanes::{drag_forces, Isa, LaneDrag, LANES};
+pub use lanes::{drag_forces, LaneDrag, LANES};
 
 use super::kinematics::{ColumnKinematics, ColumnState, StripVelocities};
 use super::record::SamplePoint;

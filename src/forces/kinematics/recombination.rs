@@ -11,6 +11,10 @@
 //! each chunk term-major, then block, as [`recombine_row`] reads them; each weight twice in
 //! an interleaved row (for u_x and u_y), once along x.
 
+// The one unsafe call: the AVX2 build of the rows, made only where the CPU has AVX2.
+#![allow(unsafe_code)]
+
+use crate::forces::isa::Isa;
 use rustfft::num_complex::Complex32;
 
 /// Floats of one block of a row's strip velocities (two SSE registers).
@@ -67,35 +71,126 @@ pub(super) fn lay_out_weights<'a>(
     }
 }
 
-/// One row (`row`: [`RowLayout::width`] floats) from the terms' `samples` and the weights
-/// laid out by [`lay_out_weights`], summed over the terms in order, [`BLOCKS_AT_ONCE`]
-/// blocks of the row at a time. A basis of rank 0 (a sea without power) leaves the row
-/// zero.
+/// A record's rows to recombine: its strips and their layout, the weights laid out by
+/// [`lay_out_weights`], and the depth terms' series g_q(m), `len` samples each: term q at
+/// `series[q * len + m]`, or, when `paired` (waves along x, where each g_q is real), terms
+/// 2p and 2p + 1 as the real and imaginary parts of `series[p * len + m]`.
+pub(super) struct Rows<'a> {
+    pub layout: RowLayout,
+    pub strips: usize,
+    pub weights: &'a [f32],
+    pub series: &'a [Complex32],
+    pub len: usize,
+    pub rank: usize,
+    pub paired: bool,
+}
+
+impl Rows<'_> {
+    #[inline(always)]
+    fn sample(&self, q: usize, m: usize) -> Complex32 {
+        if self.paired {
+            let pair = self.series[q / 2 * self.len + m];
+            Complex32::new(
+                if q.is_multiple_of(2) {
+                    pair.re
+                } else {
+                    pair.im
+                },
+                0.0,
+            )
+        } else {
+            self.series[q * self.len + m]
+        }
+    }
+}
+
+/// Appends the `rows` to `out`: row m is the elevation `eta[m]` (its real part when
+/// `real`, else its imaginary part) then the strips' velocities recombined from the terms,
+/// without the row's padding, on the instruction set `isa`: the same operations in the
+/// same order on every one, so the same bits. `samples` is scratch for one sample of every
+/// term (its capacity kept: no allocation once it has held `rows.rank`).
+pub(super) fn append_rows(
+    isa: Isa,
+    rows: &Rows,
+    eta: (&[Complex32], bool),
+    samples: &mut Vec<Complex32>,
+    out: &mut Vec<f32>,
+) {
+    samples.clear();
+    samples.resize(rows.rank, Complex32::default());
+    match isa {
+        Isa::Baseline => append_rows_with(rows, eta, samples, out),
+        #[cfg(target_arch = "x86_64")]
+        // SAFETY: `Isa::Avx2` is only made where the CPU reports AVX2 (`Isa::detect`,
+        // `Isa::available`).
+        Isa::Avx2 => unsafe { append_rows_avx2(rows, eta, samples, out) },
+    }
+}
+
+/// [`append_rows_with`] compiled for AVX2 (a block of [`LANES`] floats is one register).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn append_rows_avx2(
+    rows: &Rows,
+    eta: (&[Complex32], bool),
+    samples: &mut [Complex32],
+    out: &mut Vec<f32>,
+) {
+    append_rows_with(rows, eta, samples, out)
+}
+
+#[inline(always)]
+fn append_rows_with(
+    rows: &Rows,
+    (eta, real): (&[Complex32], bool),
+    samples: &mut [Complex32],
+    out: &mut Vec<f32>,
+) {
+    let width = rows.layout.width(rows.strips);
+    let padding = width - rows.layout.per_strip() * rows.strips;
+    out.reserve((1 + width) * eta.len());
+    for (m, eta) in eta.iter().enumerate() {
+        out.push(if real { eta.re } else { eta.im });
+        for (q, g) in samples.iter_mut().enumerate() {
+            *g = rows.sample(q, m);
+        }
+        recombine_row(rows.layout, width, rows.weights, samples, out);
+        out.truncate(out.len() - padding);
+    }
+}
+
+/// Appends one row (`width` floats: [`RowLayout::width`]) to `out` from the terms'
+/// `samples` and the weights laid out by [`lay_out_weights`], summed over the terms in
+/// order, [`BLOCKS_AT_ONCE`] blocks of the row at a time. A basis of rank 0 (a sea without
+/// power) gives a zero row.
 #[inline(always)]
 pub(super) fn recombine_row(
     layout: RowLayout,
+    width: usize,
     weights: &[f32],
     samples: &[Complex32],
-    row: &mut [f32],
+    out: &mut Vec<f32>,
 ) {
     // Each layout its own inlined loop (the spreading is a function item).
     match layout {
-        RowLayout::Interleaved => blocks(weights, samples, interleaved, row),
-        RowLayout::AlongX => blocks(weights, samples, real_part, row),
+        RowLayout::Interleaved => blocks(width, weights, samples, interleaved, out),
+        RowLayout::AlongX => blocks(width, weights, samples, real_part, out),
     }
 }
 
 #[inline(always)]
 fn blocks(
+    width: usize,
     mut weights: &[f32],
     samples: &[Complex32],
     pattern: impl Fn(Complex32) -> [f32; LANES] + Copy,
-    row: &mut [f32],
+    out: &mut Vec<f32>,
 ) {
-    for out in row.chunks_mut(BLOCKS_AT_ONCE * LANES) {
-        let (this, rest) = weights.split_at(samples.len() * out.len());
+    for first in (0..width).step_by(BLOCKS_AT_ONCE * LANES) {
+        let floats = (width - first).min(BLOCKS_AT_ONCE * LANES);
+        let (this, rest) = weights.split_at(samples.len() * floats);
         weights = rest;
-        match out.len() / LANES {
+        match floats / LANES {
             BLOCKS_AT_ONCE => recombine::<BLOCKS_AT_ONCE>(this, samples, pattern, out),
             3 => recombine::<3>(this, samples, pattern, out),
             2 => recombine::<2>(this, samples, pattern, out),
@@ -104,15 +199,15 @@ fn blocks(
     }
 }
 
-/// `out` (K blocks of [`LANES`] floats) = sum over the terms q, in order, of the term's
-/// sample as `pattern` spreads it over a block, times its K blocks of `weights`
+/// Appends K blocks of [`LANES`] floats to `out`: the sum over the terms q, in order, of
+/// the term's sample as `pattern` spreads it over a block, times its K blocks of `weights`
 /// (term-major, then block).
 #[inline(always)]
 fn recombine<const K: usize>(
     weights: &[f32],
     samples: &[Complex32],
     pattern: impl Fn(Complex32) -> [f32; LANES],
-    out: &mut [f32],
+    out: &mut Vec<f32>,
 ) {
     let mut sum = [[0.0f32; LANES]; K];
     for (weights, &g) in weights.chunks_exact(K * LANES).zip(samples) {
@@ -124,8 +219,8 @@ fn recombine<const K: usize>(
         }
     }
     // Block by block: a copy of a known length, kept inline.
-    for (out, sum) in out.chunks_exact_mut(LANES).zip(&sum) {
-        out.copy_from_slice(sum);
+    for sum in &sum {
+        out.extend_from_slice(sum);
     }
 }
 
@@ -147,7 +242,8 @@ mod tests {
 
     /// The blocked kernel against the plain double sum u_j = sum_q V_jq g_q, strip by
     /// strip, for every number of blocks (1 to 4 per chunk and more than one chunk), both
-    /// layouts and rank 0.
+    /// layouts, rank 0, paired and separate terms, and the same bits on every instruction
+    /// set the CPU has; each row starts with its elevation and drops its padding.
     #[test]
     fn the_blocked_sum_is_the_plain_sum() {
         for strips in [1, 3, 4, 5, 8, 12, 16, 17, 20, 33] {
@@ -159,42 +255,84 @@ mod tests {
                             .collect()
                     })
                     .collect();
-                let samples: Vec<Complex32> = (0..rank)
-                    .map(|q| Complex32::new(0.5 + q as f32, 1.5 - 0.25 * q as f32))
+                // Two rows: each term's sample at row m.
+                let sample = |q: usize, m: usize| {
+                    Complex32::new(0.5 + q as f32 - m as f32, 1.5 - 0.25 * q as f32)
+                };
+                let separate: Vec<Complex32> = (0..rank)
+                    .flat_map(|q| (0..2).map(move |m| sample(q, m)))
                     .collect();
+                // Paired: terms 2p and 2p + 1 as one series' real and imaginary parts.
+                let paired: Vec<Complex32> = (0..rank.div_ceil(2))
+                    .flat_map(|p| {
+                        (0..2).map(move |m| {
+                            let second = if 2 * p + 1 < rank {
+                                sample(2 * p + 1, m).re
+                            } else {
+                                0.0
+                            };
+                            Complex32::new(sample(2 * p, m).re, second)
+                        })
+                    })
+                    .collect();
+                let eta = [Complex32::new(3.0, -4.0), Complex32::new(5.0, -6.0)];
                 for layout in [RowLayout::Interleaved, RowLayout::AlongX] {
+                    let along_x = layout == RowLayout::AlongX;
                     let mut laid = Vec::new();
                     lay_out_weights(layout, strips, rank, |q| &weights[q], &mut laid);
-                    let mut row = vec![f32::NAN; layout.width(strips)];
-                    recombine_row(layout, &laid, &samples, &mut row);
-                    for j in 0..strips {
-                        let sum = |part: fn(&Complex32) -> f32| -> f64 {
-                            (0..rank)
-                                .map(|q| weights[q][j] * part(&samples[q]) as f64)
-                                .sum()
-                        };
-                        let (ux, uy) = match layout {
-                            RowLayout::Interleaved => (row[2 * j], Some(row[2 * j + 1])),
-                            RowLayout::AlongX => (row[j], None),
-                        };
-                        let bound = 1e-5 * (1.0 + rank as f64);
-                        assert!(
-                            (ux as f64 - sum(|g| g.re)).abs() < bound,
-                            "{layout:?} {strips} {rank} {j}"
-                        );
-                        if let Some(uy) = uy {
-                            assert!(
-                                (uy as f64 - sum(|g| g.im)).abs() < bound,
-                                "{layout:?} {strips} {rank} {j}"
-                            );
+                    let rows = Rows {
+                        layout,
+                        strips,
+                        weights: &laid,
+                        series: if along_x { &paired } else { &separate },
+                        len: 2,
+                        rank,
+                        paired: along_x,
+                    };
+                    let per_row = 1 + layout.per_strip() * strips;
+                    let mut first: Option<Vec<f32>> = None;
+                    for isa in Isa::available() {
+                        let mut out = vec![f32::NAN];
+                        let part = (&eta[..], !along_x);
+                        append_rows(isa, &rows, part, &mut Vec::new(), &mut out);
+                        assert_eq!(out.len(), 1 + 2 * per_row, "{layout:?} {strips} {rank}");
+                        for m in 0..2 {
+                            let row = &out[1 + m * per_row..][..per_row];
+                            let eta = if along_x { eta[m].im } else { eta[m].re };
+                            assert_eq!(row[0], eta);
+                            for j in 0..strips {
+                                let sum = |part: fn(&Complex32) -> f32| -> f64 {
+                                    (0..rank)
+                                        .map(|q| weights[q][j] * part(&sample(q, m)) as f64)
+                                        .sum()
+                                };
+                                let bound = 1e-5 * (1.0 + rank as f64);
+                                let ux = row[1 + layout.per_strip() * j];
+                                assert!(
+                                    (ux as f64 - sum(|g| g.re)).abs() < bound,
+                                    "{layout:?} {strips} {rank} {j} {isa:?}"
+                                );
+                                if !along_x {
+                                    let uy = row[2 + 2 * j];
+                                    assert!(
+                                        (uy as f64 - sum(|g| g.im)).abs() < bound,
+                                        "{layout:?} {strips} {rank} {j} {isa:?}"
+                                    );
+                                }
+                            }
+                        }
+                        match &first {
+                            None => first = Some(out),
+                            Some(first) => assert!(
+                                first
+                                    .iter()
+                                    .zip(&out)
+                                    .skip(1)
+                                    .all(|(a, b)| a.to_bits() == b.to_bits()),
+                                "{layout:?} {strips} {rank}: {isa:?} differs from the baseline"
+                            ),
                         }
                     }
-                    // The padding is zero.
-                    let used = strips * if layout == RowLayout::AlongX { 1 } else { 2 };
-                    assert!(
-                        row[used..].iter().all(|&u| u == 0.0),
-                        "{layout:?} {strips} {rank}"
-                    );
                 }
             }
         }

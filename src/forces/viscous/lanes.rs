@@ -13,6 +13,7 @@
 #![allow(unsafe_code)]
 
 use super::{add_column_force, strip_sum, ColumnStrips, Velocity};
+use crate::forces::isa::Isa;
 use crate::forces::kinematics::{ColumnKinematics, StripVelocities};
 use crate::forces::record::SamplePoint;
 use crate::model::DragModel;
@@ -28,46 +29,6 @@ pub struct LaneDrag<'a> {
     pub at: SamplePoint,
     pub velocity: [f64; 3],
     pub current: [f64; 2],
-}
-
-/// The instruction set the lanes' strip sums are compiled for.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Isa {
-    /// The target's baseline (x86-64: SSE2, two doubles per register).
-    Baseline,
-    /// AVX2: four doubles per register, one register per [`LANES`] lanes.
-    #[cfg(target_arch = "x86_64")]
-    Avx2,
-}
-
-impl Isa {
-    /// The widest this CPU runs.
-    pub fn detect() -> Isa {
-        #[cfg(target_arch = "x86_64")]
-        if std::is_x86_feature_detected!("avx2") {
-            return Isa::Avx2;
-        }
-        Isa::Baseline
-    }
-
-    /// The instruction set's name, as a run's summary gives it.
-    pub fn name(self) -> &'static str {
-        match self {
-            Isa::Baseline => "baseline",
-            #[cfg(target_arch = "x86_64")]
-            Isa::Avx2 => "AVX2",
-        }
-    }
-
-    /// Every instruction set this CPU runs (for the tests).
-    pub fn available() -> Vec<Isa> {
-        let mut all = vec![Isa::Baseline];
-        #[cfg(target_arch = "x86_64")]
-        if std::is_x86_feature_detected!("avx2") {
-            all.push(Isa::Avx2);
-        }
-        all
-    }
 }
 
 /// The drag on each lane's body, body frame (Fx, Fy, Mz), as [`super::drag_force`] gives
