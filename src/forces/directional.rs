@@ -115,7 +115,10 @@ pub fn add_cross_terms(
 ) {
     work.force(components, pairs, synth);
     if let Some(len) = refined {
-        work.cross.iter_mut().for_each(|v| refine::refine(v, len));
+        let spare = &mut work.refined;
+        work.cross
+            .iter_mut()
+            .for_each(|v| refine::refine(v, len, spare));
     }
     for (record, extra) in records.wave_force.iter_mut().zip(&mut work.cross) {
         if extra.is_empty() {
@@ -143,6 +146,8 @@ pub struct CrossWork {
     coefficients: Vec<Complex64>,
     /// The cross-direction force of the last build, per DOF (empty: zero).
     cross: [Vec<f64>; 3],
+    /// The buffer a record is refined into (`forces::refine::refine`'s spare).
+    refined: Vec<f64>,
 }
 
 impl CrossWork {

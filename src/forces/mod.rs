@@ -105,6 +105,8 @@ pub struct RecordWork {
     /// The synthesizer of every second sample, when the quadratic records are made at
     /// their bandwidth (`forces::refine`).
     coarse: Option<Synthesizer>,
+    /// The buffer a record is refined into (`forces::refine::refine`'s spare).
+    refined: Vec<f64>,
 }
 
 impl RecordWork {
@@ -133,6 +135,7 @@ impl RecordWork {
             yaw: YawWork::default(),
             motion: motion::MotionWork::default(),
             coarse: None,
+            refined: Vec::new(),
         }
     }
 
@@ -192,7 +195,7 @@ impl RecordWork {
                 set.wave_force
                     .iter_mut()
                     .chain(damping)
-                    .for_each(|r| refine_record(r, len));
+                    .for_each(|r| refine_record(r, len, &mut self.refined));
             }
         }
     }
@@ -361,7 +364,7 @@ impl ForceRecords {
             }
             if refining {
                 let records = force.iter_mut().chain(damping.iter_mut().flatten());
-                records.for_each(|samples| refine::refine(samples, n));
+                records.for_each(|samples| refine::refine(samples, n, &mut work.refined));
             }
         }
         let builder = &mut work.newman;
@@ -397,9 +400,9 @@ fn quadratic<'a>(
 
 /// A record made at every second sample, refined in place to `len` samples
 /// (`forces::refine`; a zero record stays zero).
-fn refine_record(record: &mut Record, len: usize) {
+fn refine_record(record: &mut Record, len: usize, spare: &mut Vec<f64>) {
     let mut samples = std::mem::take(record).into_samples();
-    refine::refine(&mut samples, len);
+    refine::refine(&mut samples, len, spare);
     *record = Record::new(samples);
 }
 

@@ -74,11 +74,14 @@ pub fn admits(grid: &FrequencyGrid, segments: Segments) -> bool {
         && n / STEP >= b / STEP + (HALO_AFTER + segments.ramp).div_ceil(STEP)
 }
 
-/// Refines a segment's coarse samples (on [`SAMPLING`]) in `samples`, in place, to the
-/// record's `record_len` = B + H + 1 samples from global sample kB - 1: the even global
-/// samples copied, the odd ones interpolated (module doc). An empty record (zero) stays
-/// empty.
-pub fn refine(samples: &mut Vec<f64>, record_len: usize) {
+/// Refines a segment's coarse samples (on [`SAMPLING`]) in `samples` to the record's
+/// `record_len` = B + H + 1 samples from global sample kB - 1: the even global samples
+/// copied, the odd ones interpolated (module doc). An empty record (zero) stays empty.
+/// The refined samples are written once into `spare` (no zero fill, no growth of the
+/// coarse buffer), which then swaps with `samples`: `spare` is left with the coarse
+/// buffer, or a new one of the refined length if that was shorter, so the buffers a
+/// stream's segments pass round allocate nothing after the first segment.
+pub fn refine(samples: &mut Vec<f64>, record_len: usize, spare: &mut Vec<f64>) {
     if samples.is_empty() {
         return;
     }
@@ -87,25 +90,30 @@ pub fn refine(samples: &mut Vec<f64>, record_len: usize) {
         coarse_len,
         (record_len - HALO_BEFORE - HALO_AFTER) / STEP + BEFORE + AFTER
     );
-    // Record sample 2i is global kB + 2i - 1, between coarse i + 3 and i + 4; record sample
-    // 2i + 1 is global kB + 2i, coarse i + 4. Written from the end: pair i reads coarse
-    // i .. i + 8 and writes 2i and 2i + 1, which no later (lower) pair reads once i >= 7;
-    // the first pairs read a copy.
+    // Pair i (record samples 2i and 2i + 1) is the window of coarse samples i .. i + 8.
     let pairs = record_len.div_ceil(2);
-    let head: [f64; 2 * TAPS] = std::array::from_fn(|l| samples.get(l).copied().unwrap_or(0.0));
-    samples.resize(2 * pairs, 0.0);
-    for i in (TAPS..pairs).rev() {
-        let window: [f64; TAPS] = samples[i..i + TAPS].try_into().expect("8 taps");
-        [samples[2 * i], samples[2 * i + 1]] = midpoint_and_node(window);
+    debug_assert!(
+        coarse_len >= pairs + TAPS - 1,
+        "every pair's window is coarse"
+    );
+    spare.clear();
+    if spare.capacity() < 2 * pairs {
+        // A buffer of the refined length (growing the old one would copy it).
+        *spare = Vec::with_capacity(2 * pairs);
     }
-    for i in (0..TAPS.min(pairs)).rev() {
-        let window: [f64; TAPS] = head[i..i + TAPS].try_into().expect("8 taps");
-        [samples[2 * i], samples[2 * i + 1]] = midpoint_and_node(window);
+    for window in samples.windows(TAPS).take(pairs) {
+        let window: [f64; TAPS] = window.try_into().expect("8 taps");
+        spare.extend_from_slice(&midpoint_and_node(window));
     }
-    samples.truncate(record_len);
+    spare.truncate(record_len);
+    std::mem::swap(samples, spare);
+    if spare.capacity() < 2 * pairs {
+        // The coarse buffer was new (a record's first segment): replaced now, so that the
+        // segments after it find a spare of the refined length.
+        *spare = Vec::with_capacity(2 * pairs);
+    }
 }
 
-/// The interpolated midpoint between the window's nodes 3 and 4, and node 4 itself.
 #[inline(always)]
 fn midpoint_and_node([a, b, c, d, e, f, g, h]: [f64; TAPS]) -> [f64; 2] {
     let [w1, w2, w3, w4] = WEIGHTS;
@@ -162,7 +170,7 @@ mod tests {
         let mut out: Vec<f64> = (0..block / STEP + BEFORE + AFTER)
             .map(|l| f(STEP as f64 * (l as f64 - BEFORE as f64)))
             .collect();
-        refine(&mut out, record_len);
+        refine(&mut out, record_len, &mut Vec::new());
         assert_eq!(out.len(), record_len);
         for (r, got) in out.iter().enumerate() {
             let g = r as f64 - HALO_BEFORE as f64;
@@ -190,7 +198,7 @@ mod tests {
                 let mut out: Vec<f64> = (0..block / STEP + BEFORE + AFTER)
                     .map(|l| part(theta * (l as f64 - BEFORE as f64)))
                     .collect();
-                refine(&mut out, record_len);
+                refine(&mut out, record_len, &mut Vec::new());
                 out
             };
             let (re, im) = (refined(f64::cos), refined(f64::sin));
