@@ -59,9 +59,9 @@ impl NewmanBuilder {
             NewmanForm::Geometric => {
                 for sign in [1.0, -1.0] {
                     if self.fill_signed(amplitudes, transfer, sign) {
-                        self.size_series(synth);
-                        synth.complex_series(&self.coefficients, &mut self.series);
-                        add_to(out, self.series.iter().map(|p| sign * p.norm_sqr()));
+                        // sign |P|^2 added as the transform's joined samples come.
+                        let mut sink = AddSquares::to(out, sign);
+                        synth.complex_series_into(&self.coefficients, &mut sink);
                     }
                 }
             }
@@ -147,6 +147,47 @@ impl NewmanBuilder {
             };
         }
         any
+    }
+}
+
+/// A sink that adds `sign` |p|^2 of each sample p it takes to `out`, in order, as
+/// [`add_to`] does (an empty `out` takes them as they are).
+struct AddSquares<'a> {
+    out: &'a mut Vec<f64>,
+    sign: f64,
+    /// Whether `out` had no contribution before this record.
+    first: bool,
+    /// The next sample's index.
+    at: usize,
+}
+
+impl<'a> AddSquares<'a> {
+    fn to(out: &'a mut Vec<f64>, sign: f64) -> Self {
+        let first = out.is_empty();
+        AddSquares {
+            out,
+            sign,
+            first,
+            at: 0,
+        }
+    }
+}
+
+impl Extend<Complex64> for AddSquares<'_> {
+    fn extend<I: IntoIterator<Item = Complex64>>(&mut self, values: I) {
+        let sign = self.sign;
+        let squares = values.into_iter().map(|p| sign * p.norm_sqr());
+        if self.first {
+            self.out.extend(squares);
+        } else {
+            let start = self.at;
+            let mut taken = 0;
+            for (o, v) in self.out[start..].iter_mut().zip(squares) {
+                *o += v;
+                taken += 1;
+            }
+            self.at += taken;
+        }
     }
 }
 

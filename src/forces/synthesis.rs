@@ -32,7 +32,8 @@ pub struct Synthesizer {
     count: usize,
     /// The stream's join, and the block's full transform before it is joined.
     join: Option<(Join, Vec<Complex64>)>,
-    /// The transform of [`Synthesizer::append_two_real_series`] without a join.
+    /// The transform of [`Synthesizer::append_two_real_series`] and
+    /// [`Synthesizer::complex_series_into`] without a join.
     pair_block: Vec<Complex64>,
 }
 
@@ -107,23 +108,41 @@ impl Synthesizer {
     /// `out` ([`Synthesizer::output_len`] samples) for every sample m.
     pub fn complex_series(&mut self, coefficients: &[Complex64], out: &mut [Complex64]) {
         debug_assert_eq!(coefficients.len(), self.count);
-        self.size_scratch();
         match &mut self.join {
             None => {
+                self.size_scratch();
                 transform(&self.fft, &mut self.scratch, self.first, coefficients, out);
             }
-            Some((join, block)) => {
-                // Every sample is written by the transform: the zeros are only its size.
-                block.resize(self.fft.len(), Complex64::default());
-                transform(
-                    &self.fft,
-                    &mut self.scratch,
-                    self.first,
-                    coefficients,
-                    block,
-                );
-                join.series(block, &mut Fill(out));
-            }
+            Some(_) => self.complex_series_into(coefficients, &mut Fill(out)),
+        }
+    }
+
+    /// [`Synthesizer::complex_series`] given to `sink` sample by sample, in order
+    /// ([`Synthesizer::output_len`] samples), instead of written into a series: a record
+    /// made from the series (a squared modulus) takes the joined samples as they are made.
+    pub fn complex_series_into(
+        &mut self,
+        coefficients: &[Complex64],
+        sink: &mut impl Extend<Complex64>,
+    ) {
+        debug_assert_eq!(coefficients.len(), self.count);
+        self.size_scratch();
+        let (join, block) = match &mut self.join {
+            Some((join, block)) => (Some(join), block),
+            None => (None, &mut self.pair_block),
+        };
+        // Every sample is written by the transform: the zeros are only its size.
+        block.resize(self.fft.len(), Complex64::default());
+        transform(
+            &self.fft,
+            &mut self.scratch,
+            self.first,
+            coefficients,
+            block,
+        );
+        match join {
+            Some(join) => join.series(block, sink),
+            None => sink.extend(block.iter().copied()),
         }
     }
 
