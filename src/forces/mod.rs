@@ -398,7 +398,7 @@ fn quadratic<'a>(
     }
 }
 
-/// A record made at every second sample, refined in place to `len` samples
+/// A record made at every second sample, refined to `len` samples (through `spare`)
 /// (`forces::refine`; a zero record stays zero).
 fn refine_record(record: &mut Record, len: usize, spare: &mut Vec<f64>) {
     let mut samples = std::mem::take(record).into_samples();
