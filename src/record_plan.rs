@@ -139,8 +139,9 @@ pub struct RecordPlan {
     motion: Option<Vec<Vec<MotionTransfer>>>,
     /// The gusts of the wind (`forces::gust`), their spectrum on the grid; `None` when calm.
     gust: Option<GustStream>,
-    /// The wave components of the plan's own sea on the grid (their scales computed once): a
-    /// seed of the same sea redraws a copy instead of evaluating the spectrum again.
+    /// The wave components of the plan's own sea on the grid, not drawn (their scales
+    /// computed once): a seed of the same sea draws a copy instead of evaluating the
+    /// spectrum again.
     components: WaveComponents,
 }
 
@@ -309,7 +310,7 @@ impl RecordPlan {
             .and_then(|w| w.gusts)
             .map(|g| GustStream::new(&g.spectrum, &grid, segments, fft.clone()));
         Ok(RecordPlan {
-            components: WaveComponents::generate(sea, grid.clone()),
+            components: WaveComponents::undrawn(sea, grid.clone()),
             motion,
             gust,
             problem: problem.clone(),

@@ -208,8 +208,8 @@ impl WaveComponents {
 
     /// The components of `sea` on `grid` before any draw: their scales and expected power
     /// (every draw's variance S(omega_j) w_k d_omega, summed over the directions in order),
-    /// no amplitudes yet.
-    fn undrawn(sea: &SeaState, grid: FrequencyGrid) -> Self {
+    /// no amplitudes yet ([`WaveComponents::regenerate`] draws them).
+    pub fn undrawn(sea: &SeaState, grid: FrequencyGrid) -> Self {
         let directions = sea.directions();
         let mut power = vec![0.0; grid.count];
         let mut scales = Vec::with_capacity(directions.len() * grid.count);
