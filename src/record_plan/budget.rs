@@ -99,11 +99,12 @@ impl MemoryEstimate {
         // The planned transform (twiddles and its scratch) and the per-direction drift and
         // damping coefficients on the grid.
         plan.push(term(block_key, block(), "the planned FFT", 2.0 * C64 * l));
+        // (And the scale of every component's draw, kept for the plan's seeds.)
         plan.push(term(
             "sea.n_directions",
             problem.sea.n_directions.to_string(),
             format!("{d} directions' coefficients on {g} components"),
-            d * FORCE_AND_DAMPING * F64 * g,
+            d * (FORCE_AND_DAMPING + 1.0) * F64 * g,
         ));
         // The synthesizer's scratch, join and pair buffers, Newman's series and the
         // arithmetic form's elevation series, the full QTF's series, the elevation and
@@ -117,8 +118,9 @@ impl MemoryEstimate {
         ));
         if refine::admits(&grid, segments) {
             // `forces::refine`: the quadratic records made at every second sample (in their
-            // own buffers, refined in place), by a transform of L/2 points: its twiddles and
-            // scratch in the plan, its joined block and scratch per run.
+            // own buffers, refined through one spare record), by a transform of L/2 points:
+            // its twiddles and scratch in the plan, its joined block and scratch and the
+            // spare per run.
             plan.push(term(
                 block_key,
                 block(),
@@ -129,9 +131,10 @@ impl MemoryEstimate {
                 block_key,
                 block(),
                 "the transform of the quadratic records",
-                C64 * l,
+                C64 * l + F64 * l,
             ));
         }
+        // The wave components: each draw's amplitude and scale.
         run.push(term(
             "sea.n_directions",
             problem.sea.n_directions.to_string(),
