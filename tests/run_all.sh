@@ -15,7 +15,14 @@ mkdir -p target
 ( client_venv "$repo" && bem_venv "$repo" ) >"$venv_log" 2>&1 &
 venvs=$!
 
+target_dir="${CARGO_TARGET_DIR:-$repo/target}"
+[[ "$target_dir" = /* ]] || target_dir="$repo/$target_dir"
 cargo run --release -p fmu-pack
+# The user-FMU clients' FMU (tests/data/example.toml, and its FMI 3.0 twin beside it in
+# fmi3/), packed now by the fmu-pack just built: after `cargo test` (the library with the
+# CLI's features, the same cdylib file) fmu-pack would compile the library again (~50 s).
+user_fmu="$target_dir/fmu/user/example.fmu"
+cargo run --release -p fmu-pack -- --config tests/data/example.toml --out "$user_fmu"
 cargo test --release --workspace
 
 if ! wait "$venvs"; then
@@ -23,10 +30,8 @@ if ! wait "$venvs"; then
     echo "run_all.sh: the Python environments could not be made (log above)" >&2
     exit 1
 fi
-target_dir="${CARGO_TARGET_DIR:-$repo/target}"
-[[ "$target_dir" = /* ]] || target_dir="$repo/$target_dir"
 # The CLI `cargo test` built (its integration tests ran it), used as it is: a `cargo build`
 # of it here would recompile the crate with another feature set.
 SLOWDRIFT_FMU="$target_dir/fmu/SlowDrift.fmu" SLOWDRIFT_CLI="$target_dir/release/slowdrift" \
-    bash tests/clients/run_clients.sh
+    SLOWDRIFT_USER_FMU="$user_fmu" bash tests/clients/run_clients.sh
 bash tests/bem/run_bem.sh

@@ -9,7 +9,9 @@
 #   tests/clients/run_clients.sh -k mooring   # extra arguments go to pytest
 # Environment: SLOWDRIFT_FMU (another FMU file: no packing), SLOWDRIFT_CLI (the slowdrift
 # executable to run as the native tool, as tests/run_all.sh gives the one `cargo test` built;
-# unset: built once by cargo), PYTHON (interpreter for the venv, python3), CARGO_TARGET_DIR
+# unset: built once by cargo), SLOWDRIFT_USER_FMU (tests/data/example.toml packed by
+# `fmu-pack --config`, as tests/run_all.sh packs it; unset: the user-FMU tests pack it),
+# PYTHON (interpreter for the venv, python3), CARGO_TARGET_DIR
 # (where fmu-pack writes the FMU).
 set -euo pipefail
 

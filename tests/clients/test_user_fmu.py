@@ -36,7 +36,13 @@ STEP_NS = 1_000_000_000
 
 @pytest.fixture(scope="module")
 def user_fmu(tmp_path_factory, fmu):
-    """example.toml packed by fmu-pack (the build the test command made: no rebuild)."""
+    """example.toml packed by fmu-pack: $SLOWDRIFT_USER_FMU when set (tests/run_all.sh packs
+    it right after the default FMU, before `cargo test` rebuilds the library's file with
+    other features), else packed here."""
+    given = os.environ.get("SLOWDRIFT_USER_FMU")
+    if given:
+        assert os.path.isfile(given), f"SLOWDRIFT_USER_FMU={given} is not a file"
+        return given
     out = tmp_path_factory.mktemp("user-fmu") / "example.fmu"
     cargo = shutil.which("cargo") or "cargo"
     subprocess.run([cargo, "run", "--release", "--quiet", "-p", "fmu-pack", "--",
