@@ -10,6 +10,9 @@
 //! The weights ([`lay_out_weights`]) are stored in chunks of [`BLOCKS_AT_ONCE`] blocks,
 //! each chunk term-major, then block, as [`recombine_row`] reads them; each weight twice in
 //! an interleaved row (for u_x and u_y), once along x.
+//!
+//! The rows are summed on the widest instruction set the CPU runs ([`Isa`]: the baseline
+//! or AVX2), the same operations in the same order on each, so the same bits.
 
 // The one unsafe call: the AVX2 build of the rows, made only where the CPU has AVX2.
 #![allow(unsafe_code)]
@@ -17,10 +20,10 @@
 use crate::forces::isa::Isa;
 use rustfft::num_complex::Complex32;
 
-/// Floats of one block of a row's strip velocities (two SSE registers).
+/// Floats of one block of a row's strip velocities (two SSE registers, one AVX2 register).
 const LANES: usize = 8;
-/// Blocks the recombination sums at a time (eight SSE registers, which the compiler keeps
-/// over the terms); 4 is the most that fits beside the operands.
+/// Blocks the recombination sums at a time (eight SSE registers or four AVX2 ones, which
+/// the compiler keeps over the terms); 4 is the most that fits beside the operands in SSE.
 const BLOCKS_AT_ONCE: usize = 4;
 
 /// How a row holds its strips' velocities.
