@@ -103,19 +103,19 @@ pub fn cross_direction_force(
 }
 
 /// Adds the cross-direction force to the records' wave force (`synth` writes the records'
-/// series: a grid's period or a stream's segment; with `refined` = Some(len), at every
-/// second sample, refined to the records' len samples: `forces::refine`).
+/// series: a grid's period or a stream's segment; with `refined` = Some((len, spare)), at
+/// every second sample, refined to the records' len samples through `spare`:
+/// `forces::refine`).
 pub fn add_cross_terms(
     records: &mut ForceRecords,
     components: &WaveComponents,
     pairs: &DirectionPairs,
     synth: &mut Synthesizer,
-    refined: Option<usize>,
+    refined: Option<(usize, &mut Vec<f64>)>,
     work: &mut CrossWork,
 ) {
     work.force(components, pairs, synth);
-    if let Some(len) = refined {
-        let spare = &mut work.refined;
+    if let Some((len, spare)) = refined {
         work.cross
             .iter_mut()
             .for_each(|v| refine::refine(v, len, spare));
@@ -146,8 +146,6 @@ pub struct CrossWork {
     coefficients: Vec<Complex64>,
     /// The cross-direction force of the last build, per DOF (empty: zero).
     cross: [Vec<f64>; 3],
-    /// The buffer a record is refined into (`forces::refine::refine`'s spare).
-    refined: Vec<f64>,
 }
 
 impl CrossWork {

@@ -378,15 +378,13 @@ impl KinematicsWork {
             layout,
             strips,
             weights: &self.mix,
+            eta: &self.eta[group / 2 * n..][..n],
+            real: group.is_multiple_of(2),
             series: &self.terms,
-            len: n,
             rank,
             paired: along_x,
         };
-        let eta = &self.eta[group / 2 * n..][..n];
-        let real = group.is_multiple_of(2);
-        let isa = Isa::detect();
-        append_rows(isa, &recombined, (eta, real), &mut self.samples, buffer);
+        append_rows(Isa::detect(), &recombined, &mut self.samples, buffer);
         (layout, rows)
     }
 }

@@ -225,7 +225,7 @@ impl RecordWork {
     ) {
         let len = self.synth.output_len();
         let (synth, refining) = quadratic(&mut self.synth, &mut self.coarse);
-        let refined = refining.then_some(len);
+        let refined = refining.then_some((len, &mut self.refined));
         add_cross_terms(records, components, pairs, synth, refined, &mut self.cross);
     }
 }

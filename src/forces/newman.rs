@@ -60,7 +60,8 @@ impl NewmanBuilder {
                 for sign in [1.0, -1.0] {
                     if self.fill_signed(amplitudes, transfer, sign) {
                         // sign |P|^2 added as the transform's joined samples come.
-                        let mut sink = AddSquares::to(out, sign);
+                        let to = AddTo::new(out);
+                        let mut sink = AddSquares { sign, to };
                         synth.complex_series_into(&self.coefficients, &mut sink);
                     }
                 }
@@ -79,7 +80,7 @@ impl NewmanBuilder {
                     .iter()
                     .zip(eta_c)
                     .map(|(q, e)| (q * e.conj()).re);
-                add_to(out, products);
+                AddTo::new(out).extend(products);
             }
         }
     }
@@ -150,39 +151,30 @@ impl NewmanBuilder {
     }
 }
 
-/// A sink that adds `sign` |p|^2 of each sample p it takes to `out`, in order, as
-/// [`add_to`] does (an empty `out` takes them as they are).
-struct AddSquares<'a> {
+/// A sink that adds the samples it takes to a record, in order: a record with no
+/// contribution yet (empty) takes them as they are, without first being filled with zeros.
+struct AddTo<'a> {
     out: &'a mut Vec<f64>,
-    sign: f64,
     /// Whether `out` had no contribution before this record.
     first: bool,
     /// The next sample's index.
     at: usize,
 }
 
-impl<'a> AddSquares<'a> {
-    fn to(out: &'a mut Vec<f64>, sign: f64) -> Self {
+impl<'a> AddTo<'a> {
+    fn new(out: &'a mut Vec<f64>) -> Self {
         let first = out.is_empty();
-        AddSquares {
-            out,
-            sign,
-            first,
-            at: 0,
-        }
+        AddTo { out, first, at: 0 }
     }
 }
 
-impl Extend<Complex64> for AddSquares<'_> {
-    fn extend<I: IntoIterator<Item = Complex64>>(&mut self, values: I) {
-        let sign = self.sign;
-        let squares = values.into_iter().map(|p| sign * p.norm_sqr());
+impl Extend<f64> for AddTo<'_> {
+    fn extend<I: IntoIterator<Item = f64>>(&mut self, samples: I) {
         if self.first {
-            self.out.extend(squares);
+            self.out.extend(samples);
         } else {
-            let start = self.at;
             let mut taken = 0;
-            for (o, v) in self.out[start..].iter_mut().zip(squares) {
+            for (o, v) in self.out[self.at..].iter_mut().zip(samples) {
                 *o += v;
                 taken += 1;
             }
@@ -191,14 +183,16 @@ impl Extend<Complex64> for AddSquares<'_> {
     }
 }
 
-/// Adds a record's samples to `out`; an empty `out` (no contribution yet) takes them as
-/// they are, without first being filled with zeros.
-fn add_to(out: &mut Vec<f64>, samples: impl Iterator<Item = f64>) {
-    if out.is_empty() {
-        out.extend(samples);
-    } else {
-        for (o, v) in out.iter_mut().zip(samples) {
-            *o += v;
-        }
+/// A sink that adds `sign` |p|^2 of each complex sample p it takes to a record ([`AddTo`]).
+struct AddSquares<'a> {
+    sign: f64,
+    to: AddTo<'a>,
+}
+
+impl Extend<Complex64> for AddSquares<'_> {
+    fn extend<I: IntoIterator<Item = Complex64>>(&mut self, values: I) {
+        let sign = self.sign;
+        self.to
+            .extend(values.into_iter().map(|p| sign * p.norm_sqr()));
     }
 }

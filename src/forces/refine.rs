@@ -90,30 +90,33 @@ pub fn refine(samples: &mut Vec<f64>, record_len: usize, spare: &mut Vec<f64>) {
         coarse_len,
         (record_len - HALO_BEFORE - HALO_AFTER) / STEP + BEFORE + AFTER
     );
-    // Pair i (record samples 2i and 2i + 1) is the window of coarse samples i .. i + 8.
+    // Record sample 2i is global kB + 2i - 1, between coarse i + 3 and i + 4; record sample
+    // 2i + 1 is global kB + 2i, coarse i + 4: pair i is the window of coarse i .. i + 8.
     let pairs = record_len.div_ceil(2);
     debug_assert!(
         coarse_len >= pairs + TAPS - 1,
         "every pair's window is coarse"
     );
+    // A spare shorter than the refined record is replaced, not grown (growing copies it):
+    // before the samples are written (the first call) and after the swap (a coarse buffer
+    // new in this segment), so that the segments after the first find one long enough.
+    let hold_refined = |spare: &mut Vec<f64>| {
+        if spare.capacity() < 2 * pairs {
+            *spare = Vec::with_capacity(2 * pairs);
+        }
+    };
     spare.clear();
-    if spare.capacity() < 2 * pairs {
-        // A buffer of the refined length (growing the old one would copy it).
-        *spare = Vec::with_capacity(2 * pairs);
-    }
+    hold_refined(spare);
     for window in samples.windows(TAPS).take(pairs) {
         let window: [f64; TAPS] = window.try_into().expect("8 taps");
         spare.extend_from_slice(&midpoint_and_node(window));
     }
     spare.truncate(record_len);
     std::mem::swap(samples, spare);
-    if spare.capacity() < 2 * pairs {
-        // The coarse buffer was new (a record's first segment): replaced now, so that the
-        // segments after it find a spare of the refined length.
-        *spare = Vec::with_capacity(2 * pairs);
-    }
+    hold_refined(spare);
 }
 
+/// The interpolated midpoint between the window's nodes 3 and 4, and node 4 itself.
 #[inline(always)]
 fn midpoint_and_node([a, b, c, d, e, f, g, h]: [f64; TAPS]) -> [f64; 2] {
     let [w1, w2, w3, w4] = WEIGHTS;

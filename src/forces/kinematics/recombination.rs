@@ -75,15 +75,17 @@ pub(super) fn lay_out_weights<'a>(
 }
 
 /// A record's rows to recombine: its strips and their layout, the weights laid out by
-/// [`lay_out_weights`], and the depth terms' series g_q(m), `len` samples each: term q at
-/// `series[q * len + m]`, or, when `paired` (waves along x, where each g_q is real), terms
-/// 2p and 2p + 1 as the real and imaginary parts of `series[p * len + m]`.
+/// [`lay_out_weights`], the elevation of every row (`eta[m]`'s real part when `real`, else
+/// its imaginary part) and the depth terms' series g_q(m), as many samples each as `eta`
+/// has: term q at `series[q * len + m]`, or, when `paired` (waves along x, where each g_q
+/// is real), terms 2p and 2p + 1 as the real and imaginary parts of `series[p * len + m]`.
 pub(super) struct Rows<'a> {
     pub layout: RowLayout,
     pub strips: usize,
     pub weights: &'a [f32],
+    pub eta: &'a [Complex32],
+    pub real: bool,
     pub series: &'a [Complex32],
-    pub len: usize,
     pub rank: usize,
     pub paired: bool,
 }
@@ -91,8 +93,9 @@ pub(super) struct Rows<'a> {
 impl Rows<'_> {
     #[inline(always)]
     fn sample(&self, q: usize, m: usize) -> Complex32 {
+        let len = self.eta.len();
         if self.paired {
-            let pair = self.series[q / 2 * self.len + m];
+            let pair = self.series[q / 2 * len + m];
             Complex32::new(
                 if q.is_multiple_of(2) {
                     pair.re
@@ -102,58 +105,42 @@ impl Rows<'_> {
                 0.0,
             )
         } else {
-            self.series[q * self.len + m]
+            self.series[q * len + m]
         }
     }
 }
 
-/// Appends the `rows` to `out`: row m is the elevation `eta[m]` (its real part when
-/// `real`, else its imaginary part) then the strips' velocities recombined from the terms,
-/// without the row's padding, on the instruction set `isa`: the same operations in the
-/// same order on every one, so the same bits. `samples` is scratch for one sample of every
-/// term (its capacity kept: no allocation once it has held `rows.rank`).
-pub(super) fn append_rows(
-    isa: Isa,
-    rows: &Rows,
-    eta: (&[Complex32], bool),
-    samples: &mut Vec<Complex32>,
-    out: &mut Vec<f32>,
-) {
+/// Appends the `rows` to `out`: row m is the elevation then the strips' velocities
+/// recombined from the terms, without the row's padding, on the instruction set `isa`: the
+/// same operations in the same order on every one, so the same bits. `samples` is scratch
+/// for one sample of every term (its capacity kept: no allocation once it has held
+/// `rows.rank`).
+pub(super) fn append_rows(isa: Isa, rows: &Rows, samples: &mut Vec<Complex32>, out: &mut Vec<f32>) {
     samples.clear();
     samples.resize(rows.rank, Complex32::default());
     match isa {
-        Isa::Baseline => append_rows_with(rows, eta, samples, out),
+        Isa::Baseline => append_rows_with(rows, samples, out),
         #[cfg(target_arch = "x86_64")]
         // SAFETY: `Isa::Avx2` is only made where the CPU reports AVX2 (`Isa::detect`,
         // `Isa::available`).
-        Isa::Avx2 => unsafe { append_rows_avx2(rows, eta, samples, out) },
+        Isa::Avx2 => unsafe { append_rows_avx2(rows, samples, out) },
     }
 }
 
 /// [`append_rows_with`] compiled for AVX2 (a block of [`LANES`] floats is one register).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-fn append_rows_avx2(
-    rows: &Rows,
-    eta: (&[Complex32], bool),
-    samples: &mut [Complex32],
-    out: &mut Vec<f32>,
-) {
-    append_rows_with(rows, eta, samples, out)
+fn append_rows_avx2(rows: &Rows, samples: &mut [Complex32], out: &mut Vec<f32>) {
+    append_rows_with(rows, samples, out)
 }
 
 #[inline(always)]
-fn append_rows_with(
-    rows: &Rows,
-    (eta, real): (&[Complex32], bool),
-    samples: &mut [Complex32],
-    out: &mut Vec<f32>,
-) {
+fn append_rows_with(rows: &Rows, samples: &mut [Complex32], out: &mut Vec<f32>) {
     let width = rows.layout.width(rows.strips);
     let padding = width - rows.layout.per_strip() * rows.strips;
-    out.reserve((1 + width) * eta.len());
-    for (m, eta) in eta.iter().enumerate() {
-        out.push(if real { eta.re } else { eta.im });
+    out.reserve((1 + width) * rows.eta.len());
+    for (m, eta) in rows.eta.iter().enumerate() {
+        out.push(if rows.real { eta.re } else { eta.im });
         for (q, g) in samples.iter_mut().enumerate() {
             *g = rows.sample(q, m);
         }
@@ -167,7 +154,7 @@ fn append_rows_with(
 /// order, [`BLOCKS_AT_ONCE`] blocks of the row at a time. A basis of rank 0 (a sea without
 /// power) gives a zero row.
 #[inline(always)]
-pub(super) fn recombine_row(
+fn recombine_row(
     layout: RowLayout,
     width: usize,
     weights: &[f32],
@@ -287,8 +274,9 @@ mod tests {
                         layout,
                         strips,
                         weights: &laid,
+                        eta: &eta,
+                        real: !along_x,
                         series: if along_x { &paired } else { &separate },
-                        len: 2,
                         rank,
                         paired: along_x,
                     };
@@ -296,8 +284,7 @@ mod tests {
                     let mut first: Option<Vec<f32>> = None;
                     for isa in Isa::available() {
                         let mut out = vec![f32::NAN];
-                        let part = (&eta[..], !along_x);
-                        append_rows(isa, &rows, part, &mut Vec::new(), &mut out);
+                        append_rows(isa, &rows, &mut Vec::new(), &mut out);
                         assert_eq!(out.len(), 1 + 2 * per_row, "{layout:?} {strips} {rank}");
                         for m in 0..2 {
                             let row = &out[1 + m * per_row..][..per_row];
