@@ -134,10 +134,10 @@ const CHUNK: usize = 32;
 /// ([`StripSums`]).
 #[inline]
 fn strip_sum(state: &ColumnState, strips: usize, offset: [f64; 2]) -> [f64; 2] {
-    let mut sums = StripSums::default();
+    let (mut sums, offset) = (StripSums::default(), single(offset));
     match state.velocities_on_sample() {
-        Some(StripVelocities::Interleaved(velocities)) => sums.add(velocities, single(offset)),
-        Some(StripVelocities::AlongX(velocities)) => sums.add(velocities, single(offset)),
+        Some(StripVelocities::Interleaved(velocities)) => sums.add(velocities, offset),
+        Some(StripVelocities::AlongX(velocities)) => sums.add(velocities, offset),
         None => {
             let mut buffer = [[0.0f32; 2]; CHUNK];
             for first in (0..strips).step_by(CHUNK) {
@@ -145,7 +145,7 @@ fn strip_sum(state: &ColumnState, strips: usize, offset: [f64; 2]) -> [f64; 2] {
                 for (j, u) in chunk.iter_mut().enumerate() {
                     *u = single(state.velocity(first + j));
                 }
-                sums.add(chunk, single(offset));
+                sums.add(chunk, offset);
             }
         }
     }

@@ -106,11 +106,11 @@ mod tests {
     use crate::sea_state::{FrequencyGrid, SeaState, Spectrum, Spreading, WaveComponents};
 
     /// Each lane's drag from `drag_forces` is `drag_force` for that lane alone, bit for bit,
-    /// for every instruction set this CPU runs: 1 to 4 lanes
-    /// of four seeds' kinematics of 1 to 21 strips (odd and even, fewer and more than 8), in
-    /// waves along x (rows of u_x alone) and spread (u_x and u_y), on samples (the lanes'
-    /// sums side by side) and between them (each lane alone), each lane at its own slow
-    /// velocity, and with the lanes at different instants (some on a sample, some not).
+    /// for every instruction set this CPU runs: 1 to 4 lanes of four seeds' kinematics of 1
+    /// to 21 strips (odd and even counts: an odd last strip goes to the even sums), in waves
+    /// along x (rows of u_x alone) and spread (u_x and u_y), on samples (the lanes' sums side
+    /// by side) and between them (each lane alone), each lane at its own slow velocity, and
+    /// with the lanes at different instants (some on a sample, some not).
     #[test]
     fn each_lane_is_the_one_seed_drag_bit_for_bit() {
         let columns = [(30.0, 10.0, 25.0), (-20.0, 15.0, 18.0)].map(|(x, y, draft)| Cylinder {

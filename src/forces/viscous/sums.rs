@@ -124,9 +124,9 @@ fn lane_sums_avx2<V: Velocity>(
     offsets: [[f32; 2]; LANES],
 ) -> [[f64; 2]; LANES] {
     use std::arch::x86_64::{
-        _mm256_castps256_ps128, _mm256_cvtps_pd, _mm256_extractf128_ps, _mm256_set_m128,
-        _mm256_setr_ps, _mm256_setzero_ps, _mm_add_ps, _mm_mul_ps, _mm_setr_ps, _mm_sqrt_ps,
-        _mm_sub_ps,
+        _mm256_add_ps, _mm256_castps256_ps128, _mm256_cvtps_pd, _mm256_extractf128_ps,
+        _mm256_mul_ps, _mm256_set_m128, _mm256_setr_ps, _mm256_setzero_ps, _mm256_sqrt_ps,
+        _mm256_sub_ps, _mm_add_ps, _mm_mul_ps, _mm_setr_ps, _mm_sqrt_ps, _mm_sub_ps,
     };
     let n = rows[0].len();
     // Sliced one by one: `array::map` is a call here, once per column and instant.
@@ -148,8 +148,10 @@ fn lane_sums_avx2<V: Velocity>(
         ];
         let x = _mm256_setr_ps(a[0], b[0], c[0], d[0], e[0], f[0], g[0], h[0]);
         let y = _mm256_setr_ps(a[1], b[1], c[1], d[1], e[1], f[1], g[1], h[1]);
-        let (tx, ty) = terms8(x, y, off_x8, off_y8);
-        (sum_x, sum_y) = (add8(sum_x, tx), add8(sum_y, ty));
+        let (wx, wy) = (_mm256_sub_ps(x, off_x8), _mm256_sub_ps(y, off_y8));
+        let norm = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(wx, wx), _mm256_mul_ps(wy, wy)));
+        sum_x = _mm256_add_ps(sum_x, _mm256_mul_ps(wx, norm));
+        sum_y = _mm256_add_ps(sum_y, _mm256_mul_ps(wy, norm));
     }
     let (mut even_x, mut even_y) = (_mm256_castps256_ps128(sum_x), _mm256_castps256_ps128(sum_y));
     if n % 2 == 1 {
@@ -166,29 +168,6 @@ fn lane_sums_avx2<V: Velocity>(
     let xs = elements(_mm256_cvtps_pd(total_x));
     let ys = elements(_mm256_cvtps_pd(total_y));
     std::array::from_fn(|l| [xs[l], ys[l]])
-}
-
-/// Eight terms (w_x |w|, w_y |w|), w = (x, y) - offset, element by element: `add_term`'s
-/// operations.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn terms8(
-    x: std::arch::x86_64::__m256,
-    y: std::arch::x86_64::__m256,
-    off_x: std::arch::x86_64::__m256,
-    off_y: std::arch::x86_64::__m256,
-) -> (std::arch::x86_64::__m256, std::arch::x86_64::__m256) {
-    use std::arch::x86_64::{_mm256_add_ps, _mm256_mul_ps, _mm256_sqrt_ps, _mm256_sub_ps};
-    let (wx, wy) = (_mm256_sub_ps(x, off_x), _mm256_sub_ps(y, off_y));
-    let norm = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(wx, wx), _mm256_mul_ps(wy, wy)));
-    (_mm256_mul_ps(wx, norm), _mm256_mul_ps(wy, norm))
-}
-
-/// a + b, element by element.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn add8(a: std::arch::x86_64::__m256, b: std::arch::x86_64::__m256) -> std::arch::x86_64::__m256 {
-    std::arch::x86_64::_mm256_add_ps(a, b)
 }
 
 /// The 4 doubles of an AVX register, element 0 first.
