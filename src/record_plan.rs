@@ -296,7 +296,8 @@ impl RecordPlan {
                 (problem.model.yaw_following.is_none().then_some(qtf), ranks)
             }
         };
-        let depth_bases = depth_bases(problem, &grid);
+        let components = WaveComponents::undrawn(sea, grid.clone());
+        let depth_bases = depth_bases(problem, &grid, components.expected_power());
         let yaws: Vec<f64> = match &yaw {
             Some(y) => (0..y.grid.len()).map(|j| y.grid.yaw(j)).collect(),
             None => vec![0.0],
@@ -310,7 +311,7 @@ impl RecordPlan {
             .and_then(|w| w.gusts)
             .map(|g| GustStream::new(&g.spectrum, &grid, segments, fft.clone()));
         Ok(RecordPlan {
-            components: WaveComponents::undrawn(sea, grid.clone()),
+            components,
             motion,
             gust,
             problem: problem.clone(),
@@ -478,20 +479,27 @@ pub(crate) struct Segment {
     gust: Option<GustStream>,
 }
 
+impl Segment {
+    /// The expected power of the run's sea on the plan's grid, per component
+    /// ([`WaveComponents::expected_power`]: the same for every block and seed).
+    pub fn expected_power(&self) -> &[f64] {
+        self.components.expected_power()
+    }
+}
+
 /// The depth kernel of every distinct draft of `problem`'s drag columns on `grid` (none
-/// without drag).
-fn depth_bases(problem: &Problem, grid: &FrequencyGrid) -> Vec<Arc<DepthBasis>> {
+/// without drag), `power` the expected power of its sea's components on the grid.
+fn depth_bases(problem: &Problem, grid: &FrequencyGrid, power: &[f64]) -> Vec<Arc<DepthBasis>> {
     if problem.model.drag == crate::model::DragModel::Off {
         return Vec::new();
     }
-    let power = WaveComponents::expected_power_of(&problem.sea, grid);
     let mut bases: Vec<Arc<DepthBasis>> = Vec::new();
     for column in &problem.platform.columns {
         let strips = problem.model.strips_per_column;
         if !bases.iter().any(|b| b.fits_draft(column.draft, strips)) {
             bases.push(Arc::new(DepthBasis::new(
                 grid,
-                &power,
+                power,
                 column.draft,
                 strips,
                 problem.environment.gravity,

@@ -18,7 +18,7 @@ use crate::error::{Error, Result};
 use crate::forces::{refine, ForceRecords, SamplePoint, Segments, WholeMotion, YawPoint};
 use crate::problem::Problem;
 use crate::record_plan::{QtfRank, RecordPlan, Segment};
-use crate::sea_state::{FrequencyGrid, WaveComponents};
+use crate::sea_state::FrequencyGrid;
 use std::sync::Arc;
 
 /// Relative tolerance for deciding that an interval is a whole number of steps.
@@ -354,9 +354,8 @@ impl Simulation {
     /// sea; `None` when they are made at every record sample.
     pub fn refined_force_records(&self) -> Option<f64> {
         self.plan.refines().then(|| {
-            let grid = self.plan.grid();
-            let power = WaveComponents::expected_power_of(&self.problem.sea, grid);
-            refine::midpoint_error(&power, grid.d_omega, self.problem.run.time_step)
+            let power = self.segment.expected_power();
+            refine::midpoint_error(power, self.plan.grid().d_omega, self.problem.run.time_step)
         })
     }
 
