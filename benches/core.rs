@@ -541,13 +541,9 @@ fn record_bytes(records: &ForceRecords) -> usize {
     if let Some(b) = &records.damping {
         samples += b.iter().flatten().map(|r| r.samples().len()).sum::<usize>();
     }
-    let mut bytes = samples * std::mem::size_of::<f64>();
-    // Drag kinematics: rows of single-precision floats (4 bytes), each shared copy counted
-    // once per column (an upper bound).
-    for k in &records.kinematics {
-        bytes += k.len() * k.floats_per_sample() * std::mem::size_of::<f32>();
-    }
-    bytes
+    // Drag kinematics: the depth terms' series and the window of rows, each group of
+    // columns that share them once.
+    samples * std::mem::size_of::<f64>() + records.kinematics.bytes()
 }
 
 /// Record memory of a Simulation (its current segment, `record_bytes`) for runs of 1, 3, 6

@@ -315,6 +315,27 @@ impl Simulation {
         Ok(())
     }
 
+    /// Makes the records of the segment that time `t` is in ([`Simulation::ensure_segment`])
+    /// and the drag kinematics' rows that a step from t over `ahead` seconds reads (its
+    /// samples from the one before t to t + ahead and the interpolation's stencil after
+    /// them): rows not made are read all the same, only slower
+    /// (`forces::Kinematics::make_rows`).
+    fn ensure_records(&mut self, t: f64, ahead: f64) -> Result<()> {
+        self.ensure_segment(t)?;
+        let records = &mut self.segment.records;
+        if !records.kinematics.is_empty() {
+            let clock = records.clock;
+            let sample = |time: f64| ((time - clock.start_time) / clock.dt).floor().max(0.0);
+            // The stencil reads from one sample before the one at or below a time to two
+            // after it.
+            let start = (sample(t) as usize).saturating_sub(1);
+            records
+                .kinematics
+                .make_rows(start, sample(t + ahead) as usize + 3);
+        }
+        Ok(())
+    }
+
     /// The problem this simulation was built from.
     pub fn problem(&self) -> &Problem {
         &self.problem
@@ -479,7 +500,7 @@ impl Simulation {
 
     /// One RK4 step of the position and velocity from time t over h.
     fn rk4(&mut self, t: f64, h: f64, external: [f64; 3]) -> Result<()> {
-        self.ensure_segment(t)?;
+        self.ensure_records(t, h)?;
         let y = self.state_vector();
         let held = self.held(external);
         let next = rk4_step(t, &y, h, |time, y| self.derivative(time, y, &held))?;
@@ -626,7 +647,7 @@ impl Simulation {
                 ),
             ));
         }
-        self.ensure_segment(snapshot.time())?;
+        self.ensure_records(snapshot.time(), 0.0)?;
         self.segment.records.clock.locate(snapshot.time())?;
         self.segment
             .records
@@ -639,7 +660,7 @@ impl Simulation {
     /// records).
     pub fn reset(&mut self) -> Result<()> {
         let initial = initial_state(&self.problem);
-        self.ensure_segment(initial.time())?;
+        self.ensure_records(initial.time(), 0.0)?;
         self.state = initial;
         Ok(())
     }

@@ -195,7 +195,7 @@ impl SlowDriftModel {
     fn drag(&self, records: &ForceRecords, at: &SamplePoint, body: &BodyFrame) -> [f64; 3] {
         let lane = self.lane_drag(records, at, body);
         drag_force(
-            lane.columns,
+            lane.kinematics,
             &lane.at,
             self.drag,
             self.water_density,
@@ -213,7 +213,7 @@ impl SlowDriftModel {
         body: &BodyFrame,
     ) -> LaneDrag<'a> {
         LaneDrag {
-            columns: &records.kinematics,
+            kinematics: &records.kinematics,
             at: *at,
             velocity: body.velocity.into(),
             current: body.drag_current(),

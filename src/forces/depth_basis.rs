@@ -29,6 +29,14 @@ use nalgebra::{DMatrix, SymmetricEigen};
 /// Relative rms velocity error the truncated depth kernel allows (see the module notes).
 pub const KINEMATICS_TOLERANCE: f64 = 1e-6;
 
+/// The most terms a depth kernel keeps, whatever the strips: it bounds the kinematics
+/// records' memory before they are made (`record_plan::budget`). The eigenvalues fall off
+/// exponentially: the kernels of drafts of 30 to 120 m with 12 to 200 strips keep 8 to 12
+/// terms at [`KINEMATICS_TOLERANCE`] (`tests::the_rank_stays_below_its_cap`); a kernel
+/// that needed more would keep these and report its larger error in
+/// [`DepthBasis::discarded`].
+pub const MAX_RANK: usize = 16;
+
 /// The leading terms of one column's depth kernel.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DepthBasis {
@@ -96,7 +104,7 @@ impl DepthBasis {
         let total: f64 = lambda.iter().sum();
         let mut rank = 0;
         let mut left = total;
-        while rank < strips && left > KINEMATICS_TOLERANCE.powi(2) * total {
+        while rank < strips.min(MAX_RANK) && left > KINEMATICS_TOLERANCE.powi(2) * total {
             left -= lambda[rank];
             rank += 1;
         }
@@ -167,5 +175,49 @@ impl DepthBasis {
     /// V_jq of term q over the strips j.
     pub fn mix(&self, q: usize) -> &[f64] {
         &self.mix[q * self.strips..(q + 1) * self.strips]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sea_state::{SeaState, Spectrum, Spreading};
+
+    /// The kernels of drafts of 30 to 120 m with 12 to 200 strips, on the default sea's
+    /// grid (JONSWAP Hs 6 m, Tp 10 s, a 16 384-s block at 0.5 s), meet the tolerance with
+    /// fewer terms than the cap (which bounds the records' memory), and four below it for
+    /// the 30- and 60-m drafts: the cap does not bind.
+    #[test]
+    fn the_rank_stays_below_its_cap() {
+        let sea = SeaState {
+            spectrum: Spectrum::Jonswap {
+                hs: 6.0,
+                tp: 10.0,
+                gamma: Some(3.3),
+            },
+            spreading: Spreading::LongCrested,
+            mean_direction: 0.0,
+            n_directions: 1,
+            seed: 1,
+            band: None,
+        };
+        let grid = FrequencyGrid::new(0.0, 16384.0, 0.5, sea.band()).unwrap();
+        let power = WaveComponents::expected_power_of(&sea, &grid);
+        for draft in [30.0, 60.0, 120.0] {
+            for strips in [12, 20, 40, 200] {
+                let basis = DepthBasis::new(&grid, &power, draft, strips, 9.80665);
+                println!("draft {draft} m, {strips} strips: rank {}", basis.rank());
+                assert!(
+                    basis.discarded() <= KINEMATICS_TOLERANCE,
+                    "{draft} {strips}"
+                );
+                let room = if draft < 100.0 { 4 } else { 1 };
+                assert!(
+                    basis.rank() + room <= MAX_RANK,
+                    "{draft} {strips}: {}",
+                    basis.rank()
+                );
+            }
+        }
     }
 }

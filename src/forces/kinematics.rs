@@ -24,30 +24,210 @@ use recombination::{append_rows, lay_out_weights, RowLayout, Rows};
 use rustfft::num_complex::{Complex32, Complex64};
 use std::sync::Arc;
 
-/// Records of one column, sample-major: row m holds sample m of every series, so that the
-/// drag reads one contiguous row per column and stage. A row is a run of floats: the
+/// Rows a group holds at a time ([`Kinematics::make_rows`]): 512 s at the default 0.5-s
+/// sampling, about 86 kB per group of the default platform (against 2.9 MB for a whole
+/// block's rows), so that the rows are read while they are still in the core's cache.
+pub const ROWS_WINDOW: usize = 1024;
+
+/// The drag columns' kinematics records: every column, and the records of every group of
+/// columns that share them ([`KinematicsKey`]).
+///
+/// A group's records are rows, sample-major: row m holds sample m of every series, so that
+/// the drag reads one contiguous row per column and stage. A row is a run of floats: the
 /// free-surface elevation at the column centre (m), then the horizontal velocity at every
 /// strip's stretched level in strip order (body frame, m/s), as (u_x, u_y) pairs
 /// ([`RowLayout::Interleaved`]: 1 + 2 strips floats), or u_x alone in waves along x, where
 /// u_y = 0 on every strip ([`RowLayout::AlongX`]: 1 + strips floats, half the memory of a
-/// row of complex samples, written at initialisation and read at every stage).
+/// row of complex samples).
 ///
 /// The rows are stored in single precision: the transforms run in double precision, their
 /// outputs are rounded to 24 significant bits (relative 6e-8, a few 1e-7 m/s for these
 /// velocities) and the strips' velocities are recombined from the depth terms in single
-/// precision ([`DepthBasis`], truncated at a relative rms error of 1e-6), which halves the
-/// memory again. The drag formulas work in double precision on the stored values. The
-/// tests bound the difference from the double-precision sums.
+/// precision ([`DepthBasis`], truncated at a relative rms error of 1e-6). The drag formulas
+/// work in double precision on the stored values. The tests bound the difference from the
+/// double-precision sums.
+///
+/// A segment's build makes the depth terms' series; the rows are recombined from them as
+/// the run reaches them, into a window of [`ROWS_WINDOW`] rows ([`Kinematics::make_rows`],
+/// which the simulation calls before each step), so an initialisation makes none, a run
+/// shorter than the block only the rows it reads, and the rows take a window's memory, not
+/// a block's. A row outside the window is recombined where it is read, by the same
+/// operations ([`Rows::strip_float`]): the values never depend on which rows the window
+/// holds.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Kinematics {
+    columns: Vec<ColumnEntry>,
+    groups: Vec<GroupRecords>,
+}
+
+/// A column, and the group whose records it reads.
 #[derive(Debug, Clone, PartialEq)]
-pub struct ColumnKinematics {
-    pub column: Cylinder,
-    strips: usize,
-    /// How a row holds the strips' velocities.
-    layout: RowLayout,
+struct ColumnEntry {
+    column: Cylinder,
+    group: usize,
+}
+
+/// The records of one group of columns: the depth terms' series and the rows made so far.
+#[derive(Debug, Clone, Default)]
+struct GroupRecords {
     /// Samples per series.
     len: usize,
-    /// Shared by the columns whose records are the same ([`KinematicsKey`]).
-    rows: Arc<Vec<f32>>,
+    /// The series the rows are recombined from: the elevation at the columns' centre (m),
+    /// the depth terms and their weights, the strips and how a row holds them.
+    source: Rows,
+    /// The window's first row.
+    first: usize,
+    /// Rows first .. first + rows.len() / floats_per_sample, at most [`ROWS_WINDOW`].
+    rows: Vec<f32>,
+    /// One sample of every term (the recombination's scratch).
+    samples: Vec<Complex32>,
+}
+
+/// Two groups' records are the same when the series their rows come from are: the rows
+/// made so far are a function of them.
+impl PartialEq for GroupRecords {
+    fn eq(&self, other: &Self) -> bool {
+        self.len == other.len && self.source == other.source
+    }
+}
+
+impl GroupRecords {
+    /// Floats of one row: the elevation and the strips' velocities.
+    fn floats_per_sample(&self) -> usize {
+        1 + self.source.layout.per_strip() * self.source.strips
+    }
+
+    /// The rows the window holds.
+    #[cfg(test)]
+    fn window(&self) -> std::ops::Range<usize> {
+        self.first..self.first + self.rows.len() / self.floats_per_sample()
+    }
+
+    /// Whether the window holds rows `start .. end` (`end` at most the series' length; a
+    /// product, not a division: asked before every step).
+    #[inline]
+    fn holds(&self, start: usize, end: usize) -> bool {
+        let end = end.min(self.len);
+        self.first <= start && self.rows.len() >= (end - self.first) * self.floats_per_sample()
+    }
+
+    /// Moves the window to rows `start .. start + ROWS_WINDOW` (at most the series' length).
+    fn make_rows_from(&mut self, start: usize, isa: Isa) {
+        let start = start.min(self.len);
+        let end = (start + ROWS_WINDOW).min(self.len);
+        self.first = start;
+        self.rows.clear();
+        append_rows(
+            isa,
+            &self.source,
+            start..end,
+            &mut self.samples,
+            &mut self.rows,
+        );
+    }
+
+    /// Row m when the window holds it: the elevation and the strips' velocities.
+    #[inline]
+    fn row(&self, m: usize) -> Option<(f64, StripVelocities<'_>)> {
+        let width = self.floats_per_sample();
+        let k = m.checked_sub(self.first)?;
+        let row = self.rows.get(k * width..(k + 1) * width)?;
+        let (eta, velocities) = row.split_first()?;
+        let velocities = match self.source.layout {
+            RowLayout::Interleaved => StripVelocities::Interleaved(velocities.as_chunks().0),
+            RowLayout::AlongX => StripVelocities::AlongX(velocities),
+        };
+        Some((f64::from(*eta), velocities))
+    }
+
+    /// Float i of row m, in the window or not.
+    #[inline]
+    fn float(&self, m: usize, i: usize) -> f32 {
+        let width = self.floats_per_sample();
+        let held = m
+            .checked_sub(self.first)
+            .and_then(|k| self.rows.get(k * width + i));
+        match held {
+            Some(&v) => v,
+            None => self.recombined(m, i),
+        }
+    }
+
+    /// Float i of row m recombined here (a row outside the window: rare, so kept out of
+    /// the readers' inlined code).
+    #[cold]
+    #[inline(never)]
+    fn recombined(&self, m: usize, i: usize) -> f32 {
+        match i {
+            0 => self.source.eta[m],
+            _ => self.source.strip_float(m, i - 1),
+        }
+    }
+}
+
+impl Kinematics {
+    /// Number of columns.
+    pub fn len(&self) -> usize {
+        self.columns.len()
+    }
+
+    /// Whether there are no columns (no drag).
+    pub fn is_empty(&self) -> bool {
+        self.columns.is_empty()
+    }
+
+    /// Column c's kinematics.
+    #[inline]
+    pub fn column(&self, c: usize) -> ColumnKinematics<'_> {
+        let entry = &self.columns[c];
+        ColumnKinematics {
+            column: &entry.column,
+            records: &self.groups[entry.group],
+        }
+    }
+
+    /// The bytes the records hold: each group's series (the elevation, the depth terms, the
+    /// weights) and its window of rows, as allocated.
+    pub fn bytes(&self) -> usize {
+        let f32s = |v: &Vec<f32>| v.capacity() * std::mem::size_of::<f32>();
+        self.groups
+            .iter()
+            .map(|g| {
+                f32s(&g.source.eta)
+                    + f32s(&g.source.weights)
+                    + f32s(&g.rows)
+                    + (g.source.series.capacity() + g.samples.capacity())
+                        * std::mem::size_of::<Complex32>()
+            })
+            .sum()
+    }
+
+    /// Every column's kinematics, in order.
+    pub fn columns(&self) -> impl ExactSizeIterator<Item = ColumnKinematics<'_>> {
+        (0..self.len()).map(|c| self.column(c))
+    }
+
+    /// Makes every group's window hold rows `start .. end` (`end` exclusive): when one does
+    /// not, the windows move to the [`ROWS_WINDOW`] rows from `start`, recombined on the widest
+    /// instruction set the CPU has (the same bits on every one). Rows past the window (a
+    /// span longer than it) are read all the same, recombined where they are read.
+    /// Allocates nothing: the build reserves a window's memory.
+    pub fn make_rows(&mut self, start: usize, end: usize) {
+        if self.groups.iter().all(|g| g.holds(start, end)) {
+            return;
+        }
+        let isa = Isa::detect();
+        for group in &mut self.groups {
+            group.make_rows_from(start, isa);
+        }
+    }
+}
+
+/// One column's kinematics: the column and its group's records.
+#[derive(Debug, Clone, Copy)]
+pub struct ColumnKinematics<'a> {
+    pub column: &'a Cylinder,
+    records: &'a GroupRecords,
 }
 
 /// The strips' velocities of one row as stored, in strip order, m/s.
@@ -62,67 +242,56 @@ pub enum StripVelocities<'a> {
 /// A column's kinematics at one located time.
 #[derive(Debug, Clone, Copy)]
 pub struct ColumnState<'a> {
-    kinematics: &'a ColumnKinematics,
+    kinematics: ColumnKinematics<'a>,
     at: SamplePoint,
 }
 
-impl ColumnKinematics {
+impl<'a> ColumnKinematics<'a> {
     /// Number of strips.
     pub fn strips(&self) -> usize {
-        self.strips
+        self.records.source.strips
     }
 
     /// Floats of one row: the elevation and the strips' velocities.
     pub fn floats_per_sample(&self) -> usize {
-        1 + self.layout.per_strip() * self.strips
+        self.records.floats_per_sample()
     }
 
     /// The records at a located time.
     #[inline]
-    pub fn at(&self, p: &SamplePoint) -> ColumnState<'_> {
+    pub fn at(&self, p: &SamplePoint) -> ColumnState<'a> {
         ColumnState {
-            kinematics: self,
+            kinematics: *self,
             at: *p,
         }
     }
 
     /// Number of samples of each record.
     pub fn len(&self) -> usize {
-        self.len
+        self.records.len
     }
 
     /// Whether the records have no samples.
     pub fn is_empty(&self) -> bool {
-        self.len == 0
+        self.records.len == 0
     }
 
-    /// Row m as stored: the free-surface elevation at the column centre (m) and the
-    /// strips' velocities.
-    #[inline]
-    fn row(&self, m: usize) -> (f64, StripVelocities<'_>) {
-        let width = self.floats_per_sample();
-        let row = &self.rows[m * width..(m + 1) * width];
-        let velocities = &row[1..];
-        let velocities = match self.layout {
-            RowLayout::Interleaved => StripVelocities::Interleaved(velocities.as_chunks().0),
-            RowLayout::AlongX => StripVelocities::AlongX(velocities),
-        };
-        (f64::from(row[0]), velocities)
-    }
-
-    /// The row at a located time when it falls on a sample: the elevation, as
-    /// [`ColumnState::eta`] gives it, and the strips' velocities, as
+    /// The row at a located time when it falls on a sample and the row is made: the
+    /// elevation, as [`ColumnState::eta`] gives it, and the strips' velocities, as
     /// [`ColumnState::velocities_on_sample`] does.
     #[inline]
-    pub fn row_on_sample(&self, at: &SamplePoint) -> Option<(f64, StripVelocities<'_>)> {
-        at.on_sample().then(|| self.row(at.index()))
+    pub fn row_on_sample(&self, at: &SamplePoint) -> Option<(f64, StripVelocities<'a>)> {
+        if at.on_sample() {
+            self.records.row(at.index())
+        } else {
+            None
+        }
     }
 
     /// Float i of the rows at a located time.
     #[inline]
     fn value(&self, i: usize, at: &SamplePoint) -> f64 {
-        let width = self.floats_per_sample();
-        at.interpolate_with(self.len, |m| f64::from(self.rows[m * width + i]))
+        at.interpolate_with(self.records.len, |m| f64::from(self.records.float(m, i)))
     }
 }
 
@@ -136,15 +305,15 @@ impl ColumnState<'_> {
     /// Horizontal velocity (body x, y) at strip j, m/s.
     #[inline]
     pub fn velocity(&self, j: usize) -> [f64; 2] {
-        let (k, at) = (self.kinematics, &self.at);
-        match k.layout {
+        let (k, at) = (&self.kinematics, &self.at);
+        match k.records.source.layout {
             RowLayout::Interleaved => [k.value(1 + 2 * j, at), k.value(2 + 2 * j, at)],
             RowLayout::AlongX => [k.value(1 + j, at), 0.0],
         }
     }
 
-    /// The strips' velocities when the time falls on a sample (one contiguous slice of the
-    /// row, single precision).
+    /// The strips' velocities when the time falls on a sample whose row is made (one
+    /// contiguous slice of the row, single precision).
     #[inline]
     pub fn velocities_on_sample(&self) -> Option<StripVelocities<'_>> {
         self.kinematics
@@ -161,8 +330,8 @@ pub(crate) fn column_kinematics(
     strips: usize,
     gravity: f64,
     synth: &mut Synthesizer,
-) -> Vec<ColumnKinematics> {
-    let mut out = Vec::new();
+) -> Kinematics {
+    let mut out = Kinematics::default();
     KinematicsWork::default().build(components, columns, strips, gravity, synth, &mut out);
     out
 }
@@ -182,20 +351,10 @@ pub struct KinematicsWork {
     /// (or given by the record plan).
     bases: Vec<Arc<DepthBasis>>,
     /// The groups' elevation series, two per transform (groups 2p and 2p + 1 as the real
-    /// and imaginary parts of pair p's N samples), and one group's depth terms' series one
-    /// after the other (in waves along x two terms to a series, 2p and 2p + 1 as its real
-    /// and imaginary parts), in single precision.
+    /// and imaginary parts of pair p's N samples), in single precision.
     eta: Vec<Complex32>,
-    terms: Vec<Complex32>,
-    /// V_jq of the basis in single precision, laid out for the recombination kernel
-    /// (`recombination::lay_out_weights`).
-    mix: Vec<f32>,
-    /// One sample of every term (the recombination's scratch).
-    samples: Vec<Complex32>,
-    /// The key of every column, and the rows of the previous build to write again.
+    /// The key of every column.
     keys: Vec<KinematicsKey>,
-    /// (Each held once; written in place when no other records hold it.)
-    spare_rows: Vec<Arc<Vec<f32>>>,
 }
 
 impl KinematicsWork {
@@ -210,7 +369,8 @@ impl KinematicsWork {
     }
 
     /// The kinematics records of every column with `strips` strips each, into `out` (whose
-    /// previous records' buffers are reused).
+    /// previous records' buffers are reused), with no row made yet
+    /// ([`Kinematics::make_rows`]).
     ///
     /// The depth profile omega e^{k z} is real and the same for every direction, so each
     /// column's direction sums are taken once (A_x, A_y for the velocity, A for the
@@ -228,20 +388,12 @@ impl KinematicsWork {
         strips: usize,
         gravity: f64,
         synth: &mut Synthesizer,
-        out: &mut Vec<ColumnKinematics>,
+        out: &mut Kinematics,
     ) {
-        // The previous rows, one per group of columns that shared them.
-        for previous in out.drain(..) {
-            if !self
-                .spare_rows
-                .iter()
-                .any(|r| Arc::ptr_eq(r, &previous.rows))
-            {
-                self.spare_rows.push(previous.rows);
-            }
-        }
+        out.columns.clear();
         if columns.is_empty() {
             // No drag: no records, and no record-length scratch to allocate and fault in.
+            out.groups.clear();
             return;
         }
         let n = synth.output_len();
@@ -274,30 +426,30 @@ impl KinematicsWork {
             let second = pair.get(1).map_or(&self.zero[..], |sums| &sums[2][..]);
             synth.append_two_real_series(&pair[0][2], second, &mut Narrowing(&mut self.eta));
         }
-        for (c, column) in columns.iter().enumerate() {
-            let shared = (0..c).find(|&d| self.keys[d] == self.keys[c]);
-            let (layout, rows) = match shared {
-                Some(d) => (out[d].layout, Arc::clone(&out[d].rows)),
-                None => {
-                    let group = self.groups.iter().position(|&first| first == c);
-                    let group = group.expect("a column that shares no records leads a group");
-                    self.rows(components, group, column, strips, gravity, synth)
-                }
-            };
-            out.push(ColumnKinematics {
-                column: column.clone(),
-                strips,
-                layout,
-                len: n,
-                rows,
-            });
+        out.groups.truncate(self.groups.len());
+        out.groups
+            .resize_with(self.groups.len(), GroupRecords::default);
+        for (g, records) in out.groups.iter_mut().enumerate() {
+            let column = &columns[self.groups[g]];
+            self.group(components, g, column, strips, gravity, synth, records);
         }
-        // Room for these rows when the next build takes them back.
-        self.spare_rows.reserve(columns.len());
+        let keys = &self.keys;
+        out.columns
+            .extend(columns.iter().enumerate().map(|(c, column)| {
+                let first = (0..=c).find(|&d| keys[d] == keys[c]).expect("c itself");
+                let group = self.groups.iter().position(|&leader| leader == first);
+                ColumnEntry {
+                    column: column.clone(),
+                    group: group.expect("the first column of every key leads a group"),
+                }
+            }));
+        debug_assert!(out.groups.iter().all(|g| g.len == n));
     }
 
-    /// The rows of one column, which leads group `group`, and their layout.
-    fn rows(
+    /// The records of group `group`, led by `column`, into `records`: its elevation, its
+    /// depth terms' series and their weights, and room for its rows (none made).
+    #[allow(clippy::too_many_arguments)]
+    fn group(
         &mut self,
         components: &WaveComponents,
         group: usize,
@@ -305,7 +457,8 @@ impl KinematicsWork {
         strips: usize,
         gravity: f64,
         synth: &mut Synthesizer,
-    ) -> (RowLayout, Arc<Vec<f32>>) {
+        records: &mut GroupRecords,
+    ) {
         let (n, count) = (synth.output_len(), components.grid.count);
         let basis = match self
             .bases
@@ -329,9 +482,10 @@ impl KinematicsWork {
         let basis = &self.bases[basis];
         let rank = basis.rank();
         let [ax, ay, _] = &self.sums[group];
-        self.terms.clear();
-        self.terms.reserve(rank * n);
         let along_x = ay[..count].iter().all(|&a| a == Complex64::default());
+        let source = &mut records.source;
+        source.series.clear();
+        source.series.reserve(rank * n);
         if along_x {
             // Waves along x (long-crested head seas): u_y = 0 on every strip, so two terms'
             // u_x share a transform as its real and imaginary parts (half the transforms).
@@ -341,7 +495,7 @@ impl KinematicsWork {
                     self.cx[j] = ax[j] * p;
                     self.cy[j] = second.map_or(Complex64::default(), |s| ax[j] * s[j]);
                 }
-                let terms = &mut Narrowing(&mut self.terms);
+                let terms = &mut Narrowing(&mut source.series);
                 synth.append_two_real_series(&self.cx, &self.cy, terms);
             }
         } else {
@@ -350,7 +504,7 @@ impl KinematicsWork {
                     self.cx[j] = ax[j] * p;
                     self.cy[j] = ay[j] * p;
                 }
-                let terms = &mut Narrowing(&mut self.terms);
+                let terms = &mut Narrowing(&mut source.series);
                 synth.append_two_real_series(&self.cx, &self.cy, terms);
             }
         }
@@ -360,32 +514,34 @@ impl KinematicsWork {
         } else {
             RowLayout::Interleaved
         };
-        lay_out_weights(layout, strips, rank, |q| basis.mix(q), &mut self.mix);
-        let mut rows = self.spare_rows.pop().unwrap_or_default();
-        if Arc::get_mut(&mut rows).is_none() {
-            // Still held by records cloned from these (a cloned simulation): new rows.
-            rows = Arc::default();
-        }
-        let buffer = Arc::get_mut(&mut rows).expect("rows held only here");
-        buffer.clear();
+        lay_out_weights(layout, strips, rank, |q| basis.mix(q), &mut source.weights);
+        // The group's elevation: the real part of its pair's series for the first of the
+        // pair, the imaginary part for the second.
+        let pair = &self.eta[group / 2 * n..][..n];
+        let real = group.is_multiple_of(2);
+        refill(
+            &mut source.eta,
+            pair.iter().map(|e| if real { e.re } else { e.im }),
+        );
+        (source.strips, source.layout, source.rank, source.paired) =
+            (strips, layout, rank, along_x);
+        records.len = n;
         // Row m: the elevation, then u_j(m) = sum_q V_jq g_q(m) for every strip j, in
         // single precision (the terms' rounding and the sum's, a few 1e-8 relative, are
         // below the storage's own and the truncation's 1e-6), summed over q in order.
         // The strips' floats are interleaved (u_x, u_y) (u_x alone in waves along x,
         // u_y = 0), recombined by the register-blocked kernel (kinematics/recombination.rs)
-        // on the widest instruction set the CPU has (the same bits on every one).
-        let recombined = Rows {
-            layout,
-            strips,
-            weights: &self.mix,
-            eta: &self.eta[group / 2 * n..][..n],
-            real: group.is_multiple_of(2),
-            series: &self.terms,
-            rank,
-            paired: along_x,
-        };
-        append_rows(Isa::detect(), &recombined, &mut self.samples, buffer);
-        (layout, rows)
+        // on the widest instruction set the CPU has (the same bits on every one), as the
+        // run reaches them: room for a window of rows (and the padding the kernel writes
+        // past the last one before dropping it), none made.
+        records.first = 0;
+        records.rows.clear();
+        // The recombination's scratch, sized here so that making rows allocates nothing.
+        records.samples.resize(rank, Complex32::default());
+        let padding = layout.width(strips) - layout.per_strip() * strips;
+        records
+            .rows
+            .reserve(ROWS_WINDOW.min(n) * records.floats_per_sample() + padding);
     }
 }
 
@@ -601,14 +757,16 @@ mod tests {
         ] {
             let columns = square(30.0);
             let mut synth = Synthesizer::new(&c.grid);
-            let records = column_kinematics(&c, &columns, strips, GRAVITY, &mut synth);
+            let mut records = column_kinematics(&c, &columns, strips, GRAVITY, &mut synth);
+            records.make_rows(0, 1);
             let clock = whole_period(&c.grid);
-            for (record, column) in records.iter().zip(&columns) {
+            for (record, column) in records.columns().zip(&columns) {
                 assert_eq!(record.strips(), strips);
                 for t in [0.0, 137.5, 401.0, 250.3, 0.2] {
                     let state = record.at(&clock.locate(t).unwrap());
                     let eta = expected(&c, column, 0.0, t)[0];
                     assert!((state.eta() - eta).abs() < STORED, "t {t}: {}", state.eta());
+                    // The window (its first ROWS_WINDOW rows) holds every sample read here.
                     let on_sample = state.velocities_on_sample();
                     assert_eq!(on_sample.is_some(), (t / c.grid.dt).fract() == 0.0);
                     for j in 0..strips {
@@ -649,13 +807,15 @@ mod tests {
             let along_x = floats == 1 + strips;
             assert_eq!(kinematics_row_floats(strips, &c.directions), floats);
             let mut synth = Synthesizer::new(&c.grid);
-            let records = column_kinematics(&c, &columns, strips, GRAVITY, &mut synth);
+            let mut records = column_kinematics(&c, &columns, strips, GRAVITY, &mut synth);
             let clock = whole_period(&c.grid);
-            for (record, column) in records.iter().zip(&columns) {
-                assert_eq!(record.floats_per_sample(), floats);
-                assert_eq!(record.rows.len(), floats * record.len());
-                // Every sample the clock locates (all but the last).
-                for m in 0..record.len() - 1 {
+            for (index, column) in columns.iter().enumerate() {
+                // Every sample the clock locates (all but the last), the window moved to it.
+                for m in 0..c.grid.len - 1 {
+                    records.make_rows(m, m + 1);
+                    let record = records.column(index);
+                    assert_eq!(record.floats_per_sample(), floats);
+                    assert_eq!(record.records.rows.len() % floats, 0);
                     let t = c.grid.start_time + m as f64 * c.grid.dt;
                     let state = record.at(&clock.locate(t).unwrap());
                     let row = state.velocities_on_sample().expect("on a sample");
@@ -727,7 +887,13 @@ mod tests {
                 let mut direct = Vec::new();
                 synth.append_two_real_series(&cx, &cy, &mut direct);
                 for (m, u) in direct.iter().enumerate() {
-                    let [x, y] = stored(records[0].row(m).1, j);
+                    // Row m as the records give it (recombined where it is read).
+                    let group = records.column(0).records;
+                    let [x, y] = match group.source.layout {
+                        RowLayout::Interleaved => [1 + 2 * j, 2 + 2 * j].map(|i| group.float(m, i)),
+                        RowLayout::AlongX => [group.float(m, 1 + j), 0.0],
+                    }
+                    .map(f64::from);
                     error += (Complex64::new(x, y) - u).norm_sqr();
                     power += u.norm_sqr();
                 }
@@ -750,24 +916,87 @@ mod tests {
     /// Columns on one line across the waves share their records; any other pair does not.
     #[test]
     fn only_columns_with_the_same_phases_share_records() {
+        let shared = |k: &Kinematics, a: usize, b: usize| k.columns[a].group == k.columns[b].group;
         let head = components(0.0, Spreading::LongCrested);
         let mut synth = Synthesizer::new(&head.grid);
         let r = column_kinematics(&head, &square(30.0), 3, GRAVITY, &mut synth);
-        assert!(Arc::ptr_eq(&r[0].rows, &r[3].rows) && Arc::ptr_eq(&r[1].rows, &r[2].rows));
-        assert!(!Arc::ptr_eq(&r[0].rows, &r[1].rows));
+        assert!(shared(&r, 0, 3) && shared(&r, 1, 2));
+        assert!(!shared(&r, 0, 1));
+        assert_eq!(r.groups.len(), 2);
         // A different draft is a different profile.
         let mut columns = square(30.0);
         columns[3].draft = 20.0;
         let r = column_kinematics(&head, &columns, 3, GRAVITY, &mut synth);
-        assert!(!Arc::ptr_eq(&r[0].rows, &r[3].rows));
+        assert!(!shared(&r, 0, 3));
         // Oblique spread seas: every column sees its own phases.
         let spread = components(PI / 6.0, Spreading::CosN { n: 2.0 });
         let mut synth = Synthesizer::new(&spread.grid);
         let r = column_kinematics(&spread, &square(30.0), 3, GRAVITY, &mut synth);
         for i in 0..4 {
             for j in i + 1..4 {
-                assert!(!Arc::ptr_eq(&r[i].rows, &r[j].rows), "{i} {j}");
+                assert!(!shared(&r, i, j), "{i} {j}");
             }
+        }
+    }
+
+    /// A row reads the same bits whether the window holds it or it is recombined where it
+    /// is read: every column's elevation and strip velocities at samples and between them
+    /// (the stencil wrapping at sample 0 too), before any row is made, with the window at
+    /// the start, in the middle and at the end of the records, in head seas (u_x alone) and
+    /// a spread sea. A build makes no rows, and moving the window allocates nothing.
+    #[test]
+    fn rows_read_the_same_in_the_window_or_not() {
+        let strips = 7;
+        for c in [
+            components(0.0, Spreading::LongCrested),
+            components(PI / 6.0, Spreading::CosN { n: 2.0 }),
+        ] {
+            let mut synth = Synthesizer::new(&c.grid);
+            let mut records = Kinematics::default();
+            let columns = square(30.0);
+            KinematicsWork::default().build(
+                &c,
+                &columns,
+                strips,
+                GRAVITY,
+                &mut synth,
+                &mut records,
+            );
+            assert!(records.groups.iter().all(|g| g.window().is_empty()));
+            let clock = whole_period(&c.grid);
+            let times = [0.0, 0.2, 137.5, 250.3, 401.0, 580.0];
+            let read = |k: &Kinematics| -> Vec<u64> {
+                let mut bits = Vec::new();
+                for column in k.columns() {
+                    for t in times {
+                        let state = column.at(&clock.locate(t).unwrap());
+                        bits.push(state.eta().to_bits());
+                        for j in 0..strips {
+                            bits.extend(state.velocity(j).map(f64::to_bits));
+                        }
+                    }
+                }
+                bits
+            };
+            let none = read(&records);
+            let capacity: Vec<usize> = records.groups.iter().map(|g| g.rows.capacity()).collect();
+            let len = c.grid.len;
+            assert!(
+                len > ROWS_WINDOW + 100,
+                "the records are longer than a window"
+            );
+            // Each request outside the window before it moves the window.
+            for (start, end) in [(0, 10), (len - 40, len), (274, 280)] {
+                records.make_rows(start, end);
+                let want = start..(start + ROWS_WINDOW).min(len);
+                assert!(records.groups.iter().all(|g| g.window() == want), "{start}");
+                // Held, the same window again.
+                records.make_rows(start + 1, end);
+                assert!(records.groups.iter().all(|g| g.window() == want), "{start}");
+                assert_eq!(read(&records), none, "window from {start}");
+            }
+            let after: Vec<usize> = records.groups.iter().map(|g| g.rows.capacity()).collect();
+            assert_eq!(after, capacity, "the rows were made in the build's room");
         }
     }
 }

@@ -20,12 +20,14 @@ mod transfer;
 mod viscous;
 mod yaw_following;
 
+pub use depth_basis::MAX_RANK;
 pub use depth_basis::{DepthBasis, KINEMATICS_TOLERANCE};
 pub use directional::{add_cross_terms, cross_direction_force, direction_pairs, CrossWork};
 pub use gust::GustStream;
 pub use isa::Isa;
 pub use kinematics::{
-    distinct_kinematics, kinematics_row_floats, ColumnKinematics, KinematicsWork,
+    distinct_kinematics, kinematics_row_floats, ColumnKinematics, Kinematics, KinematicsWork,
+    ROWS_WINDOW,
 };
 pub use motion::{motion_transfers, MotionRecords, MotionTransfer, RaoAlong, WholeMotion};
 pub use newman::NewmanBuilder;
@@ -70,7 +72,7 @@ pub struct ForceRecords {
     /// Wave-drift damping B_ij(t), rows force, columns velocity; `None` when off.
     pub damping: Option<[[Record; 3]; 3]>,
     /// Fast kinematics of the drag columns (empty without drag).
-    pub kinematics: Vec<ColumnKinematics>,
+    pub kinematics: Kinematics,
     /// Force and damping records at a set of body yaw angles (`model.yaw_following`);
     /// when set, they replace `wave_force` and `damping` (see [`ForceRecords::wave_force_at`]).
     pub yaw_following: Option<YawFollowingRecords>,
@@ -267,7 +269,7 @@ impl ForceRecords {
             elevation: Record::zero(),
             wave_force: Default::default(),
             damping: None,
-            kinematics: Vec::new(),
+            kinematics: Kinematics::default(),
             yaw_following: None,
             motion: None,
             gust: None,

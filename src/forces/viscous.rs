@@ -14,7 +14,7 @@ mod sums;
 
 pub use lanes::{drag_forces, LaneDrag, LANES};
 
-use super::kinematics::{ColumnKinematics, ColumnState, StripVelocities};
+use super::kinematics::{ColumnKinematics, ColumnState, Kinematics, StripVelocities};
 use super::record::SamplePoint;
 use crate::model::DragModel;
 use sums::{single, StripSums};
@@ -24,7 +24,7 @@ use sums::{single, StripSums};
 /// `velocity` is the body's slow velocity in the body frame (u, v, r) and `current` the
 /// current velocity in the body frame (x, y components).
 pub fn drag_force(
-    columns: &[ColumnKinematics],
+    kinematics: &Kinematics,
     at: &SamplePoint,
     model: DragModel,
     water_density: f64,
@@ -35,8 +35,16 @@ pub fn drag_force(
     if model == DragModel::Off {
         return total;
     }
-    for col in columns {
-        add_column_force(&mut total, col, at, model, water_density, velocity, current);
+    for col in kinematics.columns() {
+        add_column_force(
+            &mut total,
+            &col,
+            at,
+            model,
+            water_density,
+            velocity,
+            current,
+        );
     }
     total
 }
@@ -80,7 +88,7 @@ impl ColumnStrips {
         velocity: [f64; 3],
         current: [f64; 2],
     ) -> Self {
-        let c = &col.column;
+        let c = col.column;
         let [u, v, r] = velocity;
         let slow = [u - r * c.y - current[0], v + r * c.x - current[1]];
         let wetted = (c.draft + eta).max(0.0);
@@ -106,7 +114,7 @@ impl ColumnStrips {
         model: DragModel,
         fast: [f64; 2],
     ) {
-        let (c, slow, strips) = (&col.column, self.slow, col.strips());
+        let (c, slow, strips) = (col.column, self.slow, col.strips());
         let f = match model {
             DragModel::Off => [0.0; 2],
             DragModel::Combined { cd } => [cd * fast[0], cd * fast[1]],
@@ -166,7 +174,7 @@ mod tests {
     /// |w| (|o| + |u| + |w|) summed over the strips, o the sum's offset (times the lever
     /// |x| + |y| in yaw).
     fn by_strips(
-        columns: &[ColumnKinematics],
+        kinematics: &Kinematics,
         at: &SamplePoint,
         model: DragModel,
         velocity: [f64; 3],
@@ -174,8 +182,8 @@ mod tests {
     ) -> ([f64; 3], [f64; 3]) {
         let mut total = [0.0; 3];
         let mut sizes = [0.0; 3];
-        for col in columns {
-            let c = &col.column;
+        for col in kinematics.columns() {
+            let c = col.column;
             let state = col.at(at);
             let n = col.strips();
             let dz = (c.draft + state.eta()).max(0.0) / n as f64;
@@ -217,8 +225,8 @@ mod tests {
 
     /// The single-precision strip sums equal the plain strip-by-strip sum in double
     /// precision for odd and even strip counts below, at and above a chunk, on samples and
-    /// between them, within [`StripSums`]' bound: (ceil(n/2) + 6) 2^-24 of the sizes
-    /// sum |w| (|o| + |u| + |w|).
+    /// between them, with the rows in the records' window and without, within
+    /// [`StripSums`]' bound: (ceil(n/2) + 6) 2^-24 of the sizes sum |w| (|o| + |u| + |w|).
     #[test]
     fn drag_equals_the_strip_by_strip_sum() {
         let sea = SeaState {
@@ -249,20 +257,26 @@ mod tests {
         });
         let mut synth = Synthesizer::new(grid);
         for strips in [7, 20, CHUNK, 2 * CHUNK + 5] {
-            let kinematics = column_kinematics(&components, &columns, strips, 9.81, &mut synth);
-            for model in [
-                DragModel::Combined { cd: 0.7 },
-                DragModel::Separate {
-                    slow: 0.9,
-                    fast: 0.6,
-                },
-            ] {
+            let unmade = column_kinematics(&components, &columns, strips, 9.81, &mut synth);
+            // With the rows in the records' window (the whole record here) and without.
+            let mut made = unmade.clone();
+            made.make_rows(0, 1);
+            for (kinematics, model) in [&unmade, &made].into_iter().flat_map(|k| {
+                [
+                    DragModel::Combined { cd: 0.7 },
+                    DragModel::Separate {
+                        slow: 0.9,
+                        fast: 0.6,
+                    },
+                ]
+                .map(|model| (k, model))
+            }) {
                 for t in [12.0, 100.5, 233.7] {
                     let at = clock.locate(t).unwrap();
                     let (velocity, current) = ([0.3, -0.2, 0.004], [0.5, 0.1]);
-                    let (want, sizes) = by_strips(&kinematics, &at, model, velocity, current);
+                    let (want, sizes) = by_strips(kinematics, &at, model, velocity, current);
                     let bound = (strips.div_ceil(2) + 6) as f64 * f64::from(f32::EPSILON) / 2.0;
-                    let got = drag_force(&kinematics, &at, model, 1025.0, velocity, current);
+                    let got = drag_force(kinematics, &at, model, 1025.0, velocity, current);
                     for i in 0..3 {
                         let error = (got[i] - want[i]).abs() / sizes[i];
                         assert!(

@@ -20,7 +20,7 @@
 
 use crate::error::numbers::written;
 use crate::error::{bytes_text, Error, Result};
-use crate::forces::{distinct_kinematics, kinematics_row_floats, refine};
+use crate::forces::{distinct_kinematics, kinematics_row_floats, refine, MAX_RANK, ROWS_WINDOW};
 use crate::hydro::bidirectional::BidirectionalSource;
 use crate::model::{DragModel, Interaction, Mode, NewmanForm, SecondOrder, WaveFrequencyMotion};
 use crate::problem::Problem;
@@ -229,18 +229,26 @@ impl MemoryEstimate {
             let c = distinct_kinematics(&problem.platform.columns, &directions) as f64;
             let s = model.strips_per_column as f64;
             let row = kinematics_row_floats(model.strips_per_column, &directions) as f64;
-            // Per distinct column (`forces::distinct_kinematics`): its rows (the elevation and
-            // every strip's velocity, `forces::kinematics_row_floats`); the depth terms'
-            // series (at most one per strip) and the depth kernel's matrices while its basis
-            // is made.
+            // The depth terms per distinct column: at most the kernel's cap, and never more
+            // than the strips.
+            let r = s.min(MAX_RANK as f64);
+            let drafts = distinct_drafts(problem) as f64;
+            // Per distinct column (`forces::distinct_kinematics`): a window of its rows (the
+            // elevation and every strip's velocity, `forces::kinematics_row_floats`), its
+            // depth terms' series (one per term) and its elevation (single precision), and
+            // the join's tails of its series; the columns' elevations two to a series; per
+            // distinct draft the depth kernel while its basis is made (`forces::DepthBasis`:
+            // the kernel and the kept profiles over the grid, the Gram matrix and its
+            // eigenvectors).
             run.push(term(
                 "model.strips_per_column",
                 model.strips_per_column.to_string(),
                 format!("the kinematics of {c} distinct columns of {s} strips"),
-                c * row * F32 * l
-                    + (1.0 + s) * C32 * l
-                    + c * ((s + 6.0) * C64 * g + 4.0 * s * s * F64)
-                    + c * (1.0 + s) * tail,
+                c * row * F32 * (ROWS_WINDOW as f64).min(l)
+                    + c * (r * C32 + F32) * l
+                    + (c / 2.0).ceil() * C32 * l
+                    + drafts * ((s + r) * F64 * g + 4.0 * s * s * F64)
+                    + c * (1.0 + r) * tail,
             ));
         }
         if model.second_order == SecondOrder::FullQtf {
@@ -338,6 +346,15 @@ fn bidirectional_omegas(source: &BidirectionalSource) -> usize {
         BidirectionalSource::Table(table) => table.omegas.len(),
         BidirectionalSource::Embedded { .. } => EMBEDDED_BIDIRECTIONAL_OMEGAS,
     }
+}
+
+/// The number of distinct drafts among the problem's drag columns: one depth kernel each
+/// (`record_plan::depth_bases`).
+fn distinct_drafts(problem: &Problem) -> usize {
+    let columns = &problem.platform.columns;
+    (0..columns.len())
+        .filter(|&c| columns[..c].iter().all(|d| d.draft != columns[c].draft))
+        .count()
 }
 
 #[cfg(test)]

@@ -69,8 +69,11 @@ impl Lockstep {
         };
         let (t, h) = (first.time(), first.problem.run.time_step);
         let external = [0.0; 3];
-        let mut outcome: Vec<Result<()>> =
-            self.lanes.iter_mut().map(|s| s.ensure_segment(t)).collect();
+        let mut outcome: Vec<Result<()>> = self
+            .lanes
+            .iter_mut()
+            .map(|s| s.ensure_records(t, h))
+            .collect();
         let mut y = [0.0; WIDTH];
         for (l, sim) in self.lanes.iter().enumerate() {
             y[6 * l..6 * l + 6].copy_from_slice(&sim.state_vector());

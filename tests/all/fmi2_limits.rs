@@ -245,14 +245,16 @@ const BEYOND_THE_PROCESS: [Case; 4] = [
         expected: &["this process cannot allocate them"],
     },
     Case {
-        name: "strips_per_column = 1000 and a 65536-s block under a 1.5 GB process limit",
+        // The depth kernel's matrices over a 2^20-s block's 330 000 components (2.7 GB);
+        // a 65536-s block fits since the kinematics' rows are a window.
+        name: "strips_per_column = 1000 and a 2^20-s block under a 1.5 GB process limit",
         set: |f, dir| {
             let path = database_with(dir, "strips_per_column = 20", "strips_per_column = 1000");
             let path = {
                 let text = std::fs::read_to_string(&path).unwrap();
                 let text = text.replacen(
                     "time_step = 1.0",
-                    "time_step = 1.0\nblock_duration = 65536.0",
+                    "time_step = 1.0\nblock_duration = 1048576.0",
                     1,
                 );
                 std::fs::write(&path, text).unwrap();

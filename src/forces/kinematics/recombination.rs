@@ -19,6 +19,7 @@
 
 use crate::forces::isa::Isa;
 use rustfft::num_complex::Complex32;
+use std::ops::Range;
 
 /// Floats of one block of a row's strip velocities (two SSE registers, one AVX2 register).
 const LANES: usize = 8;
@@ -27,9 +28,10 @@ const LANES: usize = 8;
 const BLOCKS_AT_ONCE: usize = 4;
 
 /// How a row holds its strips' velocities.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub(super) enum RowLayout {
     /// (u_x, u_y) per strip: a term's sample g = g.re + i g.im spreads as (re, im, ...).
+    #[default]
     Interleaved,
     /// u_x alone per strip (waves along x): a term's sample spreads as (re, re, ...).
     AlongX,
@@ -74,23 +76,23 @@ pub(super) fn lay_out_weights<'a>(
     }
 }
 
-/// A record's rows to recombine: its strips and their layout, the weights laid out by
-/// [`lay_out_weights`], the elevation of every row (`eta[m]`'s real part when `real`, else
-/// its imaginary part) and the depth terms' series g_q(m), as many samples each as `eta`
-/// has: term q at `series[q * len + m]`, or, when `paired` (waves along x, where each g_q
-/// is real), terms 2p and 2p + 1 as the real and imaginary parts of `series[p * len + m]`.
-pub(super) struct Rows<'a> {
+/// What a record's rows are recombined from: its strips and their layout, the weights laid
+/// out by [`lay_out_weights`], the elevation of every row (`eta[m]`) and the depth terms'
+/// series g_q(m), as many samples each as `eta` has: term q at `series[q * len + m]`, or,
+/// when `paired` (waves along x, where each g_q is real), terms 2p and 2p + 1 as the real
+/// and imaginary parts of `series[p * len + m]`.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub(super) struct Rows {
     pub layout: RowLayout,
     pub strips: usize,
-    pub weights: &'a [f32],
-    pub eta: &'a [Complex32],
-    pub real: bool,
-    pub series: &'a [Complex32],
+    pub weights: Vec<f32>,
+    pub eta: Vec<f32>,
+    pub series: Vec<Complex32>,
     pub rank: usize,
     pub paired: bool,
 }
 
-impl Rows<'_> {
+impl Rows {
     #[inline(always)]
     fn sample(&self, q: usize, m: usize) -> Complex32 {
         let len = self.eta.len();
@@ -108,43 +110,80 @@ impl Rows<'_> {
             self.series[q * len + m]
         }
     }
+
+    /// Float `f` of row m's strip velocities (after the elevation) on its own: the sum over
+    /// the terms, in order, of the term's sample as the row's pattern spreads it times its
+    /// weight, the operations [`append_rows`] does for that float, so the same bits.
+    pub(super) fn strip_float(&self, m: usize, f: usize) -> f32 {
+        let width = self.layout.width(self.strips);
+        let first = f - f % (BLOCKS_AT_ONCE * LANES);
+        let floats = (width - first).min(BLOCKS_AT_ONCE * LANES);
+        let weights = &self.weights[first * self.rank..];
+        let mut sum = 0.0f32;
+        for q in 0..self.rank {
+            let g = self.sample(q, m);
+            let p = match self.layout {
+                RowLayout::Interleaved => interleaved(g)[f % LANES],
+                RowLayout::AlongX => real_part(g)[f % LANES],
+            };
+            sum += p * weights[q * floats + f - first];
+        }
+        sum
+    }
 }
 
-/// Appends the `rows` to `out`: row m is the elevation then the strips' velocities
-/// recombined from the terms, without the row's padding, on the instruction set `isa`: the
-/// same operations in the same order on every one, so the same bits. `samples` is scratch
-/// for one sample of every term (its capacity kept: no allocation once it has held
-/// `rows.rank`).
-pub(super) fn append_rows(isa: Isa, rows: &Rows, samples: &mut Vec<Complex32>, out: &mut Vec<f32>) {
+/// Appends rows `range` of `rows` to `out`: row m is the elevation then the strips'
+/// velocities recombined from the terms, without the row's padding, on the instruction set
+/// `isa`: the same operations in the same order on every one, so the same bits. `samples`
+/// is scratch for one sample of every term (its capacity kept: no allocation once it has
+/// held `rows.rank`).
+pub(super) fn append_rows(
+    isa: Isa,
+    rows: &Rows,
+    range: Range<usize>,
+    samples: &mut Vec<Complex32>,
+    out: &mut Vec<f32>,
+) {
     samples.clear();
     samples.resize(rows.rank, Complex32::default());
     match isa {
-        Isa::Baseline => append_rows_with(rows, samples, out),
+        Isa::Baseline => append_rows_with(rows, range, samples, out),
         #[cfg(target_arch = "x86_64")]
         // SAFETY: `Isa::Avx2` is only made where the CPU reports AVX2 (`Isa::detect`,
         // `Isa::available`).
-        Isa::Avx2 => unsafe { append_rows_avx2(rows, samples, out) },
+        Isa::Avx2 => unsafe { append_rows_avx2(rows, range, samples, out) },
     }
 }
 
 /// [`append_rows_with`] compiled for AVX2 (a block of [`LANES`] floats is one register).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-fn append_rows_avx2(rows: &Rows, samples: &mut [Complex32], out: &mut Vec<f32>) {
-    append_rows_with(rows, samples, out)
+fn append_rows_avx2(
+    rows: &Rows,
+    range: Range<usize>,
+    samples: &mut [Complex32],
+    out: &mut Vec<f32>,
+) {
+    append_rows_with(rows, range, samples, out)
 }
 
 #[inline(always)]
-fn append_rows_with(rows: &Rows, samples: &mut [Complex32], out: &mut Vec<f32>) {
+fn append_rows_with(
+    rows: &Rows,
+    range: Range<usize>,
+    samples: &mut [Complex32],
+    out: &mut Vec<f32>,
+) {
     let width = rows.layout.width(rows.strips);
     let padding = width - rows.layout.per_strip() * rows.strips;
-    out.reserve((1 + width) * rows.eta.len());
-    for (m, eta) in rows.eta.iter().enumerate() {
-        out.push(if rows.real { eta.re } else { eta.im });
+    // The rows as stored, and one row's padding written past the last before it is dropped.
+    out.reserve((1 + width - padding) * range.len() + padding);
+    for m in range {
+        out.push(rows.eta[m]);
         for (q, g) in samples.iter_mut().enumerate() {
             *g = rows.sample(q, m);
         }
-        recombine_row(rows.layout, width, rows.weights, samples, out);
+        recombine_row(rows.layout, width, &rows.weights, samples, out);
         out.truncate(out.len() - padding);
     }
 }
@@ -233,7 +272,8 @@ mod tests {
     /// The blocked kernel against the plain double sum u_j = sum_q V_jq g_q, strip by
     /// strip, for every number of blocks (1 to 4 per chunk and more than one chunk), both
     /// layouts, rank 0, paired and separate terms, and the same bits on every instruction
-    /// set the CPU has; each row starts with its elevation and drops its padding.
+    /// set the CPU has; each row starts with its elevation and drops its padding, and each
+    /// of its floats recombined alone ([`Rows::strip_float`]) is the same bits.
     #[test]
     fn the_blocked_sum_is_the_plain_sum() {
         for strips in [1, 3, 4, 5, 8, 12, 16, 17, 20, 33] {
@@ -265,7 +305,7 @@ mod tests {
                         })
                     })
                     .collect();
-                let eta = [Complex32::new(3.0, -4.0), Complex32::new(5.0, -6.0)];
+                let eta = [3.0, -6.0];
                 for layout in [RowLayout::Interleaved, RowLayout::AlongX] {
                     let along_x = layout == RowLayout::AlongX;
                     let mut laid = Vec::new();
@@ -273,10 +313,9 @@ mod tests {
                     let rows = Rows {
                         layout,
                         strips,
-                        weights: &laid,
-                        eta: &eta,
-                        real: !along_x,
-                        series: if along_x { &paired } else { &separate },
+                        weights: laid,
+                        eta: eta.to_vec(),
+                        series: if along_x { &paired } else { &separate }.clone(),
                         rank,
                         paired: along_x,
                     };
@@ -284,12 +323,19 @@ mod tests {
                     let mut first: Option<Vec<f32>> = None;
                     for isa in Isa::available() {
                         let mut out = vec![f32::NAN];
-                        append_rows(isa, &rows, &mut Vec::new(), &mut out);
+                        append_rows(isa, &rows, 0..2, &mut Vec::new(), &mut out);
                         assert_eq!(out.len(), 1 + 2 * per_row, "{layout:?} {strips} {rank}");
                         for m in 0..2 {
                             let row = &out[1 + m * per_row..][..per_row];
-                            let eta = if along_x { eta[m].im } else { eta[m].re };
-                            assert_eq!(row[0], eta);
+                            assert_eq!(row[0], eta[m]);
+                            // Each float alone, the same bits.
+                            for f in 0..per_row - 1 {
+                                assert_eq!(
+                                    rows.strip_float(m, f).to_bits(),
+                                    row[1 + f].to_bits(),
+                                    "{layout:?} {strips} {rank} row {m} float {f} {isa:?}"
+                                );
+                            }
                             for j in 0..strips {
                                 let sum = |part: fn(&Complex32) -> f32| -> f64 {
                                     (0..rank)

@@ -10,9 +10,9 @@
 //! the one-seed path bit for bit, whichever instruction set runs it ([`Isa`]).
 
 use super::sums::lane_sums;
-use super::{add_column_force, strip_sum, ColumnStrips};
+use super::{add_column_force, strip_sum};
 use crate::forces::isa::Isa;
-use crate::forces::kinematics::{ColumnKinematics, StripVelocities};
+use crate::forces::kinematics::{ColumnKinematics, Kinematics, StripVelocities};
 use crate::forces::record::SamplePoint;
 use crate::model::DragModel;
 
@@ -23,7 +23,7 @@ pub const LANES: usize = 4;
 /// instant, and its body's slow velocity (u, v, r) and the current (x, y), body frame.
 #[derive(Debug, Clone, Copy)]
 pub struct LaneDrag<'a> {
-    pub columns: &'a [ColumnKinematics],
+    pub kinematics: &'a Kinematics,
     pub at: SamplePoint,
     pub velocity: [f64; 3],
     pub current: [f64; 2],
@@ -45,55 +45,134 @@ pub fn drag_forces(
         "1 to {LANES} lanes, not {}",
         lanes.len()
     );
-    let mut totals = [[0.0; 3]; LANES];
-    if model == DragModel::Off {
-        return totals;
-    }
-    // Lanes past `lanes.len()` repeat the last one (their results are not kept).
-    let padded: [&LaneDrag; LANES] = [0, 1, 2, 3].map(|l| &lanes[l.min(lanes.len() - 1)]);
-    for c in 0..lanes[0].columns.len() {
-        let mut strips = [None; LANES];
-        let mut velocities = [None; LANES];
-        for (l, lane) in padded.iter().enumerate() {
-            let column = &lane.columns[c];
-            if let Some((eta, row)) = column.row_on_sample(&lane.at) {
-                let (v, u) = (lane.velocity, lane.current);
-                strips[l] = Some(ColumnStrips::of(column, eta, model, water_density, v, u));
-                velocities[l] = Some(row);
-            }
-        }
-        let [Some(s0), Some(s1), Some(s2), Some(s3)] = strips else {
-            // Some lane between samples: each lane alone.
-            for (total, lane) in totals.iter_mut().zip(lanes) {
-                let (column, v, u) = (&lane.columns[c], lane.velocity, lane.current);
-                add_column_force(total, column, &lane.at, model, water_density, v, u);
-            }
-            continue;
-        };
-        let strips = [s0, s1, s2, s3];
-        let offsets = [s0.offset, s1.offset, s2.offset, s3.offset];
-        let fast = match velocities {
-            [Some(StripVelocities::AlongX(a)), Some(StripVelocities::AlongX(b)), Some(StripVelocities::AlongX(c)), Some(StripVelocities::AlongX(d))] => {
-                lane_sums(isa, [a, b, c, d], offsets)
-            }
-            [Some(StripVelocities::Interleaved(a)), Some(StripVelocities::Interleaved(b)), Some(StripVelocities::Interleaved(c)), Some(StripVelocities::Interleaved(d))] => {
-                lane_sums(isa, [a, b, c, d], offsets)
-            }
-            // Lanes of one case share their layout; any others are summed lane by lane.
-            _ => {
-                let mut fast = [[0.0; 2]; LANES];
-                for (l, lane) in padded.iter().enumerate() {
-                    let column = &lane.columns[c];
-                    fast[l] = strip_sum(&column.at(&lane.at), column.strips(), offsets[l]);
+    // The lanes' totals side by side: (Fx, Fy, Mz) of lane l at [i][l].
+    let mut totals = [[0.0; LANES]; 3];
+    if model != DragModel::Off {
+        // Lanes past `lanes.len()` repeat the last one (their results are not kept).
+        let padded: [&LaneDrag; LANES] = [0, 1, 2, 3].map(|l| &lanes[l.min(lanes.len() - 1)]);
+        for c in 0..lanes[0].kinematics.len() {
+            let columns = padded.map(|lane| lane.kinematics.column(c));
+            let rows: [_; LANES] = std::array::from_fn(|l| columns[l].row_on_sample(&padded[l].at));
+            let [Some((e0, r0)), Some((e1, r1)), Some((e2, r2)), Some((e3, r3))] = rows else {
+                // Some lane between samples (or its row not made): each lane alone.
+                for (l, lane) in lanes.iter().enumerate() {
+                    let mut total = [totals[0][l], totals[1][l], totals[2][l]];
+                    let (v, u) = (lane.velocity, lane.current);
+                    add_column_force(
+                        &mut total,
+                        &columns[l],
+                        &lane.at,
+                        model,
+                        water_density,
+                        v,
+                        u,
+                    );
+                    (0..3).for_each(|i| totals[i][l] = total[i]);
                 }
-                fast
-            }
-        };
-        for (l, (total, lane)) in totals.iter_mut().zip(lanes).enumerate() {
-            strips[l].add_force(total, &lane.columns[c], model, fast[l]);
+                continue;
+            };
+            let strips = LaneStrips::of(&columns, [e0, e1, e2, e3], model, water_density, &padded);
+            let offsets = strips.offsets();
+            let fast = match [r0, r1, r2, r3] {
+                [StripVelocities::AlongX(a), StripVelocities::AlongX(b), StripVelocities::AlongX(c), StripVelocities::AlongX(d)] => {
+                    lane_sums(isa, [a, b, c, d], offsets)
+                }
+                [StripVelocities::Interleaved(a), StripVelocities::Interleaved(b), StripVelocities::Interleaved(c), StripVelocities::Interleaved(d)] => {
+                    lane_sums(isa, [a, b, c, d], offsets)
+                }
+                // Lanes of one case share their layout; any others are summed lane by lane.
+                _ => std::array::from_fn(|l| {
+                    let column = &columns[l];
+                    strip_sum(&column.at(&padded[l].at), column.strips(), offsets[l])
+                }),
+            };
+            strips.add_forces(&mut totals, &columns, model, fast);
         }
     }
-    totals
+    let mut out = [[0.0; 3]; LANES];
+    for (l, f) in out.iter_mut().enumerate().take(lanes.len()) {
+        *f = [totals[0][l], totals[1][l], totals[2][l]];
+    }
+    out
+}
+
+/// `ColumnStrips` of the [`LANES`] lanes side by side: each lane's numbers by the
+/// operations `ColumnStrips::of` and `ColumnStrips::add_force` do, in their order, so the
+/// same bits.
+struct LaneStrips {
+    slow: [[f64; LANES]; 2],
+    offset: [[f64; LANES]; 2],
+    scale: [f64; LANES],
+}
+
+impl LaneStrips {
+    #[inline]
+    fn of(
+        columns: &[ColumnKinematics; LANES],
+        eta: [f64; LANES],
+        model: DragModel,
+        water_density: f64,
+        lanes: &[&LaneDrag; LANES],
+    ) -> Self {
+        let (mut slow, mut scale) = ([[0.0; LANES]; 2], [0.0; LANES]);
+        for l in 0..LANES {
+            let (c, [u, v, r], current) = (columns[l].column, lanes[l].velocity, lanes[l].current);
+            slow[0][l] = u - r * c.y - current[0];
+            slow[1][l] = v + r * c.x - current[1];
+            let wetted = (c.draft + eta[l]).max(0.0);
+            let dz = wetted / columns[l].strips() as f64;
+            scale[l] = 0.5 * water_density * c.diameter * dz;
+        }
+        let offset = match model {
+            DragModel::Combined { .. } => slow,
+            _ => [[0.0; LANES]; 2],
+        };
+        LaneStrips {
+            slow,
+            offset,
+            scale,
+        }
+    }
+
+    /// Each lane's offset (x, y).
+    fn offsets(&self) -> [[f64; 2]; LANES] {
+        std::array::from_fn(|l| [self.offset[0][l], self.offset[1][l]])
+    }
+
+    /// Adds each lane's column force (Fx, Fy) and moment about the origin to `totals`, from
+    /// its strips' sum `fast[l]` = sum_j w_j |w_j|.
+    #[inline]
+    fn add_forces(
+        &self,
+        totals: &mut [[f64; LANES]; 3],
+        columns: &[ColumnKinematics; LANES],
+        model: DragModel,
+        fast: [[f64; 2]; LANES],
+    ) {
+        for l in 0..LANES {
+            let (c, slow) = (columns[l].column, [self.slow[0][l], self.slow[1][l]]);
+            let f = match model {
+                DragModel::Off => [0.0; 2],
+                DragModel::Combined { cd } => [cd * fast[l][0], cd * fast[l][1]],
+                DragModel::Separate {
+                    slow: cds,
+                    fast: cdl,
+                } => {
+                    // The slow term is the same on every strip.
+                    let s = columns[l].strips() as f64
+                        * cds
+                        * (slow[0] * slow[0] + slow[1] * slow[1]).sqrt();
+                    [
+                        -s * slow[0] + cdl * fast[l][0],
+                        -s * slow[1] + cdl * fast[l][1],
+                    ]
+                }
+            };
+            totals[0][l] += self.scale[l] * f[0];
+            totals[1][l] += self.scale[l] * f[1];
+            totals[2][l] += self.scale[l] * (c.x * f[1] - c.y * f[0]);
+        }
+    }
 }
 
 #[cfg(test)]
@@ -110,7 +189,9 @@ mod tests {
     /// to 21 strips (odd and even counts: an odd last strip goes to the even sums), in waves
     /// along x (rows of u_x alone) and spread (u_x and u_y), on samples (the lanes' sums side
     /// by side) and between them (each lane alone), each lane at its own slow velocity, and
-    /// with the lanes at different instants (some on a sample, some not).
+    /// with the lanes at different instants (some on a sample, some not); with the rows in
+    /// the records' window and without (each recombined where it is read), which give the
+    /// same bits.
     #[test]
     fn each_lane_is_the_one_seed_drag_bit_for_bit() {
         let columns = [(30.0, 10.0, 25.0), (-20.0, 15.0, 18.0)].map(|(x, y, draft)| Cylinder {
@@ -126,7 +207,7 @@ mod tests {
             ]
         });
         for (strips, direction, spreading) in cases {
-            let kinematics: Vec<_> = (0..LANES as u64)
+            let unmade: Vec<Kinematics> = (0..LANES as u64)
                 .map(|seed| {
                     let sea = SeaState {
                         spectrum: Spectrum::Jonswap {
@@ -151,48 +232,63 @@ mod tests {
                 dt: 0.5,
                 len: 800,
             };
-            let velocity = |l: usize| [0.3 - 0.1 * l as f64, -0.2, 0.004 * l as f64];
-            let current = [0.5, 0.1];
-            for times in [[100.0; LANES], [12.25; LANES], [100.0, 12.25, 233.5, 7.0]] {
-                for model in [
-                    DragModel::Combined { cd: 0.7 },
-                    DragModel::Separate {
-                        slow: 0.9,
-                        fast: 0.6,
-                    },
-                ] {
-                    let lanes: Vec<LaneDrag> = (0..LANES)
-                        .map(|l| LaneDrag {
-                            columns: &kinematics[l],
-                            at: clock.locate(times[l]).unwrap(),
-                            velocity: velocity(l),
-                            current,
-                        })
-                        .collect();
-                    for isa in Isa::available() {
-                        for n in 1..=LANES {
-                            let got = drag_forces(&lanes[..n], model, 1025.0, isa);
-                            for (l, lane) in lanes[..n].iter().enumerate() {
-                                let alone = drag_force(
-                                    lane.columns,
-                                    &lane.at,
-                                    model,
-                                    1025.0,
-                                    lane.velocity,
-                                    current,
-                                );
-                                assert_eq!(
+            // The window from sample 0 holds every instant below (the rows to 512 s).
+            let mut made = unmade.clone();
+            made.iter_mut().for_each(|k| k.make_rows(0, 1));
+            let on = clock.locate(100.0).unwrap();
+            assert!(made[0].column(0).row_on_sample(&on).is_some());
+            assert!(unmade[0].column(0).row_on_sample(&on).is_none());
+            let mut in_window = Vec::new();
+            for kinematics in [&unmade, &made] {
+                let velocity = |l: usize| [0.3 - 0.1 * l as f64, -0.2, 0.004 * l as f64];
+                let current = [0.5, 0.1];
+                for times in [[100.0; LANES], [12.25; LANES], [100.0, 12.25, 233.5, 7.0]] {
+                    for model in [
+                        DragModel::Combined { cd: 0.7 },
+                        DragModel::Separate {
+                            slow: 0.9,
+                            fast: 0.6,
+                        },
+                    ] {
+                        let lanes: Vec<LaneDrag> = (0..LANES)
+                            .map(|l| LaneDrag {
+                                kinematics: &kinematics[l],
+                                at: clock.locate(times[l]).unwrap(),
+                                velocity: velocity(l),
+                                current,
+                            })
+                            .collect();
+                        for isa in Isa::available() {
+                            for n in 1..=LANES {
+                                let got = drag_forces(&lanes[..n], model, 1025.0, isa);
+                                for (l, lane) in lanes[..n].iter().enumerate() {
+                                    let alone = drag_force(
+                                        lane.kinematics,
+                                        &lane.at,
+                                        model,
+                                        1025.0,
+                                        lane.velocity,
+                                        current,
+                                    );
+                                    assert_eq!(
                                     got[l].map(f64::to_bits),
                                     alone.map(f64::to_bits),
                                     "{strips} strips, {spreading:?}, {model:?}, {isa:?}, {n} lanes, lane {l} at {}",
                                     times[l]
                                 );
+                                    in_window.push(got[l].map(f64::to_bits));
+                                }
+                                assert!(got[n..].iter().all(|f| *f == [0.0; 3]));
                             }
-                            assert!(got[n..].iter().all(|f| *f == [0.0; 3]));
                         }
                     }
                 }
             }
+            let (without, with) = in_window.split_at(in_window.len() / 2);
+            assert_eq!(
+                without, with,
+                "{strips} strips, {spreading:?}: the window changes nothing"
+            );
         }
     }
 }
