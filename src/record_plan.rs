@@ -493,20 +493,23 @@ fn depth_bases(problem: &Problem, grid: &FrequencyGrid, power: &[f64]) -> Vec<Ar
     if problem.model.drag == crate::model::DragModel::Off {
         return Vec::new();
     }
-    let mut bases: Vec<Arc<DepthBasis>> = Vec::new();
-    for column in &problem.platform.columns {
-        let strips = problem.model.strips_per_column;
-        if !bases.iter().any(|b| b.fits_draft(column.draft, strips)) {
-            bases.push(Arc::new(DepthBasis::new(
-                grid,
-                power,
-                column.draft,
-                strips,
-                problem.environment.gravity,
-            )));
+    let (strips, gravity) = (problem.model.strips_per_column, problem.environment.gravity);
+    distinct_drafts(&problem.platform.columns)
+        .into_iter()
+        .map(|draft| Arc::new(DepthBasis::new(grid, power, draft, strips, gravity)))
+        .collect()
+}
+
+/// The drafts of `columns`, each once, in the order they first come: one depth kernel each
+/// (every column has the same strips).
+pub(crate) fn distinct_drafts(columns: &[Cylinder]) -> Vec<f64> {
+    let mut drafts: Vec<f64> = Vec::new();
+    for column in columns {
+        if !drafts.contains(&column.draft) {
+            drafts.push(column.draft);
         }
     }
-    bases
+    drafts
 }
 
 /// The RAOs of `problem` on `grid` at every body yaw of `yaws` and wave direction, when its

@@ -325,13 +325,11 @@ impl Simulation {
         let records = &mut self.segment.records;
         if !records.kinematics.is_empty() {
             let clock = records.clock;
-            let sample = |time: f64| ((time - clock.start_time) / clock.dt).floor().max(0.0);
             // The stencil reads from one sample before the one at or below a time to two
             // after it.
-            let start = (sample(t) as usize).saturating_sub(1);
-            records
-                .kinematics
-                .make_rows(start, sample(t + ahead) as usize + 3);
+            let start = clock.sample_at_or_below(t).saturating_sub(1);
+            let end = clock.sample_at_or_below(t + ahead) + 3;
+            records.kinematics.make_rows(start, end);
         }
         Ok(())
     }

@@ -70,10 +70,9 @@ struct ColumnEntry {
 /// The records of one group of columns: the depth terms' series and the rows made so far.
 #[derive(Debug, Clone, Default)]
 struct GroupRecords {
-    /// Samples per series.
-    len: usize,
     /// The series the rows are recombined from: the elevation at the columns' centre (m),
-    /// the depth terms and their weights, the strips and how a row holds them.
+    /// the depth terms and their weights, the strips and how a row holds them (as many
+    /// samples each as the elevation has: [`GroupRecords::len`]).
     source: Rows,
     /// The window's first row.
     first: usize,
@@ -87,11 +86,16 @@ struct GroupRecords {
 /// made so far are a function of them.
 impl PartialEq for GroupRecords {
     fn eq(&self, other: &Self) -> bool {
-        self.len == other.len && self.source == other.source
+        self.source == other.source
     }
 }
 
 impl GroupRecords {
+    /// Samples per series.
+    fn len(&self) -> usize {
+        self.source.eta.len()
+    }
+
     /// Floats of one row: the elevation and the strips' velocities.
     fn floats_per_sample(&self) -> usize {
         1 + self.source.layout.per_strip() * self.source.strips
@@ -107,14 +111,14 @@ impl GroupRecords {
     /// product, not a division: asked before every step).
     #[inline]
     fn holds(&self, start: usize, end: usize) -> bool {
-        let end = end.min(self.len);
+        let end = end.min(self.len());
         self.first <= start && self.rows.len() >= (end - self.first) * self.floats_per_sample()
     }
 
     /// Moves the window to rows `start .. start + ROWS_WINDOW` (at most the series' length).
     fn make_rows_from(&mut self, start: usize, isa: Isa) {
-        let start = start.min(self.len);
-        let end = (start + ROWS_WINDOW).min(self.len);
+        let start = start.min(self.len());
+        let end = (start + ROWS_WINDOW).min(self.len());
         self.first = start;
         self.rows.clear();
         append_rows(
@@ -266,16 +270,6 @@ impl<'a> ColumnKinematics<'a> {
         }
     }
 
-    /// Number of samples of each record.
-    pub fn len(&self) -> usize {
-        self.records.len
-    }
-
-    /// Whether the records have no samples.
-    pub fn is_empty(&self) -> bool {
-        self.records.len == 0
-    }
-
     /// The row at a located time when it falls on a sample and the row is made: the
     /// elevation, as [`ColumnState::eta`] gives it, and the strips' velocities, as
     /// [`ColumnState::velocities_on_sample`] does.
@@ -291,7 +285,7 @@ impl<'a> ColumnKinematics<'a> {
     /// Float i of the rows at a located time.
     #[inline]
     fn value(&self, i: usize, at: &SamplePoint) -> f64 {
-        at.interpolate_with(self.records.len, |m| f64::from(self.records.float(m, i)))
+        at.interpolate_with(self.records.len(), |m| f64::from(self.records.float(m, i)))
     }
 }
 
@@ -396,7 +390,6 @@ impl KinematicsWork {
             out.groups.clear();
             return;
         }
-        let n = synth.output_len();
         let count = components.grid.count;
         for v in [&mut self.zero, &mut self.cx, &mut self.cy] {
             refill(v, std::iter::repeat_n(Complex64::default(), count));
@@ -443,7 +436,6 @@ impl KinematicsWork {
                     group: group.expect("the first column of every key leads a group"),
                 }
             }));
-        debug_assert!(out.groups.iter().all(|g| g.len == n));
     }
 
     /// The records of group `group`, led by `column`, into `records`: its elevation, its
@@ -525,7 +517,6 @@ impl KinematicsWork {
         );
         (source.strips, source.layout, source.rank, source.paired) =
             (strips, layout, rank, along_x);
-        records.len = n;
         // Row m: the elevation, then u_j(m) = sum_q V_jq g_q(m) for every strip j, in
         // single precision (the terms' rounding and the sum's, a few 1e-8 relative, are
         // below the storage's own and the truncation's 1e-6), summed over q in order.

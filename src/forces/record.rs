@@ -52,6 +52,14 @@ impl RecordClock {
     }
 }
 
+impl RecordClock {
+    /// The sample at or below time `t`, without [`RecordClock::locate`]'s checks: 0 before
+    /// the first sample, past the last when `t` is.
+    pub fn sample_at_or_below(&self, t: f64) -> usize {
+        ((t - self.start_time) / self.dt).floor().max(0.0) as usize
+    }
+}
+
 impl SamplePoint {
     /// Whether the time falls on a sample (the records are then read, not interpolated).
     #[inline]

@@ -232,7 +232,7 @@ impl MemoryEstimate {
             // The depth terms per distinct column: at most the kernel's cap, and never more
             // than the strips.
             let r = s.min(MAX_RANK as f64);
-            let drafts = distinct_drafts(problem) as f64;
+            let drafts = super::distinct_drafts(&problem.platform.columns).len() as f64;
             // Per distinct column (`forces::distinct_kinematics`): a window of its rows (the
             // elevation and every strip's velocity, `forces::kinematics_row_floats`), its
             // depth terms' series (one per term) and its elevation (single precision), and
@@ -346,15 +346,6 @@ fn bidirectional_omegas(source: &BidirectionalSource) -> usize {
         BidirectionalSource::Table(table) => table.omegas.len(),
         BidirectionalSource::Embedded { .. } => EMBEDDED_BIDIRECTIONAL_OMEGAS,
     }
-}
-
-/// The number of distinct drafts among the problem's drag columns: one depth kernel each
-/// (`record_plan::depth_bases`).
-fn distinct_drafts(problem: &Problem) -> usize {
-    let columns = &problem.platform.columns;
-    (0..columns.len())
-        .filter(|&c| columns[..c].iter().all(|d| d.draft != columns[c].draft))
-        .count()
 }
 
 #[cfg(test)]
