@@ -15,7 +15,9 @@ pub use crate::dynamics::Held;
 use crate::dynamics::{rk4_step, ForceBreakdown, SlowDriftModel};
 use crate::error::numbers::written;
 use crate::error::{Error, Result};
-use crate::forces::{refine, ForceRecords, SamplePoint, Segments, WholeMotion, YawPoint};
+use crate::forces::{
+    refine, ForceRecords, RecordClock, SamplePoint, Segments, WholeMotion, YawPoint,
+};
 use crate::problem::Problem;
 use crate::record_plan::{QtfRank, RecordPlan, Segment};
 use crate::sea_state::FrequencyGrid;
@@ -538,11 +540,23 @@ impl Simulation {
 
     /// Where `time` falls in the records, and the yaw `theta` in the yaw-following ones.
     fn located(&self, time: f64, theta: f64) -> Result<(SamplePoint, YawPoint)> {
+        self.located_as(time, theta, None)
+    }
+
+    /// [`Simulation::located`], taking `known` (`time` located on a clock) as it is when
+    /// the records' clock is that clock.
+    fn located_as(
+        &self,
+        time: f64,
+        theta: f64,
+        known: Option<(&RecordClock, SamplePoint)>,
+    ) -> Result<(SamplePoint, YawPoint)> {
         let records = &self.segment.records;
-        Ok((
-            records.clock.locate(time)?,
-            records.locate_yaw(time, theta)?,
-        ))
+        let at = match known {
+            Some((clock, at)) if *clock == records.clock => at,
+            _ => records.clock.locate(time)?,
+        };
+        Ok((at, records.locate_yaw(time, theta)?))
     }
 
     /// Ends a step from `t` over `h` on the state `next`: refused if it is unphysical or

@@ -12,6 +12,7 @@
 //! docs/theory.md#wind-force); F_ext an external force in the inertial frame. Second-order terms in the slow velocities are neglected, as in the paper. Since
 //! S is orthogonal, q'' = S (M + A)^{-1} S^T (right-hand side).
 
+use super::value::{Value, Wide};
 use crate::error::numbers::written_matrix;
 use crate::error::{Error, Result};
 use crate::forces::{
@@ -24,28 +25,28 @@ use nalgebra::{Matrix3, Vector3};
 
 /// Forces acting on the body at one instant, inertial frame (N, N, N m).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct ForceBreakdown {
+pub struct ForceBreakdown<V = f64> {
     /// Slowly varying wave force S D(t).
-    pub wave: [f64; 3],
+    pub wave: [V; 3],
     /// Wave-drift damping force -S B(t)(S^T q' - u_c).
-    pub damping: [f64; 3],
+    pub damping: [V; 3],
     /// Morison drag S f_drag.
-    pub drag: [f64; 3],
+    pub drag: [V; 3],
     /// Extra linear and quadratic damping S f_extra.
-    pub extra_damping: [f64; 3],
+    pub extra_damping: [V; 3],
     /// Mooring stiffness force -C q.
-    pub stiffness: [f64; 3],
+    pub stiffness: [V; 3],
     /// The wind's force S f_wind.
-    pub wind: [f64; 3],
+    pub wind: [V; 3],
 }
 
 /// The time-independent parts of the equations of motion.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SlowDriftModel {
-    inverse_mass: Matrix3<f64>,
-    stiffness: Matrix3<f64>,
-    linear_damping: Matrix3<f64>,
-    quadratic_damping: Matrix3<f64>,
+    inverse_mass: [[f64; 3]; 3],
+    stiffness: [[f64; 3]; 3],
+    linear_damping: [[f64; 3]; 3],
+    quadratic_damping: [[f64; 3]; 3],
     drag: DragModel,
     water_density: f64,
     /// Current velocity, inertial frame (X, Y), m/s.
@@ -69,47 +70,84 @@ fn matrix(m: &[[f64; 3]; 3]) -> Matrix3<f64> {
     Matrix3::from_fn(|i, j| m[i][j])
 }
 
+/// m v for a matrix common to every lane, each row summed from its first column
+/// (((m0 v0) + m1 v1) + m2 v2, nalgebra's order).
+#[inline(always)]
+fn times<V: Value>(m: &[[f64; 3]; 3], v: &[V; 3]) -> [V; 3] {
+    std::array::from_fn(|i| {
+        V::splat(m[i][0]) * v[0] + V::splat(m[i][1]) * v[1] + V::splat(m[i][2]) * v[2]
+    })
+}
+
 /// The rotation S(theta) of E&S 1 between the body and the inertial frame, for
 /// (surge, sway, yaw) vectors; sin and cos taken once per instant.
 #[derive(Debug, Clone, Copy)]
-struct Rotation {
-    sin: f64,
-    cos: f64,
+struct Rotation<V> {
+    sin: V,
+    cos: V,
 }
 
-impl Rotation {
+impl Rotation<f64> {
     fn new(theta: f64) -> Self {
         let (sin, cos) = theta.sin_cos();
         Rotation { sin, cos }
     }
+}
+
+impl<V: Value> Rotation<V> {
+    /// Each lane's S(theta) for its yaw in `theta`.
+    #[inline(always)]
+    fn of(theta: V) -> Self {
+        let [sin, cos] = V::gather(|l| {
+            let (s, c) = theta.lane(l).sin_cos();
+            [s, c]
+        });
+        Rotation { sin, cos }
+    }
 
     /// Body to inertial: S v.
-    fn to_inertial(self, v: &Vector3<f64>) -> Vector3<f64> {
+    #[inline(always)]
+    fn to_inertial(self, v: &[V; 3]) -> [V; 3] {
         let (s, c) = (self.sin, self.cos);
-        Vector3::new(c * v[0] - s * v[1], s * v[0] + c * v[1], v[2])
+        [c * v[0] - s * v[1], s * v[0] + c * v[1], v[2]]
     }
 
     /// Inertial to body: S^T v.
-    fn to_body(self, v: &Vector3<f64>) -> Vector3<f64> {
+    #[inline(always)]
+    fn to_body(self, v: &[V; 3]) -> [V; 3] {
         let (s, c) = (self.sin, self.cos);
-        Vector3::new(c * v[0] + s * v[1], -s * v[0] + c * v[1], v[2])
+        [c * v[0] + s * v[1], -s * v[0] + c * v[1], v[2]]
     }
 }
 
 /// The rotation S(theta) at an instant, and the body's velocity S^T q' (u, v, r) and the
-/// current S^T u_c (x, y, 0) in the body frame.
+/// current S^T u_c (x, y, 0) in the body frame: one seed's (`f64`) or lanes' ([`Wide`]).
 #[derive(Debug, Clone, Copy)]
-pub struct BodyFrame {
-    rotation: Rotation,
-    velocity: Vector3<f64>,
-    current: Vector3<f64>,
+pub struct BodyFrame<V = f64> {
+    rotation: Rotation<V>,
+    velocity: [V; 3],
+    current: [V; 3],
 }
 
-impl BodyFrame {
-    /// The current's (x, y), as the drag takes it.
-    fn drag_current(&self) -> [f64; 2] {
-        [self.current[0], self.current[1]]
+impl<V: Value> BodyFrame<V> {
+    /// Lane `l`'s velocity (u, v, r) and current (x, y), as the drag takes them.
+    pub fn drag_velocities(&self, l: usize) -> ([f64; 3], [f64; 2]) {
+        (
+            self.velocity.map(|v| v.lane(l)),
+            [self.current[0].lane(l), self.current[1].lane(l)],
+        )
     }
+}
+
+/// What the forces read from a seed's records at a located instant and yaw (body frame):
+/// the slowly varying wave force D(t), the wave-drift damping B(t) (`None` when off), the
+/// Morison drag, and the wind speed at the force's height (m/s).
+#[derive(Debug, Clone, Copy)]
+pub struct Read<V = f64> {
+    pub wave: [V; 3],
+    pub damping: Option<[[V; 3]; 3]>,
+    pub drag: [V; 3],
+    pub wind_speed: V,
 }
 
 impl SlowDriftModel {
@@ -124,7 +162,7 @@ impl SlowDriftModel {
             inertia.yaw_inertia,
         ));
         let total = rigid + matrix(&inertia.added_mass);
-        let inverse_mass = total.try_inverse().ok_or_else(|| {
+        let inverse = total.try_inverse().ok_or_else(|| {
             Error::invalid(
                 "platform.added_mass",
                 written_matrix(&inertia.added_mass),
@@ -133,10 +171,10 @@ impl SlowDriftModel {
         })?;
         let (s, c) = problem.current.direction.sin_cos();
         Ok(SlowDriftModel {
-            inverse_mass,
-            stiffness: matrix(&p.stiffness),
-            linear_damping: matrix(&p.linear_damping),
-            quadratic_damping: matrix(&p.quadratic_damping),
+            inverse_mass: std::array::from_fn(|i| std::array::from_fn(|j| inverse[(i, j)])),
+            stiffness: p.stiffness,
+            linear_damping: p.linear_damping,
+            quadratic_damping: p.quadratic_damping,
             drag: problem.model.drag,
             water_density: problem.environment.water_density,
             current: [problem.current.speed * c, problem.current.speed * s],
@@ -158,8 +196,8 @@ impl SlowDriftModel {
         wind_input: f64,
     ) -> ForceBreakdown {
         let body = self.body_frame(q, qd);
-        let drag = self.drag(records, at, &body);
-        self.forces_with_drag(&body, drag, records, at, yaw, q, wind_input)
+        let read = self.read(records, at, yaw, &body, wind_input);
+        self.breakdown(&body, &read, q)
     }
 
     /// The acceleration q'' at a located instant and yaw for state (q, q') and what the
@@ -175,48 +213,121 @@ impl SlowDriftModel {
         held: &Held,
     ) -> [f64; 3] {
         let body = self.body_frame(q, qd);
-        let drag = self.drag(records, at, &body);
-        self.acceleration_with_drag(&body, drag, records, at, yaw, q, held)
+        let read = self.read(records, at, yaw, &body, held.wind_speed);
+        self.acceleration_of(&body, &read, q, &held.force)
     }
 
     /// The state's velocity and the current in the body frame, S^T q' and S^T u_c, with
     /// S(theta): what the drag takes.
     pub fn body_frame(&self, q: &[f64; 3], qd: &[f64; 3]) -> BodyFrame {
-        let rotation = Rotation::new(q[2]);
+        self.body_frame_of(Rotation::new(q[2]), qd)
+    }
+
+    /// [`SlowDriftModel::body_frame`] for the lanes' yaws `theta` and velocities `qd`.
+    pub fn lanes_body_frame<V: Value>(&self, theta: V, qd: &[V; 3]) -> BodyFrame<V> {
+        self.body_frame_of(Rotation::of(theta), qd)
+    }
+
+    #[inline(always)]
+    fn body_frame_of<V: Value>(&self, rotation: Rotation<V>, qd: &[V; 3]) -> BodyFrame<V> {
+        let current = [
+            V::splat(self.current[0]),
+            V::splat(self.current[1]),
+            V::splat(0.0),
+        ];
         BodyFrame {
             rotation,
-            velocity: rotation.to_body(&Vector3::from(*qd)),
-            current: rotation.to_body(&Vector3::new(self.current[0], self.current[1], 0.0)),
+            velocity: rotation.to_body(qd),
+            current: rotation.to_body(&current),
         }
     }
 
-    /// The Morison drag f_drag (body frame) at a located instant for the body's velocity
-    /// `body`.
-    fn drag(&self, records: &ForceRecords, at: &SamplePoint, body: &BodyFrame) -> [f64; 3] {
-        let lane = self.lane_drag(records, at, body);
-        drag_force(
+    /// What the forces read from one seed's `records` at a located instant and yaw, its drag
+    /// for the body's velocity `body`, and the input wind speed `wind_input` (m/s).
+    fn read(
+        &self,
+        records: &ForceRecords,
+        at: &SamplePoint,
+        yaw: &YawPoint,
+        body: &BodyFrame,
+        wind_input: f64,
+    ) -> Read {
+        let lane = self.lane_drag(records, at, body, 0);
+        let drag = drag_force(
             lane.kinematics,
             &lane.at,
             self.drag,
             self.water_density,
             lane.velocity,
             lane.current,
-        )
+        );
+        self.read_with_drag(records, at, yaw, drag, wind_input)
     }
 
-    /// What [`drag_forces`] takes of one lane: its records at a located instant, its
-    /// velocity `body`.
-    pub fn lane_drag<'a>(
+    /// [`Read`] of one seed's `records` with its drag `drag` (body frame) already taken.
+    fn read_with_drag(
+        &self,
+        records: &ForceRecords,
+        at: &SamplePoint,
+        yaw: &YawPoint,
+        drag: [f64; 3],
+        wind_input: f64,
+    ) -> Read {
+        Read {
+            wave: records.wave_force_at(at, yaw),
+            damping: records.damping_at(at, yaw),
+            drag,
+            wind_speed: self.wind_speed(records, at, wind_input),
+        }
+    }
+
+    /// [`Read`] of the lanes side by side: lane l's records, located instant and yaw, and
+    /// input wind speed (m/s) from `lane(l)`, its drag (body frame) `drags[l]`.
+    #[inline(always)]
+    pub fn lanes_read<'a>(
+        &self,
+        lane: impl Fn(usize) -> (&'a ForceRecords, SamplePoint, YawPoint, f64),
+        drags: &[[f64; 3]; LANES],
+    ) -> Read<Wide> {
+        let mut damped = false;
+        let flat = Wide::gather(|l| {
+            let (records, at, yaw, input) = lane(l);
+            let b = records.damping_at(&at, &yaw);
+            damped |= b.is_some();
+            let b = b.unwrap_or_default();
+            let wave = records.wave_force_at(&at, &yaw);
+            let wind = self.wind_speed(records, &at, input);
+            let d = drags[l];
+            [
+                wave[0], wave[1], wave[2], d[0], d[1], d[2], wind, b[0][0], b[0][1], b[0][2],
+                b[1][0], b[1][1], b[1][2], b[2][0], b[2][1], b[2][2],
+            ]
+        });
+        Read {
+            wave: [flat[0], flat[1], flat[2]],
+            drag: [flat[3], flat[4], flat[5]],
+            wind_speed: flat[6],
+            // The lanes are of one model: damped in every lane or in none.
+            damping: damped
+                .then(|| std::array::from_fn(|i| std::array::from_fn(|j| flat[7 + 3 * i + j]))),
+        }
+    }
+
+    /// What [`drag_forces`] takes of lane `l` of `body`: its records at a located instant,
+    /// its velocity.
+    pub fn lane_drag<'a, V: Value>(
         &self,
         records: &'a ForceRecords,
         at: &SamplePoint,
-        body: &BodyFrame,
+        body: &BodyFrame<V>,
+        l: usize,
     ) -> LaneDrag<'a> {
+        let (velocity, current) = body.drag_velocities(l);
         LaneDrag {
             kinematics: &records.kinematics,
             at: *at,
-            velocity: body.velocity.into(),
-            current: body.drag_current(),
+            velocity,
+            current,
         }
     }
 
@@ -226,80 +337,79 @@ impl SlowDriftModel {
         drag_forces(lanes, self.drag, self.water_density, isa)
     }
 
-    /// [`SlowDriftModel::acceleration`] with the body frame and the drag `drag` (body frame)
-    /// already taken.
-    #[allow(clippy::too_many_arguments)]
-    pub fn acceleration_with_drag(
+    /// E&S 1 solved for q'' in each lane: the forces of [`SlowDriftModel::breakdown`] and
+    /// the external force `external` (inertial frame).
+    #[inline(always)]
+    pub fn acceleration_of<V: Value>(
         &self,
-        body: &BodyFrame,
-        drag: [f64; 3],
-        records: &ForceRecords,
-        at: &SamplePoint,
-        yaw: &YawPoint,
-        q: &[f64; 3],
-        held: &Held,
-    ) -> [f64; 3] {
-        let total = self
-            .forces_with_drag(body, drag, records, at, yaw, q, held.wind_speed)
-            .total(&held.force);
-        self.solve(&body.rotation, &total).into()
+        body: &BodyFrame<V>,
+        read: &Read<V>,
+        q: &[V; 3],
+        external: &[V; 3],
+    ) -> [V; 3] {
+        let total = self.breakdown(body, read, q).total(external);
+        self.solve(body.rotation, &total)
     }
 
     /// The change of velocity (X', Y', theta') over a time `h` that the force `force`
     /// (inertial frame, N, N, N m) alone gives the body at yaw `theta`: S (M + A)^-1 S^T f h
     /// (E&S 1 without the other terms).
     pub fn velocity_change(&self, theta: f64, force: &[f64; 3], h: f64) -> [f64; 3] {
-        (self.solve(&Rotation::new(theta), force) * h).into()
+        self.solve(Rotation::new(theta), force).map(|a| a * h)
     }
 
     /// S (M + A)^-1 S^T f: the acceleration the force `f` (inertial frame) gives the body
     /// at the rotation S (E&S 1 solved for q'').
-    fn solve(&self, rotation: &Rotation, force: &[f64; 3]) -> Vector3<f64> {
-        let body = rotation.to_body(&Vector3::from(*force));
-        rotation.to_inertial(&(self.inverse_mass * body))
+    #[inline(always)]
+    fn solve<V: Value>(&self, rotation: Rotation<V>, force: &[V; 3]) -> [V; 3] {
+        let body = rotation.to_body(force);
+        rotation.to_inertial(&times(&self.inverse_mass, &body))
     }
 
-    /// [`SlowDriftModel::forces`] with the body frame and the drag (body frame) already
-    /// taken.
-    #[allow(clippy::too_many_arguments)]
-    fn forces_with_drag(
+    /// The forces (inertial frame) in each lane from what it read, `read`, at the state
+    /// `q` and the body frame `body` (E&S 1's terms).
+    #[inline(always)]
+    fn breakdown<V: Value>(
         &self,
-        body: &BodyFrame,
-        drag: [f64; 3],
-        records: &ForceRecords,
-        at: &SamplePoint,
-        yaw: &YawPoint,
-        q: &[f64; 3],
-        wind_input: f64,
-    ) -> ForceBreakdown {
+        body: &BodyFrame<V>,
+        read: &Read<V>,
+        q: &[V; 3],
+    ) -> ForceBreakdown<V> {
         let (rotation, velocity, current) = (body.rotation, body.velocity, body.current);
-        let wave = Vector3::from(records.wave_force_at(at, yaw));
-        let damping = match records.damping_at(at, yaw) {
+        let zero = [V::splat(0.0); 3];
+        let damping = match &read.damping {
             Some(b) => {
-                let relative = velocity - current;
-                -Matrix3::from_fn(|i, j| b[i][j]) * relative
+                let relative: [V; 3] = std::array::from_fn(|i| velocity[i] - current[i]);
+                std::array::from_fn(|i| {
+                    -b[i][0] * relative[0] + -b[i][1] * relative[1] + -b[i][2] * relative[2]
+                })
             }
-            None => Vector3::zeros(),
+            None => zero,
         };
-        let drag = Vector3::from(drag);
         let quadratic = velocity.map(|v| v * v.abs());
-        let extra = -(self.linear_damping * velocity) - self.quadratic_damping * quadratic;
-        let stiffness = -(self.stiffness * Vector3::from(*q));
+        let (linear, quadratic) = (
+            times(&self.linear_damping, &velocity),
+            times(&self.quadratic_damping, &quadratic),
+        );
+        let extra: [V; 3] = std::array::from_fn(|i| -linear[i] - quadratic[i]);
+        let stiffness = times(&self.stiffness, q).map(|f| -f);
         let wind = match &self.wind {
-            Some((force, _)) => Vector3::from(force.force(
-                self.wind_speed(records, at, wind_input),
-                q[2],
-                velocity.into(),
-            )),
-            None => Vector3::zeros(),
+            Some((force, _)) => V::gather(|l| {
+                force.force(
+                    read.wind_speed.lane(l),
+                    q[2].lane(l),
+                    velocity.map(|v| v.lane(l)),
+                )
+            }),
+            None => zero,
         };
         ForceBreakdown {
-            wave: rotation.to_inertial(&wave).into(),
-            damping: rotation.to_inertial(&damping).into(),
-            drag: rotation.to_inertial(&drag).into(),
-            extra_damping: rotation.to_inertial(&extra).into(),
-            stiffness: stiffness.into(),
-            wind: rotation.to_inertial(&wind).into(),
+            wave: rotation.to_inertial(&read.wave),
+            damping: rotation.to_inertial(&damping),
+            drag: rotation.to_inertial(&read.drag),
+            extra_damping: rotation.to_inertial(&extra),
+            stiffness,
+            wind: rotation.to_inertial(&wind),
         }
     }
 
@@ -315,9 +425,10 @@ impl SlowDriftModel {
     }
 }
 
-impl ForceBreakdown {
+impl<V: Value> ForceBreakdown<V> {
     /// Sum of all forces plus the external force, inertial frame.
-    pub fn total(&self, external: &[f64; 3]) -> [f64; 3] {
+    #[inline(always)]
+    pub fn total(&self, external: &[V; 3]) -> [V; 3] {
         std::array::from_fn(|i| {
             self.wave[i]
                 + self.damping[i]

@@ -6,9 +6,9 @@
 //! gets the one-seed path's error and its state back, and the others go on.
 
 use super::Simulation;
-use crate::dynamics::{rk4_step, BodyFrame, Held};
+use crate::dynamics::{rk4_step, Held, Value, Wide};
 use crate::error::{Error, Result};
-use crate::forces::{Isa, LaneDrag, SamplePoint, YawPoint, LANES};
+use crate::forces::{Isa, LaneDrag, LANES};
 
 /// The state of [`LANES`] lanes as one RK4 vector: lane l's (X, Y, theta, X', Y', theta')
 /// at 6 l.
@@ -102,9 +102,9 @@ impl Lockstep {
 
 /// The lanes' derivatives (q', q'') at `time` for the states `y`, each lane's as
 /// [`Simulation::derivative`] gives it: the lanes that have not failed (`outcome` Ok)
-/// located and put in the body frame one by one, their drag taken together, the rest of
-/// their forces one by one. A lane that fails here gets its error in `outcome` and zero
-/// derivatives from then on.
+/// located one by one, their equations of motion taken side by side ([`Wide`], the
+/// one-seed code on the lanes' numbers) with their drag taken together. A lane that fails
+/// here gets its error in `outcome` and zero derivatives from then on.
 fn derivatives(
     lanes: &[Simulation],
     isa: Isa,
@@ -113,71 +113,58 @@ fn derivatives(
     held: &[Held; LANES],
     outcome: &mut [Result<()>],
 ) -> [f64; WIDTH] {
-    // The lanes located at `time` (their index, records' point, yaw, state, body frame),
-    // in lane order, in the first `count` entries.
-    let mut located: [Option<Located>; LANES] = [None; LANES];
-    let mut count = 0;
+    // Each lane's records' point and yaw at `time`; the lanes located, in lane order, in
+    // `live[..count]`.
+    let mut located = [None; LANES];
+    let (mut live, mut count) = ([0; LANES], 0);
+    // `time` as the lane before located it, on its records' clock: the lanes' clocks are
+    // alike (their segments' starts and lengths), and a lane whose clock is not locates anew.
+    let mut known = None;
     for (l, sim) in lanes.iter().enumerate() {
         if outcome[l].is_err() {
             continue;
         }
-        let (q, qd) = (
-            [y[6 * l], y[6 * l + 1], y[6 * l + 2]],
-            [y[6 * l + 3], y[6 * l + 4], y[6 * l + 5]],
-        );
-        match sim.located(time, q[2]) {
-            Ok((at, yaw)) => {
-                let body = sim.model.body_frame(&q, &qd);
-                located[count] = Some(Located {
-                    lane: l,
-                    at,
-                    yaw,
-                    q,
-                    qd,
-                    body,
-                });
+        match sim.located_as(time, y[6 * l + 2], known) {
+            Ok(point) => {
+                known = Some((&sim.segment.records.clock, point.0));
+                located[l] = Some(point);
+                live[count] = l;
                 count += 1;
             }
             Err(e) => outcome[l] = Err(e),
         }
     }
     let mut out = [0.0; WIDTH];
-    let Some(first) = located[0] else {
+    let Some(first) = located[live[0]] else {
         return out;
     };
-    let drag_of = |found: &Option<Located>| {
-        let it = found.as_ref().unwrap_or(&first);
-        let records = &lanes[it.lane].segment.records;
-        lanes[it.lane].model.lane_drag(records, &it.at, &it.body)
-    };
-    let drag_lanes: [LaneDrag; LANES] = std::array::from_fn(|i| drag_of(&located[i]));
-    let drags = lanes[first.lane]
-        .model
-        .lane_drags(&drag_lanes[..count], isa);
-    for (it, drag) in located.iter().flatten().zip(drags) {
-        let (l, sim) = (it.lane, &lanes[it.lane]);
-        let qdd = sim.model.acceleration_with_drag(
-            &it.body,
-            drag,
-            &sim.segment.records,
-            &it.at,
-            &it.yaw,
-            &it.q,
-            &held[l],
-        );
-        let qd = it.qd;
-        out[6 * l..6 * l + 6].copy_from_slice(&[qd[0], qd[1], qd[2], qdd[0], qdd[1], qdd[2]]);
+    // Vector lane i holds lanes[live[i]]; past `count`, the first again (not kept).
+    let lane = |i: usize| live[if i < count { i } else { 0 }];
+    let point = |l: usize| located[l].unwrap_or(first);
+    let model = &lanes[live[0]].model;
+    let [x, yy, theta, xd, yd, thetad] = Wide::gather(|i| {
+        let l = lane(i);
+        std::array::from_fn(|k| y[6 * l + k])
+    });
+    let body = model.lanes_body_frame(theta, &[xd, yd, thetad]);
+    let drag_lanes: [LaneDrag; LANES] = std::array::from_fn(|i| {
+        let l = lane(i);
+        model.lane_drag(&lanes[l].segment.records, &point(l).0, &body, i)
+    });
+    let drags = model.lane_drags(&drag_lanes[..count], isa);
+    let read = model.lanes_read(
+        |i| {
+            let l = lane(i);
+            let (at, yaw) = point(l);
+            (&lanes[l].segment.records, at, yaw, held[l].wind_speed)
+        },
+        &drags,
+    );
+    let external = Wide::gather(|i| held[lane(i)].force);
+    let qdd = model.acceleration_of(&body, &read, &[x, yy, theta], &external);
+    for (i, &l) in live[..count].iter().enumerate() {
+        let derivative = [xd, yd, thetad, qdd[0], qdd[1], qdd[2]].map(|v| v.lane(i));
+        out[6 * l..6 * l + 6].copy_from_slice(&derivative);
     }
     out
-}
-
-/// A lane located at an instant of a stage: what its drag and forces read.
-#[derive(Clone, Copy)]
-struct Located {
-    lane: usize,
-    at: SamplePoint,
-    yaw: YawPoint,
-    q: [f64; 3],
-    qd: [f64; 3],
-    body: BodyFrame,
 }

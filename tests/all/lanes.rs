@@ -27,6 +27,54 @@ fn drag_problem(seed: u64, spread: bool) -> Problem {
     problem
 }
 
+/// [`drag_problem`]'s spread sea with every other term of E&S 1 that the lanes take side
+/// by side: Aranha's wave-drift damping, yaw following (the records at 12 headings), a
+/// current of 0.6 m/s across the sea, quadratic extra damping, and a gusty wind (Kaimal,
+/// 15 m/s, a coefficient table).
+fn every_term_problem(seed: u64) -> Problem {
+    use slowdrift::model::{DriftDamping, WindSpectrumKind, YawFollowing};
+    use slowdrift::wind::{CoefficientTable, WindCoefficients, WindField, WindLoad};
+    let mut problem = drag_problem(seed, true);
+    problem.model.drift_damping = DriftDamping::Aranha;
+    problem.model.yaw_following = Some(YawFollowing {
+        headings: 12,
+        range: None,
+    });
+    problem.current.speed = 0.6;
+    problem.current.direction = 1.2;
+    problem.platform.quadratic_damping = [[2.0e5, 0.0, 0.0], [0.0, 2.0e5, 0.0], [0.0, 0.0, 1.0e9]];
+    let angles = [-180.0f64, -90.0, 0.0, 90.0].map(f64::to_radians).to_vec();
+    problem.platform.wind = Some(WindLoad {
+        height: 10.0,
+        coefficients: WindCoefficients::Table(CoefficientTable {
+            cx: vec![-0.8, 0.1, 1.0, 0.1],
+            cy: vec![0.0, 0.9, 0.0, -0.9],
+            cmz: vec![0.0, 0.05, 0.0, -0.05],
+            angles,
+            area_x: 3000.0,
+            area_y: 4000.0,
+            length: 50.0,
+            centre: [2.0, -1.0],
+        }),
+    });
+    problem.wind = WindField {
+        speed: 15.0,
+        spectrum: WindSpectrumKind::Kaimal,
+        ..WindField::default()
+    };
+    problem
+}
+
+/// The three cases the lanes are checked on: drag along x, drag in a spread sea, and every
+/// term.
+fn problems(seed: u64) -> [(&'static str, Problem); 3] {
+    [
+        ("drag along x", drag_problem(seed, false)),
+        ("drag in a spread sea", drag_problem(seed, true)),
+        ("every term", every_term_problem(seed)),
+    ]
+}
+
 fn state(sim: &Simulation) -> [u64; 6] {
     let (q, v) = (sim.position(), sim.velocity());
     [q[0], q[1], q[2], v[0], v[1], v[2]].map(f64::to_bits)
@@ -34,10 +82,12 @@ fn state(sim: &Simulation) -> [u64; 6] {
 
 #[test]
 fn each_lane_steps_as_its_seed_alone_bit_for_bit() {
-    for spread in [false, true] {
+    for case in 0..problems(1).len() {
+        let problem = |seed: u64| problems(seed)[case].1.clone();
+        let name = problems(1)[case].0;
         let alone: Vec<Vec<[u64; 6]>> = (1..=4)
             .map(|seed| {
-                let mut sim = Simulation::new(drag_problem(seed, spread)).unwrap();
+                let mut sim = Simulation::new(problem(seed)).unwrap();
                 (0..600)
                     .map(|_| {
                         sim.step([0.0; 3]).unwrap();
@@ -51,7 +101,7 @@ fn each_lane_steps_as_its_seed_alone_bit_for_bit() {
         for isa in Isa::available() {
             for lanes in [1, 3, 4] {
                 let sims = (1..=lanes as u64)
-                    .map(|seed| Simulation::new(drag_problem(seed, spread)).unwrap())
+                    .map(|seed| Simulation::new(problem(seed)).unwrap())
                     .collect();
                 let mut lockstep = Lockstep::with_isa(sims, isa).unwrap();
                 // Step n of every lane, read across the lanes.
@@ -64,7 +114,7 @@ fn each_lane_steps_as_its_seed_alone_bit_for_bit() {
                         assert_eq!(
                             state(sim),
                             alone[l][n],
-                            "spread {spread}, {isa:?}, {lanes} lanes: lane {l} at step {}",
+                            "{name}, {isa:?}, {lanes} lanes: lane {l} at step {}",
                             n + 1
                         );
                         assert_eq!(sim.time(), (n + 1) as f64 * 0.5);
