@@ -4,7 +4,8 @@
 //!    0.25 s): Newman geometric drift force in 3 DOF and the 3x3 wave-drift damping
 //!    (Aranha) on the four-column platform, long-crested waves from 30 deg. Measured as
 //!    transfers_on_grid + ForceRecords::build, next to one complex FFT of the same length
-//!    (`records/fft_len`). The ratio records/FFT is timed again with `Instant` and printed.
+//!    (`records/fft_len`, in single precision as the records' transforms run). The ratio
+//!    records/FFT is timed again with `Instant` and printed.
 //! 2. `step/rk4_step_no_drag`, `step/rk4_step_drag_4x20`: one `Simulation::step`.
 //! 3. `run/run_3h_1s_stepping`, `run/run_3h_1s_new_and_stepping`: a 3-hour run at h = 1 s
 //!    without drag (Aranha damping on), stepping only, and `Simulation::new` + stepping.
@@ -56,7 +57,7 @@ use common::{four_columns, oscillator_platform, snapshot_at_step};
 mod timing;
 
 use criterion::Criterion;
-use rustfft::num_complex::Complex64;
+use rustfft::num_complex::{Complex32, Complex64};
 use rustfft::FftPlanner;
 use slowdrift::forces::{
     plan_inverse_fft, transfers_on_grid, DepthBasis, DirectionTransfer, ForceRecords, InverseFft,
@@ -258,19 +259,20 @@ impl RecordInputs {
     }
 }
 
-/// One in-place inverse complex FFT of `len` points, planned once.
+/// One in-place inverse complex FFT of `len` points, planned once, in the precision the
+/// records' transforms run in (single: `forces::synthesis`).
 struct OneFft {
-    fft: std::sync::Arc<dyn rustfft::Fft<f64>>,
-    buffer: Vec<Complex64>,
-    scratch: Vec<Complex64>,
+    fft: InverseFft,
+    buffer: Vec<Complex32>,
+    scratch: Vec<Complex32>,
 }
 
 impl OneFft {
     fn new(len: usize) -> Self {
         let fft = FftPlanner::new().plan_fft_inverse(len);
-        let scratch = vec![Complex64::default(); fft.get_inplace_scratch_len()];
+        let scratch = vec![Complex32::default(); fft.get_inplace_scratch_len()];
         let buffer = (0..len)
-            .map(|m| Complex64::new((m as f64 * 0.37).sin(), (m as f64 * 0.11).cos()))
+            .map(|m| Complex32::new((m as f32 * 0.37).sin(), (m as f32 * 0.11).cos()))
             .collect();
         OneFft {
             fft,

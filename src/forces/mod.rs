@@ -34,7 +34,7 @@ pub use newman::NewmanBuilder;
 pub use qtf::{GridQtf, QtfFactorisation, QtfGroup};
 pub use record::{Record, RecordClock, SamplePoint};
 pub use stream::{Join, Sampling, Segments};
-pub use synthesis::{plan_inverse_fft, InverseFft, Synthesizer};
+pub use synthesis::{plan_inverse_fft, InverseFft, Synthesizer, SINGLE_PRECISION_ERROR};
 pub use transfer::{transfers_on_grid, DirectionTransfer};
 pub use viscous::{drag_force, drag_forces, LaneDrag, LANES};
 pub use yaw_following::{

@@ -338,6 +338,7 @@ impl WholeMotion {
 
 #[cfg(test)]
 mod tests {
+    use super::super::synthesis::SINGLE_PRECISION_ERROR;
     use super::*;
 
     /// RAOs interpolated linearly in frequency and heading, zero outside their frequencies,
@@ -454,8 +455,9 @@ mod tests {
         );
         let set = &records.sets[0];
         let amplitudes = components.of_direction(0);
-        // A transform shared with a larger DOF rounds a small one by about 1e-16 of the
-        // larger: each DOF within 1e-9 of its own size plus 1e-13 of the largest record.
+        // A transform in single precision shared by two DOFs rounds each by a fraction of
+        // the pair's size (`synthesis::SINGLE_PRECISION_ERROR`): each DOF within that
+        // fraction of the largest record.
         let largest_of_all = set.position[0]
             .samples()
             .iter()
@@ -484,7 +486,7 @@ mod tests {
                 largest = largest.max(x.abs()).max(v.abs());
             }
             assert!(
-                largest > 0.0 && worst < 1e-9 * largest + 1e-13 * largest_of_all,
+                largest > 0.0 && worst < SINGLE_PRECISION_ERROR * largest_of_all,
                 "dof {i}: {worst:e} of {largest:e}"
             );
         }

@@ -17,6 +17,14 @@ use std::f64::consts::PI;
 
 pub const GRAVITY: f64 = 9.80665;
 
+/// How far a record quadratic in the wave series (a squared modulus, a product of two
+/// series) may be from its double sum, as a fraction of the record's largest value: the
+/// series come from single-precision transforms, each sample within
+/// `forces::SINGLE_PRECISION_ERROR` (e) of its series' rms, so a product of two errs by
+/// about 2 e of the products' size, and twice that for a record made of several such
+/// products.
+pub const QUADRATIC_RECORD_TOLERANCE: f64 = 4.0 * slowdrift::forces::SINGLE_PRECISION_ERROR;
+
 /// A drift table sampled from `drift(omega, beta)` on a regular grid of 0.02 .. 3 rad/s
 /// and headings every 10 degrees around the circle.
 pub fn drift_table(drift: impl Fn(f64, f64) -> [f64; 3]) -> DriftTable {

@@ -93,7 +93,7 @@ fn cross_terms_by_fft_equal_the_direct_double_sum() {
                 }
             }
             assert!(
-                (record[m] - direct).abs() < 1e-10 * scale,
+                (record[m] - direct).abs() < QUADRATIC_RECORD_TOLERANCE * scale,
                 "dof {dof} sample {m}: fft {} direct {direct}",
                 record[m]
             );
@@ -138,7 +138,7 @@ fn heading_independent_mean_direction_is_the_long_crested_force_of_summed_amplit
             let expected = (q_t * eta_t.conj()).re;
             let got = record.samples()[m];
             assert!(
-                (got - expected).abs() < 1e-10 * scale,
+                (got - expected).abs() < QUADRATIC_RECORD_TOLERANCE * scale,
                 "dof {dof} sample {m}: {got} vs {expected}"
             );
         }

@@ -279,7 +279,7 @@ fn full_qtf_built_from_the_diagonal_is_newman() {
                 .zip(b)
                 .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
             assert!(
-                worst <= 1e-10 * scale,
+                worst <= QUADRATIC_RECORD_TOLERANCE * scale,
                 "{form:?} DOF {dof}: {worst} of {scale}"
             );
         }

@@ -216,10 +216,11 @@ fn the_fmu_refuses_an_hs_steeper_than_waves_can_be() {
 }
 
 /// Through the FMU, an overflow: a `hydroDatabase` configuration with drift of 1e307 N/m^2
-/// in a sea of Hs = 7 m, Tp = 12 s, whose Aranha damping (from the drift's frequency
-/// derivative) overflows: initialisation, whose first outputs would be infinite, is
-/// fmi2Error naming the output and the force, never fmi2OK. (The FMU runs the file's sea:
-/// no parameter is set but the file.)
+/// in a sea of Hs = 7 m, Tp = 12 s, whose Newman coefficients sqrt(T) a overflow the
+/// single-precision transform (as its Aranha damping would overflow in double):
+/// initialisation, whose first outputs would not be finite, is fmi2Error naming the output
+/// and the force, never fmi2OK. (The FMU runs the file's sea: no parameter is set but the
+/// file.)
 #[test]
 fn the_fmu_never_returns_an_infinite_output() {
     let example = include_str!("../data/example.toml");
@@ -248,7 +249,7 @@ fn the_fmu_never_returns_an_infinite_output() {
     let message = fmu.last_message().message;
     assert!(
         message.contains(
-            "the output F_damping is not finite at t = 0 s: the wave-drift damping force there is"
+            "the output F_wave is not finite at t = 0 s: the wave force there is NaN N in X"
         ),
         "{message}"
     );

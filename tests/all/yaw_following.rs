@@ -359,7 +359,7 @@ fn record_means_are_the_drift_at_the_relative_heading() {
             for (l, v) in record.samples().iter().enumerate().skip(1).step_by(2) {
                 let expected = full.samples()[(l + n - 1) % n];
                 assert!(
-                    (v - expected).abs() <= 1e-12 * scale,
+                    (v - expected).abs() <= crate::common::QUADRATIC_RECORD_TOLERANCE * scale,
                     "sample {l}: {v} vs {expected}"
                 );
             }
@@ -385,7 +385,10 @@ fn record_means_are_the_drift_at_the_relative_heading() {
             .map(|r| r.samples().iter().sum::<f64>() / grid.len as f64)
             .collect();
         for dof in 0..3 {
-            let tolerance = 1e-9 * expected[0].abs();
+            // The mean of a squared series z made in single precision, within delta of it,
+            // errs by at most 2 rms(z) rms(delta) (Cauchy-Schwarz), and rms(delta) is below
+            // 1e-6 of rms(z) (`forces::synthesis` tests): 2e-6 of the mean force's scale.
+            let tolerance = 2e-6 * expected[0].abs();
             assert!(
                 (got[dof] - expected[dof]).abs() <= tolerance,
                 "yaw {theta_deg} deg, dof {dof}: {} vs {}",
