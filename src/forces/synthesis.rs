@@ -120,24 +120,7 @@ impl Synthesizer {
     /// Complex series of the band's components: writes sum_j c_j e^{i omega_j t_m} into
     /// `out` ([`Synthesizer::output_len`] samples) for every sample m.
     pub fn complex_series(&mut self, coefficients: &[Complex64], out: &mut [Complex64]) {
-        debug_assert_eq!(coefficients.len(), self.count);
-        match &mut self.join {
-            None => {
-                self.size_scratch();
-                let buffer = &mut self.buffer;
-                transform(
-                    &self.fft,
-                    &mut self.scratch,
-                    self.first,
-                    coefficients,
-                    buffer,
-                );
-                for (o, c) in out.iter_mut().zip(buffer.iter()) {
-                    *o = widen(*c);
-                }
-            }
-            Some(_) => self.complex_series_into(coefficients, &mut Fill(out)),
-        }
+        self.complex_series_into(coefficients, &mut Fill(out));
     }
 
     /// [`Synthesizer::complex_series`] given to `sink` sample by sample, in order
