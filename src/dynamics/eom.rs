@@ -87,13 +87,6 @@ struct Rotation<V> {
     cos: V,
 }
 
-impl Rotation<f64> {
-    fn new(theta: f64) -> Self {
-        let (sin, cos) = theta.sin_cos();
-        Rotation { sin, cos }
-    }
-}
-
 impl<V: Value> Rotation<V> {
     /// Each lane's S(theta) for its yaw in `theta`.
     #[inline(always)]
@@ -195,7 +188,7 @@ impl SlowDriftModel {
         qd: &[f64; 3],
         wind_input: f64,
     ) -> ForceBreakdown {
-        let body = self.body_frame(q, qd);
+        let body = self.body_frame(q[2], qd);
         let read = self.read(records, at, yaw, &body, wind_input);
         self.breakdown(&body, &read, q)
     }
@@ -212,24 +205,17 @@ impl SlowDriftModel {
         qd: &[f64; 3],
         held: &Held,
     ) -> [f64; 3] {
-        let body = self.body_frame(q, qd);
+        let body = self.body_frame(q[2], qd);
         let read = self.read(records, at, yaw, &body, held.wind_speed);
         self.acceleration_of(&body, &read, q, &held.force)
     }
 
-    /// The state's velocity and the current in the body frame, S^T q' and S^T u_c, with
-    /// S(theta): what the drag takes.
-    pub fn body_frame(&self, q: &[f64; 3], qd: &[f64; 3]) -> BodyFrame {
-        self.body_frame_of(Rotation::new(q[2]), qd)
-    }
-
-    /// [`SlowDriftModel::body_frame`] for the lanes' yaws `theta` and velocities `qd`.
-    pub fn lanes_body_frame<V: Value>(&self, theta: V, qd: &[V; 3]) -> BodyFrame<V> {
-        self.body_frame_of(Rotation::of(theta), qd)
-    }
-
+    /// The body's velocity and the current in the body frame, S^T q' and S^T u_c, with
+    /// S(theta) at the yaw `theta` and the velocity `qd` (inertial frame): what the drag
+    /// takes; each lane's for lanes.
     #[inline(always)]
-    fn body_frame_of<V: Value>(&self, rotation: Rotation<V>, qd: &[V; 3]) -> BodyFrame<V> {
+    pub fn body_frame<V: Value>(&self, theta: V, qd: &[V; 3]) -> BodyFrame<V> {
+        let rotation = Rotation::of(theta);
         let current = [
             V::splat(self.current[0]),
             V::splat(self.current[1]),
@@ -355,7 +341,7 @@ impl SlowDriftModel {
     /// (inertial frame, N, N, N m) alone gives the body at yaw `theta`: S (M + A)^-1 S^T f h
     /// (E&S 1 without the other terms).
     pub fn velocity_change(&self, theta: f64, force: &[f64; 3], h: f64) -> [f64; 3] {
-        self.solve(Rotation::new(theta), force).map(|a| a * h)
+        self.solve(Rotation::of(theta), force).map(|a| a * h)
     }
 
     /// S (M + A)^-1 S^T f: the acceleration the force `f` (inertial frame) gives the body

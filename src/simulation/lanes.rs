@@ -146,7 +146,7 @@ fn derivatives(
         let l = lane(i);
         std::array::from_fn(|k| y[6 * l + k])
     });
-    let body = model.lanes_body_frame(theta, &[xd, yd, thetad]);
+    let body = model.body_frame(theta, &[xd, yd, thetad]);
     let drag_lanes: [LaneDrag; LANES] = std::array::from_fn(|i| {
         let l = lane(i);
         model.lane_drag(&lanes[l].segment.records, &point(l).0, &body, i)
