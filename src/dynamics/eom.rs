@@ -12,11 +12,10 @@
 //! docs/theory.md#wind-force); F_ext an external force in the inertial frame. Second-order terms in the slow velocities are neglected, as in the paper. Since
 //! S is orthogonal, q'' = S (M + A)^{-1} S^T (right-hand side).
 
-use super::value::{Value, Wide};
 use crate::error::numbers::written_matrix;
 use crate::error::{Error, Result};
 use crate::forces::{
-    drag_force, drag_forces, ForceRecords, Isa, LaneDrag, SamplePoint, YawPoint, LANES,
+    drag_force, drag_forces, ForceRecords, Isa, LaneDrag, SamplePoint, Value, Wide, YawPoint, LANES,
 };
 use crate::model::DragModel;
 use crate::problem::Problem;

@@ -2,8 +2,6 @@
 
 mod eom;
 mod rk4;
-mod value;
 
 pub use eom::{BodyFrame, ForceBreakdown, Held, Read, SlowDriftModel};
 pub use rk4::rk4_step;
-pub use value::{Value, Wide};

@@ -17,6 +17,7 @@ pub mod refine;
 mod stream;
 mod synthesis;
 mod transfer;
+mod value;
 mod viscous;
 mod yaw_following;
 
@@ -36,6 +37,7 @@ pub use record::{Record, RecordClock, SamplePoint};
 pub use stream::{Join, Sampling, Segments};
 pub use synthesis::{plan_inverse_fft, InverseFft, Synthesizer, SINGLE_PRECISION_ERROR};
 pub use transfer::{transfers_on_grid, DirectionTransfer};
+pub use value::{Value, Wide};
 pub use viscous::{drag_force, drag_forces, LaneDrag, LANES};
 pub use yaw_following::{
     yaw_transfers, SlowRecords, YawFollowingRecords, YawGrid, YawPoint, YawWork,

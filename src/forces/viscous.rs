@@ -16,7 +16,8 @@ pub use lanes::{drag_forces, LaneDrag, LANES};
 
 use super::kinematics::{ColumnKinematics, ColumnState, Kinematics, StripVelocities};
 use super::record::SamplePoint;
-use crate::model::DragModel;
+use super::value::Value;
+use crate::model::{Cylinder, DragModel};
 use sums::{single, StripSums};
 
 /// Drag on the body, body frame: (Fx, Fy, Mz).
@@ -61,46 +62,53 @@ fn add_column_force(
     current: [f64; 2],
 ) {
     let state = col.at(at);
-    let strips = ColumnStrips::of(col, state.eta(), model, water_density, velocity, current);
+    let column = (col.column, col.strips());
+    let strips = ColumnStrips::of(column, state.eta(), model, water_density, velocity, current);
     let fast = strip_sum(&state, col.strips(), strips.offset);
-    strips.add_force(total, col, model, fast);
+    strips.add_force(total, column, model, fast);
 }
 
-/// One column's terms of E&S 8, 9 that are the same on all its strips, at one instant.
+/// One column's terms of E&S 8, 9 that are the same on all its strips, at one instant: one
+/// seed's (`f64`), or the lanes' side by side ([`Wide`](crate::forces::Wide), each lane's
+/// bits its seed's alone).
 #[derive(Debug, Clone, Copy)]
-struct ColumnStrips {
+struct ColumnStrips<V = f64> {
     /// The column's slow velocity relative to the current, U (body x, y), m/s.
-    slow: [f64; 2],
+    slow: [V; 2],
     /// What the strips' sum takes from each u_j: U in the combined model (w = u - U), 0 in
     /// the separate one (its fast term u|u|).
-    offset: [f64; 2],
+    offset: [V; 2],
     /// 1/2 rho D dz, dz the wetted length (keel to the free surface) over the strips.
-    scale: f64,
+    scale: V,
 }
 
-impl ColumnStrips {
+impl<V: Value> ColumnStrips<V> {
+    /// The terms of column `c` of `strips` strips, for the free-surface elevation `eta` at
+    /// its centre, the body's slow velocity (u, v, r) and the current (x, y) (body frame).
     #[inline]
     fn of(
-        col: &ColumnKinematics,
-        eta: f64,
+        (c, strips): (&Cylinder, usize),
+        eta: V,
         model: DragModel,
         water_density: f64,
-        velocity: [f64; 3],
-        current: [f64; 2],
+        velocity: [V; 3],
+        current: [V; 2],
     ) -> Self {
-        let c = col.column;
         let [u, v, r] = velocity;
-        let slow = [u - r * c.y - current[0], v + r * c.x - current[1]];
-        let wetted = (c.draft + eta).max(0.0);
-        let dz = wetted / col.strips() as f64;
+        let slow = [
+            u - r * V::splat(c.y) - current[0],
+            v + r * V::splat(c.x) - current[1],
+        ];
+        let wetted = (V::splat(c.draft) + eta).max(V::splat(0.0));
+        let dz = wetted / V::splat(strips as f64);
         let offset = match model {
             DragModel::Combined { .. } => slow,
-            _ => [0.0; 2],
+            _ => [V::splat(0.0); 2],
         };
         ColumnStrips {
             slow,
             offset,
-            scale: 0.5 * water_density * c.diameter * dz,
+            scale: V::splat(0.5 * water_density * c.diameter) * dz,
         }
     }
 
@@ -109,27 +117,32 @@ impl ColumnStrips {
     #[inline]
     fn add_force(
         &self,
-        total: &mut [f64; 3],
-        col: &ColumnKinematics,
+        total: &mut [V; 3],
+        (c, strips): (&Cylinder, usize),
         model: DragModel,
-        fast: [f64; 2],
+        fast: [V; 2],
     ) {
-        let (c, slow, strips) = (col.column, self.slow, col.strips());
+        let (slow, splat) = (self.slow, V::splat);
         let f = match model {
-            DragModel::Off => [0.0; 2],
-            DragModel::Combined { cd } => [cd * fast[0], cd * fast[1]],
+            DragModel::Off => [splat(0.0); 2],
+            DragModel::Combined { cd } => [splat(cd) * fast[0], splat(cd) * fast[1]],
             DragModel::Separate {
                 slow: cds,
                 fast: cdl,
             } => {
                 // The slow term is the same on every strip.
-                let s = strips as f64 * cds * (slow[0] * slow[0] + slow[1] * slow[1]).sqrt();
-                [-s * slow[0] + cdl * fast[0], -s * slow[1] + cdl * fast[1]]
+                let s = splat(strips as f64)
+                    * splat(cds)
+                    * (slow[0] * slow[0] + slow[1] * slow[1]).sqrt();
+                [
+                    -s * slow[0] + splat(cdl) * fast[0],
+                    -s * slow[1] + splat(cdl) * fast[1],
+                ]
             }
         };
-        total[0] += self.scale * f[0];
-        total[1] += self.scale * f[1];
-        total[2] += self.scale * (c.x * f[1] - c.y * f[0]);
+        total[0] = total[0] + self.scale * f[0];
+        total[1] = total[1] + self.scale * f[1];
+        total[2] = total[2] + self.scale * (splat(c.x) * f[1] - splat(c.y) * f[0]);
     }
 }
 

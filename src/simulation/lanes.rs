@@ -6,9 +6,9 @@
 //! gets the one-seed path's error and its state back, and the others go on.
 
 use super::Simulation;
-use crate::dynamics::{rk4_step, Held, Value, Wide};
+use crate::dynamics::{rk4_step, Held};
 use crate::error::{Error, Result};
-use crate::forces::{Isa, LaneDrag, LANES};
+use crate::forces::{Isa, LaneDrag, Value, Wide, LANES};
 
 /// The state of [`LANES`] lanes as one RK4 vector: lane l's (X, Y, theta, X', Y', theta')
 /// at 6 l.

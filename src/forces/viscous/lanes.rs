@@ -10,10 +10,11 @@
 //! the one-seed path bit for bit, whichever instruction set runs it ([`Isa`]).
 
 use super::sums::lane_sums;
-use super::{add_column_force, strip_sum};
+use super::{add_column_force, strip_sum, ColumnStrips};
 use crate::forces::isa::Isa;
-use crate::forces::kinematics::{ColumnKinematics, Kinematics, StripVelocities};
+use crate::forces::kinematics::{Kinematics, StripVelocities};
 use crate::forces::record::SamplePoint;
+use crate::forces::value::{Value, Wide};
 use crate::model::DragModel;
 
 /// Seeds stepped together: four doubles fill an AVX2 register.
@@ -45,8 +46,8 @@ pub fn drag_forces(
         "1 to {LANES} lanes, not {}",
         lanes.len()
     );
-    // The lanes' totals side by side: (Fx, Fy, Mz) of lane l at [i][l].
-    let mut totals = [[0.0; LANES]; 3];
+    // The lanes' totals side by side: (Fx, Fy, Mz) of lane l in lane l of each.
+    let mut totals = [Wide::splat(0.0); 3];
     if model != DragModel::Off {
         // Lanes past `lanes.len()` repeat the last one (their results are not kept).
         let padded: [&LaneDrag; LANES] = [0, 1, 2, 3].map(|l| &lanes[l.min(lanes.len() - 1)]);
@@ -56,7 +57,7 @@ pub fn drag_forces(
             let [Some((e0, r0)), Some((e1, r1)), Some((e2, r2)), Some((e3, r3))] = rows else {
                 // Some lane between samples (or its row not made): each lane alone.
                 for (l, lane) in lanes.iter().enumerate() {
-                    let mut total = [totals[0][l], totals[1][l], totals[2][l]];
+                    let mut total = totals.map(|t| t.lane(l));
                     let (v, u) = (lane.velocity, lane.current);
                     add_column_force(
                         &mut total,
@@ -67,13 +68,19 @@ pub fn drag_forces(
                         v,
                         u,
                     );
-                    (0..3).for_each(|i| totals[i][l] = total[i]);
+                    (0..3).for_each(|i| totals[i].0[l] = total[i]);
                 }
                 continue;
             };
-            let strips = LaneStrips::of(&columns, [e0, e1, e2, e3], model, water_density, &padded);
-            let offsets = strips.offsets();
-            let fast = match [r0, r1, r2, r3] {
+            // Lanes of one case: one column, as lane 0 has it.
+            let column = (columns[0].column, columns[0].strips());
+            debug_assert!(columns.iter().all(|k| (k.column, k.strips()) == column));
+            let velocity = Wide::gather(|l| padded[l].velocity);
+            let current = Wide::gather(|l| padded[l].current);
+            let eta = Wide([e0, e1, e2, e3]);
+            let strips = ColumnStrips::of(column, eta, model, water_density, velocity, current);
+            let offsets = std::array::from_fn(|l| strips.offset.map(|o| o.lane(l)));
+            let fast: [[f64; 2]; LANES] = match [r0, r1, r2, r3] {
                 [StripVelocities::AlongX(a), StripVelocities::AlongX(b), StripVelocities::AlongX(c), StripVelocities::AlongX(d)] => {
                     lane_sums(isa, [a, b, c, d], offsets)
                 }
@@ -86,93 +93,16 @@ pub fn drag_forces(
                     strip_sum(&column.at(&padded[l].at), column.strips(), offsets[l])
                 }),
             };
-            strips.add_forces(&mut totals, &columns, model, fast);
+            strips.add_force(&mut totals, column, model, Wide::gather(|l| fast[l]));
         }
     }
-    let mut out = [[0.0; 3]; LANES];
-    for (l, f) in out.iter_mut().enumerate().take(lanes.len()) {
-        *f = [totals[0][l], totals[1][l], totals[2][l]];
-    }
-    out
-}
-
-/// `ColumnStrips` of the [`LANES`] lanes side by side: each lane's numbers by the
-/// operations `ColumnStrips::of` and `ColumnStrips::add_force` do, in their order, so the
-/// same bits.
-struct LaneStrips {
-    slow: [[f64; LANES]; 2],
-    offset: [[f64; LANES]; 2],
-    scale: [f64; LANES],
-}
-
-impl LaneStrips {
-    #[inline]
-    fn of(
-        columns: &[ColumnKinematics; LANES],
-        eta: [f64; LANES],
-        model: DragModel,
-        water_density: f64,
-        lanes: &[&LaneDrag; LANES],
-    ) -> Self {
-        let (mut slow, mut scale) = ([[0.0; LANES]; 2], [0.0; LANES]);
-        for l in 0..LANES {
-            let (c, [u, v, r], current) = (columns[l].column, lanes[l].velocity, lanes[l].current);
-            slow[0][l] = u - r * c.y - current[0];
-            slow[1][l] = v + r * c.x - current[1];
-            let wetted = (c.draft + eta[l]).max(0.0);
-            let dz = wetted / columns[l].strips() as f64;
-            scale[l] = 0.5 * water_density * c.diameter * dz;
+    std::array::from_fn(|l| {
+        if l < lanes.len() {
+            totals.map(|t| t.lane(l))
+        } else {
+            [0.0; 3]
         }
-        let offset = match model {
-            DragModel::Combined { .. } => slow,
-            _ => [[0.0; LANES]; 2],
-        };
-        LaneStrips {
-            slow,
-            offset,
-            scale,
-        }
-    }
-
-    /// Each lane's offset (x, y).
-    fn offsets(&self) -> [[f64; 2]; LANES] {
-        std::array::from_fn(|l| [self.offset[0][l], self.offset[1][l]])
-    }
-
-    /// Adds each lane's column force (Fx, Fy) and moment about the origin to `totals`, from
-    /// its strips' sum `fast[l]` = sum_j w_j |w_j|.
-    #[inline]
-    fn add_forces(
-        &self,
-        totals: &mut [[f64; LANES]; 3],
-        columns: &[ColumnKinematics; LANES],
-        model: DragModel,
-        fast: [[f64; 2]; LANES],
-    ) {
-        for l in 0..LANES {
-            let (c, slow) = (columns[l].column, [self.slow[0][l], self.slow[1][l]]);
-            let f = match model {
-                DragModel::Off => [0.0; 2],
-                DragModel::Combined { cd } => [cd * fast[l][0], cd * fast[l][1]],
-                DragModel::Separate {
-                    slow: cds,
-                    fast: cdl,
-                } => {
-                    // The slow term is the same on every strip.
-                    let s = columns[l].strips() as f64
-                        * cds
-                        * (slow[0] * slow[0] + slow[1] * slow[1]).sqrt();
-                    [
-                        -s * slow[0] + cdl * fast[l][0],
-                        -s * slow[1] + cdl * fast[l][1],
-                    ]
-                }
-            };
-            totals[0][l] += self.scale[l] * f[0];
-            totals[1][l] += self.scale[l] * f[1];
-            totals[2][l] += self.scale[l] * (c.x * f[1] - c.y * f[0]);
-        }
-    }
+    })
 }
 
 #[cfg(test)]

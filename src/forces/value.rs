@@ -1,14 +1,21 @@
-//! The numbers the equations of motion are written in: one seed's `f64`, or [`LANES`] seeds'
-//! side by side ([`Wide`]; docs/architecture.md#seeds-in-lanes). One generic code takes
-//! both, so each lane's derivative is its seed's alone bit for bit: a [`Wide`] operation is
-//! the same IEEE operation in each lane (no fused multiply-add, no reordering).
+//! The numbers the drag and the equations of motion are written in: one seed's `f64`, or
+//! [`LANES`] seeds' side by side ([`Wide`]; docs/architecture.md#seeds-in-lanes). One
+//! generic code takes both, so each lane's result is its seed's alone bit for bit: a
+//! [`Wide`] operation is the same IEEE operation in each lane (no fused multiply-add, no
+//! reordering).
 
-use crate::forces::LANES;
-use std::ops::{Add, Mul, Neg, Sub};
+use super::LANES;
+use std::ops::{Add, Div, Mul, Neg, Sub};
 
-/// A number of the equations of motion: one seed's, or several seeds' side by side.
+/// A number of the drag and the equations of motion: one seed's, or several seeds' side by
+/// side.
 pub trait Value:
-    Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Neg<Output = Self>
+    Copy
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
 {
     /// The seeds side by side.
     const WIDTH: usize;
@@ -24,6 +31,12 @@ pub trait Value:
 
     /// |x| in every lane.
     fn abs(self) -> Self;
+
+    /// sqrt(x) in every lane.
+    fn sqrt(self) -> Self;
+
+    /// The larger of `self` and `other` in every lane, as `f64::max` takes them.
+    fn max(self, other: Self) -> Self;
 }
 
 impl Value for f64 {
@@ -47,6 +60,16 @@ impl Value for f64 {
     #[inline(always)]
     fn abs(self) -> Self {
         f64::abs(self)
+    }
+
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        f64::sqrt(self)
+    }
+
+    #[inline(always)]
+    fn max(self, other: Self) -> Self {
+        f64::max(self, other)
     }
 }
 
@@ -82,6 +105,14 @@ impl Mul for Wide {
     #[inline(always)]
     fn mul(self, rhs: Wide) -> Wide {
         self.each(rhs, |a, b| a * b)
+    }
+}
+
+impl Div for Wide {
+    type Output = Wide;
+    #[inline(always)]
+    fn div(self, rhs: Wide) -> Wide {
+        self.each(rhs, |a, b| a / b)
     }
 }
 
@@ -121,6 +152,16 @@ impl Value for Wide {
     fn abs(self) -> Self {
         Wide(self.0.map(f64::abs))
     }
+
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        Wide(self.0.map(f64::sqrt))
+    }
+
+    #[inline(always)]
+    fn max(self, other: Self) -> Self {
+        self.each(other, f64::max)
+    }
 }
 
 #[cfg(test)]
@@ -138,6 +179,9 @@ mod tests {
         assert_eq!(bits(a + b), each(|x, y| x + y));
         assert_eq!(bits(a - b), each(|x, y| x - y));
         assert_eq!(bits(a * b), each(|x, y| x * y));
+        assert_eq!(bits(a / b), each(|x, y| x / y));
+        assert_eq!(bits(a.max(b)), each(f64::max));
+        assert_eq!(bits(b.sqrt()), each(|_, y| y.sqrt()));
         assert_eq!(bits(-a), each(|x, _| -x));
         assert_eq!(bits(a.abs()), each(|x, _| x.abs()));
         assert_eq!(bits(Wide::splat(0.3)), [0.3f64.to_bits(); LANES]);
