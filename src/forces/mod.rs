@@ -11,6 +11,7 @@ mod isa;
 mod kinematics;
 mod motion;
 mod newman;
+mod prefetch;
 mod qtf;
 mod record;
 pub mod refine;

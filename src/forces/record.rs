@@ -84,7 +84,7 @@ impl SamplePoint {
     }
 
     /// [`SamplePoint::interpolate`] for a record of `len` samples read by `sample(m)`.
-    #[inline]
+    #[inline(always)]
     pub fn interpolate_with<T>(&self, len: usize, sample: impl Fn(usize) -> T) -> T
     where
         T: Copy + Mul<f64, Output = T> + Add<Output = T>,
@@ -143,8 +143,15 @@ impl Record {
         self.samples
     }
 
-    /// Value at a located time.
+    /// Asks the CPU to bring sample `m` into its caches (nothing past the end): a hint,
+    /// which changes no result.
     #[inline]
+    pub fn prefetch(&self, m: usize) {
+        super::prefetch::prefetch(&self.samples, m);
+    }
+
+    /// Value at a located time.
+    #[inline(always)]
     pub fn at(&self, p: &SamplePoint) -> f64 {
         if self.samples.is_empty() {
             return 0.0;

@@ -93,6 +93,7 @@ impl Velocity for f32 {
 }
 
 /// [`StripSums`] of each lane's row (the rows of one length), compiled for `isa`.
+#[inline(always)]
 pub(super) fn lane_sums<V: Velocity>(
     isa: Isa,
     rows: [&[V]; LANES],
