@@ -266,13 +266,14 @@ impl SlowDriftModel {
         }
     }
 
-    /// [`Read`] of the lanes side by side: lane l's records, located instant and yaw, and
-    /// input wind speed (m/s) from `lane(l)`, its drag (body frame) `drags[l]`.
+    /// [`Read`] of the lanes side by side, but for the drag (zero here: the lanes' drag is
+    /// taken together, [`SlowDriftModel::lane_drags`], at every stage, where the rest of a
+    /// read may be kept from a stage at the same time): lane l's records, located instant
+    /// and yaw, and input wind speed (m/s) from `lane(l)`.
     #[inline(always)]
     pub fn lanes_read<'a>(
         &self,
         lane: impl Fn(usize) -> (&'a ForceRecords, SamplePoint, YawPoint, f64),
-        drags: &[[f64; 3]; LANES],
     ) -> Read<Wide> {
         let mut damped = false;
         let flat = Wide::gather(|l| {
@@ -282,19 +283,18 @@ impl SlowDriftModel {
             let b = b.unwrap_or_default();
             let wave = records.wave_force_at(&at, &yaw);
             let wind = self.wind_speed(records, &at, input);
-            let d = drags[l];
             [
-                wave[0], wave[1], wave[2], d[0], d[1], d[2], wind, b[0][0], b[0][1], b[0][2],
-                b[1][0], b[1][1], b[1][2], b[2][0], b[2][1], b[2][2],
+                wave[0], wave[1], wave[2], wind, b[0][0], b[0][1], b[0][2], b[1][0], b[1][1],
+                b[1][2], b[2][0], b[2][1], b[2][2],
             ]
         });
         Read {
             wave: [flat[0], flat[1], flat[2]],
-            drag: [flat[3], flat[4], flat[5]],
-            wind_speed: flat[6],
+            drag: [Wide::splat(0.0); 3],
+            wind_speed: flat[3],
             // The lanes are of one model: damped in every lane or in none.
             damping: damped
-                .then(|| std::array::from_fn(|i| std::array::from_fn(|j| flat[7 + 3 * i + j]))),
+                .then(|| std::array::from_fn(|i| std::array::from_fn(|j| flat[4 + 3 * i + j]))),
         }
     }
 

@@ -3,12 +3,14 @@
 //! docs/architecture.md#seeds-in-lanes). Each lane's step is the one-seed
 //! [`Simulation::step`] bit for bit: the same RK4 (E&S 1; `dynamics::rk4_step` on the
 //! lanes' states side by side), the same forces, the same refusals; a lane whose step fails
-//! gets the one-seed path's error and its state back, and the others go on.
+//! gets the one-seed path's error and its state back, and the others go on. What the lanes
+//! read at a time that their states do not change is read once for the two RK4 stages at
+//! that time ([`Instant`]).
 
 use super::Simulation;
-use crate::dynamics::{rk4_step, Held};
+use crate::dynamics::{rk4_step, Held, Read};
 use crate::error::{Error, Result};
-use crate::forces::{Isa, LaneDrag, Value, Wide, LANES};
+use crate::forces::{Isa, LaneDrag, RecordClock, SamplePoint, Value, Wide, YawPoint, LANES};
 
 /// The state of [`LANES`] lanes as one RK4 vector: lane l's (X, Y, theta, X', Y', theta')
 /// at 6 l.
@@ -19,6 +21,49 @@ const WIDTH: usize = 6 * LANES;
 pub struct Lockstep {
     lanes: Vec<Simulation>,
     isa: Isa,
+    /// The last stage's reads, for the next stage at the same time.
+    instant: Option<Instant>,
+}
+
+/// What the lanes read at one time that their states do not change: the instant located
+/// on each lane's records, and the wave force, damping and wind speed read there. The RK4
+/// stages come at the same time in pairs (stages 2 and 3 of a step at t + h/2, a step's
+/// last stage and the next step's first at t + h), and the second of a pair takes the
+/// first's reads: the same numbers, read once. Kept only without yaw following, whose
+/// reads depend on each stage's yaw.
+#[derive(Debug, Clone, Copy)]
+struct Instant {
+    key: InstantKey,
+    /// The lanes located, in lane order, in `live[..count]`.
+    live: [usize; LANES],
+    count: usize,
+    /// Vector lane i's instant and yaw on its records: lane `live[i]`'s (past `count`, the
+    /// first lane's again, not kept).
+    located: [(SamplePoint, YawPoint); LANES],
+    /// What the vector lanes read there (no drag).
+    read: Read<Wide>,
+}
+
+/// What an [`Instant`]'s reads depend on: the time (its bits), the lanes not failed before
+/// they were located, each lane's records (its segment's clock) and the wind input it
+/// holds (its bits).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct InstantKey {
+    time: u64,
+    ok: [bool; LANES],
+    clocks: [Option<RecordClock>; LANES],
+    wind: [u64; LANES],
+}
+
+impl InstantKey {
+    fn of(lanes: &[Simulation], time: f64, held: &[Held; LANES], outcome: &[Result<()>]) -> Self {
+        InstantKey {
+            time: time.to_bits(),
+            ok: std::array::from_fn(|l| outcome.get(l).is_some_and(|o| o.is_ok())),
+            clocks: std::array::from_fn(|l| lanes.get(l).map(|s| s.segment.records.clock)),
+            wind: held.map(|h| h.wind_speed.to_bits()),
+        }
+    }
 }
 
 impl Lockstep {
@@ -47,7 +92,11 @@ impl Lockstep {
                 "must hold simulations of one model and time step at one time",
             ));
         }
-        Ok(Lockstep { lanes, isa })
+        Ok(Lockstep {
+            lanes,
+            isa,
+            instant: None,
+        })
     }
 
     /// The lanes' simulations, in the order given.
@@ -57,6 +106,8 @@ impl Lockstep {
 
     /// Takes lane `l`'s simulation out (the lanes after it move down one).
     pub fn remove(&mut self, l: usize) -> Simulation {
+        // The lanes after it move: the reads kept are no longer theirs.
+        self.instant = None;
         self.lanes.remove(l)
     }
 
@@ -82,9 +133,17 @@ impl Lockstep {
         for (h, sim) in held.iter_mut().zip(&self.lanes) {
             *h = sim.held(external);
         }
-        let (lanes, isa) = (&self.lanes, self.isa);
+        let (lanes, isa, instant) = (&self.lanes, self.isa, &mut self.instant);
         let next = rk4_step(t, &y, h, |time, y| {
-            Ok::<_, std::convert::Infallible>(derivatives(lanes, isa, time, y, &held, &mut outcome))
+            Ok::<_, std::convert::Infallible>(derivatives(
+                lanes,
+                isa,
+                time,
+                y,
+                &held,
+                &mut outcome,
+                instant,
+            ))
         });
         let Ok(next) = next;
         for (l, sim) in self.lanes.iter_mut().enumerate() {
@@ -104,7 +163,9 @@ impl Lockstep {
 /// [`Simulation::derivative`] gives it: the lanes that have not failed (`outcome` Ok)
 /// located one by one, their equations of motion taken side by side ([`Wide`], the
 /// one-seed code on the lanes' numbers) with their drag taken together. A lane that fails
-/// here gets its error in `outcome` and zero derivatives from then on.
+/// here gets its error in `outcome` and zero derivatives from then on. What the lanes read
+/// at `time` is `instant`'s when it was read for the same (its key), else read here and
+/// kept in `instant`.
 fn derivatives(
     lanes: &[Simulation],
     isa: Isa,
@@ -112,9 +173,65 @@ fn derivatives(
     y: &[f64; WIDTH],
     held: &[Held; LANES],
     outcome: &mut [Result<()>],
+    instant: &mut Option<Instant>,
 ) -> [f64; WIDTH] {
-    // Each lane's records' point and yaw at `time`; the lanes located, in lane order, in
-    // `live[..count]`.
+    let key = InstantKey::of(lanes, time, held, outcome);
+    if !matches!(instant, Some(i) if i.key == key) {
+        *instant = read_at(lanes, key, time, y, held, outcome);
+    }
+    let mut out = [0.0; WIDTH];
+    let Some(Instant {
+        live,
+        count,
+        located,
+        read,
+        ..
+    }) = instant
+    else {
+        return out;
+    };
+    let (live, count) = (*live, *count);
+    // Vector lane i holds lanes[live[i]]; past `count`, the first again (not kept).
+    let lane = |i: usize| live[if i < count { i } else { 0 }];
+    let model = &lanes[live[0]].model;
+    let [x, yy, theta, xd, yd, thetad] = Wide::gather(|i| {
+        let l = lane(i);
+        std::array::from_fn(|k| y[6 * l + k])
+    });
+    let body = model.body_frame(theta, &[xd, yd, thetad]);
+    let drag_lanes: [LaneDrag; LANES] = std::array::from_fn(|i| {
+        let (l, (at, _)) = (lane(i), located[i]);
+        model.lane_drag(&lanes[l].segment.records, &at, &body, i)
+    });
+    let drags = model.lane_drags(&drag_lanes[..count], isa);
+    let read = Read {
+        drag: Wide::gather(|i| drags[i]),
+        ..*read
+    };
+    let external = Wide::gather(|i| held[lane(i)].force);
+    let qdd = model.acceleration_of(&body, &read, &[x, yy, theta], &external);
+    for (i, &l) in live[..count].iter().enumerate() {
+        let derivative = [xd, yd, thetad, qdd[0], qdd[1], qdd[2]].map(|v| v.lane(i));
+        out[6 * l..6 * l + 6].copy_from_slice(&derivative);
+    }
+    if lanes[live[0]].segment.records.yaw_following.is_some() {
+        // Read at this stage's yaw: not for another stage.
+        *instant = None;
+    }
+    out
+}
+
+/// The lanes not failed (`outcome` Ok) located at `time`, each at its yaw in `y`, and
+/// what they read there, for `key`; `None` when no lane is located (a lane that cannot be
+/// gets its error in `outcome`).
+fn read_at(
+    lanes: &[Simulation],
+    key: InstantKey,
+    time: f64,
+    y: &[f64; WIDTH],
+    held: &[Held; LANES],
+    outcome: &mut [Result<()>],
+) -> Option<Instant> {
     let mut located = [None; LANES];
     let (mut live, mut count) = ([0; LANES], 0);
     // `time` as the lane before located it, on its records' clock: the lanes' clocks are
@@ -127,44 +244,25 @@ fn derivatives(
         match sim.located_as(time, y[6 * l + 2], known) {
             Ok(point) => {
                 known = Some((&sim.segment.records.clock, point.0));
-                located[l] = Some(point);
+                located[count] = Some(point);
                 live[count] = l;
                 count += 1;
             }
             Err(e) => outcome[l] = Err(e),
         }
     }
-    let mut out = [0.0; WIDTH];
-    let Some(first) = located[live[0]] else {
-        return out;
-    };
-    // Vector lane i holds lanes[live[i]]; past `count`, the first again (not kept).
-    let lane = |i: usize| live[if i < count { i } else { 0 }];
-    let point = |l: usize| located[l].unwrap_or(first);
-    let model = &lanes[live[0]].model;
-    let [x, yy, theta, xd, yd, thetad] = Wide::gather(|i| {
-        let l = lane(i);
-        std::array::from_fn(|k| y[6 * l + k])
+    let first = located[0]?;
+    // Vector lane i: lane live[i]; past `count`, the first again.
+    let located = located.map(|p| p.unwrap_or(first));
+    let read = lanes[live[0]].model.lanes_read(|i| {
+        let (l, (at, yaw)) = (live[if i < count { i } else { 0 }], located[i]);
+        (&lanes[l].segment.records, at, yaw, held[l].wind_speed)
     });
-    let body = model.body_frame(theta, &[xd, yd, thetad]);
-    let drag_lanes: [LaneDrag; LANES] = std::array::from_fn(|i| {
-        let l = lane(i);
-        model.lane_drag(&lanes[l].segment.records, &point(l).0, &body, i)
-    });
-    let drags = model.lane_drags(&drag_lanes[..count], isa);
-    let read = model.lanes_read(
-        |i| {
-            let l = lane(i);
-            let (at, yaw) = point(l);
-            (&lanes[l].segment.records, at, yaw, held[l].wind_speed)
-        },
-        &drags,
-    );
-    let external = Wide::gather(|i| held[lane(i)].force);
-    let qdd = model.acceleration_of(&body, &read, &[x, yy, theta], &external);
-    for (i, &l) in live[..count].iter().enumerate() {
-        let derivative = [xd, yd, thetad, qdd[0], qdd[1], qdd[2]].map(|v| v.lane(i));
-        out[6 * l..6 * l + 6].copy_from_slice(&derivative);
-    }
-    out
+    Some(Instant {
+        key,
+        live,
+        count,
+        located,
+        read,
+    })
 }

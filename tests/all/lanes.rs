@@ -65,13 +65,26 @@ fn every_term_problem(seed: u64) -> Problem {
     problem
 }
 
-/// The three cases the lanes are checked on: drag along x, drag in a spread sea, and every
-/// term.
-fn problems(seed: u64) -> [(&'static str, Problem); 3] {
+/// [`every_term_problem`] without yaw following: the reads the lanes keep from one RK4
+/// stage to the next at the same time (the wave force, the damping, the gust), across the
+/// segments' boundaries.
+fn every_term_but_yaw_following(seed: u64) -> Problem {
+    let mut problem = every_term_problem(seed);
+    problem.model.yaw_following = None;
+    problem
+}
+
+/// The cases the lanes are checked on: drag along x, drag in a spread sea, every term, and
+/// every term but yaw following.
+fn problems(seed: u64) -> [(&'static str, Problem); 4] {
     [
         ("drag along x", drag_problem(seed, false)),
         ("drag in a spread sea", drag_problem(seed, true)),
         ("every term", every_term_problem(seed)),
+        (
+            "every term but yaw following",
+            every_term_but_yaw_following(seed),
+        ),
     ]
 }
 
