@@ -21,9 +21,10 @@ pub use budget::{MemoryEstimate, Term};
 use crate::error::numbers::readable;
 use crate::error::{Error, Result};
 use crate::forces::{
-    direction_pairs, motion_transfers, plan_inverse_fft, refine, transfers_on_grid, yaw_transfers,
-    DepthBasis, DirectionTransfer, ForceRecords, GustStream, InverseFft, Join, MotionTransfer,
-    QtfFactorisation, QtfGroup, Record, RecordOptions, RecordWork, Segments, Synthesizer, YawGrid,
+    direction_pairs, motion_transfers, plan_inverse_fft, refine, take_negligible_as_zero,
+    transfers_on_grid, yaw_transfers, DepthBasis, DirectionTransfer, ForceRecords, GustStream,
+    InverseFft, Join, MotionTransfer, QtfFactorisation, QtfGroup, Record, RecordOptions,
+    RecordWork, Segments, Synthesizer, YawGrid,
 };
 use crate::wind::GustSpectrum;
 
@@ -122,6 +123,9 @@ pub struct RecordPlan {
     /// Per direction: the coefficients of the mean-position records (none with yaw
     /// following, whose records carry the force and damping).
     transfers: Vec<DirectionTransfer>,
+    /// The records of `transfers` taken as zero, of round-off size
+    /// (`forces::take_negligible_as_zero`), by name.
+    negligible: Vec<&'static str>,
     /// Cross-direction terms of a spread sea (`None`: long-crested or interaction "none").
     pairs: Option<DirectionPairs>,
     /// The yaw-following grid and the coefficients of every yaw and direction (and, under
@@ -231,7 +235,7 @@ impl RecordPlan {
         // With yaw following the force and damping come from its records alone: the
         // mean-position build gets no coefficients (it still makes the elevation and
         // kinematics).
-        let transfers = match problem.model.yaw_following {
+        let mut transfers = match problem.model.yaw_following {
             None => transfers_on_grid(
                 damping_table.as_ref().unwrap_or(&problem.hydro.drift),
                 &grid,
@@ -239,6 +243,16 @@ impl RecordPlan {
                 damping_table.is_some(),
             )?,
             Some(_) => vec![DirectionTransfer::none(grid.count); directions.len()],
+        };
+        // Under Newman's approximation, the records of round-off size are not made; the
+        // moments compared as forces at the radius of gyration.
+        let negligible = match problem.model.second_order {
+            SecondOrder::Newman => {
+                let inertia = problem.inertia()?;
+                let gyration = (inertia.yaw_inertia / inertia.mass).sqrt();
+                take_negligible_as_zero(&mut transfers, gyration)
+            }
+            SecondOrder::FullQtf => Vec::new(),
         };
         let yaw = match &problem.model.yaw_following {
             None => None,
@@ -321,6 +335,7 @@ impl RecordPlan {
             half_fft,
             grid,
             transfers,
+            negligible,
             pairs,
             yaw,
             full_qtf,
@@ -347,6 +362,12 @@ impl RecordPlan {
     /// refined (`forces::refine`).
     pub fn refines(&self) -> bool {
         self.half_fft.is_some()
+    }
+
+    /// The wave force and damping records not made, their coefficients of round-off size
+    /// (`forces::take_negligible_as_zero`), by name.
+    pub fn negligible(&self) -> &[&'static str] {
+        &self.negligible
     }
 
     /// The truncation of every full-QTF block (empty under Newman's approximation).

@@ -387,11 +387,12 @@ impl Simulation {
         })
     }
 
-    /// The summary line of [`Simulation::refined_force_records`] (`Problem::summary`'s
-    /// companion: printed by `slowdrift simulate`, logged by the FMU).
+    /// The summary line of [`Simulation::refined_force_records`] and of the records not
+    /// made, their coefficients of round-off size ([`RecordPlan::negligible`])
+    /// (`Problem::summary`'s companion: printed by `slowdrift simulate`, logged by the FMU).
     pub fn records_line(&self) -> String {
         let h = self.problem.run.time_step;
-        match self.refined_force_records() {
+        let sampling = match self.refined_force_records() {
             Some(error) => format!(
                 "slowly varying records (wave force, damping): made every {} s (the step) and \
                  refined to its midpoints by 8-point interpolation, their band allowing it \
@@ -403,6 +404,15 @@ impl Simulation {
                  {} s): their band is too wide to make them every step",
                 written(0.5 * h),
                 written(h)
+            ),
+        };
+        match self.plan.negligible() {
+            [] => sampling,
+            names => format!(
+                "{sampling}; not made, their coefficients of round-off size (each below {:.0e} \
+                 of the largest of its kind, moments as forces at the radius of gyration): {}",
+                crate::forces::NEGLIGIBLE_TRANSFER,
+                names.join(", ")
             ),
         }
     }

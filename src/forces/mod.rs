@@ -37,7 +37,9 @@ pub use qtf::{GridQtf, QtfFactorisation, QtfGroup};
 pub use record::{Record, RecordClock, SamplePoint};
 pub use stream::{Join, Sampling, Segments};
 pub use synthesis::{plan_inverse_fft, InverseFft, Synthesizer, SINGLE_PRECISION_ERROR};
-pub use transfer::{transfers_on_grid, DirectionTransfer};
+pub use transfer::{
+    take_negligible_as_zero, transfers_on_grid, DirectionTransfer, NEGLIGIBLE_TRANSFER,
+};
 pub use value::{Value, Wide};
 pub use viscous::{drag_force, drag_forces, LaneDrag, LANES};
 pub use yaw_following::{

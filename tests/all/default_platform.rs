@@ -229,3 +229,52 @@ fn embedded_raos_meet_the_long_wave_limits() {
         100.0 * worst[3]
     );
 }
+
+/// The default platform is symmetric about x: in head seas its table's sway and yaw drift
+/// are round-off (read off the table here, at heading 0, against the surge drift), and the
+/// run makes no record of them and says so; 20 deg off head seas they are records, made.
+#[test]
+fn records_of_round_off_size_are_not_made_and_named() {
+    use slowdrift::Simulation;
+    let problem = default_problem().unwrap();
+    let table = &problem.hydro.drift;
+    let head = table
+        .headings()
+        .iter()
+        .position(|&b| b.abs() < 1e-12)
+        .unwrap();
+    let largest = |i: usize| {
+        (0..table.omegas().len()).fold(0.0f64, |m, w| m.max(table.drift_at_node(head, w)[i].abs()))
+    };
+    let gyration = {
+        let inertia = problem.inertia().unwrap();
+        (inertia.yaw_inertia / inertia.mass).sqrt()
+    };
+    assert!(largest(1) < 1e-10 * largest(0), "sway {:e}", largest(1));
+    assert!(
+        largest(2) / gyration < 1e-10 * largest(0),
+        "yaw {:e}",
+        largest(2)
+    );
+    let mut short = problem.clone();
+    short.run.duration = 100.0;
+    let sim = Simulation::new(short.clone()).unwrap();
+    let line = sim.records_line();
+    assert!(
+        line.contains("not made") && line.contains("sway drift, yaw drift"),
+        "{line}"
+    );
+    let force = &sim.records().wave_force;
+    assert!(force[1].samples().is_empty() && force[2].samples().is_empty());
+    assert!(force[0].samples().iter().any(|&f| f != 0.0));
+    let mut oblique = short;
+    oblique.sea.mean_direction = 20f64.to_radians();
+    let sim = Simulation::new(oblique).unwrap();
+    assert!(
+        !sim.records_line().contains("drift"),
+        "{}",
+        sim.records_line()
+    );
+    let force = &sim.records().wave_force;
+    assert!(force.iter().all(|f| f.samples().iter().any(|&v| v != 0.0)));
+}
