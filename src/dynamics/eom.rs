@@ -78,6 +78,23 @@ fn times<V: Value>(m: &[[f64; 3]; 3], v: &[V; 3]) -> [V; 3] {
     })
 }
 
+/// Below this yaw (rad), sin theta and cos theta round to theta and 1: theta^2 / 6 and
+/// theta^2 / 2 are below 2^-55, a quarter of the half-ulp 2^-53 of a double near 1.
+const SMALL_YAW: f64 = 1.0 / (1u64 << 27) as f64;
+
+/// (sin theta, cos theta) to the nearest double: (theta, 1) below [`SMALL_YAW`], where
+/// libm's `sin_cos` gives the same and costs as much as anywhere (glibc sets the rounding
+/// mode on each call); a body that does not yaw (head seas on a platform symmetric about
+/// x, its yaw of round-off size) takes this path at every stage.
+#[inline(always)]
+fn sin_cos(theta: f64) -> (f64, f64) {
+    if theta.abs() < SMALL_YAW {
+        (theta, 1.0)
+    } else {
+        theta.sin_cos()
+    }
+}
+
 /// The rotation S(theta) of E&S 1 between the body and the inertial frame, for
 /// (surge, sway, yaw) vectors; sin and cos taken once per instant.
 #[derive(Debug, Clone, Copy)]
@@ -91,7 +108,7 @@ impl<V: Value> Rotation<V> {
     #[inline(always)]
     fn of(theta: V) -> Self {
         let [sin, cos] = V::gather(|l| {
-            let (s, c) = theta.lane(l).sin_cos();
+            let (s, c) = sin_cos(theta.lane(l));
             [s, c]
         });
         Rotation { sin, cos }
