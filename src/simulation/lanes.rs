@@ -186,7 +186,7 @@ fn derivatives(
         located,
         read,
         ..
-    }) = instant
+    }) = instant.as_mut()
     else {
         return out;
     };
@@ -204,12 +204,10 @@ fn derivatives(
         model.lane_drag(&lanes[l].segment.records, &at, &body, i)
     });
     let drags = model.lane_drags(&drag_lanes[..count], isa);
-    let read = Read {
-        drag: Wide::gather(|i| drags[i]),
-        ..*read
-    };
+    // This stage's drag, in place of the last stage's (the rest is this time's).
+    read.drag = Wide::gather(|i| drags[i]);
     let external = Wide::gather(|i| held[lane(i)].force);
-    let qdd = model.acceleration_of(&body, &read, &[x, yy, theta], &external);
+    let qdd = model.acceleration_of(&body, read, &[x, yy, theta], &external);
     for (i, &l) in live[..count].iter().enumerate() {
         let derivative = [xd, yd, thetad, qdd[0], qdd[1], qdd[2]].map(|v| v.lane(i));
         out[6 * l..6 * l + 6].copy_from_slice(&derivative);
