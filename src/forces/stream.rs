@@ -35,7 +35,7 @@
 
 use super::record::RecordClock;
 use crate::sea_state::FrequencyGrid;
-use rustfft::num_complex::Complex64;
+use rustfft::num_complex::{Complex32, Complex64};
 use std::f64::consts::FRAC_PI_2;
 
 /// Samples of the halo after a segment: an RK4 step that starts on the segment's last
@@ -210,9 +210,10 @@ impl Join {
     }
 
     /// The next linear series of this segment, from block k's transform `block` (index i =
-    /// global sample kB + L i, periodic): appends the joined series ([`Join::len`] samples)
-    /// to `out` and keeps block k's tail for segment k + 1.
-    pub fn series(&mut self, block: &[Complex64], out: &mut impl Extend<Complex64>) {
+    /// global sample kB + L i, periodic; single-precision samples widened as they are
+    /// read, exactly): appends the joined series ([`Join::len`] samples) to `out` and keeps
+    /// block k's tail for segment k + 1.
+    pub fn series<T: Widen>(&mut self, block: &[T], out: &mut impl Extend<Complex64>) {
         let Sampling { step, before, .. } = self.sampling;
         let n = block.len();
         let (alone, ramp_end) = self.regions();
@@ -237,16 +238,37 @@ impl Join {
             let weights = self.weights[first..].iter().step_by(step);
             let pairs = weights.zip(&tail[alone..]);
             let ramp = pairs.zip(&block[alone - h..]);
-            out.extend(ramp.map(|((&(c, s), &previous), &next)| previous * c + next * s));
-            out.extend(block[ramp_end - h..len - h].iter().copied());
+            out.extend(ramp.map(|((&(c, s), &previous), &next)| previous * c + next.widen() * s));
+            out.extend(block[ramp_end - h..len - h].iter().map(|&b| b.widen()));
         } else {
-            out.extend(block[n - h..].iter().copied());
-            out.extend(block[..len - h].iter().copied());
+            out.extend(block[n - h..].iter().map(|&b| b.widen()));
+            out.extend(block[..len - h].iter().map(|&b| b.widen()));
         }
         // The tail of block k: segment k + 1's outputs l < ramp_end, global samples
         // (k+1)B + L (l - before): block index B / L - before + l.
         let start = self.segments.block / step - h;
-        tail.copy_from_slice(&block[start..start + ramp_end]);
+        for (t, &b) in tail.iter_mut().zip(&block[start..start + ramp_end]) {
+            *t = b.widen();
+        }
+    }
+}
+
+/// A transform's sample as the join takes it: in double precision (exactly).
+pub trait Widen: Copy {
+    fn widen(self) -> Complex64;
+}
+
+impl Widen for Complex64 {
+    #[inline(always)]
+    fn widen(self) -> Complex64 {
+        self
+    }
+}
+
+impl Widen for Complex32 {
+    #[inline(always)]
+    fn widen(self) -> Complex64 {
+        Complex64::new(f64::from(self.re), f64::from(self.im))
     }
 }
 

@@ -13,7 +13,7 @@
 //! segment's record length ([`Synthesizer::output_len`]).
 
 use super::super::sea_state::FrequencyGrid;
-use super::stream::Join;
+use super::stream::{Join, Widen};
 use rustfft::num_complex::{Complex32, Complex64};
 use rustfft::{Fft, FftPlanner};
 use std::sync::Arc;
@@ -46,8 +46,8 @@ pub struct Synthesizer {
     buffer: Vec<Complex32>,
     first: usize,
     count: usize,
-    /// The stream's join, and the block's full transform (widened) before it is joined.
-    join: Option<(Join, Vec<Complex64>)>,
+    /// The stream's join.
+    join: Option<Join>,
 }
 
 impl Synthesizer {
@@ -85,13 +85,13 @@ impl Synthesizer {
     /// The same transform writing the joined series of a stream's segments (`join`
     /// chooses the segment: [`Synthesizer::join_mut`]).
     pub fn with_join(mut self, join: Join) -> Self {
-        self.join = Some((join, Vec::new()));
+        self.join = Some(join);
         self
     }
 
     /// Sizes the transform's scratch on first use, so that a plan's synthesizer (cloned
-    /// into each simulation) carries no buffers (nor does its joined block, sized by its
-    /// first transform).
+    /// into each simulation) carries no buffers. (A stream's join reads the transform's
+    /// output where it lies: no widened copy of the block.)
     fn size_scratch(&mut self) {
         let scratch = self.fft.get_inplace_scratch_len();
         if self.scratch.len() < scratch {
@@ -101,18 +101,18 @@ impl Synthesizer {
 
     /// The join of the segments, when this synthesizer writes a stream.
     pub fn join_mut(&mut self) -> Option<&mut Join> {
-        self.join.as_mut().map(|(join, _)| join)
+        self.join.as_mut()
     }
 
     /// The join of the segments, when this synthesizer writes a stream.
     pub fn join(&self) -> Option<&Join> {
-        self.join.as_ref().map(|(join, _)| join)
+        self.join.as_ref()
     }
 
     /// Samples of every series written: N, or a segment's record length when joined.
     pub fn output_len(&self) -> usize {
         match &self.join {
-            Some((join, _)) => join.len(),
+            Some(join) => join.len(),
             None => self.fft.len(),
         }
     }
@@ -178,20 +178,10 @@ impl Synthesizer {
     /// writes a stream, as it is otherwise.
     fn give(&mut self, sink: &mut impl Extend<Complex64>) {
         match &mut self.join {
-            Some((join, block)) => {
-                block.clear();
-                block.extend(self.buffer.iter().map(|&c| widen(c)));
-                join.series(block, sink);
-            }
-            None => sink.extend(self.buffer.iter().map(|&c| widen(c))),
+            Some(join) => join.series(&self.buffer, sink),
+            None => sink.extend(self.buffer.iter().map(|&c| c.widen())),
         }
     }
-}
-
-/// A transform's sample in double precision.
-#[inline]
-fn widen(c: Complex32) -> Complex64 {
-    Complex64::new(c.re as f64, c.im as f64)
 }
 
 /// A coefficient narrowed to the transform's single precision.

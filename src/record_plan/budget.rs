@@ -119,8 +119,8 @@ impl MemoryEstimate {
         if refine::admits(&grid, segments) {
             // `forces::refine`: the quadratic records made at every second sample (in their
             // own buffers, refined through one spare record), by a transform of L/2 points:
-            // its twiddles and scratch in the plan, its joined block and scratch and the
-            // spare per run.
+            // its twiddles and scratch in the plan, its output and scratch and the spare
+            // per run.
             plan.push(term(
                 block_key,
                 block(),
