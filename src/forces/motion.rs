@@ -171,12 +171,28 @@ impl MotionSet {
     }
 }
 
-/// Writes `samples` into `record`, reusing its buffer.
-fn refill(record: &mut Record, samples: impl Iterator<Item = f64>) {
+/// The buffer of `record`, emptied (its capacity kept), the record left zero.
+fn emptied(record: &mut Record) -> Vec<f64> {
     let mut buffer = std::mem::take(record).into_samples();
     buffer.clear();
-    buffer.extend(samples);
-    *record = Record::new(buffer);
+    buffer
+}
+
+/// A sink that writes each complex sample's real part into its first buffer and its
+/// imaginary part into its second (two real series of one transform).
+struct Split(Vec<f64>, Vec<f64>);
+
+impl Extend<Complex64> for Split {
+    fn extend<I: IntoIterator<Item = Complex64>>(&mut self, samples: I) {
+        let samples = samples.into_iter();
+        let (more, _) = samples.size_hint();
+        self.0.reserve(more);
+        self.1.reserve(more);
+        for c in samples {
+            self.0.push(c.re);
+            self.1.push(c.im);
+        }
+    }
 }
 
 /// The wave-frequency motion records of a segment: one set at zero yaw, or one per yaw of
@@ -191,7 +207,6 @@ pub struct MotionRecords {
 pub struct MotionWork {
     /// c_ij per DOF, then i omega_j c_ij per DOF.
     coefficients: [Vec<Complex64>; 12],
-    series: Vec<Complex64>,
 }
 
 impl MotionRecords {
@@ -237,14 +252,15 @@ impl MotionRecords {
             // (An even count: a DOF's position and velocity move together.)
             for pair in series[..count].chunks_exact(2) {
                 let (x, y) = (pair[0], pair[1]);
-                work.series.clear();
+                // The pair's samples written straight into the two records' buffers.
+                let mut split = Split(emptied(set.record_mut(x)), emptied(set.record_mut(y)));
                 synth.append_two_real_series(
                     &work.coefficients[x],
                     &work.coefficients[y],
-                    &mut work.series,
+                    &mut split,
                 );
-                refill(set.record_mut(x), work.series.iter().map(|c| c.re));
-                refill(set.record_mut(y), work.series.iter().map(|c| c.im));
+                let Split(re, im) = split;
+                (*set.record_mut(x), *set.record_mut(y)) = (Record::new(re), Record::new(im));
             }
             for x in (0..12).filter(|&x| !moving[x % 6]) {
                 *set.record_mut(x) = Record::zero();
