@@ -442,3 +442,39 @@ impl<V: Value> ForceBreakdown<V> {
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Below [`SMALL_YAW`] the yaw's sin and cos are libm's, bit for bit (both are the
+    /// nearest doubles to the exact values there), from zero and the smallest subnormal to
+    /// the largest yaw below the bound, of both signs; at the bound and above, libm's.
+    #[test]
+    fn a_small_yaws_sin_and_cos_are_libms() {
+        let below = f64::from_bits(SMALL_YAW.to_bits() - 1);
+        let yaws = [
+            0.0,
+            f64::from_bits(1),
+            1e-300,
+            1e-15,
+            3.3e-12,
+            1e-9,
+            7e-9,
+            below,
+        ];
+        for theta in yaws
+            .into_iter()
+            .flat_map(|t| [t, -t])
+            .chain([SMALL_YAW, 0.1, -2.0])
+        {
+            let (s, c) = sin_cos(theta);
+            let (ls, lc) = theta.sin_cos();
+            assert_eq!(
+                (s.to_bits(), c.to_bits()),
+                (ls.to_bits(), lc.to_bits()),
+                "{theta:e}"
+            );
+        }
+    }
+}
