@@ -41,12 +41,13 @@ pub(super) fn run_lanes(
     }
     if !sims.is_empty() {
         let mut lockstep = Lockstep::new(sims).expect("seeds of one case at their start");
+        let mut outcome = Vec::with_capacity(LANES);
         for _ in 0..steps {
             if stop.load(Ordering::Relaxed) {
                 return None;
             }
-            let outcome = lockstep.step();
-            for (l, step) in outcome.into_iter().enumerate().rev() {
+            lockstep.step_into(&mut outcome);
+            for (l, step) in outcome.drain(..).enumerate().rev() {
                 match step {
                     Ok(()) => {
                         let q = lockstep.lanes()[l].position();

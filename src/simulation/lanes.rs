@@ -115,16 +115,21 @@ impl Lockstep {
     /// lane's outcome as [`Simulation::step`] gives it alone (a failed lane keeps its
     /// state before the step).
     pub fn step(&mut self) -> Vec<Result<()>> {
+        let mut outcome = Vec::with_capacity(LANES);
+        self.step_into(&mut outcome);
+        outcome
+    }
+
+    /// [`Lockstep::step`], its outcomes written into `outcome` (cleared first: a campaign
+    /// reuses one buffer, and its steps allocate nothing).
+    pub fn step_into(&mut self, outcome: &mut Vec<Result<()>>) {
+        outcome.clear();
         let Some(first) = self.lanes.first() else {
-            return Vec::new();
+            return;
         };
         let (t, h) = (first.time(), first.problem.run.time_step);
         let external = [0.0; 3];
-        let mut outcome: Vec<Result<()>> = self
-            .lanes
-            .iter_mut()
-            .map(|s| s.ensure_records(t, h))
-            .collect();
+        outcome.extend(self.lanes.iter_mut().map(|s| s.ensure_records(t, h)));
         let mut y = [0.0; WIDTH];
         for (l, sim) in self.lanes.iter().enumerate() {
             y[6 * l..6 * l + 6].copy_from_slice(&sim.state_vector());
@@ -136,13 +141,7 @@ impl Lockstep {
         let (lanes, isa, instant) = (&self.lanes, self.isa, &mut self.instant);
         let next = rk4_step(t, &y, h, |time, y| {
             Ok::<_, std::convert::Infallible>(derivatives(
-                lanes,
-                isa,
-                time,
-                y,
-                &held,
-                &mut outcome,
-                instant,
+                lanes, isa, time, y, &held, outcome, instant,
             ))
         });
         let Ok(next) = next;
@@ -155,7 +154,6 @@ impl Lockstep {
                 });
             }
         }
-        outcome
     }
 }
 
