@@ -35,7 +35,8 @@ impl RecordClock {
                 record_end: self.start_time + last * self.dt,
             });
         }
-        let mut index = position.floor() as usize;
+        // position >= 0 (above): the cast's truncation is the floor, without libm's call.
+        let mut index = position as usize;
         let mut s = position - index as f64;
         // A stage time computed as t0 + n h may sit a rounding error away from its sample.
         if s > 1.0 - 1e-9 {
@@ -56,7 +57,9 @@ impl RecordClock {
     /// The sample at or below time `t`, without [`RecordClock::locate`]'s checks: 0 before
     /// the first sample, past the last when `t` is.
     pub fn sample_at_or_below(&self, t: f64) -> usize {
-        ((t - self.start_time) / self.dt).floor().max(0.0) as usize
+        // The cast truncates toward zero and saturates: the floor of a non-negative
+        // position, 0 below the first sample (and for NaN), without libm's floor.
+        ((t - self.start_time) / self.dt) as usize
     }
 }
 
