@@ -28,7 +28,17 @@ const STATE: [(&str, f64, &str); 6] = [
 /// The first of (X, Y, theta, X', Y', theta') that is not finite or beyond its bound, as a
 /// text ("Xdot = 2.5e3 m/s, beyond 1000 m/s"); `None` when the state is physical. No
 /// allocation unless it finds one.
+#[inline]
 pub fn violation(position: &[f64; 3], velocity: &[f64; 3]) -> Option<String> {
+    // Every step asks: the within-bounds case first, a comparison per value (NaN fails it).
+    let within = position
+        .iter()
+        .chain(velocity)
+        .zip(STATE)
+        .all(|(v, (_, bound, _))| v.abs() <= bound);
+    if within {
+        return None;
+    }
     position
         .iter()
         .chain(velocity)
