@@ -23,8 +23,8 @@ use crate::error::{Error, Result};
 use crate::forces::{
     direction_pairs, motion_transfers, plan_inverse_fft, refine, take_negligible_as_zero,
     transfers_on_grid, yaw_transfers, DepthBasis, DirectionTransfer, ForceRecords, GustStream,
-    InverseFft, Join, MotionTransfer, QtfFactorisation, QtfGroup, Record, RecordOptions,
-    RecordWork, Segments, Synthesizer, YawGrid,
+    InverseFft, Join, KinematicsWork, MotionTransfer, QtfFactorisation, QtfGroup, Record,
+    RecordOptions, RecordWork, Segments, Synthesizer, YawGrid,
 };
 use crate::wind::GustSpectrum;
 
@@ -135,9 +135,9 @@ pub struct RecordPlan {
     full_qtf: Option<Vec<QtfGroup>>,
     ranks: Vec<QtfRank>,
     /// The drag kinematics' depth kernels of the problem's drafts on the grid and spectrum
-    /// (made once here, not per seed); a seed whose spectrum, strips or drafts
-    /// differ makes its own.
-    depth_bases: Vec<Arc<DepthBasis>>,
+    /// and the columns' phases on its frequencies (made once here, not per seed); a seed
+    /// whose spectrum, strips, drafts or columns differ makes its own.
+    kinematics: KinematicsWork,
     /// The RAOs on the grid, per body yaw (zero, or the yaw-following grid's) and direction
     /// (`forces::motion`); `None` without wave-frequency motion.
     motion: Option<Vec<Vec<MotionTransfer>>>,
@@ -311,7 +311,12 @@ impl RecordPlan {
             }
         };
         let components = WaveComponents::undrawn(sea, grid.clone());
-        let depth_bases = depth_bases(problem, &grid, components.expected_power());
+        let kinematics = KinematicsWork::for_plan(
+            depth_bases(problem, &grid, components.expected_power()),
+            &components,
+            drag_columns(problem),
+            problem.environment.gravity,
+        );
         let yaws: Vec<f64> = match &yaw {
             Some(y) => (0..y.grid.len()).map(|j| y.grid.yaw(j)).collect(),
             None => vec![0.0],
@@ -329,7 +334,7 @@ impl RecordPlan {
             motion,
             gust,
             problem: problem.clone(),
-            depth_bases,
+            kinematics,
             segments,
             fft,
             half_fft,
@@ -380,7 +385,7 @@ impl RecordPlan {
     pub(crate) fn first_segment(&self, problem: &Problem) -> Segment {
         let synth =
             Synthesizer::with_fft(&self.grid, self.fft.clone()).with_join(Join::new(self.segments));
-        let mut work = RecordWork::with_bases(synth, &self.grid, self.depth_bases.clone());
+        let mut work = RecordWork::with_kinematics(synth, &self.grid, self.kinematics.clone());
         if let Some(half) = &self.half_fft {
             let join = Join::with_sampling(self.segments, refine::SAMPLING);
             let synth = Synthesizer::every_second_sample(&self.grid, half.clone()).with_join(join);
@@ -441,17 +446,13 @@ impl RecordPlan {
             ..
         } = segment;
         work.begin(k, after_previous);
-        let drag_columns = match problem.model.drag {
-            crate::model::DragModel::Off => &[][..],
-            _ => &problem.platform.columns[..],
-        };
         records.rebuild(
             components,
             &self.transfers,
             &RecordOptions {
                 newman: problem.model.newman,
                 full_qtf: self.full_qtf.as_deref(),
-                drag_columns,
+                drag_columns: drag_columns(problem),
                 strips_per_column: problem.model.strips_per_column,
                 gravity: problem.environment.gravity,
                 fft: Some(&self.fft),
@@ -510,6 +511,14 @@ impl Segment {
 
 /// The depth kernel of every distinct draft of `problem`'s drag columns on `grid` (none
 /// without drag), `power` the expected power of its sea's components on the grid.
+/// The columns whose kinematics the drag takes: none without drag.
+fn drag_columns(problem: &Problem) -> &[Cylinder] {
+    match problem.model.drag {
+        crate::model::DragModel::Off => &[],
+        _ => &problem.platform.columns,
+    }
+}
+
 fn depth_bases(problem: &Problem, grid: &FrequencyGrid, power: &[f64]) -> Vec<Arc<DepthBasis>> {
     if problem.model.drag == crate::model::DragModel::Off {
         return Vec::new();

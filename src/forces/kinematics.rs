@@ -19,7 +19,7 @@ use super::record::SamplePoint;
 use super::synthesis::Synthesizer;
 use crate::forces::isa::Isa;
 use crate::model::Cylinder;
-use crate::sea_state::{Direction, WaveComponents};
+use crate::sea_state::{Direction, FrequencyGrid, WaveComponents};
 use recombination::{append_rows, lay_out_weights, RowLayout, Rows};
 use rustfft::num_complex::{Complex32, Complex64};
 use std::sync::Arc;
@@ -350,17 +350,77 @@ pub struct KinematicsWork {
     eta: Vec<Complex32>,
     /// The key of every column.
     keys: Vec<KinematicsKey>,
+    /// The phases of every group of columns built so far on these components' frequencies
+    /// (or given by the record plan).
+    phases: Vec<Arc<ColumnPhases>>,
+}
+
+/// e^{-i k_j d} for every direction and wave component j of a column centre at distance d
+/// along the direction (the phase [`direction_sums`] gives each amplitude): the same for
+/// every seed, so a record plan makes them once ([`KinematicsWork::for_plan`]).
+#[derive(Debug)]
+struct ColumnPhases {
+    key: KinematicsKey,
+    /// The frequencies they are on: (first, count, d_omega) of the grid, and gravity.
+    frequencies: (usize, usize, f64, f64),
+    /// Per direction, per component.
+    phases: Vec<Vec<Complex64>>,
+}
+
+impl ColumnPhases {
+    /// The phases of columns of key `key` on `grid` (k_j = omega_j^2 / gravity).
+    fn new(grid: &FrequencyGrid, key: &KinematicsKey, gravity: f64) -> Self {
+        let phases = key
+            .along
+            .iter()
+            .map(|&along| {
+                (0..grid.count)
+                    .map(|j| {
+                        let wavenumber = grid.omega(j).powi(2) / gravity;
+                        Complex64::from_polar(1.0, -wavenumber * along)
+                    })
+                    .collect()
+            })
+            .collect();
+        ColumnPhases {
+            key: key.clone(),
+            frequencies: Self::frequencies(grid, gravity),
+            phases,
+        }
+    }
+
+    fn frequencies(grid: &FrequencyGrid, gravity: f64) -> (usize, usize, f64, f64) {
+        (grid.first, grid.count, grid.d_omega, gravity)
+    }
+
+    /// Whether these are the phases of key `key` on `grid`.
+    fn fits(&self, key: &KinematicsKey, grid: &FrequencyGrid, gravity: f64) -> bool {
+        self.key == *key && self.frequencies == Self::frequencies(grid, gravity)
+    }
 }
 
 impl KinematicsWork {
-    /// Buffers whose builds take the depth kernels from `bases` when they fit the column,
-    /// the grid and the spectrum (a record plan's, made once for all its seeds), else make
-    /// their own.
-    pub fn with_bases(bases: Vec<Arc<DepthBasis>>) -> Self {
-        KinematicsWork {
+    /// Buffers whose builds take the depth kernels from `bases` and the phases of `columns`
+    /// on `components`' frequencies, made here, when they fit the column, the grid and the
+    /// spectrum, else make their own: a record plan's, made once for all its seeds.
+    pub fn for_plan(
+        bases: Vec<Arc<DepthBasis>>,
+        components: &WaveComponents,
+        columns: &[Cylinder],
+        gravity: f64,
+    ) -> Self {
+        let mut work = KinematicsWork {
             bases,
             ..KinematicsWork::default()
+        };
+        for column in columns {
+            let key = KinematicsKey::of(&components.directions, column);
+            if !work.phases.iter().any(|p| p.key == key) {
+                let phases = ColumnPhases::new(&components.grid, &key, gravity);
+                work.phases.push(Arc::new(phases));
+            }
         }
+        work
     }
 
     /// The kinematics records of every column with `strips` strips each, into `out` (whose
@@ -410,8 +470,21 @@ impl KinematicsWork {
         if self.sums.len() < self.groups.len() {
             self.sums.resize_with(self.groups.len(), Default::default);
         }
+        let grid = &components.grid;
         for (sums, &c) in self.sums.iter_mut().zip(&self.groups) {
-            direction_sums(components, &columns[c], gravity, sums);
+            let key = &keys[c];
+            let phases = match self.phases.iter().position(|p| p.fits(key, grid, gravity)) {
+                Some(p) => p,
+                None => {
+                    // Other frequencies: their phases will not be asked for again.
+                    let on_grid = ColumnPhases::frequencies(grid, gravity);
+                    self.phases.retain(|p| p.frequencies == on_grid);
+                    self.phases
+                        .push(Arc::new(ColumnPhases::new(grid, key, gravity)));
+                    self.phases.len() - 1
+                }
+            };
+            direction_sums(components, &self.phases[phases].phases, sums);
         }
         self.eta.clear();
         self.eta
@@ -609,12 +682,11 @@ fn along(column: &Cylinder, heading: f64) -> f64 {
     column.x * cos + column.y * sin
 }
 
-/// sum over directions of the amplitudes with the phase of the column centre, times
-/// (cos b, sin b, 1), into `sums`.
+/// sum over directions of the amplitudes with the phase of the column centre (`phases`:
+/// [`ColumnPhases`]), times (cos b, sin b, 1), into `sums`.
 fn direction_sums(
     components: &WaveComponents,
-    column: &Cylinder,
-    gravity: f64,
+    phases: &[Vec<Complex64>],
     sums: &mut [Vec<Complex64>; 3],
 ) {
     let grid = &components.grid;
@@ -623,10 +695,9 @@ fn direction_sums(
     }
     for (k, dir) in components.directions.iter().enumerate() {
         let (sin, cos) = dir.heading.sin_cos();
-        let along = along(column, dir.heading);
-        for (j, a) in components.of_direction(k).iter().enumerate() {
-            let wavenumber = grid.omega(j).powi(2) / gravity;
-            let phased = a * Complex64::from_polar(1.0, -wavenumber * along);
+        let amplitudes = components.of_direction(k).iter().zip(&phases[k]);
+        for (j, (a, phase)) in amplitudes.enumerate() {
+            let phased = a * phase;
             sums[0][j] += phased * cos;
             sums[1][j] += phased * sin;
             sums[2][j] += phased;
@@ -834,6 +905,30 @@ mod tests {
     /// adds some 1e-8), for the default platform's draft (30 m, 20 strips) and a deeper
     /// one (60 m, 28 strips) in a spread sea, and a spar's (120 m, 40 strips) and a short
     /// column's (30 m, 12 strips) in head seas (waves along x: u_x alone).
+    /// A record plan's phases ([`KinematicsWork::for_plan`]) give the records a build
+    /// makes with its own, bit for bit, and the build takes them (it makes none): the
+    /// square platform in a spread sea (four keys) and in head seas (two: the columns at
+    /// the same x share theirs).
+    #[test]
+    fn a_plans_phases_give_the_records_made_without_them() {
+        for (c, keys) in [
+            (components(PI / 6.0, Spreading::CosN { n: 2.0 }), 4),
+            (components(0.0, Spreading::LongCrested), 2),
+        ] {
+            let columns = square(30.0);
+            let mut synth = Synthesizer::new(&c.grid);
+            let own = column_kinematics(&c, &columns, 20, GRAVITY, &mut synth);
+            let mut work = KinematicsWork::for_plan(Vec::new(), &c, &columns, GRAVITY);
+            assert_eq!(work.phases.len(), keys);
+            let made: Vec<*const ColumnPhases> = work.phases.iter().map(Arc::as_ptr).collect();
+            let mut planned = Kinematics::default();
+            work.build(&c, &columns, 20, GRAVITY, &mut synth, &mut planned);
+            assert_eq!(own, planned);
+            let used: Vec<*const ColumnPhases> = work.phases.iter().map(Arc::as_ptr).collect();
+            assert_eq!(made, used, "the build made phases of its own");
+        }
+    }
+
     #[test]
     fn rows_from_the_depth_terms_match_one_transform_per_strip() {
         use super::super::depth_basis::KINEMATICS_TOLERANCE;
@@ -862,7 +957,9 @@ mod tests {
             let basis = DepthBasis::new(&c.grid, c.expected_power(), draft, strips, GRAVITY);
             assert!(basis.rank() < strips, "a truncation: rank {}", basis.rank());
             let mut sums: [Vec<Complex64>; 3] = Default::default();
-            direction_sums(&c, &column, GRAVITY, &mut sums);
+            let key = KinematicsKey::of(&c.directions, &column);
+            let phases = ColumnPhases::new(&c.grid, &key, GRAVITY);
+            direction_sums(&c, &phases.phases, &mut sums);
             let [ax, ay, _] = &sums;
             let n = c.grid.len;
             let (mut error, mut power) = (0.0, 0.0);

@@ -119,15 +119,15 @@ pub struct RecordWork {
 impl RecordWork {
     /// The buffers of builds through `synth` on `grid`.
     pub fn new(synth: Synthesizer, grid: &FrequencyGrid) -> Self {
-        Self::with_bases(synth, grid, Vec::new())
+        Self::with_kinematics(synth, grid, KinematicsWork::default())
     }
 
-    /// [`RecordWork::new`] whose kinematics take the depth kernels from `bases` where they
-    /// fit ([`KinematicsWork::with_bases`]).
-    pub fn with_bases(
+    /// [`RecordWork::new`] whose kinematics start from `kinematics` (a record plan's depth
+    /// kernels and phases, taken where they fit: [`KinematicsWork::for_plan`]).
+    pub fn with_kinematics(
         synth: Synthesizer,
         grid: &FrequencyGrid,
-        bases: Vec<std::sync::Arc<DepthBasis>>,
+        kinematics: KinematicsWork,
     ) -> Self {
         let n = synth.output_len();
         RecordWork {
@@ -137,7 +137,7 @@ impl RecordWork {
             elevation_coefficients: Vec::new(),
             qtf_coefficients: Vec::new(),
             qtf_series: Vec::new(),
-            kinematics: KinematicsWork::with_bases(bases),
+            kinematics,
             cross: CrossWork::default(),
             yaw: YawWork::default(),
             motion: motion::MotionWork::default(),

@@ -250,6 +250,14 @@ impl MemoryEstimate {
                     + drafts * ((s + r) * F64 * g + 4.0 * s * s * F64)
                     + c * (1.0 + r) * tail,
             ));
+            // Per distinct column and direction, the phase of its centre at every component
+            // (`forces::KinematicsWork::for_plan`), made once in the plan.
+            plan.push(term(
+                "sea.n_directions",
+                problem.sea.n_directions.to_string(),
+                format!("the phases of {c} distinct columns in {d} directions"),
+                c * d * C64 * g,
+            ));
         }
         if model.second_order == SecondOrder::FullQtf {
             if let Some(qtf) = &problem.hydro.qtf {
