@@ -107,9 +107,9 @@ pub fn refine(samples: &mut Vec<f64>, record_len: usize, spare: &mut Vec<f64>) {
     };
     spare.clear();
     hold_refined(spare);
-    // A chunk of pairs at a time: the midpoints a filter over the coarse nodes (a loop the
-    // compiler vectorises), interleaved with the nodes on the stack and appended in one
-    // copy.
+    // A chunk of pairs at a time: the midpoints a filter over the coarse nodes, written
+    // with the nodes between them into a buffer on the stack and appended in one copy (not
+    // a window and an append per pair).
     let mut chunk = [0.0; 2 * CHUNK];
     for start in (0..pairs).step_by(CHUNK) {
         let n = CHUNK.min(pairs - start);
