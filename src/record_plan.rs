@@ -509,8 +509,6 @@ impl Segment {
     }
 }
 
-/// The depth kernel of every distinct draft of `problem`'s drag columns on `grid` (none
-/// without drag), `power` the expected power of its sea's components on the grid.
 /// The columns whose kinematics the drag takes: none without drag.
 fn drag_columns(problem: &Problem) -> &[Cylinder] {
     match problem.model.drag {
@@ -519,12 +517,11 @@ fn drag_columns(problem: &Problem) -> &[Cylinder] {
     }
 }
 
+/// The depth kernel of every distinct draft of `problem`'s drag columns on `grid` (none
+/// without drag), `power` the expected power of its sea's components on the grid.
 fn depth_bases(problem: &Problem, grid: &FrequencyGrid, power: &[f64]) -> Vec<Arc<DepthBasis>> {
-    if problem.model.drag == crate::model::DragModel::Off {
-        return Vec::new();
-    }
     let (strips, gravity) = (problem.model.strips_per_column, problem.environment.gravity);
-    distinct_drafts(&problem.platform.columns)
+    distinct_drafts(drag_columns(problem))
         .into_iter()
         .map(|draft| Arc::new(DepthBasis::new(grid, power, draft, strips, gravity)))
         .collect()
