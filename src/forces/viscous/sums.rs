@@ -76,12 +76,34 @@ pub(super) fn single(v: [f64; 2]) -> [f32; 2] {
 /// interpolated and rounded), or u_x alone in waves along x (u_y = 0).
 pub(super) trait Velocity: Copy {
     fn xy32(&self) -> [f32; 2];
+
+    /// Strips j to j + 3 of four lanes' rows, by lane in the elements (lane l in element
+    /// l), as two pairs of an even strip and the odd one after it: each pair
+    /// (x of strip j + 2p, x of strip j + 2p + 1, y of strip j + 2p, y of strip j + 2p + 1).
+    /// Loaded a row's four floats at a time and transposed, not element by element.
+    ///
+    /// # Safety
+    /// The CPU has AVX2 (only `lane_sums_avx2` calls it).
+    #[cfg(target_arch = "x86_64")]
+    unsafe fn block(rows: [&[Self]; LANES], j: usize) -> [[std::arch::x86_64::__m128; 4]; 2];
 }
 
 impl Velocity for [f32; 2] {
     #[inline(always)]
     fn xy32(&self) -> [f32; 2] {
         *self
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn block(rows: [&[Self]; LANES], j: usize) -> [[std::arch::x86_64::__m128; 4]; 2] {
+        // Row floats x_j, y_j, x_(j+1), y_(j+1), ...
+        let floats = rows.map(|r| r.as_flattened());
+        [0, 1].map(|p| {
+            // SAFETY: the CPU has AVX2 (this function's contract).
+            let [x_even, y_even, x_odd, y_odd] = unsafe { transposed(floats, 2 * (j + 2 * p)) };
+            [x_even, x_odd, y_even, y_odd]
+        })
     }
 }
 
@@ -90,6 +112,38 @@ impl Velocity for f32 {
     fn xy32(&self) -> [f32; 2] {
         [*self, 0.0]
     }
+
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn block(rows: [&[Self]; LANES], j: usize) -> [[std::arch::x86_64::__m128; 4]; 2] {
+        use std::arch::x86_64::_mm_setzero_ps;
+        // SAFETY: the CPU has AVX2 (this function's contract).
+        let ([x0, x1, x2, x3], zero) = unsafe { (transposed(rows, j), _mm_setzero_ps()) };
+        [[x0, x1, zero, zero], [x2, x3, zero, zero]]
+    }
+}
+
+/// Floats i to i + 3 of four lanes' rows, float i + k of every lane in register k (lane l
+/// in element l): each row's four floats loaded at once, then transposed.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn transposed(rows: [&[f32]; LANES], i: usize) -> [std::arch::x86_64::__m128; 4] {
+    use std::arch::x86_64::{
+        _mm_loadu_ps, _mm_movehl_ps, _mm_movelh_ps, _mm_unpackhi_ps, _mm_unpacklo_ps,
+    };
+    // SAFETY: each slice is four floats long (the indexing checks it), and `_mm_loadu_ps`
+    // reads four floats from any alignment.
+    let [a, b, c, d] = rows.map(|r| unsafe { _mm_loadu_ps(r[i..i + 4].as_ptr()) });
+    // (a0 b0 a1 b1), (c0 d0 c1 d1), (a2 b2 a3 b3), (c2 d2 c3 d3)
+    let (ab01, cd01) = (_mm_unpacklo_ps(a, b), _mm_unpacklo_ps(c, d));
+    let (ab23, cd23) = (_mm_unpackhi_ps(a, b), _mm_unpackhi_ps(c, d));
+    [
+        _mm_movelh_ps(ab01, cd01),
+        _mm_movehl_ps(cd01, ab01),
+        _mm_movelh_ps(ab23, cd23),
+        _mm_movehl_ps(cd23, ab23),
+    ]
 }
 
 /// [`StripSums`] of each lane's row (the rows of one length), compiled for `isa`.
@@ -115,7 +169,10 @@ pub(super) fn lane_sums<V: Velocity>(
 /// [`StripSums`] of four lanes in AVX2: a register of 8 floats holds strip j (even) of
 /// lanes 0-3 in elements 0-3 and strip j + 1 (odd) in elements 4-7, so its two halves are
 /// each lane's even and odd accumulators; an odd last strip goes to the even half alone,
-/// and the halves are added (even + odd) at the end. Per element, the operations of
+/// and the halves are added (even + odd) at the end. The rows are read four floats at a
+/// time and transposed into these registers ([`Velocity::block`]: 4 loads and 8 shuffles
+/// for four strips of the four lanes, not 16 or 32 element inserts); the pairs left over
+/// are gathered element by element. Per element, the operations of
 /// `add_term` in its order, each a separate instruction (`_mm256_mul_ps` and
 /// `_mm256_add_ps` are never contracted); each lane's sum is the one-seed sum bit for bit.
 #[cfg(target_arch = "x86_64")]
@@ -139,7 +196,20 @@ fn lane_sums_avx2<V: Velocity>(
     );
     let (off_x8, off_y8) = (_mm256_set_m128(off_x, off_x), _mm256_set_m128(off_y, off_y));
     let (mut sum_x, mut sum_y) = (_mm256_setzero_ps(), _mm256_setzero_ps());
-    for j in (0..n - n % 2).step_by(2) {
+    // Four strips at a time (two pairs, in strip order), then the pairs left one by one.
+    let blocks = n - n % 4;
+    for j in (0..blocks).step_by(4) {
+        // SAFETY: this function runs only where the CPU has AVX2.
+        for [x_even, x_odd, y_even, y_odd] in unsafe { V::block([r0, r1, r2, r3], j) } {
+            let x = _mm256_set_m128(x_odd, x_even);
+            let y = _mm256_set_m128(y_odd, y_even);
+            let (wx, wy) = (_mm256_sub_ps(x, off_x8), _mm256_sub_ps(y, off_y8));
+            let norm = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(wx, wx), _mm256_mul_ps(wy, wy)));
+            sum_x = _mm256_add_ps(sum_x, _mm256_mul_ps(wx, norm));
+            sum_y = _mm256_add_ps(sum_y, _mm256_mul_ps(wy, norm));
+        }
+    }
+    for j in (blocks..n - n % 2).step_by(2) {
         let [a, b, c, d] = [r0[j].xy32(), r1[j].xy32(), r2[j].xy32(), r3[j].xy32()];
         let [e, f, g, h] = [
             r0[j + 1].xy32(),
