@@ -335,16 +335,14 @@ fn bench_records(c: &mut Criterion, report: &mut Vec<String>) {
         .iter()
         .filter(|r| !r.samples().is_empty())
         .count();
+    // The first build's one-time work included: no target (the 30 x is the plan's line below,
+    // docs/benchmarks.md#records).
     report.push(format!(
-        "records_3h: {:.2} ms = {:.1} x one FFT of {len} points ({:.1} us); target <= 30x: {}",
+        "records_3h, a first build (planning the FFT and the table onto the grid included, \
+         cold): {:.2} ms = {:.1} x one FFT of {len} points ({:.1} us); one-time work, no target",
         records.as_secs_f64() * 1e3,
         records.as_secs_f64() / one_fft.as_secs_f64(),
         one_fft.as_secs_f64() * 1e6,
-        if records.as_secs_f64() <= 30.0 * one_fft.as_secs_f64() {
-            "met"
-        } else {
-            "NOT met"
-        }
     ));
     report.push(format!(
         "  components {} ({} direction(s)); non-zero records: force {nonzero_force}/3, \
