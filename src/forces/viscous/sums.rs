@@ -170,9 +170,9 @@ pub(super) fn lane_sums<V: Velocity>(
 /// lanes 0-3 in elements 0-3 and strip j + 1 (odd) in elements 4-7, so its two halves are
 /// each lane's even and odd accumulators; an odd last strip goes to the even half alone,
 /// and the halves are added (even + odd) at the end. The rows are read four floats at a
-/// time and transposed into these registers ([`Velocity::block`]: 4 loads and 8 shuffles
-/// for four strips of the four lanes, not 16 or 32 element inserts); the pairs left over
-/// are gathered element by element. Per element, the operations of
+/// time and transposed into these registers ([`Velocity::block`]: for each four floats of
+/// the four lanes, 4 loads and 8 shuffles instead of 16 element inserts); the pairs left
+/// over are gathered element by element. Per element, the operations of
 /// `add_term` in its order, each a separate instruction (`_mm256_mul_ps` and
 /// `_mm256_add_ps` are never contracted); each lane's sum is the one-seed sum bit for bit.
 #[cfg(target_arch = "x86_64")]
@@ -196,17 +196,23 @@ fn lane_sums_avx2<V: Velocity>(
     );
     let (off_x8, off_y8) = (_mm256_set_m128(off_x, off_x), _mm256_set_m128(off_y, off_y));
     let (mut sum_x, mut sum_y) = (_mm256_setzero_ps(), _mm256_setzero_ps());
+    // Adds a pair's terms, (x, y) of the even strip in the low half and of the odd one in
+    // the high half.
+    let mut add_pair = |x, y| {
+        let (wx, wy) = (_mm256_sub_ps(x, off_x8), _mm256_sub_ps(y, off_y8));
+        let norm = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(wx, wx), _mm256_mul_ps(wy, wy)));
+        sum_x = _mm256_add_ps(sum_x, _mm256_mul_ps(wx, norm));
+        sum_y = _mm256_add_ps(sum_y, _mm256_mul_ps(wy, norm));
+    };
     // Four strips at a time (two pairs, in strip order), then the pairs left one by one.
     let blocks = n - n % 4;
     for j in (0..blocks).step_by(4) {
         // SAFETY: this function runs only where the CPU has AVX2.
         for [x_even, x_odd, y_even, y_odd] in unsafe { V::block([r0, r1, r2, r3], j) } {
-            let x = _mm256_set_m128(x_odd, x_even);
-            let y = _mm256_set_m128(y_odd, y_even);
-            let (wx, wy) = (_mm256_sub_ps(x, off_x8), _mm256_sub_ps(y, off_y8));
-            let norm = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(wx, wx), _mm256_mul_ps(wy, wy)));
-            sum_x = _mm256_add_ps(sum_x, _mm256_mul_ps(wx, norm));
-            sum_y = _mm256_add_ps(sum_y, _mm256_mul_ps(wy, norm));
+            add_pair(
+                _mm256_set_m128(x_odd, x_even),
+                _mm256_set_m128(y_odd, y_even),
+            );
         }
     }
     for j in (blocks..n - n % 2).step_by(2) {
@@ -217,12 +223,10 @@ fn lane_sums_avx2<V: Velocity>(
             r2[j + 1].xy32(),
             r3[j + 1].xy32(),
         ];
-        let x = _mm256_setr_ps(a[0], b[0], c[0], d[0], e[0], f[0], g[0], h[0]);
-        let y = _mm256_setr_ps(a[1], b[1], c[1], d[1], e[1], f[1], g[1], h[1]);
-        let (wx, wy) = (_mm256_sub_ps(x, off_x8), _mm256_sub_ps(y, off_y8));
-        let norm = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(wx, wx), _mm256_mul_ps(wy, wy)));
-        sum_x = _mm256_add_ps(sum_x, _mm256_mul_ps(wx, norm));
-        sum_y = _mm256_add_ps(sum_y, _mm256_mul_ps(wy, norm));
+        add_pair(
+            _mm256_setr_ps(a[0], b[0], c[0], d[0], e[0], f[0], g[0], h[0]),
+            _mm256_setr_ps(a[1], b[1], c[1], d[1], e[1], f[1], g[1], h[1]),
+        );
     }
     let (mut even_x, mut even_y) = (_mm256_castps256_ps128(sum_x), _mm256_castps256_ps128(sum_y));
     if n % 2 == 1 {
