@@ -897,14 +897,6 @@ mod tests {
         }
     }
 
-    /// The rows recombined from the depth kernel's leading terms against one transform
-    /// per strip (strip j's coefficients omega e^{k z_j} (A_x, A_y), no factorisation):
-    /// the rms velocity error over the record and the strips is within twice the
-    /// [`KINEMATICS_TOLERANCE`] of the rms velocity (the basis promises the tolerance in
-    /// expectation; the factor covers one realisation, and the single-precision storage
-    /// adds some 1e-8), for the default platform's draft (30 m, 20 strips) and a deeper
-    /// one (60 m, 28 strips) in a spread sea, and a spar's (120 m, 40 strips) and a short
-    /// column's (30 m, 12 strips) in head seas (waves along x: u_x alone).
     /// A record plan's phases ([`KinematicsWork::for_plan`]) give the records a build
     /// makes with its own, bit for bit, and the build takes them (it makes none): the
     /// square platform in a spread sea (four keys) and in head seas (two: the columns at
@@ -929,6 +921,14 @@ mod tests {
         }
     }
 
+    /// The rows recombined from the depth kernel's leading terms against one transform
+    /// per strip (strip j's coefficients omega e^{k z_j} (A_x, A_y), no factorisation):
+    /// the rms velocity error over the record and the strips is within twice the
+    /// [`KINEMATICS_TOLERANCE`] of the rms velocity (the basis promises the tolerance in
+    /// expectation; the factor covers one realisation, and the single-precision storage
+    /// adds some 1e-8), for the default platform's draft (30 m, 20 strips) and a deeper
+    /// one (60 m, 28 strips) in a spread sea, and a spar's (120 m, 40 strips) and a short
+    /// column's (30 m, 12 strips) in head seas (waves along x: u_x alone).
     #[test]
     fn rows_from_the_depth_terms_match_one_transform_per_strip() {
         use super::super::depth_basis::KINEMATICS_TOLERANCE;
