@@ -303,8 +303,7 @@ const CSV_HEADER: &str = "time_s,X_m,Y_m,theta_rad,Xdot_m_s,Ydot_m_s,thetadot_ra
 /// One sample's CSV row.
 fn write_row(w: &mut impl Write, o: &Outputs) -> std::io::Result<()> {
     let f = &o.forces;
-    let fields: Vec<String> = [o.time]
-        .iter()
+    let fields = std::iter::once(&o.time)
         .chain(&o.position)
         .chain(&o.velocity)
         .chain(std::iter::once(&o.wave_elevation))
@@ -315,9 +314,12 @@ fn write_row(w: &mut impl Write, o: &Outputs) -> std::io::Result<()> {
         .chain(&o.motion.total)
         .chain(&o.motion.total_rate)
         .chain(std::iter::once(&o.wind_speed))
-        .chain(&f.wind)
-        // 17 significant digits: every f64 reads back bit for bit.
-        .map(|v| format!("{v:.16e}"))
-        .collect();
-    writeln!(w, "{}", fields.join(","))
+        .chain(&f.wind);
+    // 17 significant digits: every f64 reads back bit for bit. Written as formatted, with no
+    // string per field.
+    for (i, v) in fields.enumerate() {
+        let separator = if i == 0 { "" } else { "," };
+        write!(w, "{separator}{v:.16e}")?;
+    }
+    writeln!(w)
 }
