@@ -283,15 +283,17 @@ impl SlowDriftModel {
         }
     }
 
-    /// [`Read`] of the lanes side by side, but for the drag (zero here: the lanes' drag is
-    /// taken together, [`SlowDriftModel::lane_drags`], at every stage, where the rest of a
-    /// read may be kept from a stage at the same time): lane l's records, located instant
-    /// and yaw, and input wind speed (m/s) from `lane(l)`.
+    /// [`Read`] of the lanes side by side, but for the drag (left as it is: the lanes' drag
+    /// is taken together, [`SlowDriftModel::lane_drags`], at every stage, where the rest of
+    /// a read may be kept from a stage at the same time), written into `read` in place (a
+    /// read is large, and moving a new one into place cost a copy of it per instant): lane
+    /// l's records, located instant and yaw, and input wind speed (m/s) from `lane(l)`.
     #[inline(always)]
-    pub fn lanes_read<'a>(
+    pub fn lanes_read_into<'a>(
         &self,
+        read: &mut Read<Wide>,
         lane: impl Fn(usize) -> (&'a ForceRecords, SamplePoint, YawPoint, f64),
-    ) -> Read<Wide> {
+    ) {
         let mut damped = false;
         let flat = Wide::gather(|l| {
             let (records, at, yaw, input) = lane(l);
@@ -305,13 +307,18 @@ impl SlowDriftModel {
                 b[1][2], b[2][0], b[2][1], b[2][2],
             ]
         });
-        Read {
-            wave: [flat[0], flat[1], flat[2]],
-            drag: [Wide::splat(0.0); 3],
-            wind_speed: flat[3],
-            // The lanes are of one model: damped in every lane or in none.
-            damping: damped
-                .then(|| std::array::from_fn(|i| std::array::from_fn(|j| flat[4 + 3 * i + j]))),
+        read.wave = [flat[0], flat[1], flat[2]];
+        read.wind_speed = flat[3];
+        // The lanes are of one model: damped in every lane or in none.
+        if damped {
+            let b = read.damping.get_or_insert([[Wide::splat(0.0); 3]; 3]);
+            for (i, row) in b.iter_mut().enumerate() {
+                for (j, v) in row.iter_mut().enumerate() {
+                    *v = flat[4 + 3 * i + j];
+                }
+            }
+        } else {
+            read.damping = None;
         }
     }
 

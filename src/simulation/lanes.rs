@@ -175,7 +175,7 @@ fn derivatives(
 ) -> [f64; WIDTH] {
     let key = InstantKey::of(lanes, time, held, outcome);
     if !matches!(instant, Some(i) if i.key == key) {
-        *instant = read_at(lanes, key, time, y, held, outcome);
+        read_at(lanes, key, time, y, held, outcome, instant);
     }
     let mut out = [0.0; WIDTH];
     let Some(Instant {
@@ -218,8 +218,9 @@ fn derivatives(
 }
 
 /// The lanes not failed (`outcome` Ok) located at `time`, each at its yaw in `y`, and
-/// what they read there, for `key`; `None` when no lane is located (a lane that cannot be
-/// gets its error in `outcome`).
+/// what they read there, for `key`, written into `instant` in place (an instant is large:
+/// moving a new one into place copied it); `None` when no lane is located (a lane that
+/// cannot be gets its error in `outcome`).
 fn read_at(
     lanes: &[Simulation],
     key: InstantKey,
@@ -227,7 +228,8 @@ fn read_at(
     y: &[f64; WIDTH],
     held: &[Held; LANES],
     outcome: &mut [Result<()>],
-) -> Option<Instant> {
+    instant: &mut Option<Instant>,
+) {
     let mut located = [None; LANES];
     let (mut live, mut count) = ([0; LANES], 0);
     // `time` as the lane before located it, on its records' clock: the lanes' clocks are
@@ -247,18 +249,30 @@ fn read_at(
             Err(e) => outcome[l] = Err(e),
         }
     }
-    let first = located[0]?;
+    let Some(first) = located[0] else {
+        *instant = None;
+        return;
+    };
     // Vector lane i: lane live[i]; past `count`, the first again.
     let located = located.map(|p| p.unwrap_or(first));
-    let read = lanes[live[0]].model.lanes_read(|i| {
-        let (l, (at, yaw)) = (live[if i < count { i } else { 0 }], located[i]);
-        (&lanes[l].segment.records, at, yaw, held[l].wind_speed)
-    });
-    Some(Instant {
+    let slot = instant.get_or_insert_with(|| Instant {
         key,
         live,
         count,
         located,
-        read,
-    })
+        read: Read {
+            wave: [Wide::splat(0.0); 3],
+            damping: None,
+            drag: [Wide::splat(0.0); 3],
+            wind_speed: Wide::splat(0.0),
+        },
+    });
+    slot.key = key;
+    slot.live = live;
+    slot.count = count;
+    slot.located = located;
+    lanes[live[0]].model.lanes_read_into(&mut slot.read, |i| {
+        let (l, (at, yaw)) = (live[if i < count { i } else { 0 }], located[i]);
+        (&lanes[l].segment.records, at, yaw, held[l].wind_speed)
+    });
 }
