@@ -30,18 +30,19 @@ const STATE: [(&str, f64, &str); 6] = [
 /// allocation unless it finds one.
 #[inline]
 pub fn violation(position: &[f64; 3], velocity: &[f64; 3]) -> Option<String> {
-    // Every step asks: inlined, one pass that stops at the first violation.
+    // Every step asks: inlined, one pass that stops at the first violation, over the
+    // table by reference (by value, every step copied it).
     position
         .iter()
         .chain(velocity)
-        .zip(STATE)
+        .zip(&STATE)
         .find(|(v, (_, bound, _))| v.is_nan() || v.abs() > *bound)
         .map(|(v, (name, bound, unit))| {
             if v.is_finite() {
                 format!(
                     "{name} = {} {unit}, beyond {} {unit}",
                     readable(*v),
-                    written(bound)
+                    written(*bound)
                 )
             } else {
                 format!("{name} = {v}")
