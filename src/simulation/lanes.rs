@@ -47,7 +47,7 @@ struct Instant {
 /// What an [`Instant`]'s reads depend on: the time (its bits), the lanes not failed before
 /// they were located, each lane's records (its segment's clock) and the wind input it
 /// holds (its bits).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy)]
 struct InstantKey {
     time: u64,
     ok: [bool; LANES],
@@ -55,14 +55,44 @@ struct InstantKey {
     wind: [u64; LANES],
 }
 
+/// An instant's key is compared and written field by field, in place: it is large enough
+/// that building one and moving it cost a copy.
 impl InstantKey {
-    fn of(lanes: &[Simulation], time: f64, held: &[Held; LANES], outcome: &[Result<()>]) -> Self {
-        InstantKey {
-            time: time.to_bits(),
-            ok: std::array::from_fn(|l| outcome.get(l).is_some_and(|o| o.is_ok())),
-            clocks: std::array::from_fn(|l| lanes.get(l).map(|s| s.segment.records.clock)),
-            wind: held.map(|h| h.wind_speed.to_bits()),
+    /// Whether this is the key of `time` for `lanes`, their held inputs and outcomes.
+    fn is(
+        &self,
+        lanes: &[Simulation],
+        time: f64,
+        held: &[Held; LANES],
+        outcome: &[Result<()>],
+    ) -> bool {
+        self.time == time.to_bits()
+            && (0..LANES).all(|l| {
+                self.ok[l] == Self::ok_of(outcome, l)
+                    && self.clocks[l] == Self::clock_of(lanes, l)
+                    && self.wind[l] == held[l].wind_speed.to_bits()
+            })
+    }
+
+    /// Makes this the key of `time` for `lanes`, their held inputs, and `ok`, whether each
+    /// lane had not failed before it was located.
+    fn set(&mut self, lanes: &[Simulation], time: f64, held: &[Held; LANES], ok: [bool; LANES]) {
+        self.time = time.to_bits();
+        self.ok = ok;
+        for (l, clock) in self.clocks.iter_mut().enumerate() {
+            *clock = Self::clock_of(lanes, l);
         }
+        for (wind, held) in self.wind.iter_mut().zip(held) {
+            *wind = held.wind_speed.to_bits();
+        }
+    }
+
+    fn ok_of(outcome: &[Result<()>], l: usize) -> bool {
+        outcome.get(l).is_some_and(|o| o.is_ok())
+    }
+
+    fn clock_of(lanes: &[Simulation], l: usize) -> Option<RecordClock> {
+        lanes.get(l).map(|s| s.segment.records.clock)
     }
 }
 
@@ -173,9 +203,8 @@ fn derivatives(
     outcome: &mut [Result<()>],
     instant: &mut Option<Instant>,
 ) -> [f64; WIDTH] {
-    let key = InstantKey::of(lanes, time, held, outcome);
-    if !matches!(instant, Some(i) if i.key == key) {
-        read_at(lanes, key, time, y, held, outcome, instant);
+    if !matches!(instant, Some(i) if i.key.is(lanes, time, held, outcome)) {
+        read_at(lanes, time, y, held, outcome, instant);
     }
     let mut out = [0.0; WIDTH];
     let Some(Instant {
@@ -218,20 +247,20 @@ fn derivatives(
 }
 
 /// The lanes not failed (`outcome` Ok) located at `time`, each at its yaw in `y`, and
-/// what they read there, for `key`, written into `instant` in place (an instant is large:
-/// moving a new one into place copied it); `None` when no lane is located (a lane that
-/// cannot be gets its error in `outcome`).
+/// what they read there, written into `instant` in place with the key they depend on (an
+/// instant is large: building a new one and moving it into place copied it); `None` when
+/// no lane is located (a lane that cannot be gets its error in `outcome`).
 fn read_at(
     lanes: &[Simulation],
-    key: InstantKey,
     time: f64,
     y: &[f64; WIDTH],
     held: &[Held; LANES],
     outcome: &mut [Result<()>],
     instant: &mut Option<Instant>,
 ) {
-    let mut located = [None; LANES];
-    let (mut live, mut count) = ([0; LANES], 0);
+    // The key of the lanes as they were before they were located.
+    let ok_before: [bool; LANES] = std::array::from_fn(|l| InstantKey::ok_of(outcome, l));
+    let mut count = 0;
     // `time` as the lane before located it, on its records' clock: the lanes' clocks are
     // alike (their segments' starts and lengths), and a lane whose clock is not locates anew.
     let mut known = None;
@@ -242,37 +271,51 @@ fn read_at(
         match sim.located_as(time, y[6 * l + 2], known) {
             Ok(point) => {
                 known = Some((&sim.segment.records.clock, point.0));
-                located[count] = Some(point);
-                live[count] = l;
+                let slot = instant.get_or_insert_with(|| Instant::first(point));
+                slot.located[count] = point;
+                slot.live[count] = l;
                 count += 1;
             }
             Err(e) => outcome[l] = Err(e),
         }
     }
-    let Some(first) = located[0] else {
+    let Some(slot) = instant.as_mut().filter(|_| count > 0) else {
         *instant = None;
         return;
     };
-    // Vector lane i: lane live[i]; past `count`, the first again.
-    let located = located.map(|p| p.unwrap_or(first));
-    let slot = instant.get_or_insert_with(|| Instant {
-        key,
-        live,
-        count,
-        located,
-        read: Read {
-            wave: [Wide::splat(0.0); 3],
-            damping: None,
-            drag: [Wide::splat(0.0); 3],
-            wind_speed: Wide::splat(0.0),
-        },
-    });
-    slot.key = key;
-    slot.live = live;
+    slot.key.set(lanes, time, held, ok_before);
     slot.count = count;
-    slot.located = located;
-    lanes[live[0]].model.lanes_read_into(&mut slot.read, |i| {
+    // Vector lane i: lane live[i]; past `count`, the first again.
+    for i in count..LANES {
+        slot.located[i] = slot.located[0];
+        slot.live[i] = 0;
+    }
+    let (read, live, located) = (&mut slot.read, &slot.live, &slot.located);
+    lanes[live[0]].model.lanes_read_into(read, |i| {
         let (l, (at, yaw)) = (live[if i < count { i } else { 0 }], located[i]);
         (&lanes[l].segment.records, at, yaw, held[l].wind_speed)
     });
+}
+
+impl Instant {
+    /// An instant whose every vector lane is at `point`, to be written by [`read_at`].
+    fn first(point: (SamplePoint, YawPoint)) -> Self {
+        Instant {
+            key: InstantKey {
+                time: 0,
+                ok: [false; LANES],
+                clocks: [None; LANES],
+                wind: [0; LANES],
+            },
+            live: [0; LANES],
+            count: 0,
+            located: [point; LANES],
+            read: Read {
+                wave: [Wide::splat(0.0); 3],
+                damping: None,
+                drag: [Wide::splat(0.0); 3],
+                wind_speed: Wide::splat(0.0),
+            },
+        }
+    }
 }
