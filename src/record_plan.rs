@@ -23,16 +23,16 @@ use crate::error::{Error, Result};
 use crate::forces::{
     direction_pairs, motion_transfers, plan_inverse_fft, refine, take_negligible_as_zero,
     transfers_on_grid, yaw_transfers, DepthBasis, DirectionTransfer, ForceRecords, GustStream,
-    InverseFft, Join, KinematicsWork, MotionTransfer, QtfFactorisation, QtfGroup, Record,
-    RecordOptions, RecordWork, Segments, Synthesizer, YawGrid,
+    InverseFft, Join, KinematicsWork, MotionTransfer, NewmanTransfer, QtfFactorisation, QtfGroup,
+    Record, RecordOptions, RecordWork, Segments, Synthesizer, YawGrid,
 };
 use crate::wind::GustSpectrum;
 
 use crate::hydro::bidirectional::DirectionPairs;
 use crate::hydro::DriftTable;
 use crate::model::{
-    Cylinder, Dof, DriftDamping, Environment, Interaction, Mode, SecondOrder, WaveFrequencyMotion,
-    YawFollowing,
+    Cylinder, Dof, DriftDamping, Environment, Interaction, Mode, NewmanForm, SecondOrder,
+    WaveFrequencyMotion, YawFollowing,
 };
 use crate::problem::{Hydro, Problem};
 use crate::scenario::Motions;
@@ -60,6 +60,7 @@ pub struct PlanKey<'a> {
     hydro: &'a Hydro,
     columns: &'a [Cylinder],
     second_order: SecondOrder,
+    newman: NewmanForm,
     qtf_tolerance: f64,
     interaction: Interaction,
     drift_damping: DriftDamping,
@@ -86,6 +87,7 @@ impl PlanKey<'_> {
             hydro: &problem.hydro,
             columns: &problem.platform.columns,
             second_order: problem.model.second_order,
+            newman: problem.model.newman,
             qtf_tolerance: problem.model.qtf_tolerance,
             interaction: problem.model.interaction,
             drift_damping: problem.model.drift_damping,
@@ -121,8 +123,9 @@ pub struct RecordPlan {
     /// second sample, when their band admits it (`forces::refine::admits`).
     half_fft: Option<InverseFft>,
     /// Per direction: the coefficients of the mean-position records (none with yaw
-    /// following, whose records carry the force and damping).
-    transfers: Vec<DirectionTransfer>,
+    /// following, whose records carry the force and damping), prepared for the problem's
+    /// Newman form.
+    transfers: Vec<NewmanTransfer>,
     /// The records of `transfers` taken as zero, of round-off size
     /// (`forces::take_negligible_as_zero`), by name.
     negligible: Vec<&'static str>,
@@ -152,7 +155,8 @@ pub struct RecordPlan {
 /// What the yaw-following records need besides the seed.
 struct YawRecordsPlan {
     grid: YawGrid,
-    transfers: Vec<Vec<DirectionTransfer>>,
+    /// Per yaw and direction, prepared for the problem's Newman form.
+    transfers: Vec<Vec<NewmanTransfer>>,
     /// Under the full QTF: per yaw theta_j, the QTF at the relative headings beta_k - theta_j.
     full_qtf: Option<Vec<Vec<QtfGroup>>>,
 }
@@ -294,9 +298,13 @@ impl RecordPlan {
                             .collect::<Result<Vec<_>>>()?,
                     ),
                 };
+                let form = problem.model.newman;
                 Some(YawRecordsPlan {
                     grid: yaw_grid,
-                    transfers,
+                    transfers: transfers
+                        .iter()
+                        .map(|t| NewmanTransfer::all(form, t))
+                        .collect(),
                     full_qtf,
                 })
             }
@@ -339,7 +347,7 @@ impl RecordPlan {
             fft,
             half_fft,
             grid,
-            transfers,
+            transfers: NewmanTransfer::all(problem.model.newman, &transfers),
             negligible,
             pairs,
             yaw,

@@ -32,7 +32,7 @@ pub use kinematics::{
     ROWS_WINDOW,
 };
 pub use motion::{motion_transfers, MotionRecords, MotionTransfer, RaoAlong, WholeMotion};
-pub use newman::NewmanBuilder;
+pub use newman::{Diagonal, NewmanBuilder, NewmanTransfer};
 pub use qtf::{GridQtf, QtfFactorisation, QtfGroup};
 pub use record::{Record, RecordClock, SamplePoint};
 pub use stream::{Join, Sampling, Segments};
@@ -171,13 +171,14 @@ impl RecordWork {
     }
 
     /// The yaw-following records of `grid` into `records` (their buffers reused), from the
-    /// transfers of every yaw ([`yaw_following::yaw_transfers`]).
+    /// transfers of every yaw ([`yaw_following::yaw_transfers`]) prepared for `form`
+    /// ([`NewmanTransfer`]).
     pub fn yaw_following(
         &mut self,
         records: &mut Option<YawFollowingRecords>,
         components: &WaveComponents,
         grid: &YawGrid,
-        transfers: &[Vec<DirectionTransfer>],
+        transfers: &[Vec<NewmanTransfer>],
         full_qtf: Option<&[Vec<QtfGroup>]>,
         form: NewmanForm,
     ) {
@@ -259,7 +260,8 @@ impl ForceRecords {
         };
         let mut work = RecordWork::new(synth, grid);
         let mut records = ForceRecords::empty();
-        records.rebuild(components, transfers, options, &mut work);
+        let transfers = NewmanTransfer::all(options.newman, transfers);
+        records.rebuild(components, &transfers, options, &mut work);
         records
     }
 
@@ -290,7 +292,7 @@ impl ForceRecords {
     pub fn rebuild(
         &mut self,
         components: &WaveComponents,
-        transfers: &[DirectionTransfer],
+        transfers: &[NewmanTransfer],
         options: &RecordOptions,
         work: &mut RecordWork,
     ) {
@@ -342,23 +344,9 @@ impl ForceRecords {
                     synth.complex_series(amplitudes, eta_c);
                 }
                 if options.full_qtf.is_none() {
-                    builder.accumulate_force(
-                        synth,
-                        options.newman,
-                        amplitudes,
-                        eta_c,
-                        transfer,
-                        &mut force,
-                    );
+                    builder.accumulate_force(synth, amplitudes, eta_c, transfer, &mut force);
                 }
-                builder.accumulate_damping(
-                    synth,
-                    options.newman,
-                    amplitudes,
-                    eta_c,
-                    transfer,
-                    &mut damping,
-                );
+                builder.accumulate_damping(synth, amplitudes, eta_c, transfer, &mut damping);
             }
             for group in options.full_qtf.unwrap_or_default() {
                 group.accumulate(

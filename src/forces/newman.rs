@@ -27,6 +27,70 @@ pub struct NewmanBuilder {
     series: Vec<Complex64>,
 }
 
+/// One record's diagonal transfer T_i (at every component of the grid) prepared for
+/// Newman's form once per case, so that a seed's build takes no square root (the same bits:
+/// sqrt(|T_i|) is the root the geometric form took of sign T_i).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Diagonal {
+    /// T_i = 0 at every component: no record.
+    Zero,
+    /// The geometric form (E&S 4): sign(T_i) sqrt(|T_i|) at every component, and whether
+    /// any T_i is positive (the series P+) or negative (P-).
+    Geometric {
+        roots: Vec<f64>,
+        positive: bool,
+        negative: bool,
+    },
+    /// The arithmetic form: T_i itself.
+    Arithmetic(Vec<f64>),
+}
+
+impl Diagonal {
+    /// `transfer` (T_i at every component) prepared for `form`.
+    pub fn new(form: NewmanForm, transfer: &[f64]) -> Self {
+        if transfer.iter().all(|&t| t == 0.0) {
+            return Diagonal::Zero;
+        }
+        match form {
+            NewmanForm::Geometric => Diagonal::Geometric {
+                roots: transfer
+                    .iter()
+                    .map(|&t| t.abs().sqrt().copysign(t))
+                    .collect(),
+                positive: transfer.iter().any(|&t| t > 0.0),
+                negative: transfer.iter().any(|&t| t < 0.0),
+            },
+            NewmanForm::Arithmetic => Diagonal::Arithmetic(transfer.to_vec()),
+        }
+    }
+}
+
+/// One wave direction's coefficients ([`DirectionTransfer`]) prepared for Newman's form:
+/// the drift T_i (surge, sway, yaw) and, when wave-drift damping is on, the b_ij.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NewmanTransfer {
+    pub drift: [Diagonal; 3],
+    pub damping: Option<[[Diagonal; 3]; 3]>,
+}
+
+impl NewmanTransfer {
+    /// `transfer` prepared for `form`.
+    pub fn new(form: NewmanForm, transfer: &DirectionTransfer) -> Self {
+        NewmanTransfer {
+            drift: transfer.drift.each_ref().map(|t| Diagonal::new(form, t)),
+            damping: transfer.damping.as_ref().map(|b| {
+                b.each_ref()
+                    .map(|row| row.each_ref().map(|t| Diagonal::new(form, t)))
+            }),
+        }
+    }
+
+    /// Every direction's `transfers` prepared for `form`.
+    pub fn all(form: NewmanForm, transfers: &[DirectionTransfer]) -> Vec<Self> {
+        transfers.iter().map(|t| Self::new(form, t)).collect()
+    }
+}
+
 impl NewmanBuilder {
     /// Buffers for a grid of `count` components and records of `len` samples (a
     /// synthesizer of another output length resizes them).
@@ -42,23 +106,28 @@ impl NewmanBuilder {
         self.series.resize(synth.output_len(), Complex64::default());
     }
 
-    /// Adds one direction's slowly varying record for the diagonal `transfer` (T_i at every
-    /// component) to `out`, which takes the first contribution's samples as they are and
-    /// stays empty if the transfer is zero. `amplitudes` are the direction's a_i and `eta_c`
-    /// its complex elevation series sum a_i e^{i omega_i t_m} (used by the arithmetic form).
+    /// Adds one direction's slowly varying record for the diagonal transfer `diagonal` to
+    /// `out`, which takes the first contribution's samples as they are and stays empty if
+    /// the transfer is zero. `amplitudes` are the direction's a_i and `eta_c` its complex
+    /// elevation series sum a_i e^{i omega_i t_m} (used by the arithmetic form).
     pub fn accumulate(
         &mut self,
         synth: &mut Synthesizer,
-        form: NewmanForm,
         amplitudes: &[Complex64],
         eta_c: &[Complex64],
-        transfer: &[f64],
+        diagonal: &Diagonal,
         out: &mut Vec<f64>,
     ) {
-        match form {
-            NewmanForm::Geometric => {
-                for sign in [1.0, -1.0] {
-                    if self.fill_signed(amplitudes, transfer, sign) {
+        match diagonal {
+            Diagonal::Zero => {}
+            Diagonal::Geometric {
+                roots,
+                positive,
+                negative,
+            } => {
+                for (sign, present) in [(1.0, positive), (-1.0, negative)] {
+                    if *present {
+                        self.fill_signed(amplitudes, roots, sign);
                         // sign |P|^2 added as the transform's joined samples come.
                         let to = AddTo::new(out);
                         let mut sink = AddSquares { sign, to };
@@ -66,10 +135,7 @@ impl NewmanBuilder {
                     }
                 }
             }
-            NewmanForm::Arithmetic => {
-                if transfer.iter().all(|&t| t == 0.0) {
-                    return;
-                }
+            Diagonal::Arithmetic(transfer) => {
                 for ((c, a), t) in self.coefficients.iter_mut().zip(amplitudes).zip(transfer) {
                     *c = a * t;
                 }
@@ -89,14 +155,13 @@ impl NewmanBuilder {
     pub fn accumulate_force(
         &mut self,
         synth: &mut Synthesizer,
-        form: NewmanForm,
         amplitudes: &[Complex64],
         eta_c: &[Complex64],
-        transfer: &DirectionTransfer,
+        transfer: &NewmanTransfer,
         force: &mut [Vec<f64>; 3],
     ) {
         for (out, t) in force.iter_mut().zip(&transfer.drift) {
-            self.accumulate(synth, form, amplitudes, eta_c, t, out);
+            self.accumulate(synth, amplitudes, eta_c, t, out);
         }
     }
 
@@ -105,10 +170,9 @@ impl NewmanBuilder {
     pub fn accumulate_damping(
         &mut self,
         synth: &mut Synthesizer,
-        form: NewmanForm,
         amplitudes: &[Complex64],
         eta_c: &[Complex64],
-        transfer: &DirectionTransfer,
+        transfer: &NewmanTransfer,
         damping: &mut [[Vec<f64>; 3]; 3],
     ) {
         let Some(b) = &transfer.damping else {
@@ -116,38 +180,35 @@ impl NewmanBuilder {
         };
         for (out_row, b_row) in damping.iter_mut().zip(b) {
             for (out, t) in out_row.iter_mut().zip(b_row) {
-                self.accumulate(synth, form, amplitudes, eta_c, t, out);
+                self.accumulate(synth, amplitudes, eta_c, t, out);
             }
         }
     }
 
     /// The real series Re sum_j c_j e^{i omega_j t_m} at every sample (e.g. the elevation),
-    /// into `out`.
+    /// into `out`, taken from the transform's joined samples as they come (no complex
+    /// series kept).
     pub fn real_series(
         &mut self,
         synth: &mut Synthesizer,
         coefficients: &[Complex64],
         out: &mut Vec<f64>,
     ) {
-        self.size_series(synth);
-        synth.complex_series(coefficients, &mut self.series);
         out.clear();
-        out.extend(self.series.iter().map(|c| c.re));
+        synth.complex_series_into(coefficients, &mut RealParts(out));
     }
 
-    /// Coefficients a_i sqrt(sign T_i) where sign T_i > 0, else 0; false if all are zero.
-    fn fill_signed(&mut self, amplitudes: &[Complex64], transfer: &[f64], sign: f64) -> bool {
-        let mut any = false;
-        for ((c, a), &t) in self.coefficients.iter_mut().zip(amplitudes).zip(transfer) {
-            let v = sign * t;
-            *c = if v > 0.0 {
-                any = true;
-                a * v.sqrt()
+    /// Coefficients a_i sqrt(sign T_i) where sign T_i > 0, else 0, from the signed roots
+    /// sign(T_i) sqrt(|T_i|).
+    fn fill_signed(&mut self, amplitudes: &[Complex64], roots: &[f64], sign: f64) {
+        for ((c, a), &r) in self.coefficients.iter_mut().zip(amplitudes).zip(roots) {
+            let root = sign * r;
+            *c = if root > 0.0 {
+                a * root
             } else {
                 Complex64::default()
             };
         }
-        any
     }
 }
 
@@ -183,6 +244,15 @@ impl Extend<f64> for AddTo<'_> {
     }
 }
 
+/// A sink that appends the real part of each complex sample it takes to a series.
+struct RealParts<'a>(&'a mut Vec<f64>);
+
+impl Extend<Complex64> for RealParts<'_> {
+    fn extend<I: IntoIterator<Item = Complex64>>(&mut self, values: I) {
+        self.0.extend(values.into_iter().map(|c| c.re));
+    }
+}
+
 /// A sink that adds `sign` |p|^2 of each complex sample p it takes to a record ([`AddTo`]).
 struct AddSquares<'a> {
     sign: f64,
@@ -194,5 +264,40 @@ impl Extend<Complex64> for AddSquares<'_> {
         let sign = self.sign;
         self.to
             .extend(values.into_iter().map(|p| sign * p.norm_sqr()));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The geometric form's signed roots and signs present, by hand; a zero transfer makes
+    /// no record in either form; the arithmetic form keeps T_i.
+    #[test]
+    fn a_diagonal_is_prepared_for_its_form() {
+        let t = [4.0, -9.0, 0.0, 2.25, -0.0];
+        assert_eq!(
+            Diagonal::new(NewmanForm::Geometric, &t),
+            Diagonal::Geometric {
+                roots: vec![2.0, -3.0, 0.0, 1.5, -0.0],
+                positive: true,
+                negative: true,
+            }
+        );
+        assert_eq!(
+            Diagonal::new(NewmanForm::Geometric, &[0.0, 1e-300, 0.25]),
+            Diagonal::Geometric {
+                roots: vec![0.0, 1e-150, 0.5],
+                positive: true,
+                negative: false,
+            }
+        );
+        for form in [NewmanForm::Geometric, NewmanForm::Arithmetic] {
+            assert_eq!(Diagonal::new(form, &[0.0, -0.0]), Diagonal::Zero);
+        }
+        assert_eq!(
+            Diagonal::new(NewmanForm::Arithmetic, &t),
+            Diagonal::Arithmetic(t.to_vec())
+        );
     }
 }

@@ -26,7 +26,7 @@
 //!
 //! The elevation and the drag columns' kinematics stay at the mean position and zero yaw.
 
-use super::newman::NewmanBuilder;
+use super::newman::{NewmanBuilder, NewmanTransfer};
 use super::qtf::QtfGroup;
 use super::synthesis::{InverseFft, Synthesizer};
 use super::transfer::transfers_on_grid;
@@ -191,6 +191,10 @@ impl YawFollowingRecords {
             &grid,
             with_damping,
         )?;
+        let transfers: Vec<Vec<NewmanTransfer>> = transfers
+            .iter()
+            .map(|t| NewmanTransfer::all(form, t))
+            .collect();
         let mut synth = Synthesizer::with_fft(&components.grid, fft.clone());
         let mut builder = NewmanBuilder::new(components.grid.count, synth.output_len());
         let mut records = YawFollowingRecords {
@@ -210,7 +214,8 @@ impl YawFollowingRecords {
     }
 
     /// [`YawFollowingRecords::build`] into these records (their buffers reused), from the
-    /// transfers of every yaw ([`yaw_transfers`]), through `synth` (a stream's segment when
+    /// transfers of every yaw ([`yaw_transfers`]) prepared for `form` ([`NewmanTransfer`]),
+    /// through `synth` (a stream's segment when
     /// joined). With `full_qtf` (one set of groups per yaw, the QTF at the relative headings
     /// beta_k - theta_j), the wave force of each yaw comes from the full QTF instead of
     /// Newman's form; the damping stays Newman's, from the transfers.
@@ -218,7 +223,7 @@ impl YawFollowingRecords {
     pub fn rebuild(
         &mut self,
         components: &WaveComponents,
-        transfers: &[Vec<DirectionTransfer>],
+        transfers: &[Vec<NewmanTransfer>],
         full_qtf: Option<&[Vec<QtfGroup>]>,
         form: NewmanForm,
         synth: &mut Synthesizer,
@@ -256,9 +261,9 @@ impl YawFollowingRecords {
                 let amplitudes = components.of_direction(k);
                 let e = &work.eta_c[k];
                 if full_qtf.is_none() {
-                    builder.accumulate_force(synth, form, amplitudes, e, transfer, &mut force);
+                    builder.accumulate_force(synth, amplitudes, e, transfer, &mut force);
                 }
-                builder.accumulate_damping(synth, form, amplitudes, e, transfer, &mut damping);
+                builder.accumulate_damping(synth, amplitudes, e, transfer, &mut damping);
             }
             for group in full_qtf.map_or(&[][..], |q| &q[j][..]) {
                 work.qtf_coefficients

@@ -258,7 +258,7 @@ fn none_and_one_direction_leave_the_records_unchanged() {
     let mut plain = ForceRecords::empty();
     plain.rebuild(
         &comps,
-        &transfers,
+        &slowdrift::forces::NewmanTransfer::all(NewmanForm::Geometric, &transfers),
         &RecordOptions {
             newman: NewmanForm::Geometric,
             full_qtf: None,
