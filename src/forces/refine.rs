@@ -18,8 +18,14 @@
 //! 2.5, the widest band admitted ([`MAX_BAND_PHASE`]); a record's error is this weighted by
 //! its spectrum, which is small where e is not ([`midpoint_error`] estimates it for a sea).
 
+// The two unsafe operations: the AVX2 build of the refinement, made only where the CPU has
+// AVX2, and the refined record's length set once every sample is written.
+#![allow(unsafe_code)]
+
+use super::isa::Isa;
 use super::stream::{Sampling, Segments, HALO_AFTER, HALO_BEFORE};
 use crate::sea_state::FrequencyGrid;
+use std::mem::MaybeUninit;
 
 /// Record samples per coarse sample: the coarse interval is the step h = 2 dt.
 pub const STEP: usize = 2;
@@ -76,12 +82,18 @@ pub fn admits(grid: &FrequencyGrid, segments: Segments) -> bool {
 
 /// Refines a segment's coarse samples (on [`SAMPLING`]) in `samples` to the record's
 /// `record_len` = B + H + 1 samples from global sample kB - 1: the even global samples
-/// copied, the odd ones interpolated (module doc). An empty record (zero) stays empty.
+/// copied, the odd ones interpolated (module doc), by the widest instruction set the CPU
+/// runs (the same bits on every one: [`Isa`]). An empty record (zero) stays empty.
 /// The refined samples are written once into `spare` (no zero fill, no growth of the
 /// coarse buffer), which then swaps with `samples`: `spare` is left with the coarse
 /// buffer, or a new one of the refined length if that was shorter, so the buffers a
 /// stream's segments pass round allocate nothing after the first segment.
 pub fn refine(samples: &mut Vec<f64>, record_len: usize, spare: &mut Vec<f64>) {
+    refine_on(Isa::detect(), samples, record_len, spare);
+}
+
+/// [`refine`] on the instruction set `isa` (one the CPU runs).
+fn refine_on(isa: Isa, samples: &mut Vec<f64>, record_len: usize, spare: &mut Vec<f64>) {
     if samples.is_empty() {
         return;
     }
@@ -93,10 +105,6 @@ pub fn refine(samples: &mut Vec<f64>, record_len: usize, spare: &mut Vec<f64>) {
     // Record sample 2i is global kB + 2i - 1, between coarse i + 3 and i + 4; record sample
     // 2i + 1 is global kB + 2i, coarse i + 4: pair i is the window of coarse i .. i + 8.
     let pairs = record_len.div_ceil(2);
-    debug_assert!(
-        coarse_len >= pairs + TAPS - 1,
-        "every pair's window is coarse"
-    );
     // A spare shorter than the refined record is replaced, not grown (growing copies it):
     // before the samples are written (the first call) and after the swap (a coarse buffer
     // new in this segment), so that the segments after the first find one long enough.
@@ -107,27 +115,42 @@ pub fn refine(samples: &mut Vec<f64>, record_len: usize, spare: &mut Vec<f64>) {
     };
     spare.clear();
     hold_refined(spare);
-    // A chunk of pairs at a time: the midpoints a filter over the coarse nodes, written
-    // with the nodes between them into a buffer on the stack and appended in one copy (not
-    // a window and an append per pair).
-    let mut chunk = [0.0; 2 * CHUNK];
-    for start in (0..pairs).step_by(CHUNK) {
-        let n = CHUNK.min(pairs - start);
-        let x = &samples[start..start + n + TAPS - 1];
-        let out = &mut chunk[..2 * n];
-        for (i, pair) in out.chunks_exact_mut(2).enumerate() {
-            pair[0] = midpoint(x, i);
-            pair[1] = x[i + 4];
-        }
-        spare.extend_from_slice(out);
+    // Every pair's window is coarse (the slice checks it).
+    let nodes = &samples[..pairs + TAPS - 1];
+    let out = &mut spare.spare_capacity_mut()[..2 * pairs];
+    match isa {
+        Isa::Baseline => write_pairs(nodes, out),
+        #[cfg(target_arch = "x86_64")]
+        // SAFETY: `Isa::Avx2` is only made where the CPU reports AVX2 (`Isa::detect`,
+        // `Isa::available`).
+        Isa::Avx2 => unsafe { write_pairs_avx2(nodes, out) },
     }
+    // SAFETY: `write_pairs` wrote every one of the 2 * pairs elements, the length set here.
+    unsafe { spare.set_len(2 * pairs) };
     spare.truncate(record_len);
     std::mem::swap(samples, spare);
     hold_refined(spare);
 }
 
-/// Pairs of record samples refined at a time.
-const CHUNK: usize = 64;
+/// Writes pair i of the refined record, the midpoint of window i of `nodes` and node
+/// i + 4, into elements 2i and 2i + 1 of `out` (every element: `out` holds as many pairs
+/// as `nodes` has windows of [`TAPS`]).
+#[inline(always)]
+fn write_pairs(nodes: &[f64], out: &mut [MaybeUninit<f64>]) {
+    debug_assert_eq!(out.len(), 2 * (nodes.len() + 1 - TAPS));
+    for (i, pair) in out.chunks_exact_mut(2).enumerate() {
+        pair[0] = MaybeUninit::new(midpoint(nodes, i));
+        pair[1] = MaybeUninit::new(nodes[i + 4]);
+    }
+}
+
+/// [`write_pairs`] compiled for AVX2 (four midpoints a register; the additions and
+/// products of [`midpoint`] in its order, never contracted: the same bits).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn write_pairs_avx2(nodes: &[f64], out: &mut [MaybeUninit<f64>]) {
+    write_pairs(nodes, out);
+}
 
 /// The interpolated midpoint between nodes i + 3 and i + 4 of `x` (the stencil on nodes
 /// i .. i + 7, its symmetric pairs first).
@@ -200,6 +223,29 @@ mod tests {
             if r % 2 == 1 {
                 assert_eq!(*got, expected, "even global samples are copied");
             }
+        }
+    }
+
+    /// Every instruction set the CPU runs refines to the baseline's bits (a record of
+    /// irregular samples, over a thousand pairs), and into a spare that held another
+    /// record.
+    #[test]
+    fn every_instruction_set_refines_to_the_same_bits() {
+        let block = 2000;
+        let record_len = HALO_BEFORE + block + HALO_AFTER;
+        let coarse: Vec<f64> = (0..block / STEP + BEFORE + AFTER)
+            .map(|l| 1e5 * (0.37 * l as f64).sin() + (1.3 * l as f64).cos() / 3.0)
+            .collect();
+        let refined = |isa: Isa| {
+            let mut samples = coarse.clone();
+            let mut spare = vec![7.0; 3 * record_len];
+            refine_on(isa, &mut samples, record_len, &mut spare);
+            samples.iter().map(|v| v.to_bits()).collect::<Vec<_>>()
+        };
+        let baseline = refined(Isa::Baseline);
+        assert_eq!(baseline.len(), record_len);
+        for isa in Isa::available() {
+            assert_eq!(refined(isa), baseline, "{}", isa.name());
         }
     }
 
