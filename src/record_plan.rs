@@ -23,8 +23,8 @@ use crate::error::{Error, Result};
 use crate::forces::{
     direction_pairs, motion_transfers, plan_inverse_fft, refine, take_negligible_as_zero,
     transfers_on_grid, yaw_transfers, DepthBasis, DirectionTransfer, ForceRecords, GustStream,
-    InverseFft, Join, KinematicsWork, MotionTransfer, NewmanTransfer, QtfFactorisation, QtfGroup,
-    Record, RecordOptions, RecordWork, Segments, Synthesizer, YawGrid,
+    Halves, InverseFft, Join, KinematicsWork, MotionTransfer, NewmanTransfer, QtfFactorisation,
+    QtfGroup, Record, RecordOptions, RecordWork, Segments, Synthesizer, YawGrid,
 };
 use crate::wind::GustSpectrum;
 
@@ -122,6 +122,9 @@ pub struct RecordPlan {
     /// The transform of N/2 points that makes the wave force and damping records at every
     /// second sample, when their band admits it (`forces::refine::admits`).
     half_fft: Option<InverseFft>,
+    /// The elevation's transform of N/2 points, when the band allows
+    /// (`forces::synthesis::Halves`).
+    halves: Option<Halves>,
     /// Per direction: the coefficients of the mean-position records (none with yaw
     /// following, whose records carry the force and damping), prepared for the problem's
     /// Newman form.
@@ -331,8 +334,14 @@ impl RecordPlan {
         };
         let motion = motion_on_grid(problem, &grid, &directions, &yaws)?;
         let fft = plan_inverse_fft(&grid);
-        let half_fft = refine::admits(&grid, segments)
-            .then(|| rustfft::FftPlanner::new().plan_fft_inverse(grid.len / refine::STEP));
+        // The transform of N/2 points, planned once for the quadratic records and the
+        // elevation's halves.
+        let half = grid
+            .len
+            .is_multiple_of(2)
+            .then(|| rustfft::FftPlanner::new().plan_fft_inverse(grid.len / 2));
+        let half_fft = half.clone().filter(|_| refine::admits(&grid, segments));
+        let halves = half.and_then(|half| Halves::new(&grid, half));
         let gust = problem
             .run_wind()?
             .and_then(|w| w.gusts)
@@ -346,6 +355,7 @@ impl RecordPlan {
             segments,
             fft,
             half_fft,
+            halves,
             grid,
             transfers: NewmanTransfer::all(problem.model.newman, &transfers),
             negligible,
@@ -391,8 +401,11 @@ impl RecordPlan {
     /// The first segment of `problem`'s records (which the plan serves), with the buffers the
     /// next segments are made in.
     pub(crate) fn first_segment(&self, problem: &Problem) -> Segment {
-        let synth =
+        let mut synth =
             Synthesizer::with_fft(&self.grid, self.fft.clone()).with_join(Join::new(self.segments));
+        if let Some(halves) = &self.halves {
+            synth = synth.with_halves(halves.clone());
+        }
         let mut work = RecordWork::with_kinematics(synth, &self.grid, self.kinematics.clone());
         if let Some(half) = &self.half_fft {
             let join = Join::with_sampling(self.segments, refine::SAMPLING);

@@ -36,7 +36,7 @@ pub use newman::{Diagonal, NewmanBuilder, NewmanTransfer};
 pub use qtf::{GridQtf, QtfFactorisation, QtfGroup};
 pub use record::{Record, RecordClock, SamplePoint};
 pub use stream::{Join, Sampling, Segments};
-pub use synthesis::{plan_inverse_fft, InverseFft, Synthesizer, SINGLE_PRECISION_ERROR};
+pub use synthesis::{plan_inverse_fft, Halves, InverseFft, Synthesizer, SINGLE_PRECISION_ERROR};
 pub use transfer::{
     take_negligible_as_zero, transfers_on_grid, DirectionTransfer, NEGLIGIBLE_TRANSFER,
 };
@@ -362,10 +362,9 @@ impl ForceRecords {
                 records.for_each(|samples| refine::refine(samples, n, &mut work.refined));
             }
         }
-        let builder = &mut work.newman;
         let synth = &mut work.synth;
         let mut elevation = take_samples(&mut self.elevation);
-        builder.real_series(synth, coefficients, &mut elevation);
+        synth.real_series_into(coefficients, &mut elevation);
         self.elevation = Record::new(elevation);
         let with_damping = transfers.iter().any(|t| t.damping.is_some());
         work.kinematics.build(

@@ -185,19 +185,6 @@ impl NewmanBuilder {
         }
     }
 
-    /// The real series Re sum_j c_j e^{i omega_j t_m} at every sample (e.g. the elevation),
-    /// into `out`, taken from the transform's joined samples as they come (no complex
-    /// series kept).
-    pub fn real_series(
-        &mut self,
-        synth: &mut Synthesizer,
-        coefficients: &[Complex64],
-        out: &mut Vec<f64>,
-    ) {
-        out.clear();
-        synth.complex_series_into(coefficients, &mut RealParts(out));
-    }
-
     /// Coefficients a_i sqrt(sign T_i) where sign T_i > 0, else 0, from the signed roots
     /// sign(T_i) sqrt(|T_i|).
     fn fill_signed(&mut self, amplitudes: &[Complex64], roots: &[f64], sign: f64) {
@@ -241,15 +228,6 @@ impl Extend<f64> for AddTo<'_> {
             }
             self.at += taken;
         }
-    }
-}
-
-/// A sink that appends the real part of each complex sample it takes to a series.
-struct RealParts<'a>(&'a mut Vec<f64>);
-
-impl Extend<Complex64> for RealParts<'_> {
-    fn extend<I: IntoIterator<Item = Complex64>>(&mut self, values: I) {
-        self.0.extend(values.into_iter().map(|c| c.re));
     }
 }
 

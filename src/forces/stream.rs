@@ -272,6 +272,14 @@ impl Widen for Complex32 {
     }
 }
 
+/// A real series' sample (`forces::synthesis::Halves`), as a complex one of zero imaginary part.
+impl Widen for f32 {
+    #[inline(always)]
+    fn widen(self) -> Complex64 {
+        Complex64::new(f64::from(self), 0.0)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
