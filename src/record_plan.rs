@@ -335,12 +335,11 @@ impl RecordPlan {
         let motion = motion_on_grid(problem, &grid, &directions, &yaws)?;
         let fft = plan_inverse_fft(&grid);
         // The transform of N/2 points, planned once for the quadratic records and the
-        // elevation's halves.
-        let half = grid
-            .len
-            .is_multiple_of(2)
+        // elevation's halves, where either is made so.
+        let refines = refine::admits(&grid, segments);
+        let half = (refines || Halves::allows(&grid))
             .then(|| rustfft::FftPlanner::new().plan_fft_inverse(grid.len / 2));
-        let half_fft = half.clone().filter(|_| refine::admits(&grid, segments));
+        let half_fft = half.clone().filter(|_| refines);
         let halves = half.and_then(|half| Halves::new(&grid, half));
         let gust = problem
             .run_wind()?

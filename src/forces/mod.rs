@@ -240,8 +240,9 @@ impl RecordWork {
 
 impl ForceRecords {
     /// Builds every record from the wave components and the per-direction coefficients
-    /// (from [`transfers_on_grid`]), over the grid's period (N samples). Cost: one FFT per
-    /// direction for the elevation, one or two per non-zero coefficient record and direction
+    /// (from [`transfers_on_grid`]), over the grid's period (N samples). Cost: one FFT for
+    /// the elevation (of N/2 points where the band allows and `options.fft` is not given:
+    /// [`Halves`]), one or two per non-zero coefficient record and direction
     /// (with the full QTF: one per retained term, DOF and direction instead, for the force;
     /// `build` makes them all at every sample: the route the stream's records at their
     /// bandwidth are checked against),

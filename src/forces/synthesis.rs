@@ -71,12 +71,17 @@ pub struct Halves {
 }
 
 impl Halves {
+    /// Whether `grid`'s band allows its real series by halves: N even and
+    /// first + count <= N/4.
+    pub fn allows(grid: &FrequencyGrid) -> bool {
+        grid.len.is_multiple_of(2) && 4 * (grid.first + grid.count) <= grid.len
+    }
+
     /// For `grid`, with `fft` its transform of N/2 points, when the band allows.
     pub fn new(grid: &FrequencyGrid, fft: InverseFft) -> Option<Self> {
         let n = grid.len;
-        let allowed = n.is_multiple_of(2) && 4 * (grid.first + grid.count) <= n;
-        debug_assert!(!allowed || fft.len() * 2 == n);
-        allowed.then(|| Halves {
+        debug_assert_eq!(fft.len() * 2, n);
+        Self::allows(grid).then(|| Halves {
             fft,
             rotation: (grid.first..grid.first + grid.count)
                 .map(|k| Complex64::from_polar(1.0, std::f64::consts::TAU * k as f64 / n as f64))
@@ -93,9 +98,7 @@ impl Synthesizer {
     pub fn new(grid: &FrequencyGrid) -> Self {
         let mut planner = FftPlanner::new();
         let synth = Self::with_fft(grid, planner.plan_fft_inverse(grid.len));
-        let halves = grid
-            .len
-            .is_multiple_of(2)
+        let halves = Halves::allows(grid)
             .then(|| Halves::new(grid, planner.plan_fft_inverse(grid.len / 2)))
             .flatten();
         match halves {

@@ -20,7 +20,9 @@
 
 use crate::error::numbers::written;
 use crate::error::{bytes_text, Error, Result};
-use crate::forces::{distinct_kinematics, kinematics_row_floats, refine, MAX_RANK, ROWS_WINDOW};
+use crate::forces::{
+    distinct_kinematics, kinematics_row_floats, refine, Halves, MAX_RANK, ROWS_WINDOW,
+};
 use crate::hydro::bidirectional::BidirectionalSource;
 use crate::model::{DragModel, Interaction, Mode, NewmanForm, SecondOrder, WaveFrequencyMotion};
 use crate::problem::Problem;
@@ -116,17 +118,36 @@ impl MemoryEstimate {
             "the records of one block",
             series + tail,
         ));
-        if refine::admits(&grid, segments) {
-            // `forces::refine`: the quadratic records made at every second sample (in their
-            // own buffers, refined through one spare record), by a transform of L/2 points:
-            // its twiddles and scratch in the plan, its output and scratch and the spare
-            // per run.
+        let refines = refine::admits(&grid, segments);
+        if refines || Halves::allows(&grid) {
+            // A transform of L/2 points, its twiddles and scratch in the plan.
             plan.push(term(
                 block_key,
                 block(),
                 "the planned FFT of half length",
                 C64 * l,
             ));
+        }
+        if Halves::allows(&grid) {
+            // `forces::synthesis::Halves`: the elevation's samples in single precision, its
+            // band's rotations (in the plan) and rotated coefficients (per run).
+            plan.push(term(
+                "sea.band",
+                format!("{g} components"),
+                "the elevation's rotations",
+                C64 * g,
+            ));
+            run.push(term(
+                block_key,
+                block(),
+                "the elevation by halves",
+                F32 * l + C64 * g,
+            ));
+        }
+        if refines {
+            // `forces::refine`: the quadratic records made at every second sample (in their
+            // own buffers, refined through one spare record), by a transform of L/2 points:
+            // its output and scratch and the spare per run.
             run.push(term(
                 block_key,
                 block(),
