@@ -129,10 +129,9 @@ impl RecordWork {
         grid: &FrequencyGrid,
         kinematics: KinematicsWork,
     ) -> Self {
-        let n = synth.output_len();
         RecordWork {
             synth,
-            newman: NewmanBuilder::new(grid.count, n),
+            newman: NewmanBuilder::new(grid.count),
             eta_c: Vec::new(),
             elevation_coefficients: Vec::new(),
             qtf_coefficients: Vec::new(),

@@ -92,12 +92,12 @@ impl NewmanTransfer {
 }
 
 impl NewmanBuilder {
-    /// Buffers for a grid of `count` components and records of `len` samples (a
-    /// synthesizer of another output length resizes them).
-    pub fn new(count: usize, len: usize) -> Self {
+    /// Buffers for a grid of `count` components; the arithmetic form's series is sized on
+    /// its first use, to the synthesizer's output length (the geometric form needs none).
+    pub fn new(count: usize) -> Self {
         NewmanBuilder {
             coefficients: vec![Complex64::default(); count],
-            series: vec![Complex64::default(); len],
+            series: Vec::new(),
         }
     }
 

@@ -196,7 +196,7 @@ impl YawFollowingRecords {
             .map(|t| NewmanTransfer::all(form, t))
             .collect();
         let mut synth = Synthesizer::with_fft(&components.grid, fft.clone());
-        let mut builder = NewmanBuilder::new(components.grid.count, synth.output_len());
+        let mut builder = NewmanBuilder::new(components.grid.count);
         let mut records = YawFollowingRecords {
             grid,
             sets: Vec::new(),

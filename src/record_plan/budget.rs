@@ -108,10 +108,15 @@ impl MemoryEstimate {
             format!("{d} directions' coefficients on {g} components"),
             d * (FORCE_AND_DAMPING + 1.0) * F64 * g,
         ));
-        // The synthesizer's scratch, join and pair buffers, Newman's series and the
-        // arithmetic form's elevation series, the full QTF's series, the elevation and
-        // force and damping records, the wave components.
-        let series = 6.0 * C64 * l + (1.0 + FORCE_AND_DAMPING) * F64 * l + 4.0 * C64 * g;
+        // The synthesizer's scratch, join and pair buffers, the full QTF's series, the
+        // elevation and force and damping records, the wave components; the arithmetic
+        // form's Newman series and elevation series.
+        let arithmetic = match problem.model.newman {
+            NewmanForm::Arithmetic => 2.0,
+            NewmanForm::Geometric => 0.0,
+        };
+        let series =
+            (4.0 + arithmetic) * C64 * l + (1.0 + FORCE_AND_DAMPING) * F64 * l + 4.0 * C64 * g;
         run.push(term(
             block_key,
             block(),
