@@ -10,12 +10,14 @@
 //! - `component`: an instance (logger, state, model) and the one report of a call's result;
 //! - [`functions`]: the FMI 2.0 functions, generic over the model, each behind the
 //!   [firewall](crate::firewall), which the cdylibs' `#[no_mangle] extern "C" fn fmi2*`
-//!   shims call.
+//!   shims call;
+//! - `exports`: [`crate::fmi2_exports`], the macro that writes those shims in a cdylib.
 //!
 //! `exports.map` beside this file is the linker version script of every FMU's cdylib: the
 //! `fmi2*` symbols global, everything else local.
 
 pub(crate) mod component;
+mod exports;
 pub mod functions;
 pub(crate) mod handle;
 pub(crate) mod logger;
