@@ -36,20 +36,27 @@ unsafe extern "C" fn print_log(
     category: *const c_char,
     message: *const c_char,
 ) {
-    let text = |p: *const c_char| {
-        if p.is_null() {
-            "(null)".to_string()
-        } else {
-            // SAFETY: the FMU passes NUL-terminated strings valid for the call.
-            unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned()
-        }
-    };
+    // SAFETY: the FMU passes NUL-terminated strings valid for the call.
+    let text = |p| unsafe { c_text(p) };
     eprintln!(
         "[{}] {} ({status}): {}",
         text(instance),
         text(category),
         text(message)
     );
+}
+
+/// A C string the FMU passed, as text ("(null)" for NULL).
+///
+/// # Safety
+/// `p` is NULL or a NUL-terminated string valid for the call.
+pub(crate) unsafe fn c_text(p: *const c_char) -> String {
+    if p.is_null() {
+        "(null)".to_string()
+    } else {
+        // SAFETY: the caller's contract.
+        unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned()
+    }
 }
 
 /// The GUID (FMI 3.0: the instantiation token) and the value reference of each named
@@ -121,28 +128,102 @@ pub struct Fmu {
 impl Fmu {
     /// Loads the library and resolves the functions (any missing one is an error).
     pub fn load(path: &Path) -> Result<Self, String> {
-        // SAFETY: loading the FMU's library runs no initialisers beyond Rust's runtime.
-        let library =
-            unsafe { Library::new(path) }.map_err(|e| format!("dlopen {}: {e}", path.display()))?;
-        fn get<T: Copy>(library: &Library, name: &str) -> Result<T, String> {
-            // SAFETY: the symbol has the FMI 2.0 signature T.
-            let symbol: Symbol<T> =
-                unsafe { library.get(name.as_bytes()) }.map_err(|e| format!("{name}: {e}"))?;
-            Ok(*symbol)
-        }
-        Ok(Fmu {
-            instantiate: get(&library, "fmi2Instantiate")?,
-            setup_experiment: get(&library, "fmi2SetupExperiment")?,
-            enter_initialization: get(&library, "fmi2EnterInitializationMode")?,
-            exit_initialization: get(&library, "fmi2ExitInitializationMode")?,
-            do_step: get(&library, "fmi2DoStep")?,
-            get_real: get(&library, "fmi2GetReal")?,
-            set_real: get(&library, "fmi2SetReal")?,
-            terminate: get(&library, "fmi2Terminate")?,
-            free_instance: get(&library, "fmi2FreeInstance")?,
-            _library: library,
+        let library = open(path)?;
+        // SAFETY: each field's type is the FMI 2.0 signature of the function it is read from.
+        Ok(unsafe {
+            Fmu {
+                instantiate: function(&library, "fmi2Instantiate")?,
+                setup_experiment: function(&library, "fmi2SetupExperiment")?,
+                enter_initialization: function(&library, "fmi2EnterInitializationMode")?,
+                exit_initialization: function(&library, "fmi2ExitInitializationMode")?,
+                do_step: function(&library, "fmi2DoStep")?,
+                get_real: function(&library, "fmi2GetReal")?,
+                set_real: function(&library, "fmi2SetReal")?,
+                terminate: function(&library, "fmi2Terminate")?,
+                free_instance: function(&library, "fmi2FreeInstance")?,
+                _library: library,
+            }
         })
     }
+}
+
+/// The FMU's library, loaded as a master loads it.
+pub(crate) fn open(path: &Path) -> Result<Library, String> {
+    // SAFETY: loading the FMU's library runs no initialisers beyond Rust's runtime.
+    unsafe { Library::new(path) }.map_err(|e| format!("dlopen {}: {e}", path.display()))
+}
+
+/// The function `name` of `library` (a missing one is an error naming it).
+///
+/// # Safety
+/// `T` is the function's C signature.
+pub(crate) unsafe fn function<T: Copy>(library: &Library, name: &str) -> Result<T, String> {
+    // SAFETY: the caller's contract.
+    let symbol: Symbol<T> =
+        unsafe { library.get(name.as_bytes()) }.map_err(|e| format!("{name}: {e}"))?;
+    Ok(*symbol)
+}
+
+/// A run's variables: the outputs' value references, the inputs' and the inputs' values.
+pub(crate) struct Variables {
+    pub outputs: Vec<c_uint>,
+    pub inputs: Vec<c_uint>,
+    pub values: Vec<f64>,
+}
+
+impl Variables {
+    /// The named inputs (with their values) and outputs of `description`.
+    pub(crate) fn of(
+        description: &ModelDescription,
+        inputs: &[(&str, f64)],
+        outputs: &[&str],
+    ) -> Result<Self, String> {
+        let reference = |n: &str| description.value_reference(n);
+        Ok(Variables {
+            outputs: outputs
+                .iter()
+                .map(|n| reference(n))
+                .collect::<Result<_, _>>()?,
+            inputs: inputs
+                .iter()
+                .map(|(n, _)| reference(n))
+                .collect::<Result<_, _>>()?,
+            values: inputs.iter().map(|(_, v)| *v).collect(),
+        })
+    }
+}
+
+/// A call's status as a result: OK and Warning (0 and 1 in FMI 2.0 and 3.0) pass.
+pub(crate) fn check(what: &str, status: c_int) -> Result<(), String> {
+    if status == OK || status == WARNING {
+        Ok(())
+    } else {
+        Err(format!("{what} returned status {status}"))
+    }
+}
+
+/// The samples of `outputs` outputs at every communication point from `start` to `stop`
+/// by `step`: `read` at the start, then after each `advance(t)` (the step from t). Output
+/// `k` is `samples[k]`.
+pub(crate) fn sample(
+    (start, stop, step): (f64, f64, f64),
+    outputs: usize,
+    mut advance: impl FnMut(f64) -> Result<(), String>,
+    mut read: impl FnMut(&mut [f64]) -> Result<(), String>,
+) -> Result<Vec<Vec<f64>>, String> {
+    let steps = ((stop - start) / step).round() as usize;
+    let mut samples = vec![Vec::with_capacity(steps + 1); outputs];
+    let mut values = vec![0.0; outputs];
+    for n in 0..=steps {
+        if n > 0 {
+            advance(start + (n - 1) as f64 * step)?;
+        }
+        read(&mut values)?;
+        for (s, v) in samples.iter_mut().zip(&values) {
+            s.push(*v);
+        }
+    }
+    Ok(samples)
 }
 
 /// Runs one instance from `start` to `stop` at communication step `step` with the named
@@ -158,15 +239,7 @@ pub fn run(
     (inputs, outputs): (&[(&str, f64)], &[&str]),
     (start, stop, step): (f64, f64, f64),
 ) -> Result<Vec<Vec<f64>>, String> {
-    let references = outputs
-        .iter()
-        .map(|n| description.value_reference(n))
-        .collect::<Result<Vec<_>, _>>()?;
-    let input_references = inputs
-        .iter()
-        .map(|(n, _)| description.value_reference(n))
-        .collect::<Result<Vec<_>, _>>()?;
-    let input_values: Vec<f64> = inputs.iter().map(|(_, v)| *v).collect();
+    let variables = Variables::of(description, inputs, outputs)?;
     let name = CString::new("fmu-pack").expect("no NUL");
     let guid = CString::new(description.guid.clone()).map_err(|e| e.to_string())?;
     let uri = CString::new(resource_uri).map_err(|e| e.to_string())?;
@@ -176,13 +249,6 @@ pub fn run(
         free_memory: None,
         step_finished: None,
         component_environment: std::ptr::null_mut(),
-    };
-    let check = |what: &str, status: Status| {
-        if status == OK || status == WARNING {
-            Ok(())
-        } else {
-            Err(format!("{what} returned status {status}"))
-        }
     };
     // SAFETY: FMI 2.0 calling sequence on a valid instance; pointers outlive the calls.
     unsafe {
@@ -204,37 +270,25 @@ pub fn run(
                 (fmu.setup_experiment)(c, FALSE, 0.0, start, TRUE, stop),
             )?;
             check("fmi2EnterInitializationMode", (fmu.enter_initialization)(c))?;
+            let Variables {
+                outputs: references,
+                inputs,
+                values,
+            } = &variables;
             check(
                 "fmi2SetReal",
-                (fmu.set_real)(
-                    c,
-                    input_references.as_ptr(),
-                    input_references.len(),
-                    input_values.as_ptr(),
-                ),
+                (fmu.set_real)(c, inputs.as_ptr(), inputs.len(), values.as_ptr()),
             )?;
             check("fmi2ExitInitializationMode", (fmu.exit_initialization)(c))?;
-            let steps = ((stop - start) / step).round() as usize;
-            let mut samples = vec![Vec::with_capacity(steps + 1); outputs.len()];
-            let mut values = vec![0.0; outputs.len()];
-            for n in 0..=steps {
-                if n > 0 {
-                    let t = start + (n - 1) as f64 * step;
-                    check("fmi2DoStep", (fmu.do_step)(c, t, step, TRUE))?;
-                }
-                check(
-                    "fmi2GetReal",
-                    (fmu.get_real)(
-                        c,
-                        references.as_ptr(),
-                        references.len(),
-                        values.as_mut_ptr(),
-                    ),
-                )?;
-                for (s, v) in samples.iter_mut().zip(&values) {
-                    s.push(*v);
-                }
-            }
+            let samples = sample(
+                (start, stop, step),
+                references.len(),
+                |t| check("fmi2DoStep", (fmu.do_step)(c, t, step, TRUE)),
+                |values| {
+                    let (r, n) = (references.as_ptr(), references.len());
+                    check("fmi2GetReal", (fmu.get_real)(c, r, n, values.as_mut_ptr()))
+                },
+            )?;
             check("fmi2Terminate", (fmu.terminate)(c))?;
             Ok(samples)
         })();

@@ -3,16 +3,14 @@
 //! model from the archive's FMI 3.0 modelDescription.xml (its instantiation token and value
 //! references by name).
 
-use crate::master::ModelDescription;
-use libloading::{Library, Symbol};
-use std::ffi::{c_char, c_void, CStr, CString};
+use crate::master::{c_text, check, function, open, sample, ModelDescription, Variables};
+use libloading::Library;
+use std::ffi::{c_char, c_void, CString};
 use std::path::Path;
 
 type Instance = *mut c_void;
 /// `fmi3Status` (a C enum).
 type Status = i32;
-const OK: Status = 0;
-const WARNING: Status = 1;
 
 /// `fmi3LogMessageCallback`.
 unsafe extern "C" fn print_log(
@@ -21,14 +19,8 @@ unsafe extern "C" fn print_log(
     category: *const c_char,
     message: *const c_char,
 ) {
-    let text = |p: *const c_char| {
-        if p.is_null() {
-            "(null)".to_string()
-        } else {
-            // SAFETY: the FMU passes NUL-terminated strings valid for the call.
-            unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned()
-        }
-    };
+    // SAFETY: the FMU passes NUL-terminated strings valid for the call.
+    let text = |p| unsafe { c_text(p) };
     eprintln!("{} ({status}): {}", text(category), text(message));
 }
 
@@ -75,25 +67,20 @@ pub struct Fmu {
 impl Fmu {
     /// Loads the library and resolves the functions (any missing one is an error).
     pub fn load(path: &Path) -> Result<Self, String> {
-        // SAFETY: loading the FMU's library runs no initialisers beyond Rust's runtime.
-        let library =
-            unsafe { Library::new(path) }.map_err(|e| format!("dlopen {}: {e}", path.display()))?;
-        fn get<T: Copy>(library: &Library, name: &str) -> Result<T, String> {
-            // SAFETY: the symbol has the FMI 3.0 signature T.
-            let symbol: Symbol<T> =
-                unsafe { library.get(name.as_bytes()) }.map_err(|e| format!("{name}: {e}"))?;
-            Ok(*symbol)
-        }
-        Ok(Fmu {
-            instantiate: get(&library, "fmi3InstantiateCoSimulation")?,
-            enter_initialization: get(&library, "fmi3EnterInitializationMode")?,
-            exit_initialization: get(&library, "fmi3ExitInitializationMode")?,
-            do_step: get(&library, "fmi3DoStep")?,
-            get_float64: get(&library, "fmi3GetFloat64")?,
-            set_float64: get(&library, "fmi3SetFloat64")?,
-            terminate: get(&library, "fmi3Terminate")?,
-            free_instance: get(&library, "fmi3FreeInstance")?,
-            _library: library,
+        let library = open(path)?;
+        // SAFETY: each field's type is the FMI 3.0 signature of the function it is read from.
+        Ok(unsafe {
+            Fmu {
+                instantiate: function(&library, "fmi3InstantiateCoSimulation")?,
+                enter_initialization: function(&library, "fmi3EnterInitializationMode")?,
+                exit_initialization: function(&library, "fmi3ExitInitializationMode")?,
+                do_step: function(&library, "fmi3DoStep")?,
+                get_float64: function(&library, "fmi3GetFloat64")?,
+                set_float64: function(&library, "fmi3SetFloat64")?,
+                terminate: function(&library, "fmi3Terminate")?,
+                free_instance: function(&library, "fmi3FreeInstance")?,
+                _library: library,
+            }
         })
     }
 }
@@ -108,25 +95,10 @@ pub fn run(
     (inputs, outputs): (&[(&str, f64)], &[&str]),
     (start, stop, step): (f64, f64, f64),
 ) -> Result<Vec<Vec<f64>>, String> {
-    let references = outputs
-        .iter()
-        .map(|n| description.value_reference(n))
-        .collect::<Result<Vec<_>, _>>()?;
-    let input_references = inputs
-        .iter()
-        .map(|(n, _)| description.value_reference(n))
-        .collect::<Result<Vec<_>, _>>()?;
-    let input_values: Vec<f64> = inputs.iter().map(|(_, v)| *v).collect();
+    let variables = Variables::of(description, inputs, outputs)?;
     let name = CString::new("fmu-pack").expect("no NUL");
     let token = CString::new(description.guid.clone()).map_err(|e| e.to_string())?;
     let path = CString::new(resource_path).map_err(|e| e.to_string())?;
-    let check = |what: &str, status: Status| {
-        if status == OK || status == WARNING {
-            Ok(())
-        } else {
-            Err(format!("{what} returned status {status}"))
-        }
-    };
     // SAFETY: FMI 3.0 calling sequence on a valid instance; pointers outlive the calls.
     unsafe {
         let c = (fmu.instantiate)(
@@ -151,24 +123,27 @@ pub fn run(
                 "fmi3EnterInitializationMode",
                 (fmu.enter_initialization)(c, false, 0.0, start, true, stop),
             )?;
+            let Variables {
+                outputs: references,
+                inputs,
+                values,
+            } = &variables;
             check(
                 "fmi3SetFloat64",
                 (fmu.set_float64)(
                     c,
-                    input_references.as_ptr(),
-                    input_references.len(),
-                    input_values.as_ptr(),
-                    input_values.len(),
+                    inputs.as_ptr(),
+                    inputs.len(),
+                    values.as_ptr(),
+                    values.len(),
                 ),
             )?;
             check("fmi3ExitInitializationMode", (fmu.exit_initialization)(c))?;
-            let steps = ((stop - start) / step).round() as usize;
-            let mut samples = vec![Vec::with_capacity(steps + 1); outputs.len()];
-            let mut values = vec![0.0; outputs.len()];
             let (mut event, mut terminate, mut early, mut last) = (false, false, false, 0.0);
-            for n in 0..=steps {
-                if n > 0 {
-                    let t = start + (n - 1) as f64 * step;
+            let samples = sample(
+                (start, stop, step),
+                references.len(),
+                |t| {
                     check(
                         "fmi3DoStep",
                         (fmu.do_step)(
@@ -189,21 +164,14 @@ pub fn run(
                              lastSuccessfulTime {last} s"
                         ));
                     }
-                }
-                check(
-                    "fmi3GetFloat64",
-                    (fmu.get_float64)(
-                        c,
-                        references.as_ptr(),
-                        references.len(),
-                        values.as_mut_ptr(),
-                        values.len(),
-                    ),
-                )?;
-                for (s, v) in samples.iter_mut().zip(&values) {
-                    s.push(*v);
-                }
-            }
+                    Ok(())
+                },
+                |values| {
+                    let (r, n) = (references.as_ptr(), references.len());
+                    let read = (fmu.get_float64)(c, r, n, values.as_mut_ptr(), values.len());
+                    check("fmi3GetFloat64", read)
+                },
+            )?;
             check("fmi3Terminate", (fmu.terminate)(c))?;
             Ok(samples)
         })();

@@ -52,6 +52,10 @@ pub fn write(root: &Path, library: &Path, fmu_dir: &Path) -> Result<(), String> 
     let config = fmu_dir.join(LINES_ONLY_CONFIG);
     std::fs::write(&config, lines_only()?).map_err(|e| format!("{}: {e}", config.display()))?;
     let fmus = ["SlowDrift.fmu", "Mooring.fmu"];
+    println!(
+        "packing the system's platform from {LINES_ONLY_CONFIG} (stiffness 0: Mooring.fmu is its \
+         only mooring); its self-check below runs it alone, unmoored, so it drifts freely"
+    );
     pack_configuration(
         root,
         library,
