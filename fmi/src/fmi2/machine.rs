@@ -66,79 +66,59 @@ mod mask {
     pub const STATUS: u8 = STEP_COMPLETE | STEP_FAILED | TERMINATED | ERROR;
 }
 
-/// Every exported function that takes an instance (`fmi2FreeInstance` is always allowed).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Call {
-    SetDebugLogging,
-    SetupExperiment,
-    EnterInitializationMode,
-    ExitInitializationMode,
-    Terminate,
-    Reset,
-    GetReal,
-    GetInteger,
-    GetBoolean,
-    GetString,
-    SetReal,
-    SetInteger,
-    SetBoolean,
-    SetString,
-    GetFMUstate,
-    SetFMUstate,
-    FreeFMUstate,
-    SerializedFMUstateSize,
-    SerializeFMUstate,
-    DeSerializeFMUstate,
-    GetDirectionalDerivative,
-    SetRealInputDerivatives,
-    GetRealOutputDerivatives,
-    DoStep,
-    CancelStep,
-    GetStatus,
-    GetRealStatus,
-    GetIntegerStatus,
-    GetBooleanStatus,
-    GetStringStatus,
+/// Makes [`Call`] and [`Call::ALL`] from one list, so that `ALL` holds every call.
+macro_rules! calls {
+    ($(#[$meta:meta])* pub enum Call { $($variant:ident,)+ }) => {
+        $(#[$meta])*
+        pub enum Call {
+            $($variant,)+
+        }
+
+        impl Call {
+            /// Every call, for tests that try each one in each state.
+            pub const ALL: [Call; [$(Call::$variant),+].len()] = [$(Call::$variant),+];
+        }
+    };
+}
+
+calls! {
+    /// Every exported function that takes an instance (`fmi2FreeInstance` is always allowed).
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub enum Call {
+        SetDebugLogging,
+        SetupExperiment,
+        EnterInitializationMode,
+        ExitInitializationMode,
+        Terminate,
+        Reset,
+        GetReal,
+        GetInteger,
+        GetBoolean,
+        GetString,
+        SetReal,
+        SetInteger,
+        SetBoolean,
+        SetString,
+        GetFMUstate,
+        SetFMUstate,
+        FreeFMUstate,
+        SerializedFMUstateSize,
+        SerializeFMUstate,
+        DeSerializeFMUstate,
+        GetDirectionalDerivative,
+        SetRealInputDerivatives,
+        GetRealOutputDerivatives,
+        DoStep,
+        CancelStep,
+        GetStatus,
+        GetRealStatus,
+        GetIntegerStatus,
+        GetBooleanStatus,
+        GetStringStatus,
+    }
 }
 
 impl Call {
-    /// Every call, for tests that try each one in each state.
-    pub const ALL: [Call; 30] = {
-        use Call::*;
-        [
-            SetDebugLogging,
-            SetupExperiment,
-            EnterInitializationMode,
-            ExitInitializationMode,
-            Terminate,
-            Reset,
-            GetReal,
-            GetInteger,
-            GetBoolean,
-            GetString,
-            SetReal,
-            SetInteger,
-            SetBoolean,
-            SetString,
-            GetFMUstate,
-            SetFMUstate,
-            FreeFMUstate,
-            SerializedFMUstateSize,
-            SerializeFMUstate,
-            DeSerializeFMUstate,
-            GetDirectionalDerivative,
-            SetRealInputDerivatives,
-            GetRealOutputDerivatives,
-            DoStep,
-            CancelStep,
-            GetStatus,
-            GetRealStatus,
-            GetIntegerStatus,
-            GetBooleanStatus,
-            GetStringStatus,
-        ]
-    };
-
     /// The states in which the call is allowed (the Reference-FMUs' `MASK_fmi2*`, for
     /// co-simulation without asynchronous steps). The unsupported functions are allowed
     /// everywhere and then answer that they are unsupported.
