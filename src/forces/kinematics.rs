@@ -187,6 +187,7 @@ impl Kinematics {
         let entry = &self.columns[c];
         ColumnKinematics {
             column: &entry.column,
+            group: entry.group,
             records: &self.groups[entry.group],
         }
     }
@@ -232,6 +233,8 @@ impl Kinematics {
 #[derive(Debug, Clone, Copy)]
 pub struct ColumnKinematics<'a> {
     pub column: &'a Cylinder,
+    /// The group whose records it reads (columns alike in their key share one).
+    group: usize,
     records: &'a GroupRecords,
 }
 
@@ -252,6 +255,12 @@ pub struct ColumnState<'a> {
 }
 
 impl<'a> ColumnKinematics<'a> {
+    /// The group of columns whose records this column reads: two columns of one group have
+    /// the same kinematics, bit for bit, at every time.
+    pub fn group(&self) -> usize {
+        self.group
+    }
+
     /// Number of strips.
     pub fn strips(&self) -> usize {
         self.records.source.strips

@@ -36,18 +36,59 @@ pub fn drag_force(
     if model == DragModel::Off {
         return total;
     }
+    let mut seen = SeenSums::new();
     for col in kinematics.columns() {
-        add_column_force(
-            &mut total,
-            &col,
-            at,
-            model,
-            water_density,
-            velocity,
-            current,
-        );
+        let state = col.at(at);
+        let column = (col.column, col.strips());
+        let strips = ColumnStrips::of(column, state.eta(), model, water_density, velocity, current);
+        let bits = single_bits(strips.offset);
+        let fast = seen.sum(col.group(), bits, || {
+            strip_sum(&state, col.strips(), strips.offset)
+        });
+        strips.add_force(&mut total, column, model, fast);
     }
     total
+}
+
+/// The column groups a drag evaluation remembers the strip sums of ([`SeenSums`]).
+const SEEN: usize = 8;
+
+/// The strip sums taken at one instant, by column group (the first [`SEEN`] groups), with
+/// the offsets they were taken at (`B`: their bits in single precision) . A strip sum
+/// depends on the row (or the interpolated strips) and the offset rounded to single
+/// precision alone ([`StripSums`]), and the columns of a group read the same kinematics: a
+/// column whose group was summed at offsets that round to the same floats has that sum, bit
+/// for bit. In head seas the two columns of a group at the same x move alike and see the
+/// same current, so one sum serves both.
+struct SeenSums<B, F> {
+    sums: [Option<(B, F)>; SEEN],
+}
+
+impl<B: PartialEq + Copy, F: Copy> SeenSums<B, F> {
+    fn new() -> Self {
+        SeenSums { sums: [None; SEEN] }
+    }
+
+    /// Group `group`'s sums at the offsets `bits`: those remembered, else `make`'s
+    /// (remembered for the next column of the group).
+    #[inline]
+    fn sum(&mut self, group: usize, bits: B, make: impl FnOnce() -> F) -> F {
+        match self.sums.get_mut(group) {
+            Some(Some((seen, sum))) if *seen == bits => *sum,
+            Some(slot) => {
+                let sum = make();
+                *slot = Some((bits, sum));
+                sum
+            }
+            None => make(),
+        }
+    }
+}
+
+/// An offset as the strip sums take it: rounded to single precision ([`single`]), as bits.
+#[inline]
+fn single_bits(offset: [f64; 2]) -> [u32; 2] {
+    single(offset).map(f32::to_bits)
 }
 
 /// Adds one column's drag at a located instant to `total` (body frame (Fx, Fy, Mz)).
@@ -234,6 +275,82 @@ mod tests {
             }
         }
         (total, sizes)
+    }
+
+    /// The columns of one group (the two at x = 30 m in waves along x: one key) read the
+    /// same kinematics, and the drag takes their strip sums once where their offsets round
+    /// to the same floats: it gives the force of every column summed on its own
+    /// (`add_column_force`, column by column), bit for bit, at zero yaw rate (one sum
+    /// serves the pair) and at a yaw rate that parts their offsets, in both drag models,
+    /// on a sample and between samples, with the rows in the window and without.
+    #[test]
+    fn a_group_summed_once_gives_each_columns_force() {
+        let sea = SeaState {
+            spectrum: Spectrum::Jonswap {
+                hs: 8.0,
+                tp: 11.0,
+                gamma: None,
+            },
+            spreading: Spreading::LongCrested,
+            mean_direction: 0.0,
+            n_directions: 1,
+            seed: 5,
+            band: None,
+        };
+        let grid = FrequencyGrid::new(0.0, 400.0, 0.5, sea.band()).unwrap();
+        let components = WaveComponents::generate(&sea, grid);
+        let grid = &components.grid;
+        let clock = RecordClock {
+            start_time: 0.0,
+            dt: grid.dt,
+            len: grid.len,
+        };
+        let columns = [(30.0, 10.0), (-20.0, 15.0), (30.0, -10.0)].map(|(x, y)| Cylinder {
+            x,
+            y,
+            diameter: 12.0,
+            draft: 25.0,
+        });
+        let mut synth = Synthesizer::new(grid);
+        let unmade = column_kinematics(&components, &columns, 20, 9.81, &mut synth);
+        let group = |c: usize| unmade.column(c).group();
+        assert_eq!(
+            group(0),
+            group(2),
+            "the columns at x = 30 m share their records"
+        );
+        assert_ne!(group(0), group(1));
+        let mut made = unmade.clone();
+        made.make_rows(0, 1);
+        let models = [
+            DragModel::Combined { cd: 0.7 },
+            DragModel::Separate {
+                slow: 0.9,
+                fast: 0.6,
+            },
+        ];
+        for kinematics in [&unmade, &made] {
+            for model in models {
+                for t in [100.0, 12.25] {
+                    let at = clock.locate(t).unwrap();
+                    for velocity in [[0.3, -0.2, 0.0], [0.3, -0.2, 0.004]] {
+                        let current = [0.5, 0.1];
+                        let mut want = [0.0; 3];
+                        for col in kinematics.columns() {
+                            add_column_force(
+                                &mut want, &col, &at, model, 1025.0, velocity, current,
+                            );
+                        }
+                        let got = drag_force(kinematics, &at, model, 1025.0, velocity, current);
+                        assert_eq!(
+                            got.map(f64::to_bits),
+                            want.map(f64::to_bits),
+                            "{model:?}, t {t}, velocity {velocity:?}: {got:?} against {want:?}"
+                        );
+                    }
+                }
+            }
+        }
     }
 
     /// The single-precision strip sums equal the plain strip-by-strip sum in double

@@ -10,7 +10,7 @@
 //! the one-seed path bit for bit, whichever instruction set runs it ([`Isa`]).
 
 use super::sums::lane_sums;
-use super::{add_column_force, strip_sum, ColumnStrips};
+use super::{add_column_force, single_bits, strip_sum, ColumnStrips, SeenSums};
 use crate::forces::isa::Isa;
 use crate::forces::kinematics::{Kinematics, StripVelocities};
 use crate::forces::record::SamplePoint;
@@ -51,6 +51,8 @@ pub fn drag_forces(
     if model != DragModel::Off {
         // Lanes past `lanes.len()` repeat the last one (their results are not kept).
         let padded: [&LaneDrag; LANES] = [0, 1, 2, 3].map(|l| &lanes[l.min(lanes.len() - 1)]);
+        // As in `drag_force`, the sums of a column group are taken once per offset.
+        let mut seen = SeenSums::new();
         for c in 0..lanes[0].kinematics.len() {
             let columns = padded.map(|lane| lane.kinematics.column(c));
             let rows: [_; LANES] = std::array::from_fn(|l| columns[l].row_on_sample(&padded[l].at));
@@ -79,8 +81,12 @@ pub fn drag_forces(
             let current = Wide::gather(|l| padded[l].current);
             let eta = Wide([e0, e1, e2, e3]);
             let strips = ColumnStrips::of(column, eta, model, water_density, velocity, current);
-            let offsets = std::array::from_fn(|l| strips.offset.map(|o| o.lane(l)));
-            let fast: [[f64; 2]; LANES] = match [r0, r1, r2, r3] {
+            let offsets: [[f64; 2]; LANES] =
+                std::array::from_fn(|l| strips.offset.map(|o| o.lane(l)));
+            // Lanes of one case: one group, as lane 0 has it.
+            let group = columns[0].group();
+            debug_assert!(columns.iter().all(|k| k.group() == group));
+            let fast = seen.sum(group, offsets.map(single_bits), || match [r0, r1, r2, r3] {
                 [StripVelocities::AlongX(a), StripVelocities::AlongX(b), StripVelocities::AlongX(c), StripVelocities::AlongX(d)] => {
                     lane_sums(isa, [a, b, c, d], offsets)
                 }
@@ -92,7 +98,7 @@ pub fn drag_forces(
                     let column = &columns[l];
                     strip_sum(&column.at(&padded[l].at), column.strips(), offsets[l])
                 }),
-            };
+            });
             strips.add_force(&mut totals, column, model, Wide::gather(|l| fast[l]));
         }
     }
@@ -124,12 +130,17 @@ mod tests {
     /// same bits.
     #[test]
     fn each_lane_is_the_one_seed_drag_bit_for_bit() {
-        let columns = [(30.0, 10.0, 25.0), (-20.0, 15.0, 18.0)].map(|(x, y, draft)| Cylinder {
-            x,
-            y,
-            diameter: 12.0,
-            draft,
-        });
+        // The first and last columns are one group in waves along x (one key: same x and
+        // draft), whose strip sums are taken once where their offsets round alike.
+        let columns =
+            [(30.0, 10.0, 25.0), (-20.0, 15.0, 18.0), (30.0, -10.0, 25.0)].map(|(x, y, draft)| {
+                Cylinder {
+                    x,
+                    y,
+                    diameter: 12.0,
+                    draft,
+                }
+            });
         let cases = [1, 2, 7, 8, 10, 21].into_iter().flat_map(|strips| {
             [
                 (strips, 0.0, Spreading::LongCrested),
