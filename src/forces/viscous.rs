@@ -277,6 +277,37 @@ mod tests {
         (total, sizes)
     }
 
+    /// The wave components of a JONSWAP sea (Hs 8 m, Tp 11 s) of `directions` directions
+    /// about `mean_direction` (rad), seed `seed`, on a 400-s block at 0.5 s, and its records'
+    /// clock.
+    fn sea_records(
+        spreading: Spreading,
+        mean_direction: f64,
+        directions: usize,
+        seed: u64,
+    ) -> (WaveComponents, RecordClock) {
+        let sea = SeaState {
+            spectrum: Spectrum::Jonswap {
+                hs: 8.0,
+                tp: 11.0,
+                gamma: None,
+            },
+            spreading,
+            mean_direction,
+            n_directions: directions,
+            seed,
+            band: None,
+        };
+        let grid = FrequencyGrid::new(0.0, 400.0, 0.5, sea.band()).unwrap();
+        let components = WaveComponents::generate(&sea, grid);
+        let clock = RecordClock {
+            start_time: 0.0,
+            dt: components.grid.dt,
+            len: components.grid.len,
+        };
+        (components, clock)
+    }
+
     /// The columns of one group (the two at x = 30 m in waves along x: one key) read the
     /// same kinematics, and the drag takes their strip sums once where their offsets round
     /// to the same floats: it gives the force of every column summed on its own
@@ -285,26 +316,8 @@ mod tests {
     /// on a sample and between samples, with the rows in the window and without.
     #[test]
     fn a_group_summed_once_gives_each_columns_force() {
-        let sea = SeaState {
-            spectrum: Spectrum::Jonswap {
-                hs: 8.0,
-                tp: 11.0,
-                gamma: None,
-            },
-            spreading: Spreading::LongCrested,
-            mean_direction: 0.0,
-            n_directions: 1,
-            seed: 5,
-            band: None,
-        };
-        let grid = FrequencyGrid::new(0.0, 400.0, 0.5, sea.band()).unwrap();
-        let components = WaveComponents::generate(&sea, grid);
+        let (components, clock) = sea_records(Spreading::LongCrested, 0.0, 1, 5);
         let grid = &components.grid;
-        let clock = RecordClock {
-            start_time: 0.0,
-            dt: grid.dt,
-            len: grid.len,
-        };
         let columns = [(30.0, 10.0), (-20.0, 15.0), (30.0, -10.0)].map(|(x, y)| Cylinder {
             x,
             y,
@@ -359,26 +372,8 @@ mod tests {
     /// [`StripSums`]' bound: (ceil(n/2) + 6) 2^-24 of the sizes sum |w| (|o| + |u| + |w|).
     #[test]
     fn drag_equals_the_strip_by_strip_sum() {
-        let sea = SeaState {
-            spectrum: Spectrum::Jonswap {
-                hs: 8.0,
-                tp: 11.0,
-                gamma: None,
-            },
-            spreading: Spreading::CosN { n: 4.0 },
-            mean_direction: 0.4,
-            n_directions: 3,
-            seed: 3,
-            band: None,
-        };
-        let grid = FrequencyGrid::new(0.0, 400.0, 0.5, sea.band()).unwrap();
-        let components = WaveComponents::generate(&sea, grid);
+        let (components, clock) = sea_records(Spreading::CosN { n: 4.0 }, 0.4, 3, 3);
         let grid = &components.grid;
-        let clock = RecordClock {
-            start_time: 0.0,
-            dt: grid.dt,
-            len: grid.len,
-        };
         let columns = [(30.0, 10.0, 25.0), (-20.0, 15.0, 18.0)].map(|(x, y, draft)| Cylinder {
             x,
             y,
