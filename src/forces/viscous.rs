@@ -54,7 +54,7 @@ pub fn drag_force(
 const SEEN: usize = 8;
 
 /// The strip sums taken at one instant, by column group (the first [`SEEN`] groups), with
-/// the offsets they were taken at (`B`: their bits in single precision) . A strip sum
+/// the offsets they were taken at (`B`: their bits in single precision). A strip sum
 /// depends on the row (or the interpolated strips) and the offset rounded to single
 /// precision alone ([`StripSums`]), and the columns of a group read the same kinematics: a
 /// column whose group was summed at offsets that round to the same floats has that sum, bit
