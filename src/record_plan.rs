@@ -336,11 +336,14 @@ impl RecordPlan {
         let fft = plan_inverse_fft(&grid);
         // The transform of N/2 points, planned once for the quadratic records and the
         // elevation's halves, where either is made so.
-        let refines = refine::admits(&grid, segments);
-        let half = (refines || Halves::allows(&grid))
+        let (refines, by_halves) = (refine::admits(&grid, segments), Halves::allows(&grid));
+        let half = (refines || by_halves)
             .then(|| rustfft::FftPlanner::new().plan_fft_inverse(grid.len / 2));
-        let half_fft = half.clone().filter(|_| refines);
-        let halves = half.and_then(|half| Halves::new(&grid, half));
+        let halves = half
+            .clone()
+            .filter(|_| by_halves)
+            .map(|half| Halves::new(&grid, half));
+        let half_fft = half.filter(|_| refines);
         let gust = problem
             .run_wind()?
             .and_then(|w| w.gusts)

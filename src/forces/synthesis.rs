@@ -77,18 +77,20 @@ impl Halves {
         grid.len.is_multiple_of(2) && 4 * (grid.first + grid.count) <= grid.len
     }
 
-    /// For `grid`, with `fft` its transform of N/2 points, when the band allows.
-    pub fn new(grid: &FrequencyGrid, fft: InverseFft) -> Option<Self> {
+    /// For `grid`, whose band allows them ([`Halves::allows`]), with `fft` its transform of
+    /// N/2 points.
+    pub fn new(grid: &FrequencyGrid, fft: InverseFft) -> Self {
         let n = grid.len;
+        debug_assert!(Self::allows(grid));
         debug_assert_eq!(fft.len() * 2, n);
-        Self::allows(grid).then(|| Halves {
+        Halves {
             fft,
             rotation: (grid.first..grid.first + grid.count)
                 .map(|k| Complex64::from_polar(1.0, std::f64::consts::TAU * k as f64 / n as f64))
                 .collect(),
             rotated: Vec::new(),
             samples: Vec::new(),
-        })
+        }
     }
 }
 
@@ -98,12 +100,10 @@ impl Synthesizer {
     pub fn new(grid: &FrequencyGrid) -> Self {
         let mut planner = FftPlanner::new();
         let synth = Self::with_fft(grid, planner.plan_fft_inverse(grid.len));
-        let halves = Halves::allows(grid)
-            .then(|| Halves::new(grid, planner.plan_fft_inverse(grid.len / 2)))
-            .flatten();
-        match halves {
-            Some(halves) => synth.with_halves(halves),
-            None => synth,
+        if Halves::allows(grid) {
+            synth.with_halves(Halves::new(grid, planner.plan_fft_inverse(grid.len / 2)))
+        } else {
+            synth
         }
     }
 
